@@ -1,0 +1,112 @@
+#include "eval_table.h"
+
+#include "eval_formulas.h"
+#include "muparser_peer.h"
+
+#include "formula/compiler.h"
+#include "formula/eval_batch.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+namespace fl::bench {
+
+namespace {
+
+// Best time per point of `work`, repeated until `seconds` have passed (at least twice).
+double bestNsPerPoint(const std::function<void()>& work, std::size_t points, double seconds) {
+    using clock = std::chrono::steady_clock;
+    double best = 1e300;
+    auto start = clock::now();
+    for (int run = 0;; ++run) {
+        auto t0 = clock::now();
+        work();
+        auto t1 = clock::now();
+        best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count());
+        double elapsed = std::chrono::duration<double>(t1 - start).count();
+        if (run >= 1 && elapsed >= seconds) break;
+    }
+    return best / static_cast<double>(points);
+}
+
+} // namespace
+
+std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
+    const Grid grid = makeGrid(side);
+    const std::size_t n = grid.size();
+    std::vector<double> ours(n), native(n), peer(n);
+    std::vector<EvalRow> rows;
+    for (const EvalFormula& f : evalFormulas()) {
+        EvalRow row;
+        row.formula = f.name;
+        formula::CompileResult compiled = formula::compile(f.source);
+        if (!compiled.ok()) throw std::runtime_error("benchmark formula does not compile: " + f.name);
+        formula::BatchEvaluator batch(*compiled.tape);
+        formula::BatchInputs in;
+        in.set(formula::Input::X, grid.x.data());
+        in.set(formula::Input::Y, grid.y.data());
+        in.set(formula::Input::Z, grid.z.data());
+        in.set(formula::Input::T, grid.t);
+        row.functionlab = bestNsPerPoint([&] { batch.evaluate(in, n, ours.data()); }, n, seconds);
+        row.native = bestNsPerPoint([&] { f.native(grid.x.data(), grid.y.data(), grid.z.data(), grid.t, native.data(), n); },
+                                    n, seconds);
+        for (std::size_t i = 0; i < n; ++i)
+            row.maxDifference = std::max(row.maxDifference, std::abs(ours[i] - native[i]));
+        if (MuParserPeer::available()) {
+            MuParserPeer mp(f.muparser);
+            double bulk = bestNsPerPoint([&] { mp.evaluateBulk(grid, peer.data()); }, n, seconds);
+            double single = bestNsPerPoint([&] { mp.evaluatePerPoint(grid, peer.data()); }, n, seconds);
+            row.muparser = std::min(bulk, single);
+            row.muparserMode = bulk <= single ? "bulk" : "per-point";
+            for (std::size_t i = 0; i < n; ++i)
+                row.maxDifference = std::max(row.maxDifference, std::abs(peer[i] - native[i]));
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::string formatEvalTable(const std::vector<EvalRow>& rows) {
+    std::string out;
+    char line[256];
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "formula", "functionlab",
+                  "native", "muparser", "vs native", "vs muparser", "max |diff|");
+    out += line;
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "", "ns/point", "ns/point",
+                  "ns/point", "(x slower)", "(x faster)", "");
+    out += line;
+    for (const EvalRow& r : rows) {
+        char mp[32] = "n/a", speed[32] = "n/a";
+        if (r.muparser >= 0) {
+            std::snprintf(mp, sizeof mp, "%.2f", r.muparser);
+            std::snprintf(speed, sizeof speed, "%.1f", r.muparser / r.functionlab);
+        }
+        std::snprintf(line, sizeof line, "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e\n", r.formula.c_str(),
+                      r.functionlab, r.native, mp, r.functionlab / r.native, speed, r.maxDifference);
+        out += line;
+    }
+    return out;
+}
+
+std::string evalTableJson(const std::vector<EvalRow>& rows) {
+    std::string out = "[";
+    char buf[512];
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const EvalRow& r = rows[i];
+        char mp[32] = "null";
+        if (r.muparser >= 0) std::snprintf(mp, sizeof mp, "%.4f", r.muparser);
+        std::snprintf(buf, sizeof buf,
+                      "%s\n  {\"formula\": \"%s\", \"ns_per_point\": {\"functionlab\": %.4f, \"native\": %.4f, "
+                      "\"muparser\": %s}}",
+                      i ? "," : "", r.formula.c_str(), r.functionlab, r.native, mp);
+        out += buf;
+    }
+    out += "\n]\n";
+    return out;
+}
+
+} // namespace fl::bench

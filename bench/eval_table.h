@@ -1,0 +1,25 @@
+#pragma once
+// The evaluator comparison behind `functionlab bench eval`: the same formulas
+// over the same grid with FunctionLab's batch evaluator, hand-written C++ and
+// muParser, in one run. Reports nanoseconds per point (best of repeated runs).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace fl::bench {
+
+struct EvalRow {
+    std::string formula;
+    double functionlab = 0; // ns per point
+    double native = 0;
+    double muparser = -1;   // < 0: muParser unavailable
+    std::string muparserMode; // "bulk" or "per-point", whichever was faster
+    double maxDifference = 0; // largest |FunctionLab - native| over the grid (a fairness check)
+};
+
+std::vector<EvalRow> runEvalTable(std::size_t side = 64, double secondsPerMeasurement = 0.2);
+
+std::string formatEvalTable(const std::vector<EvalRow>& rows);
+std::string evalTableJson(const std::vector<EvalRow>& rows);
+
+} // namespace fl::bench

@@ -1,0 +1,70 @@
+#pragma once
+// Evaluates a tape over many points per call. Work is cut into blocks of
+// kBlock points; each instruction runs as one tight loop over a block (the
+// compiler vectorises these), temporaries live in a few reused L1-resident
+// registers, inputs are read in place, and everything that does not vary
+// across the call (t, parameters, constants and what depends only on them) is
+// computed once per call and folded into the loops as immediates.
+//
+// Threads belong above this class: one evaluator per thread.
+#include "eval_scalar.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace fl::formula {
+
+// Where each input comes from: an array of n values, or one value for all.
+struct BatchInputs {
+    std::array<const double*, kInputCount> arrays{};
+    std::array<double, kInputCount> uniform{};
+
+    void set(Input i, const double* values) { arrays[static_cast<int>(i)] = values; }
+    void set(Input i, double value) {
+        arrays[static_cast<int>(i)] = nullptr;
+        uniform[static_cast<int>(i)] = value;
+    }
+};
+
+class BatchEvaluator {
+public:
+    static constexpr std::size_t kBlock = 256;
+
+    explicit BatchEvaluator(const Tape& tape);
+    ~BatchEvaluator();
+    BatchEvaluator(const BatchEvaluator&) = delete;
+    BatchEvaluator& operator=(const BatchEvaluator&) = delete;
+
+    ParameterValues& parameters() { return params_; }
+
+    // outputs[k] receives n values of the tape's k-th output.
+    void evaluate(const BatchInputs& in, std::size_t n, double* const* outputs);
+    // Convenience for single-output tapes.
+    void evaluate(const BatchInputs& in, std::size_t n, double* output) {
+        double* outs[1] = {output};
+        evaluate(in, n, outs);
+    }
+
+    struct Step; // an instruction specialised for the current uniform inputs
+
+private:
+    const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
+    ParameterValues params_;
+    std::vector<Step> steps_;
+    std::vector<double> uniformValue_;   // per register, valid where isUniform_
+    std::vector<char> isUniform_;
+    double* workspace_ = nullptr;        // registerCount * kBlock, 64-byte aligned
+    std::array<double*, 3> scratch_{};   // broadcast buffers for ternary operands
+    // what the current specialisation was made for
+    std::array<bool, kInputCount> specialisedVarying_{};
+    std::array<double, kInputCount> specialisedUniform_{};
+    std::vector<double> specialisedParams_;
+    bool specialised_ = false;
+
+    void specialise(const BatchInputs& in);
+    void runBlock(double* const* base, std::size_t n);
+};
+
+} // namespace fl::formula

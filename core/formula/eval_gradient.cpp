@@ -1,0 +1,210 @@
+#include "eval_gradient.h"
+
+#include "noise.h"
+#include "scalar_ops.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace fl::formula {
+
+namespace ad {
+namespace {
+
+// f'(a) * da, with 0 * anything = 0 so that a constant operand of a function
+// with an infinite derivative (sqrt at 0) keeps a zero gradient.
+Dual chain(double value, double fprime, const Dual& a) {
+    Dual r;
+    r.v = value;
+    for (int i = 0; i < 3; ++i) r.d[i] = a.d[i] == 0.0 ? 0.0 : fprime * a.d[i];
+    return r;
+}
+Dual chain2(double value, double fa, const Dual& a, double fb, const Dual& b) {
+    Dual r;
+    r.v = value;
+    for (int i = 0; i < 3; ++i) {
+        double ta = a.d[i] == 0.0 ? 0.0 : fa * a.d[i];
+        double tb = b.d[i] == 0.0 ? 0.0 : fb * b.d[i];
+        r.d[i] = ta + tb;
+    }
+    return r;
+}
+Dual constant(double v) {
+    Dual r;
+    r.v = v;
+    return r;
+}
+
+// Partial derivatives of the R_alpha intersection (m = 0) at (a, b).
+void rIntersectPartials(double a, double b, double alpha, double& da, double& db) {
+    if (alpha >= 1.0) {
+        bool first = a <= b;
+        da = first ? 1.0 : 0.0;
+        db = first ? 0.0 : 1.0;
+        return;
+    }
+    double s = std::max(std::abs(a), std::abs(b));
+    if (s == 0.0 || !std::isfinite(s)) {
+        // not differentiable at the origin: the average of the one-sided slopes
+        da = db = 0.5;
+        return;
+    }
+    double as = a / s, bs = b / s;
+    double hs = std::sqrt(std::max(0.0, as * as + bs * bs - 2.0 * alpha * as * bs));
+    da = (1.0 - (as - alpha * bs) / hs) / (1.0 + alpha);
+    db = (1.0 - (bs - alpha * as) / hs) / (1.0 + alpha);
+}
+
+Dual rfunction(Op op, const Dual& a, const Dual& b, double m, double alpha) {
+    bool uni = op == Op::RUnion;
+    double value = uni ? rUnion(a.v, b.v, m, alpha) : rIntersect(a.v, b.v, m, alpha);
+    double da, db;
+    // union(a, b) = -intersect(-a, -b): same partials, taken at (-a, -b)
+    rIntersectPartials(uni ? -a.v : a.v, uni ? -b.v : b.v, alpha, da, db);
+    if (m != 0.0) {
+        double h = std::hypot(a.v, b.v);
+        if (h == 0.0 || !std::isfinite(h)) {
+            da = db = 0.0; // the factor h^m flattens the origin (m > 0)
+        } else {
+            double r0 = uni ? rUnionAlpha(a.v, b.v, alpha) : rIntersectAlpha(a.v, b.v, alpha);
+            double hm = std::pow(h, m);
+            // d/da [r0 h^m] = r0' h^m + r0 m h^m (a / h^2), arranged to avoid overflow
+            double common = m * hm * (r0 / h);
+            da = da * hm + common * (a.v / h);
+            db = db * hm + common * (b.v / h);
+        }
+    }
+    return chain2(value, da, a, db, b);
+}
+
+} // namespace
+
+Dual unary(Op op, const Dual& a, double imm0) {
+    const double x = a.v;
+    const double v = ops::unary(op, x, imm0);
+    switch (op) {
+    case Op::Neg: return chain(v, -1.0, a);
+    case Op::Abs: return chain(v, x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0), a);
+    case Op::Square: return chain(v, 2.0 * x, a);
+    case Op::Sqrt: return chain(v, 0.5 / v, a);
+    case Op::Cbrt: return chain(v, 1.0 / (3.0 * v * v), a);
+    case Op::Exp: return chain(v, v, a);
+    case Op::Log: return chain(v, 1.0 / x, a);
+    case Op::Log2: return chain(v, 1.0 / (x * std::numbers::ln2), a);
+    case Op::Log10: return chain(v, 1.0 / (x * std::numbers::ln10), a);
+    case Op::Sin: return chain(v, std::cos(x), a);
+    case Op::Cos: return chain(v, -std::sin(x), a);
+    case Op::Tan: return chain(v, 1.0 + v * v, a);
+    case Op::Asin: return chain(v, 1.0 / std::sqrt(1.0 - x * x), a);
+    case Op::Acos: return chain(v, -1.0 / std::sqrt(1.0 - x * x), a);
+    case Op::Atan: return chain(v, 1.0 / (1.0 + x * x), a);
+    case Op::Sinh: return chain(v, std::cosh(x), a);
+    case Op::Cosh: return chain(v, std::sinh(x), a);
+    case Op::Tanh: return chain(v, 1.0 - v * v, a);
+    case Op::Floor:
+    case Op::Ceil:
+    case Op::Round:
+    case Op::Sign:
+    case Op::Not: return constant(v);
+    case Op::PowI: {
+        int n = static_cast<int>(imm0);
+        return chain(v, n == 0 ? 0.0 : n * ops::powi(x, n - 1), a);
+    }
+    default: break;
+    }
+    return constant(v);
+}
+
+Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
+    const double x = a.v, y = b.v;
+    switch (op) {
+    case Op::Add: return chain2(x + y, 1.0, a, 1.0, b);
+    case Op::Sub: return chain2(x - y, 1.0, a, -1.0, b);
+    case Op::Mul: return chain2(x * y, y, a, x, b);
+    case Op::Div: return chain2(x / y, 1.0 / y, a, -x / (y * y), b);
+    case Op::Pow: {
+        double v = std::pow(x, y);
+        double dx = y == 0.0 ? 0.0 : y * std::pow(x, y - 1.0);
+        double dy = x > 0.0 ? v * std::log(x) : 0.0; // d/dy undefined for x <= 0
+        return chain2(v, dx, a, dy, b);
+    }
+    case Op::Min: {
+        bool first = ops::min(x, y) == x || std::isnan(x);
+        return first ? Dual{ops::min(x, y), a.d} : Dual{ops::min(x, y), b.d};
+    }
+    case Op::Max: {
+        bool first = ops::max(x, y) == x || std::isnan(x);
+        return first ? Dual{ops::max(x, y), a.d} : Dual{ops::max(x, y), b.d};
+    }
+    case Op::Atan2: {
+        double r2 = x * x + y * y;
+        if (r2 == 0.0) return constant(std::atan2(x, y));
+        return chain2(std::atan2(x, y), y / r2, a, -x / r2, b);
+    }
+    case Op::Hypot: {
+        double h = std::hypot(x, y);
+        if (h == 0.0) return constant(h);
+        return chain2(h, x / h, a, y / h, b);
+    }
+    case Op::Mod: return chain2(ops::mod(x, y), 1.0, a, -std::floor(x / y), b);
+    case Op::RIntersect:
+    case Op::RUnion: return rfunction(op, a, b, imm0, imm1);
+    default: break;
+    }
+    // comparisons and logic: piecewise constant
+    return constant(ops::binary(op, x, y, imm0, imm1));
+}
+
+Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c) {
+    switch (op) {
+    case Op::Select: return ops::truth(a.v) ? b : c;
+    case Op::Noise: {
+        double g[3];
+        double v = noise3Gradient(a.v, b.v, c.v, g);
+        Dual r = chain2(v, g[0], a, g[1], b);
+        Dual t = chain(0.0, g[2], c);
+        for (int i = 0; i < 3; ++i) r.d[i] += t.d[i];
+        return r;
+    }
+    default: break;
+    }
+    return constant(NAN);
+}
+
+} // namespace ad
+
+GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt)
+    : tape_(tape), wrt_(wrt), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount)) {}
+
+void GradientEvaluator::run(const Point& p) {
+    Dual* r = regs_.data();
+    for (int i = 0; i < kInputCount; ++i) r[i] = Dual{p[i], {0.0, 0.0, 0.0}};
+    for (int k = 0; k < 3; ++k) r[static_cast<int>(wrt_[k])].d[k] = 1.0;
+    const std::vector<double>& pv = params_.values();
+    for (std::size_t i = 0; i < pv.size(); ++i) r[kInputCount + i] = Dual{pv[i], {0.0, 0.0, 0.0}};
+    auto get = [r](const Operand& o) { return o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : r[o.reg]; };
+    for (const Instruction& ins : tape_.code) {
+        switch (opArity(ins.op)) {
+        case 1: r[ins.out] = ad::unary(ins.op, get(ins.a), ins.imm0); break;
+        case 2: r[ins.out] = ad::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1); break;
+        default: r[ins.out] = ad::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c)); break;
+        }
+    }
+}
+
+Dual GradientEvaluator::evaluate(const Point& p) {
+    run(p);
+    if (tape_.outputs.empty()) return {};
+    const Operand& o = tape_.outputs[0].value;
+    return o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : regs_[o.reg];
+}
+
+void GradientEvaluator::evaluateAll(const Point& p, Dual* outputs) {
+    run(p);
+    for (std::size_t i = 0; i < tape_.outputs.size(); ++i) {
+        const Operand& o = tape_.outputs[i].value;
+        outputs[i] = o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : regs_[o.reg];
+    }
+}
+
+} // namespace fl::formula

@@ -1,0 +1,45 @@
+#pragma once
+// Forward-mode automatic differentiation: value and the partial derivatives
+// with respect to three chosen inputs (x, y, z by default; u, v, w for
+// parametric surfaces). Normals, Newton steps and haptic contact use it.
+//
+// Where a derivative does not exist the evaluator returns a defined one-sided
+// or averaged value (documented in docs/numerics.md) and never lets a zero
+// derivative times an infinite one produce NaN.
+#include "eval_scalar.h"
+
+#include <array>
+#include <vector>
+
+namespace fl::formula {
+
+struct Dual {
+    double v = 0.0;
+    std::array<double, 3> d{};
+};
+
+class GradientEvaluator {
+public:
+    explicit GradientEvaluator(const Tape& tape,
+                               std::array<Input, 3> wrt = {Input::X, Input::Y, Input::Z});
+
+    ParameterValues& parameters() { return params_; }
+
+    Dual evaluate(const Point& p);
+    void evaluateAll(const Point& p, Dual* outputs);
+
+private:
+    const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
+    std::array<Input, 3> wrt_;
+    ParameterValues params_;
+    std::vector<Dual> regs_;
+    void run(const Point& p);
+};
+
+namespace ad {
+Dual unary(Op op, const Dual& a, double imm0);
+Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1);
+Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c);
+} // namespace ad
+
+} // namespace fl::formula

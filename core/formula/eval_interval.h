@@ -1,0 +1,33 @@
+#pragma once
+// Evaluates a tape over a box: the result contains every point value the
+// scalar evaluator can produce inside it (the mesher's license to skip space).
+#include "eval_scalar.h"
+#include "interval.h"
+
+#include <array>
+#include <vector>
+
+namespace fl::formula {
+
+using Box = std::array<Interval, kInputCount>;
+
+// A box over x, y, z with t fixed (the mesher's usual question).
+Box boxXYZ(double x0, double x1, double y0, double y1, double z0, double z1, double t = 0.0);
+
+class IntervalEvaluator {
+public:
+    explicit IntervalEvaluator(const Tape& tape);
+
+    ParameterValues& parameters() { return params_; }
+
+    Interval evaluate(const Box& box);
+    void evaluateAll(const Box& box, Interval* outputs);
+
+private:
+    const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
+    ParameterValues params_;
+    std::vector<Interval> regs_;
+    void run(const Box& box);
+};
+
+} // namespace fl::formula

@@ -1,0 +1,406 @@
+#include "interval.h"
+
+#include "noise.h"
+#include "rfunctions.h"
+#include "scalar_ops.h"
+
+#include <algorithm>
+#include <numbers>
+
+namespace fl::formula {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+
+double down(double x, int ulps = 2) {
+    for (int i = 0; i < ulps; ++i) x = std::nextafter(x, -kInf);
+    return x;
+}
+double up(double x, int ulps = 2) {
+    for (int i = 0; i < ulps; ++i) x = std::nextafter(x, kInf);
+    return x;
+}
+
+// Build a result from computed endpoints: widen outward, and if an endpoint
+// came out NaN (inf - inf, 0 * inf …) fall back to everything.
+Interval make(double lo, double hi, bool nan, int ulps = 2) {
+    if (std::isnan(lo) || std::isnan(hi)) return Interval::entire(true);
+    return {down(lo, ulps), up(hi, ulps), nan};
+}
+// Endpoints that are exact (min, max, floor, negation): no widening.
+Interval exact(double lo, double hi, bool nan) {
+    if (std::isnan(lo) || std::isnan(hi)) return Interval::entire(true);
+    return {lo, hi, nan};
+}
+
+Interval monotoneUp(double (*f)(double), const Interval& a, int ulps = 2) {
+    return make(f(a.lo), f(a.hi), a.nan, ulps);
+}
+
+// Truth of an interval: 1 = surely true, 0 = surely false, -1 = unknown.
+int truthOf(const Interval& a) {
+    if (a.empty()) return 0; // only NaN: NaN is false
+    if (!a.nan && (a.lo > 0.0 || a.hi < 0.0)) return 1;
+    if (a.lo == 0.0 && a.hi == 0.0) return 0;
+    return -1;
+}
+Interval fromTruth(int t) {
+    if (t == 1) return {1.0, 1.0, false};
+    if (t == 0) return {0.0, 0.0, false};
+    return {0.0, 1.0, false};
+}
+
+Interval square(const Interval& a) {
+    double l2 = a.lo * a.lo, h2 = a.hi * a.hi;
+    if (a.containsZero()) return make(0.0, std::max(l2, h2), a.nan);
+    return make(std::min(l2, h2), std::max(l2, h2), a.nan);
+}
+
+Interval mul(const Interval& a, const Interval& b) {
+    double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    for (double v : p)
+        if (std::isnan(v)) return Interval::entire(true);
+    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4), a.nan || b.nan);
+}
+
+Interval div(const Interval& a, const Interval& b) {
+    if (b.containsZero()) return Interval::entire(true);
+    double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+    for (double v : p)
+        if (std::isnan(v)) return Interval::entire(true);
+    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4), a.nan || b.nan);
+}
+
+Interval powi(const Interval& a, int n) {
+    if (n == 0) return {1.0, 1.0, false}; // pow(x, 0) = 1, even for NaN
+    if (n < 0) return div({1.0, 1.0, false}, powi(a, -n));
+    double l = ops::powi(a.lo, n), h = ops::powi(a.hi, n);
+    // repeated squaring rounds at most log2(n) + popcount(n) times
+    int ulps = 2 + 2 * static_cast<int>(std::log2(static_cast<double>(n)) + 1);
+    if (n % 2 == 1) return make(l, h, a.nan, ulps);
+    if (a.containsZero()) return make(0.0, std::max(l, h), a.nan, ulps);
+    return make(std::min(l, h), std::max(l, h), a.nan, ulps);
+}
+
+// Range of sin over [lo, hi]: endpoints plus any interior extremum.
+Interval sinRange(const Interval& a, bool cosine) {
+    if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= 2.0 * kPi ||
+        std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15)
+        return {-1.0, 1.0, a.nan || std::isinf(a.lo) || std::isinf(a.hi)};
+    double fl = cosine ? std::cos(a.lo) : std::sin(a.lo);
+    double fh = cosine ? std::cos(a.hi) : std::sin(a.hi);
+    double lo = std::min(fl, fh), hi = std::max(fl, fh);
+    // maxima at phase 0 (cos) / pi/2 (sin), minima half a turn later; a small
+    // slack admits an extremum that rounding might place just outside.
+    double phaseMax = cosine ? 0.0 : kPi / 2.0;
+    double slack = 1e-9 * (1.0 + std::max(std::abs(a.lo), std::abs(a.hi)));
+    auto hits = [&](double phase) {
+        double k = std::ceil((a.lo - slack - phase) / (2.0 * kPi));
+        return phase + 2.0 * kPi * k <= a.hi + slack;
+    };
+    if (hits(phaseMax)) hi = 1.0;
+    if (hits(phaseMax + kPi)) lo = -1.0;
+    Interval r = make(lo, hi, a.nan);
+    r.lo = std::max(r.lo, -1.0);
+    r.hi = std::min(r.hi, 1.0);
+    return r;
+}
+
+Interval tanRange(const Interval& a) {
+    if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= kPi) return Interval::entire(a.nan || std::isinf(a.lo) || std::isinf(a.hi));
+    double slack = 1e-9 * (1.0 + std::max(std::abs(a.lo), std::abs(a.hi)));
+    double k = std::ceil((a.lo - slack - kPi / 2.0) / kPi);
+    if (kPi / 2.0 + kPi * k <= a.hi + slack) return Interval::entire(a.nan);
+    return make(std::tan(a.lo), std::tan(a.hi), a.nan);
+}
+
+// Clip to a function's domain [dlo, dhi]: points outside are NaN.
+bool clipDomain(Interval& a, double dlo, double dhi) {
+    if (a.hi < dlo || a.lo > dhi) return false;
+    if (a.lo < dlo) {
+        a.lo = dlo;
+        a.nan = true;
+    }
+    if (a.hi > dhi) {
+        a.hi = dhi;
+        a.nan = true;
+    }
+    return true;
+}
+
+Interval absRange(const Interval& a) {
+    if (a.lo >= 0.0) return exact(a.lo, a.hi, a.nan);
+    if (a.hi <= 0.0) return exact(-a.hi, -a.lo, a.nan);
+    return exact(0.0, std::max(-a.lo, a.hi), a.nan);
+}
+
+Interval powGeneral(const Interval& a, const Interval& b) {
+    if (b.lo == b.hi && b.lo == std::trunc(b.lo) && std::abs(b.lo) <= 1024.0 && !b.nan)
+        return powi(a, static_cast<int>(b.lo));
+    Interval m = absRange(a);
+    double c[4] = {std::pow(m.lo, b.lo), std::pow(m.lo, b.hi), std::pow(m.hi, b.lo), std::pow(m.hi, b.hi)};
+    bool nan = a.nan || b.nan;
+    for (double v : c)
+        if (std::isnan(v)) return Interval::entire(true);
+    double lo = *std::min_element(c, c + 4), hi = *std::max_element(c, c + 4);
+    if (b.containsZero()) {
+        lo = std::min(lo, 1.0);
+        hi = std::max(hi, 1.0);
+    }
+    if (a.lo >= 0.0) return make(lo, hi, nan);
+    // negative bases: NaN for non-integer exponents, ±|a|^b for integer ones
+    return make(-hi, hi, true);
+}
+
+Interval atan2Range(const Interval& y, const Interval& x) {
+    bool nan = y.nan || x.nan;
+    // the box touches the origin or crosses the branch cut on the negative x axis
+    if ((x.containsZero() && y.containsZero()) || (x.lo < 0.0 && y.containsZero()))
+        return make(-kPi, kPi, nan);
+    double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo),
+                   std::atan2(y.hi, x.hi)};
+    return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
+}
+
+Interval modRange(const Interval& a, const Interval& b) {
+    bool nan = a.nan || b.nan;
+    if (!std::isfinite(a.lo) || !std::isfinite(a.hi)) return Interval::entire(true);
+    if (b.lo == b.hi && b.lo != 0.0 && std::isfinite(b.lo)) {
+        double c = b.lo;
+        double kl = std::floor(a.lo / c), kh = std::floor(a.hi / c);
+        if (kl == kh && std::abs(kl) < 1e15) {
+            double l = ops::mod(a.lo, c), h = ops::mod(a.hi, c);
+            if (c > 0 && l <= h) return make(l, h, nan, 4);
+            if (c < 0 && h <= l) return make(h, l, nan, 4);
+        }
+        return c > 0 ? exact(0.0, c, nan) : exact(c, 0.0, nan);
+    }
+    if (b.lo > 0.0) return exact(0.0, b.hi, nan);
+    if (b.hi < 0.0) return exact(b.lo, 0.0, nan);
+    return Interval::entire(true);
+}
+
+Interval compare(Op op, const Interval& a, const Interval& b) {
+    if (a.empty() || b.empty()) return fromTruth(op == Op::NotEqual ? 1 : 0);
+    int t = -1;
+    switch (op) {
+    case Op::Less: t = a.hi < b.lo ? 1 : (a.lo >= b.hi ? 0 : -1); break;
+    case Op::LessEq: t = a.hi <= b.lo ? 1 : (a.lo > b.hi ? 0 : -1); break;
+    case Op::Greater: t = a.lo > b.hi ? 1 : (a.hi <= b.lo ? 0 : -1); break;
+    case Op::GreaterEq: t = a.lo >= b.hi ? 1 : (a.hi < b.lo ? 0 : -1); break;
+    case Op::Equal:
+        t = (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) ? 1 : (a.hi < b.lo || b.hi < a.lo ? 0 : -1);
+        break;
+    case Op::NotEqual:
+        t = (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) ? 0 : (a.hi < b.lo || b.hi < a.lo ? 1 : -1);
+        break;
+    default: break;
+    }
+    // a NaN point compares false (and NotEqual true)
+    if ((a.nan || b.nan) && t != -1) {
+        int nanResult = op == Op::NotEqual ? 1 : 0;
+        if (t != nanResult) t = -1;
+    }
+    return fromTruth(t);
+}
+
+// R-functions with m = 0 are non-decreasing in both arguments (for alpha in
+// (-1, 1]), so the corners give the range; their point values are accurate to
+// a few ulps, covered by the wider rounding margin.
+Interval rfunction(Op op, const Interval& a, const Interval& b, double m, double alpha) {
+    if (a.empty() || b.empty()) return Interval::undefined();
+    bool nan = a.nan || b.nan;
+    auto r0 = [&](double x, double y) {
+        return op == Op::RIntersect ? rIntersectAlpha(x, y, alpha) : rUnionAlpha(x, y, alpha);
+    };
+    Interval base = make(r0(a.lo, b.lo), r0(a.hi, b.hi), nan, 8);
+    if (m == 0.0) return base;
+    Interval ha = absRange(a), hb = absRange(b);
+    Interval h = make(std::hypot(ha.lo, hb.lo), std::hypot(ha.hi, hb.hi), false);
+    h.lo = std::max(h.lo, 0.0);
+    Interval factor = make(std::pow(h.lo, m), std::pow(h.hi, m), false, 4);
+    factor.lo = std::max(factor.lo, 0.0);
+    Interval r = mul(base, factor);
+    // the scalar form returns exactly 0 whenever the R0 part is 0
+    if (base.containsZero()) {
+        r.lo = std::min(r.lo, 0.0);
+        r.hi = std::max(r.hi, 0.0);
+    }
+    r.nan = r.nan || nan;
+    return r;
+}
+
+Interval noiseRange(const Interval& x, const Interval& y, const Interval& z) {
+    bool nan = x.nan || y.nan || z.nan;
+    if (x.empty() || y.empty() || z.empty()) return Interval::undefined();
+    Interval global = {-kNoiseBound, kNoiseBound, nan};
+    const Interval* c[3] = {&x, &y, &z};
+    double spread = 0.0;
+    double centre[3];
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(c[i]->lo) || !std::isfinite(c[i]->hi)) return global;
+        centre[i] = 0.5 * c[i]->lo + 0.5 * c[i]->hi;
+        spread += 0.5 * (c[i]->hi - c[i]->lo);
+    }
+    double v = noise3(centre[0], centre[1], centre[2]);
+    double r = kNoiseLipschitz * spread * (1.0 + 1e-12) + 1e-12;
+    return {std::max(-kNoiseBound, v - r), std::min(kNoiseBound, v + r), nan};
+}
+
+} // namespace
+
+Interval hull(const Interval& a, const Interval& b) {
+    if (a.empty()) return {b.lo, b.hi, b.nan || a.nan};
+    if (b.empty()) return {a.lo, a.hi, a.nan || b.nan};
+    return {std::min(a.lo, b.lo), std::max(a.hi, b.hi), a.nan || b.nan};
+}
+
+namespace iv {
+
+Interval unary(Op op, const Interval& in, double imm0) {
+    if (in.empty()) {
+        if (op == Op::Not) return {1.0, 1.0, false}; // NaN is false, so !NaN is 1
+        return Interval::undefined();
+    }
+    Interval a = in;
+    switch (op) {
+    case Op::Neg: return exact(-a.hi, -a.lo, a.nan);
+    case Op::Abs: return absRange(a);
+    case Op::Square: return square(a);
+    case Op::Sqrt:
+        if (!clipDomain(a, 0.0, kInf)) return Interval::undefined();
+        {
+            Interval r = monotoneUp(std::sqrt, a);
+            r.lo = std::max(r.lo, 0.0);
+            return r;
+        }
+    case Op::Cbrt: return monotoneUp(std::cbrt, a);
+    case Op::Exp: {
+        Interval r = monotoneUp(std::exp, a);
+        r.lo = std::max(r.lo, 0.0);
+        return r;
+    }
+    case Op::Log:
+    case Op::Log2:
+    case Op::Log10: {
+        if (!clipDomain(a, 0.0, kInf)) return Interval::undefined();
+        double (*f)(double) = op == Op::Log ? static_cast<double (*)(double)>(std::log)
+                              : op == Op::Log2 ? static_cast<double (*)(double)>(std::log2)
+                                               : static_cast<double (*)(double)>(std::log10);
+        return monotoneUp(f, a);
+    }
+    case Op::Sin: return sinRange(a, false);
+    case Op::Cos: return sinRange(a, true);
+    case Op::Tan: return tanRange(a);
+    case Op::Asin:
+        if (!clipDomain(a, -1.0, 1.0)) return Interval::undefined();
+        return monotoneUp(std::asin, a);
+    case Op::Acos: {
+        if (!clipDomain(a, -1.0, 1.0)) return Interval::undefined();
+        return make(std::acos(a.hi), std::acos(a.lo), a.nan);
+    }
+    case Op::Atan: return monotoneUp(std::atan, a);
+    case Op::Sinh: return monotoneUp(std::sinh, a);
+    case Op::Cosh: {
+        double l = std::cosh(a.lo), h = std::cosh(a.hi);
+        if (a.containsZero()) return make(1.0, std::max(l, h), a.nan);
+        return make(std::min(l, h), std::max(l, h), a.nan);
+    }
+    case Op::Tanh: {
+        Interval r = monotoneUp(std::tanh, a);
+        r.lo = std::max(r.lo, -1.0);
+        r.hi = std::min(r.hi, 1.0);
+        return r;
+    }
+    case Op::Floor: return exact(std::floor(a.lo), std::floor(a.hi), a.nan);
+    case Op::Ceil: return exact(std::ceil(a.lo), std::ceil(a.hi), a.nan);
+    case Op::Round: return exact(std::round(a.lo), std::round(a.hi), a.nan);
+    case Op::Sign: return exact(ops::sign(a.lo), ops::sign(a.hi), a.nan);
+    case Op::Not: {
+        int t = truthOf(a);
+        return fromTruth(t == -1 ? -1 : 1 - t);
+    }
+    case Op::PowI: return powi(a, static_cast<int>(imm0));
+    default: break;
+    }
+    return Interval::entire(true);
+}
+
+Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double imm1) {
+    switch (op) {
+    case Op::Less:
+    case Op::LessEq:
+    case Op::Greater:
+    case Op::GreaterEq:
+    case Op::Equal:
+    case Op::NotEqual: return compare(op, a, b);
+    case Op::And:
+    case Op::Or: {
+        int ta = truthOf(a), tb = truthOf(b);
+        if (op == Op::And) {
+            if (ta == 0 || tb == 0) return fromTruth(0);
+            if (ta == 1 && tb == 1) return fromTruth(1);
+        } else {
+            if (ta == 1 || tb == 1) return fromTruth(1);
+            if (ta == 0 && tb == 0) return fromTruth(0);
+        }
+        return fromTruth(-1);
+    }
+    case Op::Pow:
+        // IEEE: pow(1, y) = 1 and pow(x, 0) = 1 even when the other is NaN
+        if (a.empty() || b.empty()) {
+            bool one = (!a.empty() && a.contains(1.0)) || (!b.empty() && b.contains(0.0));
+            return one ? Interval{1.0, 1.0, true} : Interval::undefined();
+        }
+        break;
+    case Op::Hypot:
+        // IEEE: hypot(±inf, NaN) = +inf
+        if (a.empty() || b.empty()) {
+            const Interval& other = a.empty() ? b : a;
+            bool inf = !other.empty() && (std::isinf(other.lo) || std::isinf(other.hi));
+            return inf ? Interval{kInf, kInf, true} : Interval::undefined();
+        }
+        break;
+    default: break;
+    }
+    if (a.empty() || b.empty()) return Interval::undefined();
+    bool nan = a.nan || b.nan;
+    switch (op) {
+    case Op::Add: return make(a.lo + b.lo, a.hi + b.hi, nan);
+    case Op::Sub: return make(a.lo - b.hi, a.hi - b.lo, nan);
+    case Op::Mul: return mul(a, b);
+    case Op::Div: return div(a, b);
+    case Op::Pow: return powGeneral(a, b);
+    case Op::Min: return exact(std::min(a.lo, b.lo), std::min(a.hi, b.hi), nan);
+    case Op::Max: return exact(std::max(a.lo, b.lo), std::max(a.hi, b.hi), nan);
+    case Op::Atan2: return atan2Range(a, b);
+    case Op::Hypot: {
+        Interval x = absRange(a), y = absRange(b);
+        return make(std::hypot(x.lo, y.lo), std::hypot(x.hi, y.hi), nan);
+    }
+    case Op::Mod: return modRange(a, b);
+    case Op::RIntersect:
+    case Op::RUnion: return rfunction(op, a, b, imm0, imm1);
+    default: break;
+    }
+    return Interval::entire(true);
+}
+
+Interval ternary(Op op, const Interval& a, const Interval& b, const Interval& c) {
+    switch (op) {
+    case Op::Select: {
+        int t = truthOf(a);
+        if (t == 1) return b;
+        if (t == 0) return c;
+        return hull(b, c);
+    }
+    case Op::Noise: return noiseRange(a, b, c);
+    default: break;
+    }
+    return Interval::entire(true);
+}
+
+} // namespace iv
+} // namespace fl::formula

@@ -1,0 +1,110 @@
+#pragma once
+// Point semantics of every opcode, shared by the scalar and batch evaluators
+// and the constant folder so that all of them agree bit for bit.
+//
+// Truth: a value is true when it is non-zero and not NaN; comparisons and
+// logic give exactly 0 or 1. NaN and infinities follow IEEE 754 and never trap.
+#include "noise.h"
+#include "opcodes.h"
+#include "rfunctions.h"
+
+#include <cmath>
+
+namespace fl::formula::ops {
+
+inline bool truth(double v) { return v < 0.0 || v > 0.0; }
+
+inline double powi(double a, int n) {
+    // exact repeated squaring for |n| small; sign of negative bases is right
+    // for every integer n (-2)^3 = -8.
+    unsigned m = n < 0 ? 0u - static_cast<unsigned>(n) : static_cast<unsigned>(n);
+    double r = 1.0, base = a;
+    while (m) {
+        if (m & 1u) r *= base;
+        base *= base;
+        m >>= 1;
+    }
+    return n < 0 ? 1.0 / r : r;
+}
+
+// GLSL-style modulo: the result has the sign of b; mod(a, 0) is NaN.
+inline double mod(double a, double b) {
+    double r = std::fmod(a, b);
+    if (r != 0.0 && ((r < 0.0) != (b < 0.0))) r += b;
+    return r;
+}
+
+// min and max propagate NaN from either side (an undefined operand makes the
+// set operation undefined there, which the mesher reports) and are symmetric,
+// so the compiler may share min(a, b) with min(b, a). Written branch-free so
+// the batch loops vectorise.
+inline double min(double a, double b) { return (a < b || a != a) ? a : b; }
+inline double max(double a, double b) { return (a > b || a != a) ? a : b; }
+
+inline double sign(double a) { return a > 0.0 ? 1.0 : (a < 0.0 ? -1.0 : (a == 0.0 ? 0.0 : a)); }
+
+inline double unary(Op op, double a, double imm0) {
+    switch (op) {
+    case Op::Neg: return -a;
+    case Op::Abs: return std::fabs(a);
+    case Op::Square: return a * a;
+    case Op::Sqrt: return std::sqrt(a);
+    case Op::Cbrt: return std::cbrt(a);
+    case Op::Exp: return std::exp(a);
+    case Op::Log: return std::log(a);
+    case Op::Log2: return std::log2(a);
+    case Op::Log10: return std::log10(a);
+    case Op::Sin: return std::sin(a);
+    case Op::Cos: return std::cos(a);
+    case Op::Tan: return std::tan(a);
+    case Op::Asin: return std::asin(a);
+    case Op::Acos: return std::acos(a);
+    case Op::Atan: return std::atan(a);
+    case Op::Sinh: return std::sinh(a);
+    case Op::Cosh: return std::cosh(a);
+    case Op::Tanh: return std::tanh(a);
+    case Op::Floor: return std::floor(a);
+    case Op::Ceil: return std::ceil(a);
+    case Op::Round: return std::round(a);
+    case Op::Sign: return sign(a);
+    case Op::Not: return truth(a) ? 0.0 : 1.0;
+    case Op::PowI: return powi(a, static_cast<int>(imm0));
+    default: return NAN;
+    }
+}
+
+inline double binary(Op op, double a, double b, double imm0, double imm1) {
+    switch (op) {
+    case Op::Add: return a + b;
+    case Op::Sub: return a - b;
+    case Op::Mul: return a * b;
+    case Op::Div: return a / b;
+    case Op::Pow: return std::pow(a, b);
+    case Op::Min: return min(a, b);
+    case Op::Max: return max(a, b);
+    case Op::Atan2: return std::atan2(a, b);
+    case Op::Hypot: return std::hypot(a, b);
+    case Op::Mod: return mod(a, b);
+    case Op::Less: return a < b ? 1.0 : 0.0;
+    case Op::LessEq: return a <= b ? 1.0 : 0.0;
+    case Op::Greater: return a > b ? 1.0 : 0.0;
+    case Op::GreaterEq: return a >= b ? 1.0 : 0.0;
+    case Op::Equal: return a == b ? 1.0 : 0.0;
+    case Op::NotEqual: return a != b ? 1.0 : 0.0;
+    case Op::And: return truth(a) && truth(b) ? 1.0 : 0.0;
+    case Op::Or: return truth(a) || truth(b) ? 1.0 : 0.0;
+    case Op::RIntersect: return rIntersect(a, b, imm0, imm1);
+    case Op::RUnion: return rUnion(a, b, imm0, imm1);
+    default: return NAN;
+    }
+}
+
+inline double ternary(Op op, double a, double b, double c) {
+    switch (op) {
+    case Op::Select: return truth(a) ? b : c;
+    case Op::Noise: return noise3(a, b, c);
+    default: return NAN;
+    }
+}
+
+} // namespace fl::formula::ops

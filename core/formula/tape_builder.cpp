@@ -1,0 +1,280 @@
+#include "tape_builder.h"
+
+#include "scalar_ops.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace fl::formula {
+
+namespace {
+// -0.0 and +0.0 differ for division and atan2, so constants keep their exact bits.
+std::uint64_t exactBits(double v) { return std::bit_cast<std::uint64_t>(v); }
+} // namespace
+
+std::size_t TapeBuilder::KeyHash::operator()(const Key& k) const {
+    std::uint64_t h = static_cast<std::uint64_t>(k.op) * 0x9E3779B97F4A7C15ull;
+    auto mix = [&h](std::uint64_t v) {
+        h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    };
+    mix(static_cast<std::uint32_t>(k.an));
+    mix(static_cast<std::uint32_t>(k.bn));
+    mix(static_cast<std::uint32_t>(k.cn));
+    mix(k.ac);
+    mix(k.bc);
+    mix(k.cc);
+    mix(k.i0);
+    mix(k.i1);
+    return static_cast<std::size_t>(h);
+}
+
+TapeBuilder::TapeBuilder() = default;
+
+Val TapeBuilder::leaf(std::int32_t reg) {
+    if (auto it = leaves_.find(reg); it != leaves_.end()) return {it->second, 0.0};
+    Node n{};
+    n.op = Op::Add;
+    n.isLeaf = true;
+    n.leafRegister = reg;
+    n.origin = -1;
+    nodes_.push_back(n);
+    std::int32_t id = static_cast<std::int32_t>(nodes_.size() - 1);
+    leaves_[reg] = id;
+    return {id, 0.0};
+}
+
+Val TapeBuilder::input(Input which) { return leaf(static_cast<std::int32_t>(which)); }
+
+Val TapeBuilder::parameter(std::int32_t index) { return leaf(kInputCount + index); }
+
+bool TapeBuilder::isNegOf(Val v, Val& inner) const {
+    if (v.isConst() || nodes_[v.node].isLeaf || nodes_[v.node].op != Op::Neg) return false;
+    inner = nodes_[v.node].a;
+    return true;
+}
+
+Val TapeBuilder::power(Val base, Val exponent) {
+    if (exponent.isConst()) {
+        double e = exponent.c;
+        if (e == 1.0) return base;
+        if (e == 2.0) return square(base);
+        if (e == 0.5) return emit(Op::Sqrt, base);
+        if (e == std::trunc(e) && std::abs(e) <= 64.0) return emit(Op::PowI, base, {}, {}, e);
+    }
+    return emit(Op::Pow, base, exponent);
+}
+
+Val TapeBuilder::fold(Op op, Val a, Val b, Val c, double imm0, double imm1) {
+    int arity = opArity(op);
+    bool allConst = a.isConst() && (arity < 2 || b.isConst()) && (arity < 3 || c.isConst());
+    if (allConst) {
+        double r = arity == 1   ? ops::unary(op, a.c, imm0)
+                   : arity == 2 ? ops::binary(op, a.c, b.c, imm0, imm1)
+                                : ops::ternary(op, a.c, b.c, c.c);
+        bool inputsNaN = std::isnan(a.c) || (arity >= 2 && std::isnan(b.c)) ||
+                         (arity >= 3 && std::isnan(c.c));
+        if (std::isnan(r) && !inputsNaN) {
+            foldWarnings_.push_back({Severity::Warning, origin_,
+                                     std::string("'") + opName(op) +
+                                         "' is undefined (NaN) here for every point",
+                                     "check the arguments: e.g. log and sqrt need positive values"});
+        }
+        return Val::constant(r);
+    }
+    return Val{-2, 0.0}; // not folded
+}
+
+Val TapeBuilder::emit(Op op, Val a, Val b, Val c, double imm0, double imm1) {
+    Val folded = fold(op, a, b, c, imm0, imm1);
+    if (folded.node != -2) return folded;
+
+    // Identities that hold for every double, NaN and infinities included.
+    switch (op) {
+    case Op::Add: // only -0 is an exact additive identity (+0 + -0 = +0)
+        if (a.isConst(0.0) && std::signbit(a.c)) return b;
+        if (b.isConst(0.0) && std::signbit(b.c)) return a;
+        break;
+    case Op::Sub: // a - (+0) = a for every a, -0 included
+        if (b.isConst(0.0) && !std::signbit(b.c)) return a;
+        break;
+    case Op::Mul:
+        if (a.isConst(1.0)) return b;
+        if (b.isConst(1.0)) return a;
+        if (a.isConst(-1.0)) return emit(Op::Neg, b);
+        if (b.isConst(-1.0)) return emit(Op::Neg, a);
+        if (!a.isConst() && a.node == b.node) return emit(Op::Square, a);
+        break;
+    case Op::Div:
+        if (b.isConst(1.0)) return a;
+        break;
+    case Op::Neg: {
+        Val inner;
+        if (isNegOf(a, inner)) return inner;
+        break;
+    }
+    case Op::Min:
+    case Op::Max:
+        if (!a.isConst() && !b.isConst() && a.node == b.node) return a;
+        break;
+    case Op::Select:
+        if (a.isConst()) return ops::truth(a.c) ? b : c;
+        if (!b.isConst() && !c.isConst() && b.node == c.node) return b;
+        if (b.isConst() && c.isConst() && exactBits(b.c) == exactBits(c.c)) return b;
+        break;
+    case Op::PowI:
+        if (imm0 == 1.0) return a;
+        if (imm0 == 2.0) return emit(Op::Square, a);
+        break;
+    default: break;
+    }
+
+    if (opIsCommutative(op)) {
+        auto rank = [](Val v) { return v.isConst() ? std::make_pair(1, 0) : std::make_pair(0, v.node); };
+        if (rank(b) < rank(a)) std::swap(a, b);
+    }
+    int arity = opArity(op);
+    if (arity < 2) b = {};
+    if (arity < 3) c = {};
+    Key key{op,
+            a.node,
+            b.node,
+            c.node,
+            a.isConst() ? exactBits(a.c) : 0,
+            b.isConst() ? exactBits(b.c) : 0,
+            c.isConst() ? exactBits(c.c) : 0,
+            exactBits(imm0),
+            exactBits(imm1)};
+    if (auto it = cse_.find(key); it != cse_.end()) return {it->second, 0.0};
+
+    Node n{op, a, b, c, imm0, imm1, static_cast<std::int32_t>(origins_.size()), false, -1};
+    origins_.push_back(origin_);
+    nodes_.push_back(n);
+    std::int32_t id = static_cast<std::int32_t>(nodes_.size() - 1);
+    cse_.emplace(key, id);
+    return {id, 0.0};
+}
+
+Tape TapeBuilder::finish(const std::vector<Output>& outputs, std::vector<ParameterInfo> params) const {
+    const std::int32_t n = static_cast<std::int32_t>(nodes_.size());
+    // Liveness: mark what the outputs need, record each node's last use.
+    std::vector<char> live(n, 0);
+    std::vector<std::int32_t> stack;
+    for (const Output& o : outputs)
+        if (!o.value.isConst()) stack.push_back(o.value.node);
+    while (!stack.empty()) {
+        std::int32_t id = stack.back();
+        stack.pop_back();
+        if (live[id]) continue;
+        live[id] = 1;
+        const Node& node = nodes_[id];
+        if (node.isLeaf) continue;
+        for (const Val* v : {&node.a, &node.b, &node.c})
+            if (!v->isConst() && v->node >= 0) stack.push_back(v->node);
+    }
+    constexpr std::int32_t kForever = std::numeric_limits<std::int32_t>::max();
+    std::vector<std::int32_t> lastUse(n, -1);
+    for (std::int32_t id = 0; id < n; ++id) {
+        if (!live[id] || nodes_[id].isLeaf) continue;
+        const Node& node = nodes_[id];
+        for (const Val* v : {&node.a, &node.b, &node.c})
+            if (!v->isConst() && v->node >= 0) lastUse[v->node] = id;
+    }
+    for (const Output& o : outputs)
+        if (!o.value.isConst()) lastUse[o.value.node] = kForever;
+
+    Tape tape;
+    tape.params = std::move(params);
+    const std::int32_t firstTemp = kInputCount + static_cast<std::int32_t>(tape.params.size());
+    std::vector<std::int32_t> regOf(n, -1);
+    std::vector<std::int32_t> freeRegs;
+    std::int32_t nextReg = firstTemp;
+    for (std::int32_t id = 0; id < n; ++id) {
+        if (!live[id]) continue;
+        const Node& node = nodes_[id];
+        if (node.isLeaf) {
+            regOf[id] = node.leafRegister;
+            if (node.leafRegister < kInputCount) tape.usesInput[node.leafRegister] = true;
+            continue;
+        }
+        // Take the output register before releasing the operands' registers,
+        // so an instruction never writes a register it reads (the batch loops
+        // rely on that to vectorise without alias checks).
+        std::int32_t reg;
+        if (!freeRegs.empty()) {
+            reg = freeRegs.back();
+            freeRegs.pop_back();
+        } else {
+            reg = nextReg++;
+        }
+        regOf[id] = reg;
+        Instruction ins;
+        ins.op = node.op;
+        ins.out = reg;
+        auto operand = [&](const Val& v) {
+            return v.isConst() ? Operand::constant(v.c) : Operand::ofReg(v.node >= 0 ? regOf[v.node] : 0);
+        };
+        int arity = opArity(node.op);
+        ins.a = operand(node.a);
+        if (arity >= 2) ins.b = operand(node.b);
+        if (arity >= 3) ins.c = operand(node.c);
+        ins.imm0 = node.imm0;
+        ins.imm1 = node.imm1;
+        ins.origin = node.origin;
+        tape.code.push_back(ins);
+        // release operands that die here (each register once)
+        std::int32_t released[3] = {-1, -1, -1};
+        int k = 0;
+        for (const Val* v : {&node.a, &node.b, &node.c}) {
+            if (k >= arity) break;
+            ++k;
+            if (v->isConst() || v->node < 0) continue;
+            const Node& src = nodes_[v->node];
+            if (src.isLeaf || lastUse[v->node] != id) continue;
+            std::int32_t r = regOf[v->node];
+            if (std::find(std::begin(released), std::end(released), r) != std::end(released)) continue;
+            released[k - 1] = r;
+            freeRegs.push_back(r);
+        }
+        if (lastUse[id] == -1) freeRegs.push_back(reg); // computed but unused (cannot happen when live)
+    }
+    tape.registerCount = nextReg;
+    tape.origins = origins_;
+    for (const Output& o : outputs) {
+        OutputInfo info;
+        info.name = o.name;
+        info.value = o.value.isConst() ? Operand::constant(o.value.c) : Operand::ofReg(regOf[o.value.node]);
+        tape.outputs.push_back(info);
+    }
+    return tape;
+}
+
+std::string Tape::disassemble() const {
+    std::ostringstream os;
+    os.precision(17);
+    auto operand = [&](const Operand& o) {
+        std::ostringstream s;
+        s.precision(17);
+        if (o.isConst()) s << o.value;
+        else if (o.reg < kInputCount) s << kInputNames[o.reg];
+        else if (o.reg < kInputCount + static_cast<std::int32_t>(params.size()))
+            s << params[o.reg - kInputCount].name;
+        else s << "r" << o.reg;
+        return s.str();
+    };
+    for (const Instruction& ins : code) {
+        os << "r" << ins.out << " = " << opName(ins.op) << " " << operand(ins.a);
+        if (opArity(ins.op) >= 2) os << ", " << operand(ins.b);
+        if (opArity(ins.op) >= 3) os << ", " << operand(ins.c);
+        if (ins.op == Op::PowI) os << " ^" << ins.imm0;
+        if (ins.op == Op::RIntersect || ins.op == Op::RUnion)
+            os << " [m=" << ins.imm0 << ", alpha=" << ins.imm1 << "]";
+        os << "\n";
+    }
+    for (const OutputInfo& o : outputs) os << o.name << " <- " << operand(o.value) << "\n";
+    return os.str();
+}
+
+} // namespace fl::formula

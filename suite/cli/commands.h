@@ -1,0 +1,14 @@
+#pragma once
+// Subcommands of the `functionlab` executable. Each takes the arguments after
+// its own name and returns an exit code (see exit_codes.h).
+#include <string>
+#include <vector>
+
+namespace fl::cli {
+
+using Args = std::vector<std::string>;
+
+int formulaCommand(const Args& args);
+int benchCommand(const Args& args);
+
+} // namespace fl::cli

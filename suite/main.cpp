@@ -1,0 +1,59 @@
+// The `functionlab` executable: with no arguments it will open the suite
+// window (once the GUI exists); with a subcommand it serves scripts, CI and
+// instructors.
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#ifndef FUNCTIONLAB_VERSION
+#define FUNCTIONLAB_VERSION "0.0.0"
+#endif
+
+namespace {
+
+const char* kHelp = R"(FunctionLab — function-defined 3D objects for teaching
+
+usage: functionlab [--help] [--version] <command> [<args>]
+
+commands:
+  formula check "SRC"       check a formula or script; diagnostics with carets
+  formula eval "SRC" --at X,Y,Z [--t T] [--param N=V ...] [--json]
+                            evaluate a formula: value and gradient
+  bench eval [--json]       evaluator speed: FunctionLab vs hand-written C++ vs muParser
+
+Run `functionlab <command> --help` for a command's options.
+With no arguments functionlab will open the suite window; the window is not
+part of this build yet, so it prints this help.
+)";
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty()) {
+        std::cout << kHelp;
+        return fl::cli::kExitOk;
+    }
+    const std::string cmd = args[0];
+    std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+        std::cout << kHelp;
+        return fl::cli::kExitOk;
+    }
+    if (cmd == "--version") {
+        std::cout << "functionlab " << FUNCTIONLAB_VERSION << "\n";
+        return fl::cli::kExitOk;
+    }
+    try {
+        if (cmd == "formula") return fl::cli::formulaCommand(rest);
+        if (cmd == "bench") return fl::cli::benchCommand(rest);
+    } catch (const std::exception& e) {
+        std::cerr << "functionlab: " << e.what() << "\n";
+        return fl::cli::kExitDiagnostic;
+    }
+    std::cerr << "functionlab: unknown command '" << cmd << "'\n\n" << kHelp;
+    return fl::cli::kExitUsage;
+}

@@ -1,0 +1,162 @@
+// Numerically hard cases, each named: what the engine does is written down in
+// docs/numerics.md and pinned here.
+#include "formula/eval_batch.h"
+#include "formula/eval_gradient.h"
+#include "formula/eval_interval.h"
+#include "formula/noise.h"
+#include "formula/nonfinite_report.h"
+#include "test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace fl::formula {
+namespace {
+
+using testing::eval;
+constexpr double kPi = std::numbers::pi;
+
+TEST(HardCases, IntegerPowersOfNegatives) {
+    EXPECT_EQ(eval("(-2)^3"), -8.0);
+    EXPECT_EQ(eval("x^3", -2), -8.0);
+    EXPECT_EQ(eval("x^4", -2), 16.0);
+    EXPECT_EQ(eval("x^-3", -2), -0.125);
+    EXPECT_EQ(eval("pow(x, 5)", -1.5), std::pow(-1.5, 5));
+    EXPECT_EQ(eval("-x^2", 3), -9.0); // unary minus binds looser than ^
+    EXPECT_EQ(eval("2^3^2"), 512.0);  // right-associative
+    EXPECT_TRUE(std::isnan(eval("x^2.5", -1)));
+    EXPECT_EQ(eval("cbrt(x)", -8), -2.0);
+    EXPECT_EQ(eval("x^0", NAN), 1.0); // IEEE pow(x, 0) = 1
+}
+
+TEST(HardCases, HugeAndTinyMagnitudes) {
+    EXPECT_EQ(eval("x*x", 1e300), INFINITY);
+    EXPECT_EQ(eval("x*x", 1e-300), 0.0);
+    EXPECT_NEAR(eval("hypot(x, y)", 1e300, 1e300), std::sqrt(2.0) * 1e300, 1e286);
+    EXPECT_NEAR(eval("hypot(x, y)", 1e-300, 1e-300), std::sqrt(2.0) * 1e-300, 1e-314);
+    EXPECT_EQ(eval("exp(x)", 1000), INFINITY);
+    EXPECT_EQ(eval("exp(x)", -1000), 0.0);
+    EXPECT_NEAR(eval("sphere(1e6) / 1e12", 0, 0, 0), 1.0, 1e-15);
+    EXPECT_NEAR(eval("sphere(1e-6) * 1e12", 0, 0, 0), 1.0, 1e-15);
+    // the lexer refuses what does not fit a double instead of making it infinite
+    EXPECT_FALSE(compile("1e999").ok());
+}
+
+TEST(HardCases, PolesAndDivisionByZero) {
+    EXPECT_EQ(eval("1/x", 0.0), INFINITY);
+    EXPECT_EQ(eval("1/x", -0.0), -INFINITY);
+    EXPECT_TRUE(std::isnan(eval("x/x", 0.0)));
+    EXPECT_TRUE(std::isfinite(eval("tan(x)", kPi / 2))); // pi/2 is not exact in binary
+    EXPECT_EQ(eval("x^-1", 0.0), INFINITY);
+    IntervalEvaluator iv(*compile("1/x").tape);
+    Interval r = iv.evaluate(boxXYZ(-1, 1, 0, 0, 0, 0));
+    EXPECT_EQ(r.lo, -INFINITY);
+    EXPECT_EQ(r.hi, INFINITY);
+}
+
+TEST(HardCases, LogOfZeroAndSqrtOfNegatives) {
+    EXPECT_EQ(eval("log(x)", 0.0), -INFINITY);
+    EXPECT_TRUE(std::isnan(eval("log(x)", -1.0)));
+    EXPECT_TRUE(std::isnan(eval("sqrt(x)", -1.0)));
+    EXPECT_EQ(eval("sqrt(x)", -0.0), -0.0);
+    // constant arguments are folded and reported at compile time, once, located
+    CompileResult r = compile("1 + log(-1)");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].severity, Severity::Warning);
+    EXPECT_EQ(r.diagnostics[0].range.begin.column, 5);
+    // variable arguments: located by the reporter when a point goes non-finite
+    CompileResult s = compile("x + sqrt(y)");
+    ASSERT_TRUE(s.ok());
+    auto d = explainNonFinite(*s.tape, {}, pointXYZ(1, -4, 0));
+    ASSERT_TRUE(d.has_value());
+    EXPECT_EQ(d->range.begin.column, 5);
+    EXPECT_NE(d->message.find("NaN"), std::string::npos);
+    EXPECT_FALSE(explainNonFinite(*s.tape, {}, pointXYZ(1, 4, 0)).has_value());
+}
+
+TEST(HardCases, Atan2Quadrants) {
+    EXPECT_DOUBLE_EQ(eval("atan2(y, x)", 1, 1), kPi / 4);
+    EXPECT_DOUBLE_EQ(eval("atan2(y, x)", -1, 1), 3 * kPi / 4);
+    EXPECT_DOUBLE_EQ(eval("atan2(y, x)", -1, -1), -3 * kPi / 4);
+    EXPECT_DOUBLE_EQ(eval("atan2(y, x)", 1, -1), -kPi / 4);
+    EXPECT_DOUBLE_EQ(eval("atan2(y, x)", -1, 0.0), kPi);
+    EXPECT_DOUBLE_EQ(eval("atan2(y, x)", -1, -0.0), -kPi);
+    EXPECT_DOUBLE_EQ(eval("atan(y, x)", -1, 1), 3 * kPi / 4); // two-argument atan is atan2
+    EXPECT_EQ(eval("atan2(y, x)", 0, 0), 0.0);
+    // the interval of a box straddling the branch cut covers both sides
+    IntervalEvaluator iv(*compile("atan2(y, x)").tape);
+    Interval r = iv.evaluate(boxXYZ(-2, -1, -0.5, 0.5, 0, 0));
+    EXPECT_LE(r.lo, -kPi + 0.5);
+    EXPECT_GE(r.hi, kPi - 0.5);
+}
+
+TEST(HardCases, ZeroAndUndefinedGradients) {
+    auto grad = [](const char* src, double x, double y, double z) {
+        GradientEvaluator g(*compile(src).tape);
+        return g.evaluate(pointXYZ(x, y, z));
+    };
+    Dual d = grad("sqrt(x^2 + y^2 + z^2)", 0, 0, 0);
+    for (double c : d.d) EXPECT_EQ(c, 0.0); // not NaN from 0 * inf
+    d = grad("abs(x)", 0, 0, 0);
+    EXPECT_EQ(d.d[0], 0.0);
+    d = grad("7", 1, 2, 3);
+    EXPECT_EQ(d.d[0], 0.0);
+    d = grad("rintersect(x, y)", 0, 0, 0);
+    EXPECT_EQ(d.d[0], 0.5);
+    EXPECT_EQ(d.d[1], 0.5);
+    d = grad("rintersect(x, y, 1)", 0, 0, 0);
+    EXPECT_EQ(d.d[0], 0.0);
+    d = grad("min(x, y)", 1, 1, 0); // tie: the first argument's gradient
+    EXPECT_EQ(d.d[0], 1.0);
+    EXPECT_EQ(d.d[1], 0.0);
+    d = grad("floor(x) + (x > 0)", 0.5, 0, 0);
+    EXPECT_EQ(d.d[0], 0.0);
+    d = grad("sqrt(x)", 0, 0, 0); // vertical tangent
+    EXPECT_EQ(d.d[0], INFINITY);
+}
+
+TEST(HardCases, NaNAndInfinityInputsNeverCrashAndStayLocal) {
+    CompileResult r = compile("min(sqrt(x), 1) + y");
+    ASSERT_TRUE(r.ok());
+    BatchEvaluator b(*r.tape);
+    double xs[4] = {-1, 4, NAN, INFINITY};
+    double ys[4] = {1, 1, 1, -INFINITY};
+    double out[4];
+    BatchInputs in;
+    in.set(Input::X, xs);
+    in.set(Input::Y, ys);
+    in.set(Input::Z, 0.0);
+    b.evaluate(in, 4, out);
+    EXPECT_TRUE(std::isnan(out[0]));
+    EXPECT_EQ(out[1], 2.0); // a NaN neighbour does not spread
+    EXPECT_TRUE(std::isnan(out[2]));
+    EXPECT_EQ(out[3], -INFINITY);
+}
+
+TEST(HardCases, NoiseIsDeterministicBoundedAndFiniteEverywhere) {
+    EXPECT_EQ(eval("noise(x, y, z)", 0.3, 0.7, 1.1), eval("noise(x, y, z)", 0.3, 0.7, 1.1));
+    EXPECT_EQ(eval("noise(x, y, z)", 1, 2, 3), 0.0); // zero on the integer lattice
+    EXPECT_TRUE(std::isfinite(eval("noise(x, y, z)", 1e300, -1e300, INFINITY)));
+    double maxAbs = 0;
+    for (int i = 0; i < 20000; ++i) {
+        double v = eval("noise(x, y, z)", i * 0.0137, i * 0.031, i * 0.0071);
+        maxAbs = std::max(maxAbs, std::abs(v));
+    }
+    EXPECT_LE(maxAbs, kNoiseBound);
+    EXPECT_GT(maxAbs, 0.3); // it really varies
+}
+
+TEST(HardCases, ComparisonsWithNaNAreFalse) {
+    EXPECT_EQ(eval("x < 1", NAN), 0.0);
+    EXPECT_EQ(eval("x != x", NAN), 1.0);
+    EXPECT_EQ(eval("x ? 1 : 2", NAN), 2.0);
+    EXPECT_EQ(eval("!x", NAN), 1.0);
+    EXPECT_TRUE(std::isnan(eval("min(x, 1)", NAN)));
+    EXPECT_TRUE(std::isnan(eval("max(1, x)", NAN)));
+}
+
+} // namespace
+} // namespace fl::formula
