@@ -1,0 +1,61 @@
+# Shared set-up for scripts/run and scripts/test (sourced, not executed):
+# install what is missing on Debian/Ubuntu, then configure and build.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
+
+# Debian 12 package names. Qt, GLM, hidapi, libusb and SQLite are for the
+# viewer, haptics and grading parts; muParser is a benchmark peer only.
+PACKAGES=(
+  build-essential cmake ninja-build ccache pkg-config git
+  libgtest-dev libgmock-dev libbenchmark-dev libmuparser-dev
+  libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
+  qt6-base-dev qt6-3d-dev qt6-websockets-dev
+  xvfb xauth libgl1-mesa-dri
+  clang libclang-rt-14-dev
+)
+
+log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
+
+install_missing_packages() {
+  if ! command -v dpkg-query >/dev/null 2>&1; then
+    log "not a Debian/Ubuntu system: install the equivalents of: ${PACKAGES[*]}"
+    return 0
+  fi
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null 2>&1 || { log "need root or sudo to install: ${missing[*]}"; exit 1; }
+    sudo="sudo"
+  fi
+  log "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# configure_and_build DIR [extra cmake args...]
+configure_and_build() {
+  local dir="$1"
+  shift
+  local generator=()
+  command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+  if [ ! -f "$dir/CMakeCache.txt" ]; then
+    log "configuring $dir"
+    cmake -S "$ROOT" -B "$dir" "${generator[@]}" "$@" >/dev/null
+  else
+    cmake -S "$ROOT" -B "$dir" "$@" >/dev/null
+  fi
+  log "building $dir"
+  cmake --build "$dir" --parallel "$(nproc 2>/dev/null || echo 2)"
+}
+
+setup() {
+  install_missing_packages
+  configure_and_build "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+}
