@@ -8,6 +8,10 @@
 #include <cmath>
 #include <vector>
 
+#ifdef FUNCTIONLAB_HAVE_OPENMP
+#include <omp.h>
+#endif
+
 namespace fl::bench {
 
 struct MuParserPeer::Impl {
@@ -19,6 +23,10 @@ struct MuParserPeer::Impl {
 bool MuParserPeer::available() { return true; }
 
 MuParserPeer::MuParserPeer(const std::string& expression) : impl_(std::make_unique<Impl>()) {
+#ifdef FUNCTIONLAB_HAVE_OPENMP
+    // every engine in the comparison runs on one thread
+    omp_set_num_threads(1);
+#endif
     try {
         impl_->parser.SetExpr(expression);
     } catch (const mu::Parser::exception_type& e) {

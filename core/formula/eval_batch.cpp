@@ -1,6 +1,7 @@
 #include "eval_batch.h"
 
 #include "scalar_ops.h"
+#include "vector_math.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -9,8 +10,18 @@
 
 namespace fl::formula {
 
+// Hot pairs fused for the batch loops only (one pass over the block instead
+// of two or three). Each computes exactly what the unfused steps would.
+enum class Fused : std::uint8_t {
+    None,
+    SquareOfDiff, // out = (a - ca)^2           from  t = a - c; out = t * t
+    AddSquare,    // out = A + (b - cb)^2       from  q = square(...); out = A + q
+    SubSquare,    // out = A - (b - cb)^2       from  q = square(...); out = A - q
+};
+
 struct BatchEvaluator::Step {
     Op op;
+    Fused fused;
     bool constA, constB, constC;
     std::int32_t out, a, b, c;
     double ca, cb, cc;
@@ -44,6 +55,126 @@ inline void binaryLoop(const Step& s, double* const* base, double* __restrict o,
 }
 
 inline double cmpResult(bool v) { return v ? 1.0 : 0.0; }
+
+// Number of reads of each step's result before its register is written again
+// (a final output counts as one more read).
+std::vector<int> useCounts(const std::vector<Step>& steps, const Tape& tape) {
+    std::vector<int> uses(steps.size(), 0);
+    std::vector<int> writer(static_cast<std::size_t>(tape.registerCount), -1);
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const Step& s = steps[i];
+        const int arity = opArity(s.op);
+        auto read = [&](bool isConst, std::int32_t reg) {
+            if (!isConst && writer[reg] >= 0) ++uses[writer[reg]];
+        };
+        read(s.constA, s.a);
+        if (arity >= 2) read(s.constB, s.b);
+        if (arity >= 3) read(s.constC, s.c);
+        writer[s.out] = static_cast<int>(i);
+    }
+    for (const OutputInfo& o : tape.outputs)
+        if (!o.value.isConst() && writer[o.value.reg] >= 0) ++uses[writer[o.value.reg]];
+    return uses;
+}
+
+// Whether register `reg` is written by any step in (from, to).
+bool writtenBetween(const std::vector<Step>& steps, std::size_t from, std::size_t to, std::int32_t reg) {
+    for (std::size_t k = from + 1; k < to; ++k)
+        if (steps[k].out == reg) return true;
+    return false;
+}
+
+// Index of the step that last wrote `reg` before step `at`, or -1.
+int definingStep(const std::vector<Step>& steps, std::size_t at, std::int32_t reg) {
+    for (std::size_t k = at; k-- > 0;)
+        if (steps[k].out == reg) return static_cast<int>(k);
+    return -1;
+}
+
+// Peephole: (a - c)^2 and A +/- (b - c)^2, the bread and butter of FRep
+// primitives (sums of squared offsets), become single passes.
+void fuseSquares(std::vector<Step>& steps, const Tape& tape) {
+    std::vector<int> uses = useCounts(steps, tape);
+    std::vector<char> dead(steps.size(), 0);
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        Step& s = steps[i];
+        if (s.op == Op::Square && s.fused == Fused::None) {
+            // square of (reg - const) or (reg + const) whose result feeds only this square
+            int d = definingStep(steps, i, s.a);
+            if (d < 0 || dead[d] || uses[d] != 1) continue;
+            const Step& diff = steps[d];
+            bool sub = diff.op == Op::Sub && !diff.constA && diff.constB;
+            bool add = diff.op == Op::Add && ((!diff.constA && diff.constB) || (diff.constA && !diff.constB));
+            if ((!sub && !add) || diff.fused != Fused::None) continue;
+            std::int32_t reg = diff.constA ? diff.b : diff.a;
+            double c = diff.constA ? diff.ca : diff.cb;
+            if (add) c = -c; // x + c == x - (-c) exactly (IEEE subtraction adds the negation)
+            if (writtenBetween(steps, static_cast<std::size_t>(d), i, reg) || s.out == reg) continue;
+            s.fused = Fused::SquareOfDiff;
+            s.a = reg;
+            s.ca = c;
+            dead[d] = 1;
+        }
+    }
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        Step& s = steps[i];
+        if (dead[i] || s.fused != Fused::None || (s.op != Op::Add && s.op != Op::Sub)) continue;
+        // which operand is a square used only here?
+        for (int side = 1; side >= 0; --side) {
+            if (s.op == Op::Sub && side == 0) break; // A - q only
+            bool isConst = side ? s.constB : s.constA;
+            std::int32_t reg = side ? s.b : s.a;
+            if (isConst) continue;
+            int q = definingStep(steps, i, reg);
+            if (q < 0 || dead[q] || uses[q] != 1) continue;
+            const Step& sq = steps[q];
+            bool plain = sq.op == Op::Square && sq.fused == Fused::None;
+            bool ofDiff = sq.op == Op::Square && sq.fused == Fused::SquareOfDiff;
+            if (!plain && !ofDiff) continue;
+            std::int32_t base = sq.a;
+            if (writtenBetween(steps, static_cast<std::size_t>(q), i, base) || s.out == base) continue;
+            // the other operand becomes A
+            if (side == 0) {
+                s.constA = s.constB;
+                s.a = s.b;
+                s.ca = s.cb;
+            }
+            s.fused = s.op == Op::Add ? Fused::AddSquare : Fused::SubSquare;
+            s.constB = false;
+            s.b = base;
+            s.cb = ofDiff ? sq.ca : 0.0;
+            dead[q] = 1;
+            break;
+        }
+    }
+    std::vector<Step> kept;
+    kept.reserve(steps.size());
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        if (!dead[i]) kept.push_back(steps[i]);
+    steps.swap(kept);
+}
+
+template <bool Add>
+inline void squareTermLoop(const Step& s, double* const* base, double* o, std::size_t n) {
+    // o may be b's register only if fuseSquares allowed it (it does not), so
+    // these loops may assume no overlap between o and the operands
+    const double cb = s.cb;
+    const double* __restrict b = base[s.b];
+    double* __restrict out = o;
+    if (s.constA) {
+        const double ca = s.ca;
+        for (std::size_t i = 0; i < n; ++i) {
+            double d = b[i] - cb;
+            out[i] = Add ? ca + d * d : ca - d * d;
+        }
+    } else {
+        const double* __restrict a = base[s.a];
+        for (std::size_t i = 0; i < n; ++i) {
+            double d = b[i] - cb;
+            out[i] = Add ? a[i] + d * d : a[i] - d * d;
+        }
+    }
+}
 
 } // namespace
 
@@ -118,32 +249,48 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
         isUniform_[ins.out] = 0;
         steps_.push_back(s);
     }
+    fuseSquares(steps_, tape_);
     specialised_ = true;
 }
 
+// Compiled twice — baseline and AVX2 — and picked at load time by the CPU, so
+// the arithmetic loops run 4 lanes wide where they can. Without FMA contraction
+// (-ffp-contract=off) both clones round exactly like the scalar evaluator.
+__attribute__((target_clones("avx2", "default")))
 void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
+    const vmath::Implementation& vm = vmath::implementation();
     for (const Step& s : steps_) {
         double* __restrict o = base[s.out];
+        switch (s.fused) {
+        case Fused::None: break;
+        case Fused::SquareOfDiff: {
+            const double c = s.ca;
+            unaryLoop(o, base[s.a], n, [c](double a) { double d = a - c; return d * d; });
+            continue;
+        }
+        case Fused::AddSquare: squareTermLoop<true>(s, base, o, n); continue;
+        case Fused::SubSquare: squareTermLoop<false>(s, base, o, n); continue;
+        }
         switch (s.op) {
         // ---- unary (the operand always varies: uniform ones were folded)
         case Op::Neg: unaryLoop(o, base[s.a], n, [](double a) { return -a; }); break;
         case Op::Abs: unaryLoop(o, base[s.a], n, [](double a) { return std::fabs(a); }); break;
         case Op::Square: unaryLoop(o, base[s.a], n, [](double a) { return a * a; }); break;
         case Op::Sqrt: unaryLoop(o, base[s.a], n, [](double a) { return std::sqrt(a); }); break;
-        case Op::Cbrt: unaryLoop(o, base[s.a], n, [](double a) { return std::cbrt(a); }); break;
-        case Op::Exp: unaryLoop(o, base[s.a], n, [](double a) { return std::exp(a); }); break;
-        case Op::Log: unaryLoop(o, base[s.a], n, [](double a) { return std::log(a); }); break;
-        case Op::Log2: unaryLoop(o, base[s.a], n, [](double a) { return std::log2(a); }); break;
-        case Op::Log10: unaryLoop(o, base[s.a], n, [](double a) { return std::log10(a); }); break;
-        case Op::Sin: unaryLoop(o, base[s.a], n, [](double a) { return std::sin(a); }); break;
-        case Op::Cos: unaryLoop(o, base[s.a], n, [](double a) { return std::cos(a); }); break;
-        case Op::Tan: unaryLoop(o, base[s.a], n, [](double a) { return std::tan(a); }); break;
-        case Op::Asin: unaryLoop(o, base[s.a], n, [](double a) { return std::asin(a); }); break;
-        case Op::Acos: unaryLoop(o, base[s.a], n, [](double a) { return std::acos(a); }); break;
-        case Op::Atan: unaryLoop(o, base[s.a], n, [](double a) { return std::atan(a); }); break;
-        case Op::Sinh: unaryLoop(o, base[s.a], n, [](double a) { return std::sinh(a); }); break;
-        case Op::Cosh: unaryLoop(o, base[s.a], n, [](double a) { return std::cosh(a); }); break;
-        case Op::Tanh: unaryLoop(o, base[s.a], n, [](double a) { return std::tanh(a); }); break;
+        case Op::Cbrt: vm.unaryArray[int(vmath::Unary::Cbrt)](base[s.a], o, n); break;
+        case Op::Exp: vm.unaryArray[int(vmath::Unary::Exp)](base[s.a], o, n); break;
+        case Op::Log: vm.unaryArray[int(vmath::Unary::Log)](base[s.a], o, n); break;
+        case Op::Log2: vm.unaryArray[int(vmath::Unary::Log2)](base[s.a], o, n); break;
+        case Op::Log10: vm.unaryArray[int(vmath::Unary::Log10)](base[s.a], o, n); break;
+        case Op::Sin: vm.unaryArray[int(vmath::Unary::Sin)](base[s.a], o, n); break;
+        case Op::Cos: vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n); break;
+        case Op::Tan: vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n); break;
+        case Op::Asin: vm.unaryArray[int(vmath::Unary::Asin)](base[s.a], o, n); break;
+        case Op::Acos: vm.unaryArray[int(vmath::Unary::Acos)](base[s.a], o, n); break;
+        case Op::Atan: vm.unaryArray[int(vmath::Unary::Atan)](base[s.a], o, n); break;
+        case Op::Sinh: vm.unaryArray[int(vmath::Unary::Sinh)](base[s.a], o, n); break;
+        case Op::Cosh: vm.unaryArray[int(vmath::Unary::Cosh)](base[s.a], o, n); break;
+        case Op::Tanh: vm.unaryArray[int(vmath::Unary::Tanh)](base[s.a], o, n); break;
         case Op::Floor: unaryLoop(o, base[s.a], n, [](double a) { return std::floor(a); }); break;
         case Op::Ceil: unaryLoop(o, base[s.a], n, [](double a) { return std::ceil(a); }); break;
         case Op::Round: unaryLoop(o, base[s.a], n, [](double a) { return std::round(a); }); break;
@@ -163,10 +310,16 @@ void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
         case Op::Sub: binaryLoop(s, base, o, n, [](double a, double b) { return a - b; }); break;
         case Op::Mul: binaryLoop(s, base, o, n, [](double a, double b) { return a * b; }); break;
         case Op::Div: binaryLoop(s, base, o, n, [](double a, double b) { return a / b; }); break;
-        case Op::Pow: binaryLoop(s, base, o, n, [](double a, double b) { return std::pow(a, b); }); break;
+        case Op::Pow:
+            vm.binaryArray[int(vmath::Binary::Pow)](s.constA ? nullptr : base[s.a], s.ca,
+                                                    s.constB ? nullptr : base[s.b], s.cb, o, n);
+            break;
         case Op::Min: binaryLoop(s, base, o, n, [](double a, double b) { return ops::min(a, b); }); break;
         case Op::Max: binaryLoop(s, base, o, n, [](double a, double b) { return ops::max(a, b); }); break;
-        case Op::Atan2: binaryLoop(s, base, o, n, [](double a, double b) { return std::atan2(a, b); }); break;
+        case Op::Atan2:
+            vm.binaryArray[int(vmath::Binary::Atan2)](s.constA ? nullptr : base[s.a], s.ca,
+                                                      s.constB ? nullptr : base[s.b], s.cb, o, n);
+            break;
         case Op::Hypot: binaryLoop(s, base, o, n, [](double a, double b) { return std::hypot(a, b); }); break;
         case Op::Mod: binaryLoop(s, base, o, n, [](double a, double b) { return ops::mod(a, b); }); break;
         case Op::Less: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a < b); }); break;

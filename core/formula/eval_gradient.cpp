@@ -117,13 +117,13 @@ Dual unary(Op op, const Dual& a, double imm0) {
 
 Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
     const double x = a.v, y = b.v;
+    const double v = ops::binary(op, x, y, imm0, imm1); // the scalar evaluator's value, bit for bit
     switch (op) {
     case Op::Add: return chain2(x + y, 1.0, a, 1.0, b);
     case Op::Sub: return chain2(x - y, 1.0, a, -1.0, b);
     case Op::Mul: return chain2(x * y, y, a, x, b);
     case Op::Div: return chain2(x / y, 1.0 / y, a, -x / (y * y), b);
     case Op::Pow: {
-        double v = std::pow(x, y);
         double dx = y == 0.0 ? 0.0 : y * std::pow(x, y - 1.0);
         double dy = x > 0.0 ? v * std::log(x) : 0.0; // d/dy undefined for x <= 0
         return chain2(v, dx, a, dy, b);
@@ -138,8 +138,8 @@ Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
     }
     case Op::Atan2: {
         double r2 = x * x + y * y;
-        if (r2 == 0.0) return constant(std::atan2(x, y));
-        return chain2(std::atan2(x, y), y / r2, a, -x / r2, b);
+        if (r2 == 0.0) return constant(v);
+        return chain2(v, y / r2, a, -x / r2, b);
     }
     case Op::Hypot: {
         double h = std::hypot(x, y);
@@ -152,7 +152,7 @@ Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
     default: break;
     }
     // comparisons and logic: piecewise constant
-    return constant(ops::binary(op, x, y, imm0, imm1));
+    return constant(v);
 }
 
 Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c) {

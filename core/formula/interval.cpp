@@ -3,6 +3,7 @@
 #include "noise.h"
 #include "rfunctions.h"
 #include "scalar_ops.h"
+#include "vector_math.h"
 
 #include <algorithm>
 #include <numbers>
@@ -35,8 +36,11 @@ Interval exact(double lo, double hi, bool nan) {
     return {lo, hi, nan};
 }
 
-Interval monotoneUp(double (*f)(double), const Interval& a, int ulps = 2) {
-    return make(f(a.lo), f(a.hi), a.nan, ulps);
+// Endpoints come from the same maths routines the point evaluators use.
+double V(vmath::Unary f, double x) { return vmath::eval(f, x); }
+
+Interval monotoneUp(vmath::Unary f, const Interval& a, int ulps = 2) {
+    return make(V(f, a.lo), V(f, a.hi), a.nan, ulps);
 }
 
 // Truth of an interval: 1 = surely true, 0 = surely false, -1 = unknown.
@@ -89,8 +93,8 @@ Interval sinRange(const Interval& a, bool cosine) {
     if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= 2.0 * kPi ||
         std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15)
         return {-1.0, 1.0, a.nan || std::isinf(a.lo) || std::isinf(a.hi)};
-    double fl = cosine ? std::cos(a.lo) : std::sin(a.lo);
-    double fh = cosine ? std::cos(a.hi) : std::sin(a.hi);
+    double fl = V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, a.lo);
+    double fh = V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, a.hi);
     double lo = std::min(fl, fh), hi = std::max(fl, fh);
     // maxima at phase 0 (cos) / pi/2 (sin), minima half a turn later; a small
     // slack admits an extremum that rounding might place just outside.
@@ -113,7 +117,7 @@ Interval tanRange(const Interval& a) {
     double slack = 1e-9 * (1.0 + std::max(std::abs(a.lo), std::abs(a.hi)));
     double k = std::ceil((a.lo - slack - kPi / 2.0) / kPi);
     if (kPi / 2.0 + kPi * k <= a.hi + slack) return Interval::entire(a.nan);
-    return make(std::tan(a.lo), std::tan(a.hi), a.nan);
+    return make(V(vmath::Unary::Tan, a.lo), V(vmath::Unary::Tan, a.hi), a.nan);
 }
 
 // Clip to a function's domain [dlo, dhi]: points outside are NaN.
@@ -140,7 +144,8 @@ Interval powGeneral(const Interval& a, const Interval& b) {
     if (b.lo == b.hi && b.lo == std::trunc(b.lo) && std::abs(b.lo) <= 1024.0 && !b.nan)
         return powi(a, static_cast<int>(b.lo));
     Interval m = absRange(a);
-    double c[4] = {std::pow(m.lo, b.lo), std::pow(m.lo, b.hi), std::pow(m.hi, b.lo), std::pow(m.hi, b.hi)};
+    auto P = [](double x, double y) { return vmath::eval(vmath::Binary::Pow, x, y); };
+    double c[4] = {P(m.lo, b.lo), P(m.lo, b.hi), P(m.hi, b.lo), P(m.hi, b.hi)};
     bool nan = a.nan || b.nan;
     for (double v : c)
         if (std::isnan(v)) return Interval::entire(true);
@@ -159,8 +164,8 @@ Interval atan2Range(const Interval& y, const Interval& x) {
     // the box touches the origin or crosses the branch cut on the negative x axis
     if ((x.containsZero() && y.containsZero()) || (x.lo < 0.0 && y.containsZero()))
         return make(-kPi, kPi, nan);
-    double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo),
-                   std::atan2(y.hi, x.hi)};
+    auto A = [](double v, double u) { return vmath::eval(vmath::Binary::Atan2, v, u); };
+    double c[4] = {A(y.lo, x.lo), A(y.lo, x.hi), A(y.hi, x.lo), A(y.hi, x.hi)};
     return make(*std::min_element(c, c + 4), *std::max_element(c, c + 4), nan);
 }
 
@@ -272,13 +277,13 @@ Interval unary(Op op, const Interval& in, double imm0) {
     case Op::Sqrt:
         if (!clipDomain(a, 0.0, kInf)) return Interval::undefined();
         {
-            Interval r = monotoneUp(std::sqrt, a);
+            Interval r = make(std::sqrt(a.lo), std::sqrt(a.hi), a.nan);
             r.lo = std::max(r.lo, 0.0);
             return r;
         }
-    case Op::Cbrt: return monotoneUp(std::cbrt, a);
+    case Op::Cbrt: return monotoneUp(vmath::Unary::Cbrt, a);
     case Op::Exp: {
-        Interval r = monotoneUp(std::exp, a);
+        Interval r = monotoneUp(vmath::Unary::Exp, a);
         r.lo = std::max(r.lo, 0.0);
         return r;
     }
@@ -286,9 +291,9 @@ Interval unary(Op op, const Interval& in, double imm0) {
     case Op::Log2:
     case Op::Log10: {
         if (!clipDomain(a, 0.0, kInf)) return Interval::undefined();
-        double (*f)(double) = op == Op::Log ? static_cast<double (*)(double)>(std::log)
-                              : op == Op::Log2 ? static_cast<double (*)(double)>(std::log2)
-                                               : static_cast<double (*)(double)>(std::log10);
+        vmath::Unary f = op == Op::Log    ? vmath::Unary::Log
+                         : op == Op::Log2 ? vmath::Unary::Log2
+                                          : vmath::Unary::Log10;
         return monotoneUp(f, a);
     }
     case Op::Sin: return sinRange(a, false);
@@ -296,20 +301,20 @@ Interval unary(Op op, const Interval& in, double imm0) {
     case Op::Tan: return tanRange(a);
     case Op::Asin:
         if (!clipDomain(a, -1.0, 1.0)) return Interval::undefined();
-        return monotoneUp(std::asin, a);
+        return monotoneUp(vmath::Unary::Asin, a);
     case Op::Acos: {
         if (!clipDomain(a, -1.0, 1.0)) return Interval::undefined();
-        return make(std::acos(a.hi), std::acos(a.lo), a.nan);
+        return make(V(vmath::Unary::Acos, a.hi), V(vmath::Unary::Acos, a.lo), a.nan);
     }
-    case Op::Atan: return monotoneUp(std::atan, a);
-    case Op::Sinh: return monotoneUp(std::sinh, a);
+    case Op::Atan: return monotoneUp(vmath::Unary::Atan, a);
+    case Op::Sinh: return monotoneUp(vmath::Unary::Sinh, a);
     case Op::Cosh: {
-        double l = std::cosh(a.lo), h = std::cosh(a.hi);
+        double l = V(vmath::Unary::Cosh, a.lo), h = V(vmath::Unary::Cosh, a.hi);
         if (a.containsZero()) return make(1.0, std::max(l, h), a.nan);
         return make(std::min(l, h), std::max(l, h), a.nan);
     }
     case Op::Tanh: {
-        Interval r = monotoneUp(std::tanh, a);
+        Interval r = monotoneUp(vmath::Unary::Tanh, a);
         r.lo = std::max(r.lo, -1.0);
         r.hi = std::min(r.hi, 1.0);
         return r;

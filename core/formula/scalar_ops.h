@@ -7,6 +7,7 @@
 #include "noise.h"
 #include "opcodes.h"
 #include "rfunctions.h"
+#include "vector_math.h"
 
 #include <cmath>
 
@@ -49,20 +50,20 @@ inline double unary(Op op, double a, double imm0) {
     case Op::Abs: return std::fabs(a);
     case Op::Square: return a * a;
     case Op::Sqrt: return std::sqrt(a);
-    case Op::Cbrt: return std::cbrt(a);
-    case Op::Exp: return std::exp(a);
-    case Op::Log: return std::log(a);
-    case Op::Log2: return std::log2(a);
-    case Op::Log10: return std::log10(a);
-    case Op::Sin: return std::sin(a);
-    case Op::Cos: return std::cos(a);
-    case Op::Tan: return std::tan(a);
-    case Op::Asin: return std::asin(a);
-    case Op::Acos: return std::acos(a);
-    case Op::Atan: return std::atan(a);
-    case Op::Sinh: return std::sinh(a);
-    case Op::Cosh: return std::cosh(a);
-    case Op::Tanh: return std::tanh(a);
+    case Op::Cbrt: return vmath::eval(vmath::Unary::Cbrt, a);
+    case Op::Exp: return vmath::eval(vmath::Unary::Exp, a);
+    case Op::Log: return vmath::eval(vmath::Unary::Log, a);
+    case Op::Log2: return vmath::eval(vmath::Unary::Log2, a);
+    case Op::Log10: return vmath::eval(vmath::Unary::Log10, a);
+    case Op::Sin: return vmath::eval(vmath::Unary::Sin, a);
+    case Op::Cos: return vmath::eval(vmath::Unary::Cos, a);
+    case Op::Tan: return vmath::eval(vmath::Unary::Tan, a);
+    case Op::Asin: return vmath::eval(vmath::Unary::Asin, a);
+    case Op::Acos: return vmath::eval(vmath::Unary::Acos, a);
+    case Op::Atan: return vmath::eval(vmath::Unary::Atan, a);
+    case Op::Sinh: return vmath::eval(vmath::Unary::Sinh, a);
+    case Op::Cosh: return vmath::eval(vmath::Unary::Cosh, a);
+    case Op::Tanh: return vmath::eval(vmath::Unary::Tanh, a);
     case Op::Floor: return std::floor(a);
     case Op::Ceil: return std::ceil(a);
     case Op::Round: return std::round(a);
@@ -79,10 +80,10 @@ inline double binary(Op op, double a, double b, double imm0, double imm1) {
     case Op::Sub: return a - b;
     case Op::Mul: return a * b;
     case Op::Div: return a / b;
-    case Op::Pow: return std::pow(a, b);
+    case Op::Pow: return vmath::eval(vmath::Binary::Pow, a, b);
     case Op::Min: return min(a, b);
     case Op::Max: return max(a, b);
-    case Op::Atan2: return std::atan2(a, b);
+    case Op::Atan2: return vmath::eval(vmath::Binary::Atan2, a, b);
     case Op::Hypot: return std::hypot(a, b);
     case Op::Mod: return mod(a, b);
     case Op::Less: return a < b ? 1.0 : 0.0;

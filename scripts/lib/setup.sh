@@ -10,7 +10,7 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev libmuparser-dev
-  libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
+  libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
   qt6-base-dev qt6-3d-dev qt6-websockets-dev
   xvfb xauth libgl1-mesa-dri
   clang libclang-rt-14-dev

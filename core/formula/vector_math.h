@@ -1,0 +1,59 @@
+#pragma once
+// Transcendental functions for every evaluator, from SLEEF (bounded 1-ulp
+// error, vectorised). The batch evaluator calls the array forms (4 lanes with
+// AVX2+FMA, 2 with SSE2, chosen once at start-up from the CPU); everything
+// else — the scalar evaluator, the constant folder, the interval endpoints —
+// calls the scalar form of the *same* SLEEF variant, so all evaluators agree
+// bit for bit on every machine (checked by the batch-versus-scalar tests).
+#include <cstddef>
+#include <cstdint>
+
+namespace fl::formula::vmath {
+
+// X(name, sleef-name)
+#define FL_VMATH_UNARY(X)                                                                          \
+    X(Sin, sin) X(Cos, cos) X(Tan, tan) X(Asin, asin) X(Acos, acos) X(Atan, atan) X(Exp, exp)      \
+        X(Log, log) X(Log2, log2) X(Log10, log10) X(Sinh, sinh) X(Cosh, cosh) X(Tanh, tanh)        \
+            X(Cbrt, cbrt)
+#define FL_VMATH_BINARY(X) X(Atan2, atan2) X(Pow, pow)
+
+enum class Unary : std::uint8_t {
+#define FL_VMATH_ENUM(name, sleef) name,
+    FL_VMATH_UNARY(FL_VMATH_ENUM)
+#undef FL_VMATH_ENUM
+        Count
+};
+enum class Binary : std::uint8_t {
+#define FL_VMATH_ENUM(name, sleef) name,
+    FL_VMATH_BINARY(FL_VMATH_ENUM)
+#undef FL_VMATH_ENUM
+        Count
+};
+
+using ScalarUnary = double (*)(double);
+using ScalarBinary = double (*)(double, double);
+using ArrayUnary = void (*)(const double* a, double* out, std::size_t n);
+// Binary arrays: either operand may be a broadcast constant (aConst / bConst).
+using ArrayBinary = void (*)(const double* a, double ca, const double* b, double cb, double* out,
+                             std::size_t n);
+
+struct Implementation {
+    const char* name;
+    ScalarUnary unary[static_cast<int>(Unary::Count)];
+    ScalarBinary binary[static_cast<int>(Binary::Count)];
+    ArrayUnary unaryArray[static_cast<int>(Unary::Count)];
+    ArrayBinary binaryArray[static_cast<int>(Binary::Count)];
+};
+
+const Implementation& implementation();
+
+inline double eval(Unary f, double a) { return implementation().unary[static_cast<int>(f)](a); }
+inline double eval(Binary f, double a, double b) {
+    return implementation().binary[static_cast<int>(f)](a, b);
+}
+
+// The two variants, for the dispatcher and for tests.
+const Implementation& sse2Implementation();
+const Implementation* avx2Implementation(); // nullptr when this CPU lacks AVX2 and FMA
+
+} // namespace fl::formula::vmath
