@@ -97,3 +97,31 @@ TEST(Batch, MultipleOutputsAndConstantOutputs) {
 
 } // namespace
 } // namespace fl::formula
+
+namespace fl::formula {
+namespace {
+
+// The fused passes ((a - c)^2, A +/- (b - c)^2) must round exactly like the
+// unfused steps: primitives with centres exercise every pattern.
+TEST(Batch, FusedSquarePassesMatchScalar) {
+    std::mt19937_64 rng(11);
+    const char* formulas[] = {
+        "sphere(0.3, -0.2, 0.1, 1)",
+        "1 - x^2 - y^2 - z^2",
+        "(x + 0.5)^2 + (y - 0.25)^2 - (z + 1)^2",
+        "x^2 + x",
+        "x + x^2",
+        "y - (x - 2)^2",
+        "torus(0.1, 0.2, 0.3, 1, 0.25) | ellipsoid(0, 0, 0, 1, 2, 3)",
+        "0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2",
+        "(x - 1)^2 * (x - 1)", // the difference is used twice: must not be fused away
+        "blob(0.1, 0.2, 0.3, 1, 2) + blob(-0.1, 0, 0.3, 1, 3) - 0.5",
+    };
+    for (const char* f : formulas) {
+        checkAgainstScalar(f, rng, 600, false);
+        checkAgainstScalar(f, rng, 600, true);
+    }
+}
+
+} // namespace
+} // namespace fl::formula
