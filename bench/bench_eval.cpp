@@ -36,7 +36,8 @@ void runFunctionLab(benchmark::State& state, const EvalFormula* f) {
 void runNative(benchmark::State& state, const EvalFormula* f) {
     std::vector<double> out(grid().size());
     for (auto _ : state) {
-        f->native(grid().x.data(), grid().y.data(), grid().z.data(), grid().t, out.data(), out.size());
+        f->native(grid().x.data(), grid().y.data(), grid().z.data(), grid().t, out.data(),
+                  out.size());
         benchmark::DoNotOptimize(out.data());
     }
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(out.size()));
@@ -54,7 +55,8 @@ void runMuParser(benchmark::State& state, const EvalFormula* f) {
 
 int registerAll() {
     for (const EvalFormula& f : evalFormulas()) {
-        benchmark::RegisterBenchmark(("eval/" + f.name + "/functionlab").c_str(), runFunctionLab, &f)
+        benchmark::RegisterBenchmark(("eval/" + f.name + "/functionlab").c_str(), runFunctionLab,
+                                     &f)
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("eval/" + f.name + "/native").c_str(), runNative, &f)
             ->Unit(benchmark::kMillisecond);

@@ -29,11 +29,14 @@ const SphereSet& spheres() {
     return s;
 }
 
-void nativeSphere(const double* x, const double* y, const double* z, double, double* out, std::size_t n) {
-    for (std::size_t i = 0; i < n; ++i) out[i] = 1.0 - x[i] * x[i] - y[i] * y[i] - z[i] * z[i];
+void nativeSphere(const double* x, const double* y, const double* z, double, double* out,
+                  std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i)
+        out[i] = 1.0 - x[i] * x[i] - y[i] * y[i] - z[i] * z[i];
 }
 
-void nativeWatermelon(const double* x, const double* y, const double* z, double, double* out, std::size_t n) {
+void nativeWatermelon(const double* x, const double* y, const double* z, double, double* out,
+                      std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) {
         double ball = 1.0 - x[i] * x[i] - y[i] * y[i] - z[i] * z[i];
         double wedge = std::min(std::min(z[i] - x[i], y[i]), z[i]);
@@ -44,10 +47,12 @@ void nativeWatermelon(const double* x, const double* y, const double* z, double,
 void nativeWatermelonColour(const double* x, const double* y, const double* z, double, double* out,
                             std::size_t n) {
     for (std::size_t i = 0; i < n; ++i)
-        out[i] = 0.01 * (std::sin(12.0 * std::atan2(x[i], z[i] + 0.04 * std::sin(25.0 * y[i]))) - 0.7);
+        out[i] =
+            0.01 * (std::sin(12.0 * std::atan2(x[i], z[i] + 0.04 * std::sin(25.0 * y[i]))) - 0.7);
 }
 
-void nativeGyroid(const double* x, const double* y, const double* z, double, double* out, std::size_t n) {
+void nativeGyroid(const double* x, const double* y, const double* z, double, double* out,
+                  std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) {
         double sx = std::sin(4.0 * x[i]), cx = std::cos(4.0 * x[i]);
         double sy = std::sin(4.0 * y[i]), cy = std::cos(4.0 * y[i]);
@@ -56,7 +61,8 @@ void nativeGyroid(const double* x, const double* y, const double* z, double, dou
     }
 }
 
-void nativeBouncing(const double* x, const double* y, const double* z, double t, double* out, std::size_t n) {
+void nativeBouncing(const double* x, const double* y, const double* z, double t, double* out,
+                    std::size_t n) {
     const double h = std::abs(std::sin(std::numbers::pi * t)) - 0.5;
     for (std::size_t i = 0; i < n; ++i) {
         double dy = y[i] - h;
@@ -64,7 +70,8 @@ void nativeBouncing(const double* x, const double* y, const double* z, double t,
     }
 }
 
-void nativeUnion50(const double* x, const double* y, const double* z, double, double* out, std::size_t n) {
+void nativeUnion50(const double* x, const double* y, const double* z, double, double* out,
+                   std::size_t n) {
     const SphereSet& s = spheres();
     for (std::size_t i = 0; i < n; ++i) {
         double best = -1e300;
@@ -89,9 +96,12 @@ std::string union50(bool muparser) {
     for (int k = 0; k < kSpheres; ++k) {
         std::string term = number(s.r2[k]) + " - ((x - " + number(s.cx[k]) + ")^2 + (y - " +
                            number(s.cy[k]) + ")^2 + (z - " + number(s.cz[k]) + ")^2)";
-        if (k == 0) src = term;
-        else if (muparser) src = "max(" + src + ", " + term + ")";
-        else src += " | " + term;
+        if (k == 0)
+            src = term;
+        else if (muparser)
+            src = "max(" + src + ", " + term + ")";
+        else
+            src += " | " + term;
     }
     return src;
 }

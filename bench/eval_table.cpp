@@ -44,7 +44,8 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
         EvalRow row;
         row.formula = f.name;
         formula::CompileResult compiled = formula::compile(f.source);
-        if (!compiled.ok()) throw std::runtime_error("benchmark formula does not compile: " + f.name);
+        if (!compiled.ok())
+            throw std::runtime_error("benchmark formula does not compile: " + f.name);
         formula::BatchEvaluator batch(*compiled.tape);
         formula::BatchInputs in;
         in.set(formula::Input::X, grid.x.data());
@@ -52,14 +53,18 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
         in.set(formula::Input::Z, grid.z.data());
         in.set(formula::Input::T, grid.t);
         row.functionlab = bestNsPerPoint([&] { batch.evaluate(in, n, ours.data()); }, n, seconds);
-        row.native = bestNsPerPoint([&] { f.native(grid.x.data(), grid.y.data(), grid.z.data(), grid.t, native.data(), n); },
-                                    n, seconds);
+        row.native = bestNsPerPoint(
+            [&] {
+                f.native(grid.x.data(), grid.y.data(), grid.z.data(), grid.t, native.data(), n);
+            },
+            n, seconds);
         for (std::size_t i = 0; i < n; ++i)
             row.maxDifference = std::max(row.maxDifference, std::abs(ours[i] - native[i]));
         if (MuParserPeer::available()) {
             MuParserPeer mp(f.muparser);
             double bulk = bestNsPerPoint([&] { mp.evaluateBulk(grid, peer.data()); }, n, seconds);
-            double single = bestNsPerPoint([&] { mp.evaluatePerPoint(grid, peer.data()); }, n, seconds);
+            double single =
+                bestNsPerPoint([&] { mp.evaluatePerPoint(grid, peer.data()); }, n, seconds);
             row.muparser = std::min(bulk, single);
             row.muparserMode = bulk <= single ? "bulk" : "per-point";
             for (std::size_t i = 0; i < n; ++i)
@@ -73,11 +78,11 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
 std::string formatEvalTable(const std::vector<EvalRow>& rows) {
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "formula", "functionlab",
-                  "native", "muparser", "vs native", "vs muparser", "max |diff|");
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "formula",
+                  "functionlab", "native", "muparser", "vs native", "vs muparser", "max |diff|");
     out += line;
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "", "ns/point", "ns/point",
-                  "ns/point", "(x slower)", "(x faster)", "");
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "", "ns/point",
+                  "ns/point", "ns/point", "(x slower)", "(x faster)", "");
     out += line;
     for (const EvalRow& r : rows) {
         char mp[32] = "n/a", speed[32] = "n/a";
@@ -85,8 +90,9 @@ std::string formatEvalTable(const std::vector<EvalRow>& rows) {
             std::snprintf(mp, sizeof mp, "%.2f", r.muparser);
             std::snprintf(speed, sizeof speed, "%.1f", r.muparser / r.functionlab);
         }
-        std::snprintf(line, sizeof line, "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e\n", r.formula.c_str(),
-                      r.functionlab, r.native, mp, r.functionlab / r.native, speed, r.maxDifference);
+        std::snprintf(line, sizeof line, "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e\n",
+                      r.formula.c_str(), r.functionlab, r.native, mp, r.functionlab / r.native,
+                      speed, r.maxDifference);
         out += line;
     }
     return out;
@@ -100,7 +106,8 @@ std::string evalTableJson(const std::vector<EvalRow>& rows) {
         char mp[32] = "null";
         if (r.muparser >= 0) std::snprintf(mp, sizeof mp, "%.4f", r.muparser);
         std::snprintf(buf, sizeof buf,
-                      "%s\n  {\"formula\": \"%s\", \"ns_per_point\": {\"functionlab\": %.4f, \"native\": %.4f, "
+                      "%s\n  {\"formula\": \"%s\", \"ns_per_point\": {\"functionlab\": %.4f, "
+                      "\"native\": %.4f, "
                       "\"muparser\": %s}}",
                       i ? "," : "", r.formula.c_str(), r.functionlab, r.native, mp);
         out += buf;

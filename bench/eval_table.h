@@ -12,7 +12,7 @@ struct EvalRow {
     std::string formula;
     double functionlab = 0; // ns per point
     double native = 0;
-    double muparser = -1;   // < 0: muParser unavailable
+    double muparser = -1;     // < 0: muParser unavailable
     std::string muparserMode; // "bulk" or "per-point", whichever was faster
     double maxDifference = 0; // largest |FunctionLab - native| over the grid (a fairness check)
 };

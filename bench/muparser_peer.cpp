@@ -20,7 +20,9 @@ struct MuParserPeer::Impl {
     std::vector<double> tArray;
 };
 
-bool MuParserPeer::available() { return true; }
+bool MuParserPeer::available() {
+    return true;
+}
 
 MuParserPeer::MuParserPeer(const std::string& expression) : impl_(std::make_unique<Impl>()) {
 #ifdef FUNCTIONLAB_HAVE_OPENMP
@@ -70,8 +72,12 @@ void MuParserPeer::evaluatePerPoint(const Grid& grid, double* out) {
 
 namespace fl::bench {
 struct MuParserPeer::Impl {};
-bool MuParserPeer::available() { return false; }
-MuParserPeer::MuParserPeer(const std::string&) { throw std::runtime_error("built without muParser"); }
+bool MuParserPeer::available() {
+    return false;
+}
+MuParserPeer::MuParserPeer(const std::string&) {
+    throw std::runtime_error("built without muParser");
+}
 MuParserPeer::~MuParserPeer() = default;
 void MuParserPeer::evaluateBulk(const Grid&, double*) {}
 void MuParserPeer::evaluatePerPoint(const Grid&, double*) {}

@@ -8,7 +8,7 @@
 namespace fl::bench {
 
 class MuParserPeer {
-public:
+  public:
     static bool available();
     // Throws std::runtime_error with muParser's message when it cannot parse.
     explicit MuParserPeer(const std::string& expression);
@@ -16,7 +16,7 @@ public:
     void evaluateBulk(const Grid& grid, double* out);
     void evaluatePerPoint(const Grid& grid, double* out);
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

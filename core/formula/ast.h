@@ -38,9 +38,9 @@ enum class BinaryOp {
 struct Expr {
     ExprKind kind = ExprKind::Number;
     SourceRange range;
-    double number = 0.0;       // Number
-    std::string name;          // Name, Call (callee)
-    SourceRange nameRange;     // Call: the callee's name only
+    double number = 0.0;   // Number
+    std::string name;      // Name, Call (callee)
+    SourceRange nameRange; // Call: the callee's name only
     UnaryOp unaryOp = UnaryOp::Negate;
     BinaryOp binaryOp = BinaryOp::Add;
     int depth = 1;             // height of this subtree, bounded by Limits::maxNestingDepth
@@ -84,8 +84,8 @@ struct ParamDecl {
     std::string name;
     SourceRange nameRange;
     SourceRange range;
-    ExprPtr defaultValue;  // constant expressions, checked by the compiler
-    ExprPtr lo;            // null when no range was given
+    ExprPtr defaultValue; // constant expressions, checked by the compiler
+    ExprPtr lo;           // null when no range was given
     ExprPtr hi;
 };
 

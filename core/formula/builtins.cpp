@@ -22,7 +22,8 @@ constexpr std::array kBuiltins = {
     BuiltinInfo{"tan", 1, 1, "tan(a)", "tangent (radians)", false},
     BuiltinInfo{"asin", 1, 1, "asin(a)", "arc sine", false},
     BuiltinInfo{"acos", 1, 1, "acos(a)", "arc cosine", false},
-    BuiltinInfo{"atan", 1, 2, "atan(a) | atan(y, x)", "arc tangent; with two arguments atan2", false},
+    BuiltinInfo{"atan", 1, 2, "atan(a) | atan(y, x)", "arc tangent; with two arguments atan2",
+                false},
     BuiltinInfo{"atan2", 2, 2, "atan2(y, x)", "angle of (x, y) in (-pi, pi]", false},
     BuiltinInfo{"sinh", 1, 1, "sinh(a)", "hyperbolic sine", false},
     BuiltinInfo{"cosh", 1, 1, "cosh(a)", "hyperbolic cosine", false},
@@ -33,7 +34,8 @@ constexpr std::array kBuiltins = {
     BuiltinInfo{"fract", 1, 1, "fract(a)", "a - floor(a)", false},
     BuiltinInfo{"sign", 1, 1, "sign(a)", "-1, 0 or 1", false},
     BuiltinInfo{"pow", 2, 2, "pow(a, b)", "a to the power b (same as a^b)", false},
-    BuiltinInfo{"hypot", 2, 3, "hypot(a, b[, c])", "sqrt(a^2 + b^2 [+ c^2]) without overflow", false},
+    BuiltinInfo{"hypot", 2, 3, "hypot(a, b[, c])", "sqrt(a^2 + b^2 [+ c^2]) without overflow",
+                false},
     BuiltinInfo{"mod", 2, 2, "mod(a, b)", "remainder with the sign of b", false},
     BuiltinInfo{"min", 2, -1, "min(a, b, ...)", "smallest argument", false},
     BuiltinInfo{"max", 2, -1, "max(a, b, ...)", "largest argument", false},
@@ -55,8 +57,7 @@ constexpr std::array kBuiltins = {
                 "rintersect(a, b) + a0 / (1 + (a/a1)^2 + (b/a2)^2)", false},
     BuiltinInfo{"morph", 3, 3, "morph(a, b, s)", "shape a at s = 0 to shape b at s = 1", false},
     // primitives (FRep: >= 0 inside), all reading x, y, z
-    BuiltinInfo{"sphere", 1, 4, "sphere(r) | sphere(cx, cy, cz, r)",
-                "r^2 - |p - c|^2", true},
+    BuiltinInfo{"sphere", 1, 4, "sphere(r) | sphere(cx, cy, cz, r)", "r^2 - |p - c|^2", true},
     BuiltinInfo{"ellipsoid", 6, 6, "ellipsoid(cx, cy, cz, a, b, c)",
                 "1 - ((x-cx)/a)^2 - ((y-cy)/b)^2 - ((z-cz)/c)^2", true},
     BuiltinInfo{"box", 3, 6, "box(hx, hy, hz) | box(cx, cy, cz, hx, hy, hz)",
@@ -70,8 +71,8 @@ constexpr std::array kBuiltins = {
     BuiltinInfo{"halfspace", 4, 4, "halfspace(a, b, c, d)", "a x + b y + c z + d", true},
     BuiltinInfo{"superellipsoid", 8, 8, "superellipsoid(cx, cy, cz, a, b, c, e1, e2)",
                 "1 - ((|x'/a|^(2/e2) + |y'/b|^(2/e2))^(e2/e1) + |z'/c|^(2/e1))", true},
-    BuiltinInfo{"blob", 5, 5, "blob(cx, cy, cz, a, b)", "a exp(-b |p - c|^2); sum blobs, subtract a threshold",
-                true},
+    BuiltinInfo{"blob", 5, 5, "blob(cx, cy, cz, a, b)",
+                "a exp(-b |p - c|^2); sum blobs, subtract a threshold", true},
 };
 
 bool requireConstant(const Val& v, int index, const char* what, BuiltinError& error) {
@@ -101,7 +102,9 @@ Val blendTerm(TapeBuilder& tb, Val a, Val b, Val a0, Val a1, Val a2) {
 
 } // namespace
 
-std::span<const BuiltinInfo> builtinTable() { return kBuiltins; }
+std::span<const BuiltinInfo> builtinTable() {
+    return kBuiltins;
+}
 
 const BuiltinInfo* findBuiltin(std::string_view name) {
     for (const BuiltinInfo& b : kBuiltins)
@@ -109,54 +112,82 @@ const BuiltinInfo* findBuiltin(std::string_view name) {
     return nullptr;
 }
 
-bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const Val> a,
-                  Val& result, BuiltinError& error) {
+bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const Val> a, Val& result,
+                  BuiltinError& error) {
     TapeBuilder& tb = ctx.tb;
     const std::string_view n = info.name;
     const std::size_t argc = a.size();
     auto unary = [&](Op op) { return tb.emit(op, a[0]); };
 
-    if (n == "abs") result = unary(Op::Abs);
-    else if (n == "sqrt") result = unary(Op::Sqrt);
-    else if (n == "cbrt") result = unary(Op::Cbrt);
-    else if (n == "exp") result = unary(Op::Exp);
-    else if (n == "log") result = unary(Op::Log);
-    else if (n == "log2") result = unary(Op::Log2);
-    else if (n == "log10") result = unary(Op::Log10);
-    else if (n == "sin") result = unary(Op::Sin);
-    else if (n == "cos") result = unary(Op::Cos);
-    else if (n == "tan") result = unary(Op::Tan);
-    else if (n == "asin") result = unary(Op::Asin);
-    else if (n == "acos") result = unary(Op::Acos);
-    else if (n == "atan") result = argc == 2 ? tb.emit(Op::Atan2, a[0], a[1]) : unary(Op::Atan);
-    else if (n == "atan2") result = tb.emit(Op::Atan2, a[0], a[1]);
-    else if (n == "sinh") result = unary(Op::Sinh);
-    else if (n == "cosh") result = unary(Op::Cosh);
-    else if (n == "tanh") result = unary(Op::Tanh);
-    else if (n == "floor") result = unary(Op::Floor);
-    else if (n == "ceil") result = unary(Op::Ceil);
-    else if (n == "round") result = unary(Op::Round);
-    else if (n == "fract") result = tb.sub(a[0], unary(Op::Floor));
-    else if (n == "sign") result = unary(Op::Sign);
-    else if (n == "pow") result = tb.power(a[0], a[1]);
+    if (n == "abs")
+        result = unary(Op::Abs);
+    else if (n == "sqrt")
+        result = unary(Op::Sqrt);
+    else if (n == "cbrt")
+        result = unary(Op::Cbrt);
+    else if (n == "exp")
+        result = unary(Op::Exp);
+    else if (n == "log")
+        result = unary(Op::Log);
+    else if (n == "log2")
+        result = unary(Op::Log2);
+    else if (n == "log10")
+        result = unary(Op::Log10);
+    else if (n == "sin")
+        result = unary(Op::Sin);
+    else if (n == "cos")
+        result = unary(Op::Cos);
+    else if (n == "tan")
+        result = unary(Op::Tan);
+    else if (n == "asin")
+        result = unary(Op::Asin);
+    else if (n == "acos")
+        result = unary(Op::Acos);
+    else if (n == "atan")
+        result = argc == 2 ? tb.emit(Op::Atan2, a[0], a[1]) : unary(Op::Atan);
+    else if (n == "atan2")
+        result = tb.emit(Op::Atan2, a[0], a[1]);
+    else if (n == "sinh")
+        result = unary(Op::Sinh);
+    else if (n == "cosh")
+        result = unary(Op::Cosh);
+    else if (n == "tanh")
+        result = unary(Op::Tanh);
+    else if (n == "floor")
+        result = unary(Op::Floor);
+    else if (n == "ceil")
+        result = unary(Op::Ceil);
+    else if (n == "round")
+        result = unary(Op::Round);
+    else if (n == "fract")
+        result = tb.sub(a[0], unary(Op::Floor));
+    else if (n == "sign")
+        result = unary(Op::Sign);
+    else if (n == "pow")
+        result = tb.power(a[0], a[1]);
     else if (n == "hypot") {
         result = tb.emit(Op::Hypot, a[0], a[1]);
         if (argc == 3) result = tb.emit(Op::Hypot, result, a[2]);
-    } else if (n == "mod") result = tb.emit(Op::Mod, a[0], a[1]);
+    } else if (n == "mod")
+        result = tb.emit(Op::Mod, a[0], a[1]);
     else if (n == "min" || n == "max") {
         Op op = n == "min" ? Op::Min : Op::Max;
         result = a[0];
-        for (std::size_t i = 1; i < argc; ++i) result = tb.emit(op, result, a[i]);
-    } else if (n == "clamp") result = tb.min(tb.max(a[0], a[1]), a[2]);
+        for (std::size_t i = 1; i < argc; ++i)
+            result = tb.emit(op, result, a[i]);
+    } else if (n == "clamp")
+        result = tb.min(tb.max(a[0], a[1]), a[2]);
     else if (n == "mix" || n == "morph") {
         // (1 - s) a + s b: exact at both ends, unlike a + s (b - a)
         result = tb.add(tb.mul(tb.sub(Val::constant(1.0), a[2]), a[0]), tb.mul(a[2], a[1]));
-    } else if (n == "step") result = tb.emit(Op::GreaterEq, a[1], a[0]);
+    } else if (n == "step")
+        result = tb.emit(Op::GreaterEq, a[1], a[0]);
     else if (n == "smoothstep") {
         Val s = tb.div(tb.sub(a[2], a[0]), tb.sub(a[1], a[0]));
         s = tb.min(tb.max(s, Val::constant(0.0)), Val::constant(1.0));
         result = tb.mul(tb.square(s), tb.sub(Val::constant(3.0), tb.mul(Val::constant(2.0), s)));
-    } else if (n == "noise") result = tb.emit(Op::Noise, a[0], a[1], a[2]);
+    } else if (n == "noise")
+        result = tb.emit(Op::Noise, a[0], a[1], a[2]);
     else if (n == "rintersect" || n == "runion") {
         double m = 0.0;
         if (argc == 3) {
@@ -169,11 +200,13 @@ bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const 
         }
         result = tb.emit(n == "rintersect" ? Op::RIntersect : Op::RUnion, a[0], a[1], {}, m, 0.0);
     } else if (n == "blend_union" || n == "blend_intersect") {
-        Val base = tb.emit(n == "blend_union" ? Op::RUnion : Op::RIntersect, a[0], a[1], {}, 0.0, 0.0);
+        Val base =
+            tb.emit(n == "blend_union" ? Op::RUnion : Op::RIntersect, a[0], a[1], {}, 0.0, 0.0);
         result = tb.add(base, blendTerm(tb, a[0], a[1], a[2], a[3], a[4]));
     } else if (n == "sphere") {
         if (argc != 1 && argc != 4) {
-            error = {-1, "sphere takes 1 argument (r) or 4 (cx, cy, cz, r)", "write sphere(1) or sphere(0, 0, 0, 1)"};
+            error = {-1, "sphere takes 1 argument (r) or 4 (cx, cy, cz, r)",
+                     "write sphere(1) or sphere(0, 0, 0, 1)"};
             return false;
         }
         Local p = centred(ctx, a, argc == 4);
@@ -193,8 +226,9 @@ bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const 
         }
         Local p = centred(ctx, a, argc == 6);
         std::size_t h = argc == 6 ? 3 : 0;
-        result = tb.min(tb.min(tb.sub(a[h], tb.emit(Op::Abs, p.x)), tb.sub(a[h + 1], tb.emit(Op::Abs, p.y))),
-                        tb.sub(a[h + 2], tb.emit(Op::Abs, p.z)));
+        result = tb.min(
+            tb.min(tb.sub(a[h], tb.emit(Op::Abs, p.x)), tb.sub(a[h + 1], tb.emit(Op::Abs, p.y))),
+            tb.sub(a[h + 2], tb.emit(Op::Abs, p.z)));
     } else if (n == "cylinder" || n == "cone" || n == "torus") {
         if (argc != 2 && argc != 5) {
             error = {-1, std::string(n) + " takes 2 arguments or 5 (cx, cy, cz and two sizes)",
@@ -210,14 +244,15 @@ bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const 
         } else if (n == "cone") {
             // radius shrinks linearly from s1 at the base to 0 at the apex
             Val half = tb.mul(s2, Val::constant(0.5));
-            Val fromApex = tb.sub(half, p.y);                       // 0 at apex, h at base
+            Val fromApex = tb.sub(half, p.y); // 0 at apex, h at base
             Val side = tb.sub(tb.mul(tb.div(s1, s2), fromApex), radial);
             result = tb.min(side, tb.add(p.y, half));
         } else {
             result = tb.sub(tb.sub(tb.square(s2), tb.square(tb.sub(radial, s1))), tb.square(p.y));
         }
     } else if (n == "halfspace") {
-        result = tb.add(tb.add(tb.add(tb.mul(a[0], ctx.x), tb.mul(a[1], ctx.y)), tb.mul(a[2], ctx.z)), a[3]);
+        result = tb.add(
+            tb.add(tb.add(tb.mul(a[0], ctx.x), tb.mul(a[1], ctx.y)), tb.mul(a[2], ctx.z)), a[3]);
     } else if (n == "superellipsoid") {
         Local p = centred(ctx, a, true);
         Val e1 = a[6], e2 = a[7];

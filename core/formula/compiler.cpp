@@ -14,11 +14,16 @@ namespace fl::formula {
 
 const char* definitionKindName(DefinitionKind kind) {
     switch (kind) {
-    case DefinitionKind::Generic: return "generic";
-    case DefinitionKind::Implicit: return "implicit";
-    case DefinitionKind::Parametric: return "parametric";
-    case DefinitionKind::Colour: return "colour";
-    case DefinitionKind::Force: return "force";
+    case DefinitionKind::Generic:
+        return "generic";
+    case DefinitionKind::Implicit:
+        return "implicit";
+    case DefinitionKind::Parametric:
+        return "parametric";
+    case DefinitionKind::Colour:
+        return "colour";
+    case DefinitionKind::Force:
+        return "force";
     }
     return "generic";
 }
@@ -46,7 +51,7 @@ struct Frame {
 };
 
 class Compiler {
-public:
+  public:
     Compiler(const Program& program, const CompileOptions& options, std::vector<Diagnostic>& diags)
         : program_(program), options_(options), diags_(diags) {}
 
@@ -60,7 +65,8 @@ public:
             std::vector<TapeBuilder::Output> outputs;
             executeTop(top, outputs);
             if (hasErrors(diags_)) return std::nullopt;
-            for (Diagnostic& w : tb_.foldWarnings()) diags_.push_back(std::move(w));
+            for (Diagnostic& w : tb_.foldWarnings())
+                diags_.push_back(std::move(w));
             Tape tape = tb_.finish(outputs, params_);
             if (tape.code.size() > options_.limits.maxTapeSize) tooLarge(tape.code.size());
             return tape;
@@ -69,7 +75,7 @@ public:
         }
     }
 
-private:
+  private:
     const Program& program_;
     const CompileOptions& options_;
     std::vector<Diagnostic>& diags_;
@@ -90,9 +96,10 @@ private:
         diags_.push_back({Severity::Warning, r, std::move(msg), std::move(hint)});
     }
     [[noreturn]] void tooLarge(std::size_t n) {
-        error(tb_.origin(), "formula is too large: " + std::to_string(n) +
-                                " operations after unrolling (the limit is " +
-                                std::to_string(options_.limits.maxTapeSize) + ")",
+        error(tb_.origin(),
+              "formula is too large: " + std::to_string(n) +
+                  " operations after unrolling (the limit is " +
+                  std::to_string(options_.limits.maxTapeSize) + ")",
               "reduce loop counts or split the definition");
         throw Abort{};
     }
@@ -112,10 +119,14 @@ private:
 
     std::vector<std::string> outputNames() const {
         switch (kind()) {
-        case DefinitionKind::Parametric: return {"x", "y", "z"};
-        case DefinitionKind::Colour: return {"r", "g", "b"};
-        case DefinitionKind::Force: return {"fx", "fy", "fz"};
-        default: return {};
+        case DefinitionKind::Parametric:
+            return {"x", "y", "z"};
+        case DefinitionKind::Colour:
+            return {"r", "g", "b"};
+        case DefinitionKind::Force:
+            return {"fx", "fy", "fz"};
+        default:
+            return {};
         }
     }
     bool isOutputName(std::string_view name) const {
@@ -126,12 +137,17 @@ private:
 
     void declareInputs() {
         auto allow = [&](std::initializer_list<Input> inputs) {
-            for (Input i : inputs) inputAvailable_[static_cast<int>(i)] = true;
+            for (Input i : inputs)
+                inputAvailable_[static_cast<int>(i)] = true;
         };
         switch (kind()) {
         case DefinitionKind::Implicit:
-        case DefinitionKind::Force: allow({Input::X, Input::Y, Input::Z, Input::T}); break;
-        case DefinitionKind::Parametric: allow({Input::U, Input::V, Input::W, Input::T}); break;
+        case DefinitionKind::Force:
+            allow({Input::X, Input::Y, Input::Z, Input::T});
+            break;
+        case DefinitionKind::Parametric:
+            allow({Input::U, Input::V, Input::W, Input::T});
+            break;
         case DefinitionKind::Colour:
         case DefinitionKind::Generic:
             allow({Input::X, Input::Y, Input::Z, Input::T, Input::U, Input::V, Input::W});
@@ -190,14 +206,17 @@ private:
                       "remove one declaration");
                 continue;
             }
-            double def = d.defaultValue ? constantExpression(*d.defaultValue, "a parameter's default").c : 0.0;
+            double def = d.defaultValue
+                             ? constantExpression(*d.defaultValue, "a parameter's default").c
+                             : 0.0;
             double lo = 0, hi = 0;
             bool hasRange = d.lo && d.hi;
             if (hasRange) {
                 lo = constantExpression(*d.lo, "a parameter's range").c;
                 hi = constantExpression(*d.hi, "a parameter's range").c;
                 if (!(lo <= hi)) {
-                    error(d.range, "the range of '" + d.name + "' is empty (low end above high end)",
+                    error(d.range,
+                          "the range of '" + d.name + "' is empty (low end above high end)",
                           "write the range as [low, high]");
                 } else if (!(def >= lo && def <= hi)) {
                     warning(d.range, "the default of '" + d.name + "' lies outside its range",
@@ -212,7 +231,8 @@ private:
         for (const FunctionDecl& f : program_.functions) {
             if (reservedName(f.name, f.nameRange, "function name")) continue;
             if (functions_.count(f.name)) {
-                error(f.nameRange, "function '" + f.name + "' is defined twice", "rename one of them");
+                error(f.nameRange, "function '" + f.name + "' is defined twice",
+                      "rename one of them");
                 continue;
             }
             for (std::size_t i = 0; i < f.params.size(); ++i) {
@@ -227,10 +247,12 @@ private:
 
     std::vector<std::string> knownNames(const Frame& frame) const {
         std::vector<std::string> names;
-        for (const auto& [n, v] : frame.vars) names.push_back(n);
+        for (const auto& [n, v] : frame.vars)
+            names.push_back(n);
         for (int i = 0; i < kInputCount; ++i)
             if (inputAvailable_[i]) names.push_back(kInputNames[i]);
-        for (const ParameterInfo& p : params_) names.push_back(p.name);
+        for (const ParameterInfo& p : params_)
+            names.push_back(p.name);
         names.push_back("pi");
         names.push_back("e");
         return names;
@@ -238,8 +260,10 @@ private:
 
     std::vector<std::string> knownFunctions() const {
         std::vector<std::string> names;
-        for (const BuiltinInfo& b : builtinTable()) names.emplace_back(b.name);
-        for (const auto& [n, f] : functions_) names.push_back(n);
+        for (const BuiltinInfo& b : builtinTable())
+            names.emplace_back(b.name);
+        for (const auto& [n, f] : functions_)
+            names.push_back(n);
         return names;
     }
 
@@ -256,7 +280,8 @@ private:
             if (s.kind == StmtKind::ExprStmt && i + 1 == stmts.size()) {
                 // a final bare expression is the definition's value
                 if (isDone(top)) {
-                    warning(s.range, "this expression is never reached: every path returned before it",
+                    warning(s.range,
+                            "this expression is never reached: every path returned before it",
                             "remove it");
                     break;
                 }
@@ -353,16 +378,26 @@ private:
         tb_.setOrigin(s.range);
         checkSize();
         switch (s.kind) {
-        case StmtKind::Assign: assign(s, f); break;
-        case StmtKind::Block: execBlock(s.body, f); break;
+        case StmtKind::Assign:
+            assign(s, f);
+            break;
+        case StmtKind::Block:
+            execBlock(s.body, f);
+            break;
         case StmtKind::ExprStmt:
             expr(*s.value, f);
             warning(s.range, "the value of this expression is not used",
                     "assign it to a name, or 'return' it");
             break;
-        case StmtKind::Return: doReturn(s, f); break;
-        case StmtKind::If: doIf(s, f); break;
-        case StmtKind::For: doFor(s, f); break;
+        case StmtKind::Return:
+            doReturn(s, f);
+            break;
+        case StmtKind::If:
+            doIf(s, f);
+            break;
+        case StmtKind::For:
+            doFor(s, f);
+            break;
         }
     }
 
@@ -373,12 +408,14 @@ private:
         if (in >= 0 && inputAvailable_[in] && !isOutputCoordinate) {
             error(s.nameRange, "'" + name + "' is an input coordinate here and cannot be assigned",
                   kind() == DefinitionKind::Implicit || kind() == DefinitionKind::Generic
-                      ? "use a new name such as " + name + "1; to write parametric x, y, z use a parametric definition"
+                      ? "use a new name such as " + name +
+                            "1; to write parametric x, y, z use a parametric definition"
                       : "use a new name such as " + name + "1");
             return;
         }
         if (paramVals_.count(name)) {
-            error(s.nameRange, "'" + name + "' is a parameter and cannot be changed inside the formula",
+            error(s.nameRange,
+                  "'" + name + "' is a parameter and cannot be changed inside the formula",
                   "use a local variable with another name");
             return;
         }
@@ -395,11 +432,20 @@ private:
             }
             tb_.setOrigin(s.range);
             switch (s.assignOp) {
-            case AssignOp::Add: value = tb_.add(*old, value); break;
-            case AssignOp::Sub: value = tb_.sub(*old, value); break;
-            case AssignOp::Mul: value = tb_.mul(*old, value); break;
-            case AssignOp::Div: value = tb_.div(*old, value); break;
-            case AssignOp::Set: break;
+            case AssignOp::Add:
+                value = tb_.add(*old, value);
+                break;
+            case AssignOp::Sub:
+                value = tb_.sub(*old, value);
+                break;
+            case AssignOp::Mul:
+                value = tb_.mul(*old, value);
+                break;
+            case AssignOp::Div:
+                value = tb_.div(*old, value);
+                break;
+            case AssignOp::Set:
+                break;
             }
         }
         // After a conditional return, paths that returned keep the old value;
@@ -415,8 +461,9 @@ private:
     void doReturn(const Stmt& s, Frame& f) {
         if (kind() != DefinitionKind::Generic && kind() != DefinitionKind::Implicit &&
             kind() != DefinitionKind::Colour && f.functionName.empty()) {
-            error(s.range, std::string("'return' has no meaning in a ") + definitionKindName(kind()) +
-                               " definition",
+            error(s.range,
+                  std::string("'return' has no meaning in a ") + definitionKindName(kind()) +
+                      " definition",
                   "assign the outputs " + outputNames()[0] + ", " + outputNames()[1] + ", " +
                       outputNames()[2] + " instead");
             return;
@@ -432,8 +479,10 @@ private:
     void doIf(const Stmt& s, Frame& f) {
         Val cond = expr(*s.value, f);
         if (cond.isConst()) {
-            if (cond.c < 0.0 || cond.c > 0.0) execBlock(s.body, f);
-            else if (s.hasElse) execBlock(s.elseBody, f);
+            if (cond.c < 0.0 || cond.c > 0.0)
+                execBlock(s.body, f);
+            else if (s.hasElse)
+                execBlock(s.elseBody, f);
             return;
         }
         Frame before = f;
@@ -502,9 +551,10 @@ private:
             }
             if (!(c.c < 0.0 || c.c > 0.0)) break;
             if (++unrolled_ > options_.limits.maxUnrolledIterations) {
-                error(s.range, "loops unroll to more than " +
-                                   std::to_string(options_.limits.maxUnrolledIterations) +
-                                   " iterations in total",
+                error(s.range,
+                      "loops unroll to more than " +
+                          std::to_string(options_.limits.maxUnrolledIterations) +
+                          " iterations in total",
                       "use fewer iterations or a closed-form expression");
                 throw Abort{};
             }
@@ -514,7 +564,8 @@ private:
             assign(*s.step, f);
             if (hasErrors(diags_)) throw Abort{};
             if (!f.vars[var].value.isConst()) {
-                error(s.step->range, "the loop step must change the loop variable by a known amount",
+                error(s.step->range,
+                      "the loop step must change the loop variable by a known amount",
                       "write: i++ or i += 1");
                 throw Abort{};
             }
@@ -527,7 +578,8 @@ private:
         const std::string& name = e.name;
         if (auto it = f.vars.find(name); it != f.vars.end()) {
             if (it->second.maybeUndefined) {
-                error(e.range, "'" + name + "' may have no value here: it is assigned only on some paths",
+                error(e.range,
+                      "'" + name + "' may have no value here: it is assigned only on some paths",
                       "assign it before the 'if', or in every branch");
                 return Val::constant(0.0);
             }
@@ -537,14 +589,17 @@ private:
         if (in >= 0) {
             if (inputAvailable_[in]) return tb_.input(static_cast<Input>(in));
             if (isOutputName(name)) {
-                error(e.range, "'" + name + "' is an output of this " + definitionKindName(kind()) +
-                                   " definition and has no value yet",
+                error(e.range,
+                      "'" + name + "' is an output of this " + definitionKindName(kind()) +
+                          " definition and has no value yet",
                       "assign " + name + " before reading it");
             } else {
-                error(e.range, "'" + name + "' is not available in a " + definitionKindName(kind()) +
-                                   " definition",
-                      kind() == DefinitionKind::Parametric ? "parametric definitions use u, v, w and t"
-                                                           : "use x, y, z and t");
+                error(e.range,
+                      "'" + name + "' is not available in a " + definitionKindName(kind()) +
+                          " definition",
+                      kind() == DefinitionKind::Parametric
+                          ? "parametric definitions use u, v, w and t"
+                          : "use x, y, z and t");
             }
             return Val::constant(0.0);
         }
@@ -574,16 +629,21 @@ private:
 
     Val expr(const Expr& e, Frame& f) {
         switch (e.kind) {
-        case ExprKind::Number: return Val::constant(e.number);
-        case ExprKind::Name: return readName(e, f);
+        case ExprKind::Number:
+            return Val::constant(e.number);
+        case ExprKind::Name:
+            return readName(e, f);
         case ExprKind::Unary: {
             Val a = expr(*e.args[0], f);
             tb_.setOrigin(e.range);
             switch (e.unaryOp) {
-            case UnaryOp::Plus: return a;
+            case UnaryOp::Plus:
+                return a;
             case UnaryOp::Negate:
-            case UnaryOp::Complement: return tb_.neg(a);
-            case UnaryOp::Not: return tb_.emit(Op::Not, a);
+            case UnaryOp::Complement:
+                return tb_.neg(a);
+            case UnaryOp::Not:
+                return tb_.emit(Op::Not, a);
             }
             return a;
         }
@@ -592,22 +652,36 @@ private:
             Val b = expr(*e.args[1], f);
             tb_.setOrigin(e.range);
             switch (e.binaryOp) {
-            case BinaryOp::Add: return tb_.add(a, b);
-            case BinaryOp::Sub: return tb_.sub(a, b);
-            case BinaryOp::Mul: return tb_.mul(a, b);
-            case BinaryOp::Div: return tb_.div(a, b);
-            case BinaryOp::Pow: return tb_.power(a, b);
-            case BinaryOp::Less: return tb_.emit(Op::Less, a, b);
-            case BinaryOp::LessEqual: return tb_.emit(Op::LessEq, a, b);
-            case BinaryOp::Greater: return tb_.emit(Op::Greater, a, b);
-            case BinaryOp::GreaterEqual: return tb_.emit(Op::GreaterEq, a, b);
-            case BinaryOp::Equal: return tb_.emit(Op::Equal, a, b);
-            case BinaryOp::NotEqual: return tb_.emit(Op::NotEqual, a, b);
-            case BinaryOp::And: return tb_.emit(Op::And, a, b);
-            case BinaryOp::Or: return tb_.emit(Op::Or, a, b);
+            case BinaryOp::Add:
+                return tb_.add(a, b);
+            case BinaryOp::Sub:
+                return tb_.sub(a, b);
+            case BinaryOp::Mul:
+                return tb_.mul(a, b);
+            case BinaryOp::Div:
+                return tb_.div(a, b);
+            case BinaryOp::Pow:
+                return tb_.power(a, b);
+            case BinaryOp::Less:
+                return tb_.emit(Op::Less, a, b);
+            case BinaryOp::LessEqual:
+                return tb_.emit(Op::LessEq, a, b);
+            case BinaryOp::Greater:
+                return tb_.emit(Op::Greater, a, b);
+            case BinaryOp::GreaterEqual:
+                return tb_.emit(Op::GreaterEq, a, b);
+            case BinaryOp::Equal:
+                return tb_.emit(Op::Equal, a, b);
+            case BinaryOp::NotEqual:
+                return tb_.emit(Op::NotEqual, a, b);
+            case BinaryOp::And:
+                return tb_.emit(Op::And, a, b);
+            case BinaryOp::Or:
+                return tb_.emit(Op::Or, a, b);
             case BinaryOp::Intersect:
             case BinaryOp::Union:
-            case BinaryOp::Difference: return setOp(e.binaryOp, a, b);
+            case BinaryOp::Difference:
+                return setOp(e.binaryOp, a, b);
             }
             return a;
         }
@@ -618,7 +692,8 @@ private:
             tb_.setOrigin(e.range);
             return tb_.select(c, a, b);
         }
-        case ExprKind::Call: return call(e, f);
+        case ExprKind::Call:
+            return call(e, f);
         }
         return Val::constant(0.0);
     }
@@ -631,10 +706,12 @@ private:
         const std::string& name = e.name;
         std::vector<Val> args;
         args.reserve(e.args.size());
-        for (const ExprPtr& a : e.args) args.push_back(expr(*a, f));
+        for (const ExprPtr& a : e.args)
+            args.push_back(expr(*a, f));
         tb_.setOrigin(e.range);
 
-        if (auto fit = functions_.find(name); fit != functions_.end()) return callUser(*fit->second, e, args);
+        if (auto fit = functions_.find(name); fit != functions_.end())
+            return callUser(*fit->second, e, args);
 
         const BuiltinInfo* info = findBuiltin(name);
         if (!info) {
@@ -651,21 +728,22 @@ private:
         }
         int argc = static_cast<int>(args.size());
         if (argc < info->minArgs || (info->maxArgs >= 0 && argc > info->maxArgs)) {
-            std::string expected = info->minArgs == info->maxArgs
-                                       ? plural(info->minArgs, "argument")
-                                   : info->maxArgs < 0
-                                       ? "at least " + plural(info->minArgs, "argument")
-                                       : std::to_string(info->minArgs) + " to " +
-                                             plural(info->maxArgs, "argument");
-            error(e.range, "'" + name + "' takes " + expected + " but was given " + std::to_string(argc),
+            std::string expected =
+                info->minArgs == info->maxArgs ? plural(info->minArgs, "argument")
+                : info->maxArgs < 0
+                    ? "at least " + plural(info->minArgs, "argument")
+                    : std::to_string(info->minArgs) + " to " + plural(info->maxArgs, "argument");
+            error(e.range,
+                  "'" + name + "' takes " + expected + " but was given " + std::to_string(argc),
                   "use " + std::string(info->signature));
             return Val::constant(0.0);
         }
         BuiltinContext ctx{tb_, {}, {}, {}};
         if (info->readsCoordinates) {
             if (!inputAvailable_[0]) {
-                error(e.nameRange, "'" + name + "' reads x, y, z, which a " + definitionKindName(kind()) +
-                                       " definition does not have",
+                error(e.nameRange,
+                      "'" + name + "' reads x, y, z, which a " + definitionKindName(kind()) +
+                          " definition does not have",
                       "use primitives in implicit definitions");
                 return Val::constant(0.0);
             }
@@ -686,8 +764,9 @@ private:
 
     Val callUser(const FunctionDecl& fn, const Expr& e, const std::vector<Val>& args) {
         if (args.size() != fn.params.size()) {
-            error(e.range, "'" + fn.name + "' takes " + plural(fn.params.size(), "argument") +
-                               " but was given " + std::to_string(args.size()),
+            error(e.range,
+                  "'" + fn.name + "' takes " + plural(fn.params.size(), "argument") +
+                      " but was given " + std::to_string(args.size()),
                   "see its definition at line " + std::to_string(fn.nameRange.begin.line));
             return Val::constant(0.0);
         }

@@ -62,14 +62,16 @@ std::string formatDiagnostic(const Diagnostic& d, std::string_view source,
     out += text;
     out += "\n  ";
     int col = std::max(1, d.range.begin.column);
-    for (int i = 1; i < col; ++i) out += (i - 1 < int(text.size()) && text[i - 1] == '\t') ? '\t' : ' ';
+    for (int i = 1; i < col; ++i)
+        out += (i - 1 < int(text.size()) && text[i - 1] == '\t') ? '\t' : ' ';
     int width = 1;
     if (d.range.end.line == d.range.begin.line && d.range.end.column > col)
         width = d.range.end.column - col;
     else if (d.range.end.line > d.range.begin.line)
         width = std::max(1, int(text.size()) - col + 1);
     out += '^';
-    for (int i = 1; i < width; ++i) out += '~';
+    for (int i = 1; i < width; ++i)
+        out += '~';
     out += '\n';
     return out;
 }

@@ -34,27 +34,34 @@ using Step = BatchEvaluator::Step;
 
 template <typename F>
 inline void unaryLoop(double* __restrict o, const double* __restrict a, std::size_t n, F f) {
-    for (std::size_t i = 0; i < n; ++i) o[i] = f(a[i]);
+    for (std::size_t i = 0; i < n; ++i)
+        o[i] = f(a[i]);
 }
 
 template <typename F>
-inline void binaryLoop(const Step& s, double* const* base, double* __restrict o, std::size_t n, F f) {
+inline void binaryLoop(const Step& s, double* const* base, double* __restrict o, std::size_t n,
+                       F f) {
     if (s.constA) {
         const double ca = s.ca;
         const double* __restrict b = base[s.b];
-        for (std::size_t i = 0; i < n; ++i) o[i] = f(ca, b[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            o[i] = f(ca, b[i]);
     } else if (s.constB) {
         const double cb = s.cb;
         const double* __restrict a = base[s.a];
-        for (std::size_t i = 0; i < n; ++i) o[i] = f(a[i], cb);
+        for (std::size_t i = 0; i < n; ++i)
+            o[i] = f(a[i], cb);
     } else {
         const double* __restrict a = base[s.a];
         const double* __restrict b = base[s.b];
-        for (std::size_t i = 0; i < n; ++i) o[i] = f(a[i], b[i]);
+        for (std::size_t i = 0; i < n; ++i)
+            o[i] = f(a[i], b[i]);
     }
 }
 
-inline double cmpResult(bool v) { return v ? 1.0 : 0.0; }
+inline double cmpResult(bool v) {
+    return v ? 1.0 : 0.0;
+}
 
 // Number of reads of each step's result before its register is written again
 // (a final output counts as one more read).
@@ -78,7 +85,8 @@ std::vector<int> useCounts(const std::vector<Step>& steps, const Tape& tape) {
 }
 
 // Whether register `reg` is written by any step in (from, to).
-bool writtenBetween(const std::vector<Step>& steps, std::size_t from, std::size_t to, std::int32_t reg) {
+bool writtenBetween(const std::vector<Step>& steps, std::size_t from, std::size_t to,
+                    std::int32_t reg) {
     for (std::size_t k = from + 1; k < to; ++k)
         if (steps[k].out == reg) return true;
     return false;
@@ -104,12 +112,14 @@ void fuseSquares(std::vector<Step>& steps, const Tape& tape) {
             if (d < 0 || dead[d] || uses[d] != 1) continue;
             const Step& diff = steps[d];
             bool sub = diff.op == Op::Sub && !diff.constA && diff.constB;
-            bool add = diff.op == Op::Add && ((!diff.constA && diff.constB) || (diff.constA && !diff.constB));
+            bool add = diff.op == Op::Add &&
+                       ((!diff.constA && diff.constB) || (diff.constA && !diff.constB));
             if ((!sub && !add) || diff.fused != Fused::None) continue;
             std::int32_t reg = diff.constA ? diff.b : diff.a;
             double c = diff.constA ? diff.ca : diff.cb;
             if (add) c = -c; // x + c == x - (-c) exactly (IEEE subtraction adds the negation)
-            if (writtenBetween(steps, static_cast<std::size_t>(d), i, reg) || s.out == reg) continue;
+            if (writtenBetween(steps, static_cast<std::size_t>(d), i, reg) || s.out == reg)
+                continue;
             s.fused = Fused::SquareOfDiff;
             s.a = reg;
             s.ca = c;
@@ -132,7 +142,8 @@ void fuseSquares(std::vector<Step>& steps, const Tape& tape) {
             bool ofDiff = sq.op == Op::Square && sq.fused == Fused::SquareOfDiff;
             if (!plain && !ofDiff) continue;
             std::int32_t base = sq.a;
-            if (writtenBetween(steps, static_cast<std::size_t>(q), i, base) || s.out == base) continue;
+            if (writtenBetween(steps, static_cast<std::size_t>(q), i, base) || s.out == base)
+                continue;
             // the other operand becomes A
             if (side == 0) {
                 s.constA = s.constB;
@@ -184,20 +195,24 @@ BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape) {
     workspace_ = static_cast<double*>(std::aligned_alloc(64, bytes));
     if (!workspace_) throw std::bad_alloc();
     std::memset(workspace_, 0, bytes);
-    for (int k = 0; k < 3; ++k) scratch_[k] = workspace_ + (regs + k) * kBlock;
+    for (int k = 0; k < 3; ++k)
+        scratch_[k] = workspace_ + (regs + k) * kBlock;
     uniformValue_.assign(regs, 0.0);
     isUniform_.assign(regs, 0);
 }
 
-BatchEvaluator::~BatchEvaluator() { std::free(workspace_); }
+BatchEvaluator::~BatchEvaluator() {
+    std::free(workspace_);
+}
 
 void BatchEvaluator::specialise(const BatchInputs& in) {
     const std::vector<double>& pv = params_.values();
     bool same = specialised_ && specialisedParams_ == pv;
     for (int i = 0; same && i < kInputCount; ++i) {
         bool varying = in.arrays[i] != nullptr;
-        same = specialisedVarying_[i] == varying &&
-               (varying || std::memcmp(&specialisedUniform_[i], &in.uniform[i], sizeof(double)) == 0);
+        same =
+            specialisedVarying_[i] == varying &&
+            (varying || std::memcmp(&specialisedUniform_[i], &in.uniform[i], sizeof(double)) == 0);
     }
     if (same) return;
 
@@ -256,90 +271,185 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
 // Compiled twice — baseline and AVX2 — and picked at load time by the CPU, so
 // the arithmetic loops run 4 lanes wide where they can. Without FMA contraction
 // (-ffp-contract=off) both clones round exactly like the scalar evaluator.
-__attribute__((target_clones("avx2", "default")))
-void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
+__attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(double* const* base,
+                                                                                std::size_t n) {
     const vmath::Implementation& vm = vmath::implementation();
     for (const Step& s : steps_) {
         double* __restrict o = base[s.out];
         switch (s.fused) {
-        case Fused::None: break;
+        case Fused::None:
+            break;
         case Fused::SquareOfDiff: {
             const double c = s.ca;
-            unaryLoop(o, base[s.a], n, [c](double a) { double d = a - c; return d * d; });
+            unaryLoop(o, base[s.a], n, [c](double a) {
+                double d = a - c;
+                return d * d;
+            });
             continue;
         }
-        case Fused::AddSquare: squareTermLoop<true>(s, base, o, n); continue;
-        case Fused::SubSquare: squareTermLoop<false>(s, base, o, n); continue;
+        case Fused::AddSquare:
+            squareTermLoop<true>(s, base, o, n);
+            continue;
+        case Fused::SubSquare:
+            squareTermLoop<false>(s, base, o, n);
+            continue;
         }
         switch (s.op) {
         // ---- unary (the operand always varies: uniform ones were folded)
-        case Op::Neg: unaryLoop(o, base[s.a], n, [](double a) { return -a; }); break;
-        case Op::Abs: unaryLoop(o, base[s.a], n, [](double a) { return std::fabs(a); }); break;
-        case Op::Square: unaryLoop(o, base[s.a], n, [](double a) { return a * a; }); break;
-        case Op::Sqrt: unaryLoop(o, base[s.a], n, [](double a) { return std::sqrt(a); }); break;
-        case Op::Cbrt: vm.unaryArray[int(vmath::Unary::Cbrt)](base[s.a], o, n); break;
-        case Op::Exp: vm.unaryArray[int(vmath::Unary::Exp)](base[s.a], o, n); break;
-        case Op::Log: vm.unaryArray[int(vmath::Unary::Log)](base[s.a], o, n); break;
-        case Op::Log2: vm.unaryArray[int(vmath::Unary::Log2)](base[s.a], o, n); break;
-        case Op::Log10: vm.unaryArray[int(vmath::Unary::Log10)](base[s.a], o, n); break;
-        case Op::Sin: vm.unaryArray[int(vmath::Unary::Sin)](base[s.a], o, n); break;
-        case Op::Cos: vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n); break;
-        case Op::Tan: vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n); break;
-        case Op::Asin: vm.unaryArray[int(vmath::Unary::Asin)](base[s.a], o, n); break;
-        case Op::Acos: vm.unaryArray[int(vmath::Unary::Acos)](base[s.a], o, n); break;
-        case Op::Atan: vm.unaryArray[int(vmath::Unary::Atan)](base[s.a], o, n); break;
-        case Op::Sinh: vm.unaryArray[int(vmath::Unary::Sinh)](base[s.a], o, n); break;
-        case Op::Cosh: vm.unaryArray[int(vmath::Unary::Cosh)](base[s.a], o, n); break;
-        case Op::Tanh: vm.unaryArray[int(vmath::Unary::Tanh)](base[s.a], o, n); break;
-        case Op::Floor: unaryLoop(o, base[s.a], n, [](double a) { return std::floor(a); }); break;
-        case Op::Ceil: unaryLoop(o, base[s.a], n, [](double a) { return std::ceil(a); }); break;
-        case Op::Round: unaryLoop(o, base[s.a], n, [](double a) { return std::round(a); }); break;
-        case Op::Sign: unaryLoop(o, base[s.a], n, [](double a) { return ops::sign(a); }); break;
-        case Op::Not: unaryLoop(o, base[s.a], n, [](double a) { return ops::truth(a) ? 0.0 : 1.0; }); break;
+        case Op::Neg:
+            unaryLoop(o, base[s.a], n, [](double a) { return -a; });
+            break;
+        case Op::Abs:
+            unaryLoop(o, base[s.a], n, [](double a) { return std::fabs(a); });
+            break;
+        case Op::Square:
+            unaryLoop(o, base[s.a], n, [](double a) { return a * a; });
+            break;
+        case Op::Sqrt:
+            unaryLoop(o, base[s.a], n, [](double a) { return std::sqrt(a); });
+            break;
+        case Op::Cbrt:
+            vm.unaryArray[int(vmath::Unary::Cbrt)](base[s.a], o, n);
+            break;
+        case Op::Exp:
+            vm.unaryArray[int(vmath::Unary::Exp)](base[s.a], o, n);
+            break;
+        case Op::Log:
+            vm.unaryArray[int(vmath::Unary::Log)](base[s.a], o, n);
+            break;
+        case Op::Log2:
+            vm.unaryArray[int(vmath::Unary::Log2)](base[s.a], o, n);
+            break;
+        case Op::Log10:
+            vm.unaryArray[int(vmath::Unary::Log10)](base[s.a], o, n);
+            break;
+        case Op::Sin:
+            vm.unaryArray[int(vmath::Unary::Sin)](base[s.a], o, n);
+            break;
+        case Op::Cos:
+            vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n);
+            break;
+        case Op::Tan:
+            vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n);
+            break;
+        case Op::Asin:
+            vm.unaryArray[int(vmath::Unary::Asin)](base[s.a], o, n);
+            break;
+        case Op::Acos:
+            vm.unaryArray[int(vmath::Unary::Acos)](base[s.a], o, n);
+            break;
+        case Op::Atan:
+            vm.unaryArray[int(vmath::Unary::Atan)](base[s.a], o, n);
+            break;
+        case Op::Sinh:
+            vm.unaryArray[int(vmath::Unary::Sinh)](base[s.a], o, n);
+            break;
+        case Op::Cosh:
+            vm.unaryArray[int(vmath::Unary::Cosh)](base[s.a], o, n);
+            break;
+        case Op::Tanh:
+            vm.unaryArray[int(vmath::Unary::Tanh)](base[s.a], o, n);
+            break;
+        case Op::Floor:
+            unaryLoop(o, base[s.a], n, [](double a) { return std::floor(a); });
+            break;
+        case Op::Ceil:
+            unaryLoop(o, base[s.a], n, [](double a) { return std::ceil(a); });
+            break;
+        case Op::Round:
+            unaryLoop(o, base[s.a], n, [](double a) { return std::round(a); });
+            break;
+        case Op::Sign:
+            unaryLoop(o, base[s.a], n, [](double a) { return ops::sign(a); });
+            break;
+        case Op::Not:
+            unaryLoop(o, base[s.a], n, [](double a) { return ops::truth(a) ? 0.0 : 1.0; });
+            break;
         case Op::PowI: {
             const int k = static_cast<int>(s.imm0);
-            if (k == 3) unaryLoop(o, base[s.a], n, [](double a) { return a * a * a; });
-            else if (k == 4) unaryLoop(o, base[s.a], n, [](double a) { double q = a * a; return q * q; });
-            else if (k == -1) unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / a; });
-            else if (k == -2) unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / (a * a); });
-            else unaryLoop(o, base[s.a], n, [k](double a) { return ops::powi(a, k); });
+            if (k == 3)
+                unaryLoop(o, base[s.a], n, [](double a) { return a * a * a; });
+            else if (k == 4)
+                unaryLoop(o, base[s.a], n, [](double a) {
+                    double q = a * a;
+                    return q * q;
+                });
+            else if (k == -1)
+                unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / a; });
+            else if (k == -2)
+                unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / (a * a); });
+            else
+                unaryLoop(o, base[s.a], n, [k](double a) { return ops::powi(a, k); });
             break;
         }
         // ---- binary
-        case Op::Add: binaryLoop(s, base, o, n, [](double a, double b) { return a + b; }); break;
-        case Op::Sub: binaryLoop(s, base, o, n, [](double a, double b) { return a - b; }); break;
-        case Op::Mul: binaryLoop(s, base, o, n, [](double a, double b) { return a * b; }); break;
-        case Op::Div: binaryLoop(s, base, o, n, [](double a, double b) { return a / b; }); break;
+        case Op::Add:
+            binaryLoop(s, base, o, n, [](double a, double b) { return a + b; });
+            break;
+        case Op::Sub:
+            binaryLoop(s, base, o, n, [](double a, double b) { return a - b; });
+            break;
+        case Op::Mul:
+            binaryLoop(s, base, o, n, [](double a, double b) { return a * b; });
+            break;
+        case Op::Div:
+            binaryLoop(s, base, o, n, [](double a, double b) { return a / b; });
+            break;
         case Op::Pow:
             vm.binaryArray[int(vmath::Binary::Pow)](s.constA ? nullptr : base[s.a], s.ca,
                                                     s.constB ? nullptr : base[s.b], s.cb, o, n);
             break;
-        case Op::Min: binaryLoop(s, base, o, n, [](double a, double b) { return ops::min(a, b); }); break;
-        case Op::Max: binaryLoop(s, base, o, n, [](double a, double b) { return ops::max(a, b); }); break;
+        case Op::Min:
+            binaryLoop(s, base, o, n, [](double a, double b) { return ops::min(a, b); });
+            break;
+        case Op::Max:
+            binaryLoop(s, base, o, n, [](double a, double b) { return ops::max(a, b); });
+            break;
         case Op::Atan2:
             vm.binaryArray[int(vmath::Binary::Atan2)](s.constA ? nullptr : base[s.a], s.ca,
                                                       s.constB ? nullptr : base[s.b], s.cb, o, n);
             break;
-        case Op::Hypot: binaryLoop(s, base, o, n, [](double a, double b) { return std::hypot(a, b); }); break;
-        case Op::Mod: binaryLoop(s, base, o, n, [](double a, double b) { return ops::mod(a, b); }); break;
-        case Op::Less: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a < b); }); break;
-        case Op::LessEq: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a <= b); }); break;
-        case Op::Greater: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a > b); }); break;
-        case Op::GreaterEq: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a >= b); }); break;
-        case Op::Equal: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a == b); }); break;
-        case Op::NotEqual: binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a != b); }); break;
+        case Op::Hypot:
+            binaryLoop(s, base, o, n, [](double a, double b) { return std::hypot(a, b); });
+            break;
+        case Op::Mod:
+            binaryLoop(s, base, o, n, [](double a, double b) { return ops::mod(a, b); });
+            break;
+        case Op::Less:
+            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a < b); });
+            break;
+        case Op::LessEq:
+            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a <= b); });
+            break;
+        case Op::Greater:
+            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a > b); });
+            break;
+        case Op::GreaterEq:
+            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a >= b); });
+            break;
+        case Op::Equal:
+            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a == b); });
+            break;
+        case Op::NotEqual:
+            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a != b); });
+            break;
         case Op::And:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(ops::truth(a) && ops::truth(b)); });
+            binaryLoop(s, base, o, n, [](double a, double b) {
+                return cmpResult(ops::truth(a) && ops::truth(b));
+            });
             break;
         case Op::Or:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(ops::truth(a) || ops::truth(b)); });
+            binaryLoop(s, base, o, n, [](double a, double b) {
+                return cmpResult(ops::truth(a) || ops::truth(b));
+            });
             break;
         case Op::RIntersect: {
             const double m = s.imm0, alpha = s.imm1;
             if (m == 0.0 && alpha == 0.0)
                 binaryLoop(s, base, o, n, [](double a, double b) { return rIntersect0(a, b); });
             else
-                binaryLoop(s, base, o, n, [m, alpha](double a, double b) { return rIntersect(a, b, m, alpha); });
+                binaryLoop(s, base, o, n,
+                           [m, alpha](double a, double b) { return rIntersect(a, b, m, alpha); });
             break;
         }
         case Op::RUnion: {
@@ -347,7 +457,8 @@ void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
             if (m == 0.0 && alpha == 0.0)
                 binaryLoop(s, base, o, n, [](double a, double b) { return rUnion0(a, b); });
             else
-                binaryLoop(s, base, o, n, [m, alpha](double a, double b) { return rUnion(a, b, m, alpha); });
+                binaryLoop(s, base, o, n,
+                           [m, alpha](double a, double b) { return rUnion(a, b, m, alpha); });
             break;
         }
         // ---- ternary: uniform operands are broadcast into scratch buffers
@@ -366,9 +477,11 @@ void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
                 }
             }
             if (s.op == Op::Select) {
-                for (std::size_t i = 0; i < n; ++i) o[i] = ops::truth(p[0][i]) ? p[1][i] : p[2][i];
+                for (std::size_t i = 0; i < n; ++i)
+                    o[i] = ops::truth(p[0][i]) ? p[1][i] : p[2][i];
             } else {
-                for (std::size_t i = 0; i < n; ++i) o[i] = noise3(p[0][i], p[1][i], p[2][i]);
+                for (std::size_t i = 0; i < n; ++i)
+                    o[i] = noise3(p[0][i], p[1][i], p[2][i]);
             }
             break;
         }
@@ -380,7 +493,8 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
     specialise(in);
     const std::size_t regs = static_cast<std::size_t>(tape_.registerCount);
     std::vector<double*> base(regs);
-    for (std::size_t r = 0; r < regs; ++r) base[r] = workspace_ + r * kBlock;
+    for (std::size_t r = 0; r < regs; ++r)
+        base[r] = workspace_ + r * kBlock;
     for (std::size_t start = 0; start < n; start += kBlock) {
         const std::size_t count = std::min(kBlock, n - start);
         for (int i = 0; i < kInputCount; ++i)
@@ -389,9 +503,12 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
         for (std::size_t k = 0; k < tape_.outputs.size(); ++k) {
             const Operand& o = tape_.outputs[k].value;
             double* dst = outputs[k] + start;
-            if (o.isConst()) std::fill(dst, dst + count, o.value);
-            else if (isUniform_[o.reg]) std::fill(dst, dst + count, uniformValue_[o.reg]);
-            else std::memcpy(dst, base[o.reg], count * sizeof(double));
+            if (o.isConst())
+                std::fill(dst, dst + count, o.value);
+            else if (isUniform_[o.reg])
+                std::fill(dst, dst + count, uniformValue_[o.reg]);
+            else
+                std::memcpy(dst, base[o.reg], count * sizeof(double));
         }
     }
 }

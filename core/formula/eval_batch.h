@@ -29,7 +29,7 @@ struct BatchInputs {
 };
 
 class BatchEvaluator {
-public:
+  public:
     static constexpr std::size_t kBlock = 256;
 
     explicit BatchEvaluator(const Tape& tape);
@@ -49,14 +49,14 @@ public:
 
     struct Step; // an instruction specialised for the current uniform inputs
 
-private:
+  private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
     std::vector<Step> steps_;
-    std::vector<double> uniformValue_;   // per register, valid where isUniform_
+    std::vector<double> uniformValue_; // per register, valid where isUniform_
     std::vector<char> isUniform_;
-    double* workspace_ = nullptr;        // registerCount * kBlock, 64-byte aligned
-    std::array<double*, 3> scratch_{};   // broadcast buffers for ternary operands
+    double* workspace_ = nullptr;      // registerCount * kBlock, 64-byte aligned
+    std::array<double*, 3> scratch_{}; // broadcast buffers for ternary operands
     // what the current specialisation was made for
     std::array<bool, kInputCount> specialisedVarying_{};
     std::array<double, kInputCount> specialisedUniform_{};

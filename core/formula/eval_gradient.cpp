@@ -16,7 +16,8 @@ namespace {
 Dual chain(double value, double fprime, const Dual& a) {
     Dual r;
     r.v = value;
-    for (int i = 0; i < 3; ++i) r.d[i] = a.d[i] == 0.0 ? 0.0 : fprime * a.d[i];
+    for (int i = 0; i < 3; ++i)
+        r.d[i] = a.d[i] == 0.0 ? 0.0 : fprime * a.d[i];
     return r;
 }
 Dual chain2(double value, double fa, const Dual& a, double fb, const Dual& b) {
@@ -83,34 +84,54 @@ Dual unary(Op op, const Dual& a, double imm0) {
     const double x = a.v;
     const double v = ops::unary(op, x, imm0);
     switch (op) {
-    case Op::Neg: return chain(v, -1.0, a);
-    case Op::Abs: return chain(v, x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0), a);
-    case Op::Square: return chain(v, 2.0 * x, a);
-    case Op::Sqrt: return chain(v, 0.5 / v, a);
-    case Op::Cbrt: return chain(v, 1.0 / (3.0 * v * v), a);
-    case Op::Exp: return chain(v, v, a);
-    case Op::Log: return chain(v, 1.0 / x, a);
-    case Op::Log2: return chain(v, 1.0 / (x * std::numbers::ln2), a);
-    case Op::Log10: return chain(v, 1.0 / (x * std::numbers::ln10), a);
-    case Op::Sin: return chain(v, std::cos(x), a);
-    case Op::Cos: return chain(v, -std::sin(x), a);
-    case Op::Tan: return chain(v, 1.0 + v * v, a);
-    case Op::Asin: return chain(v, 1.0 / std::sqrt(1.0 - x * x), a);
-    case Op::Acos: return chain(v, -1.0 / std::sqrt(1.0 - x * x), a);
-    case Op::Atan: return chain(v, 1.0 / (1.0 + x * x), a);
-    case Op::Sinh: return chain(v, std::cosh(x), a);
-    case Op::Cosh: return chain(v, std::sinh(x), a);
-    case Op::Tanh: return chain(v, 1.0 - v * v, a);
+    case Op::Neg:
+        return chain(v, -1.0, a);
+    case Op::Abs:
+        return chain(v, x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0), a);
+    case Op::Square:
+        return chain(v, 2.0 * x, a);
+    case Op::Sqrt:
+        return chain(v, 0.5 / v, a);
+    case Op::Cbrt:
+        return chain(v, 1.0 / (3.0 * v * v), a);
+    case Op::Exp:
+        return chain(v, v, a);
+    case Op::Log:
+        return chain(v, 1.0 / x, a);
+    case Op::Log2:
+        return chain(v, 1.0 / (x * std::numbers::ln2), a);
+    case Op::Log10:
+        return chain(v, 1.0 / (x * std::numbers::ln10), a);
+    case Op::Sin:
+        return chain(v, std::cos(x), a);
+    case Op::Cos:
+        return chain(v, -std::sin(x), a);
+    case Op::Tan:
+        return chain(v, 1.0 + v * v, a);
+    case Op::Asin:
+        return chain(v, 1.0 / std::sqrt(1.0 - x * x), a);
+    case Op::Acos:
+        return chain(v, -1.0 / std::sqrt(1.0 - x * x), a);
+    case Op::Atan:
+        return chain(v, 1.0 / (1.0 + x * x), a);
+    case Op::Sinh:
+        return chain(v, std::cosh(x), a);
+    case Op::Cosh:
+        return chain(v, std::sinh(x), a);
+    case Op::Tanh:
+        return chain(v, 1.0 - v * v, a);
     case Op::Floor:
     case Op::Ceil:
     case Op::Round:
     case Op::Sign:
-    case Op::Not: return constant(v);
+    case Op::Not:
+        return constant(v);
     case Op::PowI: {
         int n = static_cast<int>(imm0);
         return chain(v, n == 0 ? 0.0 : n * ops::powi(x, n - 1), a);
     }
-    default: break;
+    default:
+        break;
     }
     return constant(v);
 }
@@ -119,10 +140,14 @@ Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
     const double x = a.v, y = b.v;
     const double v = ops::binary(op, x, y, imm0, imm1); // the scalar evaluator's value, bit for bit
     switch (op) {
-    case Op::Add: return chain2(x + y, 1.0, a, 1.0, b);
-    case Op::Sub: return chain2(x - y, 1.0, a, -1.0, b);
-    case Op::Mul: return chain2(x * y, y, a, x, b);
-    case Op::Div: return chain2(x / y, 1.0 / y, a, -x / (y * y), b);
+    case Op::Add:
+        return chain2(x + y, 1.0, a, 1.0, b);
+    case Op::Sub:
+        return chain2(x - y, 1.0, a, -1.0, b);
+    case Op::Mul:
+        return chain2(x * y, y, a, x, b);
+    case Op::Div:
+        return chain2(x / y, 1.0 / y, a, -x / (y * y), b);
     case Op::Pow: {
         double dx = y == 0.0 ? 0.0 : y * std::pow(x, y - 1.0);
         double dy = x > 0.0 ? v * std::log(x) : 0.0; // d/dy undefined for x <= 0
@@ -146,10 +171,13 @@ Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
         if (h == 0.0) return constant(h);
         return chain2(h, x / h, a, y / h, b);
     }
-    case Op::Mod: return chain2(ops::mod(x, y), 1.0, a, -std::floor(x / y), b);
+    case Op::Mod:
+        return chain2(ops::mod(x, y), 1.0, a, -std::floor(x / y), b);
     case Op::RIntersect:
-    case Op::RUnion: return rfunction(op, a, b, imm0, imm1);
-    default: break;
+    case Op::RUnion:
+        return rfunction(op, a, b, imm0, imm1);
+    default:
+        break;
     }
     // comparisons and logic: piecewise constant
     return constant(v);
@@ -157,16 +185,19 @@ Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
 
 Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c) {
     switch (op) {
-    case Op::Select: return ops::truth(a.v) ? b : c;
+    case Op::Select:
+        return ops::truth(a.v) ? b : c;
     case Op::Noise: {
         double g[3];
         double v = noise3Gradient(a.v, b.v, c.v, g);
         Dual r = chain2(v, g[0], a, g[1], b);
         Dual t = chain(0.0, g[2], c);
-        for (int i = 0; i < 3; ++i) r.d[i] += t.d[i];
+        for (int i = 0; i < 3; ++i)
+            r.d[i] += t.d[i];
         return r;
     }
-    default: break;
+    default:
+        break;
     }
     return constant(NAN);
 }
@@ -178,16 +209,27 @@ GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt)
 
 void GradientEvaluator::run(const Point& p) {
     Dual* r = regs_.data();
-    for (int i = 0; i < kInputCount; ++i) r[i] = Dual{p[i], {0.0, 0.0, 0.0}};
-    for (int k = 0; k < 3; ++k) r[static_cast<int>(wrt_[k])].d[k] = 1.0;
+    for (int i = 0; i < kInputCount; ++i)
+        r[i] = Dual{p[i], {0.0, 0.0, 0.0}};
+    for (int k = 0; k < 3; ++k)
+        r[static_cast<int>(wrt_[k])].d[k] = 1.0;
     const std::vector<double>& pv = params_.values();
-    for (std::size_t i = 0; i < pv.size(); ++i) r[kInputCount + i] = Dual{pv[i], {0.0, 0.0, 0.0}};
-    auto get = [r](const Operand& o) { return o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : r[o.reg]; };
+    for (std::size_t i = 0; i < pv.size(); ++i)
+        r[kInputCount + i] = Dual{pv[i], {0.0, 0.0, 0.0}};
+    auto get = [r](const Operand& o) {
+        return o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : r[o.reg];
+    };
     for (const Instruction& ins : tape_.code) {
         switch (opArity(ins.op)) {
-        case 1: r[ins.out] = ad::unary(ins.op, get(ins.a), ins.imm0); break;
-        case 2: r[ins.out] = ad::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1); break;
-        default: r[ins.out] = ad::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c)); break;
+        case 1:
+            r[ins.out] = ad::unary(ins.op, get(ins.a), ins.imm0);
+            break;
+        case 2:
+            r[ins.out] = ad::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1);
+            break;
+        default:
+            r[ins.out] = ad::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c));
+            break;
         }
     }
 }

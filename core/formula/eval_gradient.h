@@ -19,7 +19,7 @@ struct Dual {
 };
 
 class GradientEvaluator {
-public:
+  public:
     explicit GradientEvaluator(const Tape& tape,
                                std::array<Input, 3> wrt = {Input::X, Input::Y, Input::Z});
 
@@ -28,7 +28,7 @@ public:
     Dual evaluate(const Point& p);
     void evaluateAll(const Point& p, Dual* outputs);
 
-private:
+  private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     std::array<Input, 3> wrt_;
     ParameterValues params_;

@@ -15,7 +15,7 @@ using Box = std::array<Interval, kInputCount>;
 Box boxXYZ(double x0, double x1, double y0, double y1, double z0, double z1, double t = 0.0);
 
 class IntervalEvaluator {
-public:
+  public:
     explicit IntervalEvaluator(const Tape& tape);
 
     ParameterValues& parameters() { return params_; }
@@ -23,7 +23,7 @@ public:
     Interval evaluate(const Box& box);
     void evaluateAll(const Box& box, Interval* outputs);
 
-private:
+  private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
     std::vector<Interval> regs_;

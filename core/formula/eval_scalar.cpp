@@ -5,7 +5,8 @@
 namespace fl::formula {
 
 ParameterValues::ParameterValues(const Tape& tape) : tape_(&tape) {
-    for (const ParameterInfo& p : tape.params) values_.push_back(p.defaultValue);
+    for (const ParameterInfo& p : tape.params)
+        values_.push_back(p.defaultValue);
 }
 
 bool ParameterValues::set(std::string_view name, double value) {
@@ -23,15 +24,23 @@ ScalarEvaluator::ScalarEvaluator(const Tape& tape)
 
 void ScalarEvaluator::run(const Point& p) {
     double* r = regs_.data();
-    for (int i = 0; i < kInputCount; ++i) r[i] = p[i];
+    for (int i = 0; i < kInputCount; ++i)
+        r[i] = p[i];
     const std::vector<double>& pv = params_.values();
-    for (std::size_t i = 0; i < pv.size(); ++i) r[kInputCount + i] = pv[i];
+    for (std::size_t i = 0; i < pv.size(); ++i)
+        r[kInputCount + i] = pv[i];
     auto get = [r](const Operand& o) { return o.isConst() ? o.value : r[o.reg]; };
     for (const Instruction& ins : tape_.code) {
         switch (opArity(ins.op)) {
-        case 1: r[ins.out] = ops::unary(ins.op, get(ins.a), ins.imm0); break;
-        case 2: r[ins.out] = ops::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1); break;
-        default: r[ins.out] = ops::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c)); break;
+        case 1:
+            r[ins.out] = ops::unary(ins.op, get(ins.a), ins.imm0);
+            break;
+        case 2:
+            r[ins.out] = ops::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1);
+            break;
+        default:
+            r[ins.out] = ops::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c));
+            break;
         }
     }
 }

@@ -18,28 +18,28 @@ inline Point pointXYZ(double x, double y, double z, double t = 0.0) {
 
 // Parameter values of a tape, starting at their defaults.
 class ParameterValues {
-public:
+  public:
     explicit ParameterValues(const Tape& tape);
     bool set(std::string_view name, double value); // false when the tape has no such parameter
     const std::vector<double>& values() const { return values_; }
 
-private:
+  private:
     const Tape* tape_;
     std::vector<double> values_;
 };
 
 class ScalarEvaluator {
-public:
+  public:
     explicit ScalarEvaluator(const Tape& tape);
 
     ParameterValues& parameters() { return params_; }
 
-    double evaluate(const Point& p);                       // the first output
-    void evaluateAll(const Point& p, double* outputs);     // every output, in tape order
+    double evaluate(const Point& p);                   // the first output
+    void evaluateAll(const Point& p, double* outputs); // every output, in tape order
     // Registers after the last evaluation (for diagnostics: which step went non-finite).
     const std::vector<double>& registers() const { return regs_; }
 
-private:
+  private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
     std::vector<double> regs_;

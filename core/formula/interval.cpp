@@ -16,11 +16,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
 
 double down(double x, int ulps = 2) {
-    for (int i = 0; i < ulps; ++i) x = std::nextafter(x, -kInf);
+    for (int i = 0; i < ulps; ++i)
+        x = std::nextafter(x, -kInf);
     return x;
 }
 double up(double x, int ulps = 2) {
-    for (int i = 0; i < ulps; ++i) x = std::nextafter(x, kInf);
+    for (int i = 0; i < ulps; ++i)
+        x = std::nextafter(x, kInf);
     return x;
 }
 
@@ -37,7 +39,9 @@ Interval exact(double lo, double hi, bool nan) {
 }
 
 // Endpoints come from the same maths routines the point evaluators use.
-double V(vmath::Unary f, double x) { return vmath::eval(f, x); }
+double V(vmath::Unary f, double x) {
+    return vmath::eval(f, x);
+}
 
 Interval monotoneUp(vmath::Unary f, const Interval& a, int ulps = 2) {
     return make(V(f, a.lo), V(f, a.hi), a.nan, ulps);
@@ -62,11 +66,18 @@ Interval square(const Interval& a) {
     return make(std::min(l2, h2), std::max(l2, h2), a.nan);
 }
 
+bool hasInf(const Interval& a) {
+    return std::isinf(a.lo) || std::isinf(a.hi);
+}
+
 Interval mul(const Interval& a, const Interval& b) {
     double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
     for (double v : p)
         if (std::isnan(v)) return Interval::entire(true);
-    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4), a.nan || b.nan);
+    // 0 * inf inside the boxes is NaN even when no corner product is
+    bool zeroTimesInf = (a.containsZero() && hasInf(b)) || (b.containsZero() && hasInf(a));
+    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4),
+                a.nan || b.nan || zeroTimesInf);
 }
 
 Interval div(const Interval& a, const Interval& b) {
@@ -74,7 +85,9 @@ Interval div(const Interval& a, const Interval& b) {
     double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
     for (double v : p)
         if (std::isnan(v)) return Interval::entire(true);
-    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4), a.nan || b.nan);
+    bool infOverInf = hasInf(a) && hasInf(b);
+    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4),
+                a.nan || b.nan || infOverInf);
 }
 
 Interval powi(const Interval& a, int n) {
@@ -113,7 +126,8 @@ Interval sinRange(const Interval& a, bool cosine) {
 }
 
 Interval tanRange(const Interval& a) {
-    if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= kPi) return Interval::entire(a.nan || std::isinf(a.lo) || std::isinf(a.hi));
+    if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= kPi)
+        return Interval::entire(a.nan || std::isinf(a.lo) || std::isinf(a.hi));
     double slack = 1e-9 * (1.0 + std::max(std::abs(a.lo), std::abs(a.hi)));
     double k = std::ceil((a.lo - slack - kPi / 2.0) / kPi);
     if (kPi / 2.0 + kPi * k <= a.hi + slack) return Interval::entire(a.nan);
@@ -191,17 +205,28 @@ Interval compare(Op op, const Interval& a, const Interval& b) {
     if (a.empty() || b.empty()) return fromTruth(op == Op::NotEqual ? 1 : 0);
     int t = -1;
     switch (op) {
-    case Op::Less: t = a.hi < b.lo ? 1 : (a.lo >= b.hi ? 0 : -1); break;
-    case Op::LessEq: t = a.hi <= b.lo ? 1 : (a.lo > b.hi ? 0 : -1); break;
-    case Op::Greater: t = a.lo > b.hi ? 1 : (a.hi <= b.lo ? 0 : -1); break;
-    case Op::GreaterEq: t = a.lo >= b.hi ? 1 : (a.hi < b.lo ? 0 : -1); break;
+    case Op::Less:
+        t = a.hi < b.lo ? 1 : (a.lo >= b.hi ? 0 : -1);
+        break;
+    case Op::LessEq:
+        t = a.hi <= b.lo ? 1 : (a.lo > b.hi ? 0 : -1);
+        break;
+    case Op::Greater:
+        t = a.lo > b.hi ? 1 : (a.hi <= b.lo ? 0 : -1);
+        break;
+    case Op::GreaterEq:
+        t = a.lo >= b.hi ? 1 : (a.hi < b.lo ? 0 : -1);
+        break;
     case Op::Equal:
-        t = (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) ? 1 : (a.hi < b.lo || b.hi < a.lo ? 0 : -1);
+        t = (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) ? 1
+                                                           : (a.hi < b.lo || b.hi < a.lo ? 0 : -1);
         break;
     case Op::NotEqual:
-        t = (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) ? 0 : (a.hi < b.lo || b.hi < a.lo ? 1 : -1);
+        t = (a.lo == a.hi && b.lo == b.hi && a.lo == b.lo) ? 0
+                                                           : (a.hi < b.lo || b.hi < a.lo ? 1 : -1);
         break;
-    default: break;
+    default:
+        break;
     }
     // a NaN point compares false (and NotEqual true)
     if ((a.nan || b.nan) && t != -1) {
@@ -271,9 +296,12 @@ Interval unary(Op op, const Interval& in, double imm0) {
     }
     Interval a = in;
     switch (op) {
-    case Op::Neg: return exact(-a.hi, -a.lo, a.nan);
-    case Op::Abs: return absRange(a);
-    case Op::Square: return square(a);
+    case Op::Neg:
+        return exact(-a.hi, -a.lo, a.nan);
+    case Op::Abs:
+        return absRange(a);
+    case Op::Square:
+        return square(a);
     case Op::Sqrt:
         if (!clipDomain(a, 0.0, kInf)) return Interval::undefined();
         {
@@ -281,7 +309,8 @@ Interval unary(Op op, const Interval& in, double imm0) {
             r.lo = std::max(r.lo, 0.0);
             return r;
         }
-    case Op::Cbrt: return monotoneUp(vmath::Unary::Cbrt, a);
+    case Op::Cbrt:
+        return monotoneUp(vmath::Unary::Cbrt, a);
     case Op::Exp: {
         Interval r = monotoneUp(vmath::Unary::Exp, a);
         r.lo = std::max(r.lo, 0.0);
@@ -296,9 +325,12 @@ Interval unary(Op op, const Interval& in, double imm0) {
                                           : vmath::Unary::Log10;
         return monotoneUp(f, a);
     }
-    case Op::Sin: return sinRange(a, false);
-    case Op::Cos: return sinRange(a, true);
-    case Op::Tan: return tanRange(a);
+    case Op::Sin:
+        return sinRange(a, false);
+    case Op::Cos:
+        return sinRange(a, true);
+    case Op::Tan:
+        return tanRange(a);
     case Op::Asin:
         if (!clipDomain(a, -1.0, 1.0)) return Interval::undefined();
         return monotoneUp(vmath::Unary::Asin, a);
@@ -306,8 +338,10 @@ Interval unary(Op op, const Interval& in, double imm0) {
         if (!clipDomain(a, -1.0, 1.0)) return Interval::undefined();
         return make(V(vmath::Unary::Acos, a.hi), V(vmath::Unary::Acos, a.lo), a.nan);
     }
-    case Op::Atan: return monotoneUp(vmath::Unary::Atan, a);
-    case Op::Sinh: return monotoneUp(vmath::Unary::Sinh, a);
+    case Op::Atan:
+        return monotoneUp(vmath::Unary::Atan, a);
+    case Op::Sinh:
+        return monotoneUp(vmath::Unary::Sinh, a);
     case Op::Cosh: {
         double l = V(vmath::Unary::Cosh, a.lo), h = V(vmath::Unary::Cosh, a.hi);
         if (a.containsZero()) return make(1.0, std::max(l, h), a.nan);
@@ -319,16 +353,22 @@ Interval unary(Op op, const Interval& in, double imm0) {
         r.hi = std::min(r.hi, 1.0);
         return r;
     }
-    case Op::Floor: return exact(std::floor(a.lo), std::floor(a.hi), a.nan);
-    case Op::Ceil: return exact(std::ceil(a.lo), std::ceil(a.hi), a.nan);
-    case Op::Round: return exact(std::round(a.lo), std::round(a.hi), a.nan);
-    case Op::Sign: return exact(ops::sign(a.lo), ops::sign(a.hi), a.nan);
+    case Op::Floor:
+        return exact(std::floor(a.lo), std::floor(a.hi), a.nan);
+    case Op::Ceil:
+        return exact(std::ceil(a.lo), std::ceil(a.hi), a.nan);
+    case Op::Round:
+        return exact(std::round(a.lo), std::round(a.hi), a.nan);
+    case Op::Sign:
+        return exact(ops::sign(a.lo), ops::sign(a.hi), a.nan);
     case Op::Not: {
         int t = truthOf(a);
         return fromTruth(t == -1 ? -1 : 1 - t);
     }
-    case Op::PowI: return powi(a, static_cast<int>(imm0));
-    default: break;
+    case Op::PowI:
+        return powi(a, static_cast<int>(imm0));
+    default:
+        break;
     }
     return Interval::entire(true);
 }
@@ -340,7 +380,8 @@ Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double
     case Op::Greater:
     case Op::GreaterEq:
     case Op::Equal:
-    case Op::NotEqual: return compare(op, a, b);
+    case Op::NotEqual:
+        return compare(op, a, b);
     case Op::And:
     case Op::Or: {
         int ta = truthOf(a), tb = truthOf(b);
@@ -368,27 +409,42 @@ Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double
             return inf ? Interval{kInf, kInf, true} : Interval::undefined();
         }
         break;
-    default: break;
+    default:
+        break;
     }
     if (a.empty() || b.empty()) return Interval::undefined();
     bool nan = a.nan || b.nan;
     switch (op) {
-    case Op::Add: return make(a.lo + b.lo, a.hi + b.hi, nan);
-    case Op::Sub: return make(a.lo - b.hi, a.hi - b.lo, nan);
-    case Op::Mul: return mul(a, b);
-    case Op::Div: return div(a, b);
-    case Op::Pow: return powGeneral(a, b);
-    case Op::Min: return exact(std::min(a.lo, b.lo), std::min(a.hi, b.hi), nan);
-    case Op::Max: return exact(std::max(a.lo, b.lo), std::max(a.hi, b.hi), nan);
-    case Op::Atan2: return atan2Range(a, b);
+    // inf - inf inside the boxes is NaN even when the endpoint sums are not
+    case Op::Add:
+        return make(a.lo + b.lo, a.hi + b.hi,
+                    nan || (a.hi == kInf && b.lo == -kInf) || (a.lo == -kInf && b.hi == kInf));
+    case Op::Sub:
+        return make(a.lo - b.hi, a.hi - b.lo,
+                    nan || (a.hi == kInf && b.hi == kInf) || (a.lo == -kInf && b.lo == -kInf));
+    case Op::Mul:
+        return mul(a, b);
+    case Op::Div:
+        return div(a, b);
+    case Op::Pow:
+        return powGeneral(a, b);
+    case Op::Min:
+        return exact(std::min(a.lo, b.lo), std::min(a.hi, b.hi), nan);
+    case Op::Max:
+        return exact(std::max(a.lo, b.lo), std::max(a.hi, b.hi), nan);
+    case Op::Atan2:
+        return atan2Range(a, b);
     case Op::Hypot: {
         Interval x = absRange(a), y = absRange(b);
         return make(std::hypot(x.lo, y.lo), std::hypot(x.hi, y.hi), nan);
     }
-    case Op::Mod: return modRange(a, b);
+    case Op::Mod:
+        return modRange(a, b);
     case Op::RIntersect:
-    case Op::RUnion: return rfunction(op, a, b, imm0, imm1);
-    default: break;
+    case Op::RUnion:
+        return rfunction(op, a, b, imm0, imm1);
+    default:
+        break;
     }
     return Interval::entire(true);
 }
@@ -401,8 +457,10 @@ Interval ternary(Op op, const Interval& a, const Interval& b, const Interval& c)
         if (t == 0) return c;
         return hull(b, c);
     }
-    case Op::Noise: return noiseRange(a, b, c);
-    default: break;
+    case Op::Noise:
+        return noiseRange(a, b, c);
+    default:
+        break;
     }
     return Interval::entire(true);
 }

@@ -25,10 +25,12 @@ struct Interval {
     }
     static Interval of(double lo, double hi, bool nan = false) { return {lo, hi, nan}; }
     static Interval entire(bool nan = true) {
-        return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), nan};
+        return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                nan};
     }
     static Interval undefined() {
-        return {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), true};
+        return {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                true};
     }
     bool empty() const { return lo > hi; }
     bool contains(double v) const {

@@ -10,51 +10,96 @@ namespace fl::formula {
 
 const char* tokenKindName(TokenKind kind) {
     switch (kind) {
-    case TokenKind::End: return "end of formula";
-    case TokenKind::Number: return "number";
-    case TokenKind::Identifier: return "name";
-    case TokenKind::KwFunction: return "'function'";
-    case TokenKind::KwIf: return "'if'";
-    case TokenKind::KwElse: return "'else'";
-    case TokenKind::KwFor: return "'for'";
-    case TokenKind::KwReturn: return "'return'";
-    case TokenKind::KwParam: return "'param'";
-    case TokenKind::KwVar: return "'var'";
-    case TokenKind::KwIn: return "'in'";
-    case TokenKind::LParen: return "'('";
-    case TokenKind::RParen: return "')'";
-    case TokenKind::LBrace: return "'{'";
-    case TokenKind::RBrace: return "'}'";
-    case TokenKind::LBracket: return "'['";
-    case TokenKind::RBracket: return "']'";
-    case TokenKind::Comma: return "','";
-    case TokenKind::Semicolon: return "';'";
-    case TokenKind::Question: return "'?'";
-    case TokenKind::Colon: return "':'";
-    case TokenKind::Assign: return "'='";
-    case TokenKind::PlusAssign: return "'+='";
-    case TokenKind::MinusAssign: return "'-='";
-    case TokenKind::StarAssign: return "'*='";
-    case TokenKind::SlashAssign: return "'/='";
-    case TokenKind::Plus: return "'+'";
-    case TokenKind::Minus: return "'-'";
-    case TokenKind::Star: return "'*'";
-    case TokenKind::Slash: return "'/'";
-    case TokenKind::Caret: return "'^'";
-    case TokenKind::Less: return "'<'";
-    case TokenKind::LessEqual: return "'<='";
-    case TokenKind::Greater: return "'>'";
-    case TokenKind::GreaterEqual: return "'>='";
-    case TokenKind::EqualEqual: return "'=='";
-    case TokenKind::NotEqual: return "'!='";
-    case TokenKind::AndAnd: return "'&&'";
-    case TokenKind::OrOr: return "'||'";
-    case TokenKind::Bang: return "'!'";
-    case TokenKind::Amp: return "'&'";
-    case TokenKind::Pipe: return "'|'";
-    case TokenKind::Backslash: return "'\\'";
-    case TokenKind::Tilde: return "'~'";
-    case TokenKind::Invalid: return "invalid character";
+    case TokenKind::End:
+        return "end of formula";
+    case TokenKind::Number:
+        return "number";
+    case TokenKind::Identifier:
+        return "name";
+    case TokenKind::KwFunction:
+        return "'function'";
+    case TokenKind::KwIf:
+        return "'if'";
+    case TokenKind::KwElse:
+        return "'else'";
+    case TokenKind::KwFor:
+        return "'for'";
+    case TokenKind::KwReturn:
+        return "'return'";
+    case TokenKind::KwParam:
+        return "'param'";
+    case TokenKind::KwVar:
+        return "'var'";
+    case TokenKind::KwIn:
+        return "'in'";
+    case TokenKind::LParen:
+        return "'('";
+    case TokenKind::RParen:
+        return "')'";
+    case TokenKind::LBrace:
+        return "'{'";
+    case TokenKind::RBrace:
+        return "'}'";
+    case TokenKind::LBracket:
+        return "'['";
+    case TokenKind::RBracket:
+        return "']'";
+    case TokenKind::Comma:
+        return "','";
+    case TokenKind::Semicolon:
+        return "';'";
+    case TokenKind::Question:
+        return "'?'";
+    case TokenKind::Colon:
+        return "':'";
+    case TokenKind::Assign:
+        return "'='";
+    case TokenKind::PlusAssign:
+        return "'+='";
+    case TokenKind::MinusAssign:
+        return "'-='";
+    case TokenKind::StarAssign:
+        return "'*='";
+    case TokenKind::SlashAssign:
+        return "'/='";
+    case TokenKind::Plus:
+        return "'+'";
+    case TokenKind::Minus:
+        return "'-'";
+    case TokenKind::Star:
+        return "'*'";
+    case TokenKind::Slash:
+        return "'/'";
+    case TokenKind::Caret:
+        return "'^'";
+    case TokenKind::Less:
+        return "'<'";
+    case TokenKind::LessEqual:
+        return "'<='";
+    case TokenKind::Greater:
+        return "'>'";
+    case TokenKind::GreaterEqual:
+        return "'>='";
+    case TokenKind::EqualEqual:
+        return "'=='";
+    case TokenKind::NotEqual:
+        return "'!='";
+    case TokenKind::AndAnd:
+        return "'&&'";
+    case TokenKind::OrOr:
+        return "'||'";
+    case TokenKind::Bang:
+        return "'!'";
+    case TokenKind::Amp:
+        return "'&'";
+    case TokenKind::Pipe:
+        return "'|'";
+    case TokenKind::Backslash:
+        return "'\\'";
+    case TokenKind::Tilde:
+        return "'~'";
+    case TokenKind::Invalid:
+        return "invalid character";
     }
     return "token";
 }
@@ -62,7 +107,7 @@ const char* tokenKindName(TokenKind kind) {
 namespace {
 
 class Lexer {
-public:
+  public:
     Lexer(std::string_view src, std::vector<Diagnostic>& diags) : src_(src), diags_(diags) {}
 
     std::vector<Token> run() {
@@ -77,7 +122,7 @@ public:
         return tokens;
     }
 
-private:
+  private:
     std::string_view src_;
     std::vector<Diagnostic>& diags_;
     SourcePos pos_;
@@ -99,16 +144,20 @@ private:
 
     void skipSpaceAndComments() {
         for (;;) {
-            while (!atEnd() && std::isspace(static_cast<unsigned char>(peek()))) advance();
+            while (!atEnd() && std::isspace(static_cast<unsigned char>(peek())))
+                advance();
             if (peek() == '/' && peek(1) == '/') {
-                while (!atEnd() && peek() != '\n') advance();
+                while (!atEnd() && peek() != '\n')
+                    advance();
             } else if (peek() == '/' && peek(1) == '*') {
                 SourcePos start = pos_;
                 advance();
                 advance();
-                while (!atEnd() && !(peek() == '*' && peek(1) == '/')) advance();
+                while (!atEnd() && !(peek() == '*' && peek(1) == '/'))
+                    advance();
                 if (atEnd()) {
-                    diags_.push_back({Severity::Error, {start, pos_},
+                    diags_.push_back({Severity::Error,
+                                      {start, pos_},
                                       "comment started here is never closed",
                                       "add '*/' to end the comment"});
                     return;
@@ -130,17 +179,21 @@ private:
     }
 
     Token lexNumber(SourcePos start) {
-        while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
+        while (std::isdigit(static_cast<unsigned char>(peek())))
+            advance();
         if (peek() == '.') {
             advance();
-            while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
+            while (std::isdigit(static_cast<unsigned char>(peek())))
+                advance();
         }
         if (peek() == 'e' || peek() == 'E') {
             std::size_t ahead = 1;
             if (peek(1) == '+' || peek(1) == '-') ahead = 2;
             if (std::isdigit(static_cast<unsigned char>(peek(ahead)))) {
-                for (std::size_t i = 0; i < ahead; ++i) advance();
-                while (std::isdigit(static_cast<unsigned char>(peek()))) advance();
+                for (std::size_t i = 0; i < ahead; ++i)
+                    advance();
+                while (std::isdigit(static_cast<unsigned char>(peek())))
+                    advance();
             }
         }
         Token t = make(TokenKind::Number, start);
@@ -164,13 +217,18 @@ private:
             return lexNumber(start);
         }
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-            while (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '_') advance();
+            while (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '_')
+                advance();
             Token t = make(TokenKind::Identifier, start);
             static const std::unordered_map<std::string, TokenKind> keywords = {
-                {"function", TokenKind::KwFunction}, {"if", TokenKind::KwIf},
-                {"else", TokenKind::KwElse},         {"for", TokenKind::KwFor},
-                {"return", TokenKind::KwReturn},     {"param", TokenKind::KwParam},
-                {"var", TokenKind::KwVar},           {"let", TokenKind::KwVar},
+                {"function", TokenKind::KwFunction},
+                {"if", TokenKind::KwIf},
+                {"else", TokenKind::KwElse},
+                {"for", TokenKind::KwFor},
+                {"return", TokenKind::KwReturn},
+                {"param", TokenKind::KwParam},
+                {"var", TokenKind::KwVar},
+                {"let", TokenKind::KwVar},
                 {"in", TokenKind::KwIn},
             };
             if (auto it = keywords.find(t.text); it != keywords.end()) t.kind = it->second;
@@ -185,44 +243,70 @@ private:
             return make(no, start);
         };
         switch (c) {
-        case '(': return make(TokenKind::LParen, start);
-        case ')': return make(TokenKind::RParen, start);
-        case '{': return make(TokenKind::LBrace, start);
-        case '}': return make(TokenKind::RBrace, start);
-        case '[': return make(TokenKind::LBracket, start);
-        case ']': return make(TokenKind::RBracket, start);
-        case ',': return make(TokenKind::Comma, start);
-        case ';': return make(TokenKind::Semicolon, start);
-        case '?': return make(TokenKind::Question, start);
-        case ':': return make(TokenKind::Colon, start);
-        case '^': return make(TokenKind::Caret, start);
-        case '~': return make(TokenKind::Tilde, start);
-        case '\\': return make(TokenKind::Backslash, start);
-        case '=': return two('=', TokenKind::EqualEqual, TokenKind::Assign);
-        case '!': return two('=', TokenKind::NotEqual, TokenKind::Bang);
-        case '<': return two('=', TokenKind::LessEqual, TokenKind::Less);
-        case '>': return two('=', TokenKind::GreaterEqual, TokenKind::Greater);
-        case '&': return two('&', TokenKind::AndAnd, TokenKind::Amp);
-        case '|': return two('|', TokenKind::OrOr, TokenKind::Pipe);
-        case '*': return two('=', TokenKind::StarAssign, TokenKind::Star);
-        case '/': return two('=', TokenKind::SlashAssign, TokenKind::Slash);
+        case '(':
+            return make(TokenKind::LParen, start);
+        case ')':
+            return make(TokenKind::RParen, start);
+        case '{':
+            return make(TokenKind::LBrace, start);
+        case '}':
+            return make(TokenKind::RBrace, start);
+        case '[':
+            return make(TokenKind::LBracket, start);
+        case ']':
+            return make(TokenKind::RBracket, start);
+        case ',':
+            return make(TokenKind::Comma, start);
+        case ';':
+            return make(TokenKind::Semicolon, start);
+        case '?':
+            return make(TokenKind::Question, start);
+        case ':':
+            return make(TokenKind::Colon, start);
+        case '^':
+            return make(TokenKind::Caret, start);
+        case '~':
+            return make(TokenKind::Tilde, start);
+        case '\\':
+            return make(TokenKind::Backslash, start);
+        case '=':
+            return two('=', TokenKind::EqualEqual, TokenKind::Assign);
+        case '!':
+            return two('=', TokenKind::NotEqual, TokenKind::Bang);
+        case '<':
+            return two('=', TokenKind::LessEqual, TokenKind::Less);
+        case '>':
+            return two('=', TokenKind::GreaterEqual, TokenKind::Greater);
+        case '&':
+            return two('&', TokenKind::AndAnd, TokenKind::Amp);
+        case '|':
+            return two('|', TokenKind::OrOr, TokenKind::Pipe);
+        case '*':
+            return two('=', TokenKind::StarAssign, TokenKind::Star);
+        case '/':
+            return two('=', TokenKind::SlashAssign, TokenKind::Slash);
         // `++`/`--` are not tokens: `1--x` means 1 - (-x); the parser reads a
         // loop's `i++` as two adjacent pluses.
-        case '+': return two('=', TokenKind::PlusAssign, TokenKind::Plus);
-        case '-': return two('=', TokenKind::MinusAssign, TokenKind::Minus);
-        default: break;
+        case '+':
+            return two('=', TokenKind::PlusAssign, TokenKind::Plus);
+        case '-':
+            return two('=', TokenKind::MinusAssign, TokenKind::Minus);
+        default:
+            break;
         }
         if (static_cast<unsigned char>(c) >= 0x80) {
             // one diagnostic for a whole UTF-8 sequence, not one per byte
-            while ((static_cast<unsigned char>(peek()) & 0xC0) == 0x80) advance();
+            while ((static_cast<unsigned char>(peek()) & 0xC0) == 0x80)
+                advance();
         }
         Token t = make(TokenKind::Invalid, start);
-        std::string shown = (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) >= 127)
-                                ? "byte 0x" + toHex(static_cast<unsigned char>(c))
-                                : "'" + std::string(1, c) + "'";
-        std::string hint = c == '#'  ? "comments start with '//'"
+        std::string shown =
+            (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) >= 127)
+                ? "byte 0x" + toHex(static_cast<unsigned char>(c))
+                : "'" + std::string(1, c) + "'";
+        std::string hint = c == '#'   ? "comments start with '//'"
                            : c == '%' ? "use mod(a, b) for the remainder"
-                                     : "remove it";
+                                      : "remove it";
         diags_.push_back({Severity::Error, t.range, "unexpected character " + shown, hint});
         return t;
     }

@@ -12,8 +12,10 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
     for (double c : p)
         if (!std::isfinite(c)) return std::nullopt;
     std::vector<double> r(static_cast<std::size_t>(tape.registerCount), 0.0);
-    for (int i = 0; i < kInputCount; ++i) r[i] = p[i];
-    for (std::size_t i = 0; i < params.size() && i < tape.params.size(); ++i) r[kInputCount + i] = params[i];
+    for (int i = 0; i < kInputCount; ++i)
+        r[i] = p[i];
+    for (std::size_t i = 0; i < params.size() && i < tape.params.size(); ++i)
+        r[kInputCount + i] = params[i];
     auto get = [&r](const Operand& o) { return o.isConst() ? o.value : r[o.reg]; };
 
     const Instruction* culprit = nullptr;
@@ -25,13 +27,15 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
                    : arity == 2 ? ops::binary(ins.op, a, b, ins.imm0, ins.imm1)
                                 : ops::ternary(ins.op, a, b, c);
         r[ins.out] = v;
-        if (!culprit && std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && !std::isfinite(v)) {
+        if (!culprit && std::isfinite(a) && std::isfinite(b) && std::isfinite(c) &&
+            !std::isfinite(v)) {
             culprit = &ins;
             culpritValue = v;
         }
     }
     bool outputsFinite = true;
-    for (const OutputInfo& o : tape.outputs) outputsFinite = outputsFinite && std::isfinite(get(o.value));
+    for (const OutputInfo& o : tape.outputs)
+        outputsFinite = outputsFinite && std::isfinite(get(o.value));
     if (outputsFinite) return std::nullopt;
 
     Diagnostic d;
@@ -39,7 +43,8 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
     std::ostringstream os;
     os.precision(6);
     if (culprit) {
-        if (culprit->origin >= 0 && culprit->origin < static_cast<std::int32_t>(tape.origins.size()))
+        if (culprit->origin >= 0 &&
+            culprit->origin < static_cast<std::int32_t>(tape.origins.size()))
             d.range = tape.origins[culprit->origin];
         os << (std::isnan(culpritValue) ? "undefined value (NaN)" : "infinite value") << " from '"
            << opName(culprit->op) << "'";

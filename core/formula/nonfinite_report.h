@@ -18,10 +18,10 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
 // Reports at most once per definition, from any thread: hot loops call
 // `shouldReport()` only after they have seen a non-finite value.
 class NonFiniteOnce {
-public:
+  public:
     bool shouldReport() { return !reported_.exchange(true); }
 
-private:
+  private:
     std::atomic<bool> reported_{false};
 };
 

@@ -73,7 +73,8 @@ constexpr int opCount() {
 constexpr int opArity(Op op) {
     switch (op) {
 #define FL_OP_ARITY(name, arity, spelling)                                                         \
-    case Op::name: return arity;
+    case Op::name:                                                                                 \
+        return arity;
         FL_OPCODES(FL_OP_ARITY)
 #undef FL_OP_ARITY
     }
@@ -83,7 +84,8 @@ constexpr int opArity(Op op) {
 constexpr const char* opName(Op op) {
     switch (op) {
 #define FL_OP_NAME(name, arity, spelling)                                                          \
-    case Op::name: return spelling;
+    case Op::name:                                                                                 \
+        return spelling;
         FL_OPCODES(FL_OP_NAME)
 #undef FL_OP_NAME
     }
@@ -102,8 +104,10 @@ constexpr bool opIsCommutative(Op op) {
     case Op::And:
     case Op::Or:
     case Op::RIntersect:
-    case Op::RUnion: return true;
-    default: return false;
+    case Op::RUnion:
+        return true;
+    default:
+        return false;
     }
 }
 

@@ -13,7 +13,7 @@ namespace {
 struct SyntaxError {};
 
 class Parser {
-public:
+  public:
     Parser(std::vector<Token> tokens, std::vector<Diagnostic>& diags, const Limits& limits)
         : toks_(std::move(tokens)), diags_(diags), limits_(limits) {}
 
@@ -41,7 +41,7 @@ public:
         return program;
     }
 
-private:
+  private:
     std::vector<Token> toks_;
     std::vector<Diagnostic>& diags_;
     const Limits& limits_;
@@ -116,8 +116,9 @@ private:
             if (++p.depth_ > p.limits_.maxNestingDepth) {
                 p.depthExceeded_ = true;
                 --p.depth_;
-                p.fail(r, "formula is nested too deeply (more than " +
-                              std::to_string(p.limits_.maxNestingDepth) + " levels)",
+                p.fail(r,
+                       "formula is nested too deeply (more than " +
+                           std::to_string(p.limits_.maxNestingDepth) + " levels)",
                        "split it into named parts with local variables or functions");
             }
         }
@@ -152,12 +153,14 @@ private:
         Token name = expect(TokenKind::Identifier, "a parameter name after 'param'");
         p.name = name.text;
         p.nameRange = name.range;
-        expect(TokenKind::Assign, "'=' and a default value", "write: param " + p.name + " = 1 in [0, 2];");
+        expect(TokenKind::Assign, "'=' and a default value",
+               "write: param " + p.name + " = 1 in [0, 2];");
         p.defaultValue = expression();
         if (accept(TokenKind::KwIn)) {
             expect(TokenKind::LBracket, "'[' to start the range", "write the range as [low, high]");
             p.lo = expression();
-            expect(TokenKind::Comma, "',' between the range's ends", "write the range as [low, high]");
+            expect(TokenKind::Comma, "',' between the range's ends",
+                   "write the range as [low, high]");
             p.hi = expression();
             expect(TokenKind::RBracket, "']' to end the range");
         }
@@ -208,11 +211,21 @@ private:
         s->nameRange = name.range;
         Token op = take();
         switch (op.kind) {
-        case TokenKind::PlusAssign: s->assignOp = AssignOp::Add; break;
-        case TokenKind::MinusAssign: s->assignOp = AssignOp::Sub; break;
-        case TokenKind::StarAssign: s->assignOp = AssignOp::Mul; break;
-        case TokenKind::SlashAssign: s->assignOp = AssignOp::Div; break;
-        default: s->assignOp = AssignOp::Set; break;
+        case TokenKind::PlusAssign:
+            s->assignOp = AssignOp::Add;
+            break;
+        case TokenKind::MinusAssign:
+            s->assignOp = AssignOp::Sub;
+            break;
+        case TokenKind::StarAssign:
+            s->assignOp = AssignOp::Mul;
+            break;
+        case TokenKind::SlashAssign:
+            s->assignOp = AssignOp::Div;
+            break;
+        default:
+            s->assignOp = AssignOp::Set;
+            break;
         }
         s->value = expression();
         s->range = SourceRange::span(name.range, previous().range);
@@ -333,12 +346,14 @@ private:
     // so the tree's height is bounded here, where every node gets its children.
     void setDepth(Expr& e) {
         int d = 0;
-        for (const ExprPtr& a : e.args) d = std::max(d, a->depth);
+        for (const ExprPtr& a : e.args)
+            d = std::max(d, a->depth);
         e.depth = d + 1;
         if (e.depth > limits_.maxNestingDepth) {
             depthExceeded_ = true;
-            fail(e.range, "formula is nested too deeply (more than " +
-                              std::to_string(limits_.maxNestingDepth) + " levels)",
+            fail(e.range,
+                 "formula is nested too deeply (more than " +
+                     std::to_string(limits_.maxNestingDepth) + " levels)",
                  "split it into named parts with local variables or functions");
         }
     }
@@ -403,7 +418,9 @@ private:
     ExprPtr logicalAnd() {
         return leftAssoc(&Parser::setUnion, {{TokenKind::AndAnd, BinaryOp::And}});
     }
-    ExprPtr setUnion() { return leftAssoc(&Parser::setIntersect, {{TokenKind::Pipe, BinaryOp::Union}}); }
+    ExprPtr setUnion() {
+        return leftAssoc(&Parser::setIntersect, {{TokenKind::Pipe, BinaryOp::Union}});
+    }
     ExprPtr setIntersect() {
         return leftAssoc(&Parser::equality, {{TokenKind::Amp, BinaryOp::Intersect},
                                              {TokenKind::Backslash, BinaryOp::Difference}});
@@ -429,11 +446,16 @@ private:
 
     ExprPtr unary() {
         UnaryOp op;
-        if (at(TokenKind::Minus)) op = UnaryOp::Negate;
-        else if (at(TokenKind::Plus)) op = UnaryOp::Plus;
-        else if (at(TokenKind::Bang)) op = UnaryOp::Not;
-        else if (at(TokenKind::Tilde)) op = UnaryOp::Complement;
-        else return power();
+        if (at(TokenKind::Minus))
+            op = UnaryOp::Negate;
+        else if (at(TokenKind::Plus))
+            op = UnaryOp::Plus;
+        else if (at(TokenKind::Bang))
+            op = UnaryOp::Not;
+        else if (at(TokenKind::Tilde))
+            op = UnaryOp::Complement;
+        else
+            return power();
         DepthGuard guard(*this, cur().range);
         Token t = take();
         ExprPtr operand = unary();
@@ -491,13 +513,18 @@ private:
             inner->range = SourceRange::span(open.range, previous().range);
             return inner;
         }
-        case TokenKind::Invalid: throw SyntaxError{}; // already reported by the lexer
-        default: break;
+        case TokenKind::Invalid:
+            throw SyntaxError{}; // already reported by the lexer
+        default:
+            break;
         }
         std::string hint;
-        if (t.kind == TokenKind::End) hint = "the formula ends too early; complete the expression";
-        else if (t.kind == TokenKind::RParen) hint = "there is a ')' without a matching '('";
-        else hint = "write a number, a name or a parenthesised expression here";
+        if (t.kind == TokenKind::End)
+            hint = "the formula ends too early; complete the expression";
+        else if (t.kind == TokenKind::RParen)
+            hint = "there is a ')' without a matching '('";
+        else
+            hint = "write a number, a name or a parenthesised expression here";
         fail(t.range, "expected a value but found " + found(), hint);
     }
 
@@ -523,9 +550,11 @@ private:
 
 Program parse(std::string_view source, std::vector<Diagnostic>& diagnostics, const Limits& limits) {
     if (source.size() > limits.maxSourceBytes) {
-        diagnostics.push_back({Severity::Error, {}, "formula is too long (" +
-                               std::to_string(source.size()) + " bytes; the limit is " +
-                               std::to_string(limits.maxSourceBytes) + ")",
+        diagnostics.push_back({Severity::Error,
+                               {},
+                               "formula is too long (" + std::to_string(source.size()) +
+                                   " bytes; the limit is " + std::to_string(limits.maxSourceBytes) +
+                                   ")",
                                "split it into smaller definitions"});
         return {};
     }

@@ -21,14 +21,16 @@ inline double rIntersect0(double a, double b) {
     double h = std::hypot(a, b);
     if (std::isinf(h)) {
         // at least one infinity: the R-function tends to min(a, b) or its sign
-        if (std::isinf(p) && p > 0) return q;  // +inf with q: inside-ness decided by q
+        if (std::isinf(p) && p > 0) return q; // +inf with q: inside-ness decided by q
         return -INFINITY;                     // -inf present: outside
     }
     if (p > 0) return q * (1.0 - q / (p + h));
     return a + b - h; // all terms <= 0: no cancellation
 }
 
-inline double rUnion0(double a, double b) { return -rIntersect0(-a, -b); }
+inline double rUnion0(double a, double b) {
+    return -rIntersect0(-a, -b);
+}
 
 // The R_alpha family: alpha in (-1, 1]; alpha = 0 is R0, alpha = 1 is min/max.
 inline double rIntersectAlpha(double a, double b, double alpha) {
@@ -52,7 +54,9 @@ inline double rIntersectAlpha(double a, double b, double alpha) {
     return r / (1.0 + alpha);
 }
 
-inline double rUnionAlpha(double a, double b, double alpha) { return -rIntersectAlpha(-a, -b, alpha); }
+inline double rUnionAlpha(double a, double b, double alpha) {
+    return -rIntersectAlpha(-a, -b, alpha);
+}
 
 // C^m smoothing factor (a^2 + b^2)^(m/2), computed as hypot^m.
 inline double rFactor(double a, double b, double m) {

@@ -13,7 +13,9 @@
 
 namespace fl::formula::ops {
 
-inline bool truth(double v) { return v < 0.0 || v > 0.0; }
+inline bool truth(double v) {
+    return v < 0.0 || v > 0.0;
+}
 
 inline double powi(double a, int n) {
     // exact repeated squaring for |n| small; sign of negative bases is right
@@ -39,72 +41,127 @@ inline double mod(double a, double b) {
 // set operation undefined there, which the mesher reports) and are symmetric,
 // so the compiler may share min(a, b) with min(b, a). Written branch-free so
 // the batch loops vectorise.
-inline double min(double a, double b) { return (a < b || a != a) ? a : b; }
-inline double max(double a, double b) { return (a > b || a != a) ? a : b; }
+inline double min(double a, double b) {
+    return (a < b || a != a) ? a : b;
+}
+inline double max(double a, double b) {
+    return (a > b || a != a) ? a : b;
+}
 
-inline double sign(double a) { return a > 0.0 ? 1.0 : (a < 0.0 ? -1.0 : (a == 0.0 ? 0.0 : a)); }
+inline double sign(double a) {
+    return a > 0.0 ? 1.0 : (a < 0.0 ? -1.0 : (a == 0.0 ? 0.0 : a));
+}
 
 inline double unary(Op op, double a, double imm0) {
     switch (op) {
-    case Op::Neg: return -a;
-    case Op::Abs: return std::fabs(a);
-    case Op::Square: return a * a;
-    case Op::Sqrt: return std::sqrt(a);
-    case Op::Cbrt: return vmath::eval(vmath::Unary::Cbrt, a);
-    case Op::Exp: return vmath::eval(vmath::Unary::Exp, a);
-    case Op::Log: return vmath::eval(vmath::Unary::Log, a);
-    case Op::Log2: return vmath::eval(vmath::Unary::Log2, a);
-    case Op::Log10: return vmath::eval(vmath::Unary::Log10, a);
-    case Op::Sin: return vmath::eval(vmath::Unary::Sin, a);
-    case Op::Cos: return vmath::eval(vmath::Unary::Cos, a);
-    case Op::Tan: return vmath::eval(vmath::Unary::Tan, a);
-    case Op::Asin: return vmath::eval(vmath::Unary::Asin, a);
-    case Op::Acos: return vmath::eval(vmath::Unary::Acos, a);
-    case Op::Atan: return vmath::eval(vmath::Unary::Atan, a);
-    case Op::Sinh: return vmath::eval(vmath::Unary::Sinh, a);
-    case Op::Cosh: return vmath::eval(vmath::Unary::Cosh, a);
-    case Op::Tanh: return vmath::eval(vmath::Unary::Tanh, a);
-    case Op::Floor: return std::floor(a);
-    case Op::Ceil: return std::ceil(a);
-    case Op::Round: return std::round(a);
-    case Op::Sign: return sign(a);
-    case Op::Not: return truth(a) ? 0.0 : 1.0;
-    case Op::PowI: return powi(a, static_cast<int>(imm0));
-    default: return NAN;
+    case Op::Neg:
+        return -a;
+    case Op::Abs:
+        return std::fabs(a);
+    case Op::Square:
+        return a * a;
+    case Op::Sqrt:
+        return std::sqrt(a);
+    case Op::Cbrt:
+        return vmath::eval(vmath::Unary::Cbrt, a);
+    case Op::Exp:
+        return vmath::eval(vmath::Unary::Exp, a);
+    case Op::Log:
+        return vmath::eval(vmath::Unary::Log, a);
+    case Op::Log2:
+        return vmath::eval(vmath::Unary::Log2, a);
+    case Op::Log10:
+        return vmath::eval(vmath::Unary::Log10, a);
+    case Op::Sin:
+        return vmath::eval(vmath::Unary::Sin, a);
+    case Op::Cos:
+        return vmath::eval(vmath::Unary::Cos, a);
+    case Op::Tan:
+        return vmath::eval(vmath::Unary::Tan, a);
+    case Op::Asin:
+        return vmath::eval(vmath::Unary::Asin, a);
+    case Op::Acos:
+        return vmath::eval(vmath::Unary::Acos, a);
+    case Op::Atan:
+        return vmath::eval(vmath::Unary::Atan, a);
+    case Op::Sinh:
+        return vmath::eval(vmath::Unary::Sinh, a);
+    case Op::Cosh:
+        return vmath::eval(vmath::Unary::Cosh, a);
+    case Op::Tanh:
+        return vmath::eval(vmath::Unary::Tanh, a);
+    case Op::Floor:
+        return std::floor(a);
+    case Op::Ceil:
+        return std::ceil(a);
+    case Op::Round:
+        return std::round(a);
+    case Op::Sign:
+        return sign(a);
+    case Op::Not:
+        return truth(a) ? 0.0 : 1.0;
+    case Op::PowI:
+        return powi(a, static_cast<int>(imm0));
+    default:
+        return NAN;
     }
 }
 
 inline double binary(Op op, double a, double b, double imm0, double imm1) {
     switch (op) {
-    case Op::Add: return a + b;
-    case Op::Sub: return a - b;
-    case Op::Mul: return a * b;
-    case Op::Div: return a / b;
-    case Op::Pow: return vmath::eval(vmath::Binary::Pow, a, b);
-    case Op::Min: return min(a, b);
-    case Op::Max: return max(a, b);
-    case Op::Atan2: return vmath::eval(vmath::Binary::Atan2, a, b);
-    case Op::Hypot: return std::hypot(a, b);
-    case Op::Mod: return mod(a, b);
-    case Op::Less: return a < b ? 1.0 : 0.0;
-    case Op::LessEq: return a <= b ? 1.0 : 0.0;
-    case Op::Greater: return a > b ? 1.0 : 0.0;
-    case Op::GreaterEq: return a >= b ? 1.0 : 0.0;
-    case Op::Equal: return a == b ? 1.0 : 0.0;
-    case Op::NotEqual: return a != b ? 1.0 : 0.0;
-    case Op::And: return truth(a) && truth(b) ? 1.0 : 0.0;
-    case Op::Or: return truth(a) || truth(b) ? 1.0 : 0.0;
-    case Op::RIntersect: return rIntersect(a, b, imm0, imm1);
-    case Op::RUnion: return rUnion(a, b, imm0, imm1);
-    default: return NAN;
+    case Op::Add:
+        return a + b;
+    case Op::Sub:
+        return a - b;
+    case Op::Mul:
+        return a * b;
+    case Op::Div:
+        return a / b;
+    case Op::Pow:
+        return vmath::eval(vmath::Binary::Pow, a, b);
+    case Op::Min:
+        return min(a, b);
+    case Op::Max:
+        return max(a, b);
+    case Op::Atan2:
+        return vmath::eval(vmath::Binary::Atan2, a, b);
+    case Op::Hypot:
+        return std::hypot(a, b);
+    case Op::Mod:
+        return mod(a, b);
+    case Op::Less:
+        return a < b ? 1.0 : 0.0;
+    case Op::LessEq:
+        return a <= b ? 1.0 : 0.0;
+    case Op::Greater:
+        return a > b ? 1.0 : 0.0;
+    case Op::GreaterEq:
+        return a >= b ? 1.0 : 0.0;
+    case Op::Equal:
+        return a == b ? 1.0 : 0.0;
+    case Op::NotEqual:
+        return a != b ? 1.0 : 0.0;
+    case Op::And:
+        return truth(a) && truth(b) ? 1.0 : 0.0;
+    case Op::Or:
+        return truth(a) || truth(b) ? 1.0 : 0.0;
+    case Op::RIntersect:
+        return rIntersect(a, b, imm0, imm1);
+    case Op::RUnion:
+        return rUnion(a, b, imm0, imm1);
+    default:
+        return NAN;
     }
 }
 
 inline double ternary(Op op, double a, double b, double c) {
     switch (op) {
-    case Op::Select: return truth(a) ? b : c;
-    case Op::Noise: return noise3(a, b, c);
-    default: return NAN;
+    case Op::Select:
+        return truth(a) ? b : c;
+    case Op::Noise:
+        return noise3(a, b, c);
+    default:
+        return NAN;
     }
 }
 

@@ -31,8 +31,8 @@ struct Instruction {
     Op op = Op::Add;
     std::int32_t out = 0;
     Operand a, b, c;
-    double imm0 = 0.0; // PowI exponent; R-function m
-    double imm1 = 0.0; // R-function alpha
+    double imm0 = 0.0;        // PowI exponent; R-function m
+    double imm1 = 0.0;        // R-function alpha
     std::int32_t origin = -1; // index into Tape::origins: where in the source it came from
 };
 

@@ -12,14 +12,14 @@ namespace fl::formula {
 
 namespace {
 // -0.0 and +0.0 differ for division and atan2, so constants keep their exact bits.
-std::uint64_t exactBits(double v) { return std::bit_cast<std::uint64_t>(v); }
+std::uint64_t exactBits(double v) {
+    return std::bit_cast<std::uint64_t>(v);
+}
 } // namespace
 
 std::size_t TapeBuilder::KeyHash::operator()(const Key& k) const {
     std::uint64_t h = static_cast<std::uint64_t>(k.op) * 0x9E3779B97F4A7C15ull;
-    auto mix = [&h](std::uint64_t v) {
-        h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    };
+    auto mix = [&h](std::uint64_t v) { h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2); };
     mix(static_cast<std::uint32_t>(k.an));
     mix(static_cast<std::uint32_t>(k.bn));
     mix(static_cast<std::uint32_t>(k.cn));
@@ -46,9 +46,13 @@ Val TapeBuilder::leaf(std::int32_t reg) {
     return {id, 0.0};
 }
 
-Val TapeBuilder::input(Input which) { return leaf(static_cast<std::int32_t>(which)); }
+Val TapeBuilder::input(Input which) {
+    return leaf(static_cast<std::int32_t>(which));
+}
 
-Val TapeBuilder::parameter(std::int32_t index) { return leaf(kInputCount + index); }
+Val TapeBuilder::parameter(std::int32_t index) {
+    return leaf(kInputCount + index);
+}
 
 bool TapeBuilder::isNegOf(Val v, Val& inner) const {
     if (v.isConst() || nodes_[v.node].isLeaf || nodes_[v.node].op != Op::Neg) return false;
@@ -74,13 +78,13 @@ Val TapeBuilder::fold(Op op, Val a, Val b, Val c, double imm0, double imm1) {
         double r = arity == 1   ? ops::unary(op, a.c, imm0)
                    : arity == 2 ? ops::binary(op, a.c, b.c, imm0, imm1)
                                 : ops::ternary(op, a.c, b.c, c.c);
-        bool inputsNaN = std::isnan(a.c) || (arity >= 2 && std::isnan(b.c)) ||
-                         (arity >= 3 && std::isnan(c.c));
+        bool inputsNaN =
+            std::isnan(a.c) || (arity >= 2 && std::isnan(b.c)) || (arity >= 3 && std::isnan(c.c));
         if (std::isnan(r) && !inputsNaN) {
-            foldWarnings_.push_back({Severity::Warning, origin_,
-                                     std::string("'") + opName(op) +
-                                         "' is undefined (NaN) here for every point",
-                                     "check the arguments: e.g. log and sqrt need positive values"});
+            foldWarnings_.push_back(
+                {Severity::Warning, origin_,
+                 std::string("'") + opName(op) + "' is undefined (NaN) here for every point",
+                 "check the arguments: e.g. log and sqrt need positive values"});
         }
         return Val::constant(r);
     }
@@ -128,11 +132,14 @@ Val TapeBuilder::emit(Op op, Val a, Val b, Val c, double imm0, double imm1) {
         if (imm0 == 1.0) return a;
         if (imm0 == 2.0) return emit(Op::Square, a);
         break;
-    default: break;
+    default:
+        break;
     }
 
     if (opIsCommutative(op)) {
-        auto rank = [](Val v) { return v.isConst() ? std::make_pair(1, 0) : std::make_pair(0, v.node); };
+        auto rank = [](Val v) {
+            return v.isConst() ? std::make_pair(1, 0) : std::make_pair(0, v.node);
+        };
         if (rank(b) < rank(a)) std::swap(a, b);
     }
     int arity = opArity(op);
@@ -157,7 +164,8 @@ Val TapeBuilder::emit(Op op, Val a, Val b, Val c, double imm0, double imm1) {
     return {id, 0.0};
 }
 
-Tape TapeBuilder::finish(const std::vector<Output>& outputs, std::vector<ParameterInfo> params) const {
+Tape TapeBuilder::finish(const std::vector<Output>& outputs,
+                         std::vector<ParameterInfo> params) const {
     const std::int32_t n = static_cast<std::int32_t>(nodes_.size());
     // Liveness: mark what the outputs need, record each node's last use.
     std::vector<char> live(n, 0);
@@ -214,7 +222,8 @@ Tape TapeBuilder::finish(const std::vector<Output>& outputs, std::vector<Paramet
         ins.op = node.op;
         ins.out = reg;
         auto operand = [&](const Val& v) {
-            return v.isConst() ? Operand::constant(v.c) : Operand::ofReg(v.node >= 0 ? regOf[v.node] : 0);
+            return v.isConst() ? Operand::constant(v.c)
+                               : Operand::ofReg(v.node >= 0 ? regOf[v.node] : 0);
         };
         int arity = opArity(node.op);
         ins.a = operand(node.a);
@@ -234,18 +243,21 @@ Tape TapeBuilder::finish(const std::vector<Output>& outputs, std::vector<Paramet
             const Node& src = nodes_[v->node];
             if (src.isLeaf || lastUse[v->node] != id) continue;
             std::int32_t r = regOf[v->node];
-            if (std::find(std::begin(released), std::end(released), r) != std::end(released)) continue;
+            if (std::find(std::begin(released), std::end(released), r) != std::end(released))
+                continue;
             released[k - 1] = r;
             freeRegs.push_back(r);
         }
-        if (lastUse[id] == -1) freeRegs.push_back(reg); // computed but unused (cannot happen when live)
+        if (lastUse[id] == -1)
+            freeRegs.push_back(reg); // computed but unused (cannot happen when live)
     }
     tape.registerCount = nextReg;
     tape.origins = origins_;
     for (const Output& o : outputs) {
         OutputInfo info;
         info.name = o.name;
-        info.value = o.value.isConst() ? Operand::constant(o.value.c) : Operand::ofReg(regOf[o.value.node]);
+        info.value =
+            o.value.isConst() ? Operand::constant(o.value.c) : Operand::ofReg(regOf[o.value.node]);
         tape.outputs.push_back(info);
     }
     return tape;
@@ -257,11 +269,14 @@ std::string Tape::disassemble() const {
     auto operand = [&](const Operand& o) {
         std::ostringstream s;
         s.precision(17);
-        if (o.isConst()) s << o.value;
-        else if (o.reg < kInputCount) s << kInputNames[o.reg];
+        if (o.isConst())
+            s << o.value;
+        else if (o.reg < kInputCount)
+            s << kInputNames[o.reg];
         else if (o.reg < kInputCount + static_cast<std::int32_t>(params.size()))
             s << params[o.reg - kInputCount].name;
-        else s << "r" << o.reg;
+        else
+            s << "r" << o.reg;
         return s.str();
     };
     for (const Instruction& ins : code) {
@@ -273,7 +288,8 @@ std::string Tape::disassemble() const {
             os << " [m=" << ins.imm0 << ", alpha=" << ins.imm1 << "]";
         os << "\n";
     }
-    for (const OutputInfo& o : outputs) os << o.name << " <- " << operand(o.value) << "\n";
+    for (const OutputInfo& o : outputs)
+        os << o.name << " <- " << operand(o.value) << "\n";
     return os.str();
 }
 

@@ -22,7 +22,7 @@ struct Val {
 };
 
 class TapeBuilder {
-public:
+  public:
     TapeBuilder();
 
     Val input(Input which);
@@ -57,7 +57,7 @@ public:
     };
     Tape finish(const std::vector<Output>& outputs, std::vector<ParameterInfo> params) const;
 
-private:
+  private:
     struct Node {
         Op op;
         Val a, b, c;

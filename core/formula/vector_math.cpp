@@ -11,11 +11,15 @@ namespace {
 
 // SLEEF declares its results `const double`; these give plain function types.
 #define FL_SCALAR_UNARY(name, sleef)                                                               \
-    double sleef##Scalar(double a) { return Sleef_##sleef##d1_u10purec(a); }
+    double sleef##Scalar(double a) {                                                               \
+        return Sleef_##sleef##d1_u10purec(a);                                                      \
+    }
 FL_VMATH_UNARY(FL_SCALAR_UNARY)
 #undef FL_SCALAR_UNARY
 #define FL_SCALAR_BINARY(name, sleef)                                                              \
-    double sleef##Scalar(double a, double b) { return Sleef_##sleef##d1_u10purec(a, b); }
+    double sleef##Scalar(double a, double b) {                                                     \
+        return Sleef_##sleef##d1_u10purec(a, b);                                                   \
+    }
 FL_VMATH_BINARY(FL_SCALAR_BINARY)
 #undef FL_SCALAR_BINARY
 
@@ -26,7 +30,8 @@ FL_VMATH_BINARY(FL_SCALAR_BINARY)
         std::size_t i = 0;                                                                         \
         for (; i + 2 <= n; i += 2)                                                                 \
             _mm_storeu_pd(out + i, Sleef_##sleef##d2_u10sse2(_mm_loadu_pd(a + i)));                \
-        for (; i < n; ++i) out[i] = Sleef_##sleef##d1_u10purec(a[i]);                              \
+        for (; i < n; ++i)                                                                         \
+            out[i] = Sleef_##sleef##d1_u10purec(a[i]);                                             \
     }
 FL_VMATH_UNARY(FL_SSE2_UNARY)
 #undef FL_SSE2_UNARY
@@ -39,7 +44,8 @@ FL_VMATH_UNARY(FL_SSE2_UNARY)
         for (; i + 2 <= n; i += 2)                                                                 \
             _mm_storeu_pd(out + i, Sleef_##sleef##d2_u10sse2(a ? _mm_loadu_pd(a + i) : va,         \
                                                              b ? _mm_loadu_pd(b + i) : vb));       \
-        for (; i < n; ++i) out[i] = Sleef_##sleef##d1_u10purec(a ? a[i] : ca, b ? b[i] : cb);      \
+        for (; i < n; ++i)                                                                         \
+            out[i] = Sleef_##sleef##d1_u10purec(a ? a[i] : ca, b ? b[i] : cb);                     \
     }
 FL_VMATH_BINARY(FL_SSE2_BINARY)
 #undef FL_SSE2_BINARY
@@ -48,12 +54,12 @@ Implementation makeSse2() {
     Implementation impl{};
     impl.name = "SLEEF SSE2";
 #define FL_FILL_UNARY(name, sleef)                                                                 \
-    impl.unary[static_cast<int>(Unary::name)] = sleef##Scalar;                        \
+    impl.unary[static_cast<int>(Unary::name)] = sleef##Scalar;                                     \
     impl.unaryArray[static_cast<int>(Unary::name)] = sleef##Array;
     FL_VMATH_UNARY(FL_FILL_UNARY)
 #undef FL_FILL_UNARY
 #define FL_FILL_BINARY(name, sleef)                                                                \
-    impl.binary[static_cast<int>(Binary::name)] = sleef##Scalar;                      \
+    impl.binary[static_cast<int>(Binary::name)] = sleef##Scalar;                                   \
     impl.binaryArray[static_cast<int>(Binary::name)] = sleef##Array;
     FL_VMATH_BINARY(FL_FILL_BINARY)
 #undef FL_FILL_BINARY
@@ -77,7 +83,8 @@ const Implementation* avx2Implementation() {
 }
 
 const Implementation& implementation() {
-    static const Implementation& impl = avx2Implementation() ? *avx2Implementation() : sse2Implementation();
+    static const Implementation& impl =
+        avx2Implementation() ? *avx2Implementation() : sse2Implementation();
     return impl;
 }
 

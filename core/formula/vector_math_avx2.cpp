@@ -13,11 +13,15 @@ namespace {
 
 // SLEEF declares its results `const double`; these give plain function types.
 #define FL_SCALAR_UNARY(name, sleef)                                                               \
-    double sleef##Scalar(double a) { return Sleef_##sleef##d1_u10purecfma(a); }
+    double sleef##Scalar(double a) {                                                               \
+        return Sleef_##sleef##d1_u10purecfma(a);                                                   \
+    }
 FL_VMATH_UNARY(FL_SCALAR_UNARY)
 #undef FL_SCALAR_UNARY
 #define FL_SCALAR_BINARY(name, sleef)                                                              \
-    double sleef##Scalar(double a, double b) { return Sleef_##sleef##d1_u10purecfma(a, b); }
+    double sleef##Scalar(double a, double b) {                                                     \
+        return Sleef_##sleef##d1_u10purecfma(a, b);                                                \
+    }
 FL_VMATH_BINARY(FL_SCALAR_BINARY)
 #undef FL_SCALAR_BINARY
 
@@ -28,7 +32,8 @@ FL_VMATH_BINARY(FL_SCALAR_BINARY)
         std::size_t i = 0;                                                                         \
         for (; i + 4 <= n; i += 4)                                                                 \
             _mm256_storeu_pd(out + i, Sleef_##sleef##d4_u10avx2(_mm256_loadu_pd(a + i)));          \
-        for (; i < n; ++i) out[i] = Sleef_##sleef##d1_u10purecfma(a[i]);                           \
+        for (; i < n; ++i)                                                                         \
+            out[i] = Sleef_##sleef##d1_u10purecfma(a[i]);                                          \
     }
 FL_VMATH_UNARY(FL_AVX2_UNARY)
 #undef FL_AVX2_UNARY
@@ -41,7 +46,8 @@ FL_VMATH_UNARY(FL_AVX2_UNARY)
         for (; i + 4 <= n; i += 4)                                                                 \
             _mm256_storeu_pd(out + i, Sleef_##sleef##d4_u10avx2(a ? _mm256_loadu_pd(a + i) : va,   \
                                                                 b ? _mm256_loadu_pd(b + i) : vb)); \
-        for (; i < n; ++i) out[i] = Sleef_##sleef##d1_u10purecfma(a ? a[i] : ca, b ? b[i] : cb);   \
+        for (; i < n; ++i)                                                                         \
+            out[i] = Sleef_##sleef##d1_u10purecfma(a ? a[i] : ca, b ? b[i] : cb);                  \
     }
 FL_VMATH_BINARY(FL_AVX2_BINARY)
 #undef FL_AVX2_BINARY
@@ -50,12 +56,12 @@ Implementation makeAvx2() {
     Implementation impl{};
     impl.name = "SLEEF AVX2+FMA";
 #define FL_FILL_UNARY(name, sleef)                                                                 \
-    impl.unary[static_cast<int>(Unary::name)] = sleef##Scalar;                     \
+    impl.unary[static_cast<int>(Unary::name)] = sleef##Scalar;                                     \
     impl.unaryArray[static_cast<int>(Unary::name)] = sleef##Array;
     FL_VMATH_UNARY(FL_FILL_UNARY)
 #undef FL_FILL_UNARY
 #define FL_FILL_BINARY(name, sleef)                                                                \
-    impl.binary[static_cast<int>(Binary::name)] = sleef##Scalar;                   \
+    impl.binary[static_cast<int>(Binary::name)] = sleef##Scalar;                                   \
     impl.binaryArray[static_cast<int>(Binary::name)] = sleef##Array;
     FL_VMATH_BINARY(FL_FILL_BINARY)
 #undef FL_FILL_BINARY

@@ -34,11 +34,15 @@ int benchCommand(const Args& args) {
     long side = 64;
     double seconds = 0.2;
     for (std::size_t i = 1; i < args.size(); ++i) {
-        if (args[i] == "--json") json = true;
-        else if (args[i] == "--side" && i + 1 < args.size()) side = std::strtol(args[++i].c_str(), nullptr, 10);
-        else if (args[i] == "--seconds" && i + 1 < args.size()) seconds = std::strtod(args[++i].c_str(), nullptr);
+        if (args[i] == "--json")
+            json = true;
+        else if (args[i] == "--side" && i + 1 < args.size())
+            side = std::strtol(args[++i].c_str(), nullptr, 10);
+        else if (args[i] == "--seconds" && i + 1 < args.size())
+            seconds = std::strtod(args[++i].c_str(), nullptr);
         else {
-            std::cerr << "functionlab bench eval: unexpected argument '" << args[i] << "'\n\n" << kBenchHelp;
+            std::cerr << "functionlab bench eval: unexpected argument '" << args[i] << "'\n\n"
+                      << kBenchHelp;
             return kExitUsage;
         }
     }

@@ -37,12 +37,18 @@ Exit status: 0 evaluated/checked, 1 the formula has errors, 2 usage error.
 )";
 
 bool parseKind(const std::string& s, DefinitionKind& kind) {
-    if (s == "generic") kind = DefinitionKind::Generic;
-    else if (s == "implicit") kind = DefinitionKind::Implicit;
-    else if (s == "parametric") kind = DefinitionKind::Parametric;
-    else if (s == "colour" || s == "color") kind = DefinitionKind::Colour;
-    else if (s == "force") kind = DefinitionKind::Force;
-    else return false;
+    if (s == "generic")
+        kind = DefinitionKind::Generic;
+    else if (s == "implicit")
+        kind = DefinitionKind::Implicit;
+    else if (s == "parametric")
+        kind = DefinitionKind::Parametric;
+    else if (s == "colour" || s == "color")
+        kind = DefinitionKind::Colour;
+    else if (s == "force")
+        kind = DefinitionKind::Force;
+    else
+        return false;
     return true;
 }
 
@@ -86,7 +92,8 @@ std::string diagnosticsJson(const std::vector<Diagnostic>& diags) {
 }
 
 void printDiagnostics(const std::vector<Diagnostic>& diags, const std::string& src) {
-    for (const Diagnostic& d : diags) std::cerr << formatDiagnostic(d, src, "formula");
+    for (const Diagnostic& d : diags)
+        std::cerr << formatDiagnostic(d, src, "formula");
 }
 
 struct Options {
@@ -110,11 +117,14 @@ std::string parseOptions(const Args& args, std::size_t first, Options& o) {
             (void)name;
             return args[++i];
         };
-        if (a == "--json") o.json = true;
-        else if (a == "--tape") o.tape = true;
+        if (a == "--json")
+            o.json = true;
+        else if (a == "--tape")
+            o.tape = true;
         else if (a == "--kind") {
             auto v = value("--kind");
-            if (!v || !parseKind(*v, o.kind)) return "--kind needs one of generic, implicit, parametric, colour, force";
+            if (!v || !parseKind(*v, o.kind))
+                return "--kind needs one of generic, implicit, parametric, colour, force";
         } else if (a == "--at") {
             auto v = value("--at");
             double p[3];
@@ -135,7 +145,8 @@ std::string parseOptions(const Args& args, std::size_t first, Options& o) {
             if (!v || eq == std::string::npos || eq == 0 || !parseNumber(v->substr(eq + 1), num))
                 return "--param needs NAME=VALUE";
             o.params.emplace_back(v->substr(0, eq), num);
-        } else if (!a.empty() && a[0] == '-' && a.size() > 1 && !std::isdigit(static_cast<unsigned char>(a[1])) && a[1] != '.') {
+        } else if (!a.empty() && a[0] == '-' && a.size() > 1 &&
+                   !std::isdigit(static_cast<unsigned char>(a[1])) && a[1] != '.') {
             return "unknown option '" + a + "'";
         } else if (!o.haveSource) {
             o.source = a;
@@ -162,7 +173,8 @@ int check(const Args& args) {
         if (r.ok()) {
             std::cout << "ok: " << r.tape->code.size() << " operations, " << r.tape->registerCount
                       << " registers, outputs:";
-            for (const OutputInfo& out : r.tape->outputs) std::cout << " " << out.name;
+            for (const OutputInfo& out : r.tape->outputs)
+                std::cout << " " << out.name;
             std::cout << "\n";
             if (o.tape) std::cout << r.tape->disassemble();
         }
@@ -183,7 +195,9 @@ int eval(const Args& args) {
     if (r.ok()) {
         for (const auto& [name, value] : o.params) {
             if (r.tape->paramRegister(name) < 0) {
-                diags.push_back({Severity::Error, {}, "the formula has no parameter '" + name + "'",
+                diags.push_back({Severity::Error,
+                                 {},
+                                 "the formula has no parameter '" + name + "'",
                                  "declare it: param " + name + " = 1;"});
             }
         }
@@ -231,13 +245,15 @@ int eval(const Args& args) {
     Dual d = outs[0];
     if (!finite) d.d = {NAN, NAN, NAN}; // a gradient of an undefined value means nothing
     if (o.json) {
-        std::cout << "{\"value\": " << jsonNumber(value) << ", \"finite\": " << (finite ? "true" : "false")
-                  << ", \"gradient\": [" << jsonNumber(d.d[0]) << ", " << jsonNumber(d.d[1]) << ", "
-                  << jsonNumber(d.d[2]) << "]";
+        std::cout << "{\"value\": " << jsonNumber(value)
+                  << ", \"finite\": " << (finite ? "true" : "false") << ", \"gradient\": ["
+                  << jsonNumber(d.d[0]) << ", " << jsonNumber(d.d[1]) << ", " << jsonNumber(d.d[2])
+                  << "]";
         if (tape.outputs.size() > 1) {
             std::cout << ", \"outputs\": {";
             for (std::size_t i = 0; i < values.size(); ++i)
-                std::cout << (i ? ", " : "") << jsonString(tape.outputs[i].name) << ": " << jsonNumber(values[i]);
+                std::cout << (i ? ", " : "") << jsonString(tape.outputs[i].name) << ": "
+                          << jsonNumber(values[i]);
             std::cout << "}";
         }
         std::cout << ", \"diagnostics\": " << diagnosticsJson(diags) << "}\n";
@@ -247,8 +263,9 @@ int eval(const Args& args) {
         for (std::size_t i = 0; i < values.size(); ++i) {
             const char* axes = parametric ? "uvw" : "xyz";
             std::cout << tape.outputs[i].name << " = " << values[i] << "\n";
-            std::cout << "  gradient = (" << outs[i].d[0] << ", " << outs[i].d[1] << ", " << outs[i].d[2]
-                      << ")  [d/d" << axes[0] << ", d/d" << axes[1] << ", d/d" << axes[2] << "]\n";
+            std::cout << "  gradient = (" << outs[i].d[0] << ", " << outs[i].d[1] << ", "
+                      << outs[i].d[2] << ")  [d/d" << axes[0] << ", d/d" << axes[1] << ", d/d"
+                      << axes[2] << "]\n";
         }
     }
     return kExitOk;

@@ -17,7 +17,8 @@ bool sameBits(double a, double b) {
            (std::isnan(a) && std::isnan(b));
 }
 
-void checkAgainstScalar(const std::string& src, std::mt19937_64& rng, std::size_t n, bool uniformZ) {
+void checkAgainstScalar(const std::string& src, std::mt19937_64& rng, std::size_t n,
+                        bool uniformZ) {
     CompileResult r = compile(src);
     ASSERT_TRUE(r.ok()) << src;
     std::uniform_real_distribution<double> v(-3, 3);
@@ -32,14 +33,17 @@ void checkAgainstScalar(const std::string& src, std::mt19937_64& rng, std::size_
     BatchInputs in;
     in.set(Input::X, xs.data());
     in.set(Input::Y, ys.data());
-    if (uniformZ) in.set(Input::Z, zu);
-    else in.set(Input::Z, zs.data());
+    if (uniformZ)
+        in.set(Input::Z, zu);
+    else
+        in.set(Input::Z, zs.data());
     in.set(Input::T, t);
     batch.evaluate(in, n, out.data());
     ScalarEvaluator scalar(*r.tape);
     for (std::size_t i = 0; i < n; ++i) {
         double s = scalar.evaluate(pointXYZ(xs[i], ys[i], uniformZ ? zu : zs[i], t));
-        ASSERT_TRUE(sameBits(s, out[i])) << src << " at " << i << ": scalar " << s << " batch " << out[i];
+        ASSERT_TRUE(sameBits(s, out[i]))
+            << src << " at " << i << ": scalar " << s << " batch " << out[i];
     }
 }
 
@@ -53,8 +57,9 @@ TEST(Batch, MatchesScalarOnRandomFormulas) {
 
 TEST(Batch, BlockBoundariesAndEmptyCalls) {
     std::mt19937_64 rng(4);
-    for (std::size_t n : {std::size_t{0}, std::size_t{1}, BatchEvaluator::kBlock - 1, BatchEvaluator::kBlock,
-                          BatchEvaluator::kBlock + 1, 3 * BatchEvaluator::kBlock + 17})
+    for (std::size_t n :
+         {std::size_t{0}, std::size_t{1}, BatchEvaluator::kBlock - 1, BatchEvaluator::kBlock,
+          BatchEvaluator::kBlock + 1, 3 * BatchEvaluator::kBlock + 17})
         checkAgainstScalar("sin(x) * y - z^3 & x", rng, n, false);
 }
 

@@ -74,11 +74,15 @@ TEST(Checker, RecursionAndNonConstantLoopsAreRefused) {
 }
 
 TEST(Checker, ReservedNamesAndParameters) {
-    EXPECT_NE(firstError("pi = 3; return pi;").message.find("built-in constant"), std::string::npos);
-    EXPECT_NE(firstError("sin = 3; return sin;").message.find("built-in function"), std::string::npos);
-    EXPECT_NE(firstError("param R = 1; R = 2; return R;").message.find("is a parameter"), std::string::npos);
+    EXPECT_NE(firstError("pi = 3; return pi;").message.find("built-in constant"),
+              std::string::npos);
+    EXPECT_NE(firstError("sin = 3; return sin;").message.find("built-in function"),
+              std::string::npos);
+    EXPECT_NE(firstError("param R = 1; R = 2; return R;").message.find("is a parameter"),
+              std::string::npos);
     EXPECT_NE(firstError("param R = x; return R;").message.find("constant"), std::string::npos);
-    EXPECT_NE(firstError("param R = 1 in [2, 0]; return R;").message.find("empty"), std::string::npos);
+    EXPECT_NE(firstError("param R = 1 in [2, 0]; return R;").message.find("empty"),
+              std::string::npos);
     EXPECT_NE(firstError("sin + 1").message.find("is a function"), std::string::npos);
     EXPECT_NE(firstError("x(2)").message.find("not a function"), std::string::npos);
 }
@@ -93,10 +97,9 @@ TEST(Checker, FormatsACaretUnderTheColumn) {
     CompileResult r = compile("1 + sine(x)");
     ASSERT_FALSE(r.ok());
     std::string text = formatDiagnostic(r.diagnostics[0], "1 + sine(x)");
-    EXPECT_EQ(text,
-              "1:5: error: unknown function 'sine' (did you mean 'sin'?)\n"
-              "  1 + sine(x)\n"
-              "      ^~~~\n");
+    EXPECT_EQ(text, "1:5: error: unknown function 'sine' (did you mean 'sin'?)\n"
+                    "  1 + sine(x)\n"
+                    "      ^~~~\n");
 }
 
 } // namespace

@@ -60,7 +60,8 @@ TEST(Compiler, UnrollsLoopsAndInlinesFunctions) {
     ASSERT_TRUE(r.ok());
     ScalarEvaluator e(*r.tape);
     double x = 1.3, expected = 0;
-    for (int i = 0; i < 4; ++i) expected += std::exp(-(x - i) * (x - i));
+    for (int i = 0; i < 4; ++i)
+        expected += std::exp(-(x - i) * (x - i));
     EXPECT_NEAR(e.evaluate(pointXYZ(x, 0, 0)), expected, 1e-15);
 }
 

@@ -44,7 +44,8 @@ int checkGradient(const std::string& src, std::mt19937_64& rng, int points) {
             double scale = 1.0 + std::abs(d2);
             if (std::abs(d1 - d2) > 1e-4 * scale) continue; // singular here
             EXPECT_NEAR(d.d[axis], d2, 1e-4 * scale)
-                << src << " d/d" << "xyz"[axis] << " at (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+                << src << " d/d"
+                << "xyz"[axis] << " at (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
             if (std::abs(d.d[axis] - d2) > 1e-4 * scale) return checked; // reported once
             ++checked;
         }
@@ -55,7 +56,8 @@ int checkGradient(const std::string& src, std::mt19937_64& rng, int points) {
 TEST(GradientProperty, RandomFormulasMatchFiniteDifferences) {
     std::mt19937_64 rng(99);
     int checked = 0;
-    for (int i = 0; i < 400; ++i) checked += checkGradient(testing::randomFormula(rng, 1 + i % 4), rng, 10);
+    for (int i = 0; i < 400; ++i)
+        checked += checkGradient(testing::randomFormula(rng, 1 + i % 4), rng, 10);
     EXPECT_GT(checked, 3000); // the law was really exercised, not skipped
 }
 
@@ -75,7 +77,8 @@ TEST(GradientProperty, PrimitivesAndBlendsMatchFiniteDifferences) {
         "smoothstep(-1, 1, x) * y",
         "0.01*(sin(12*atan(x, z + 0.04*sin(25*y))) - 0.7)",
     };
-    for (const char* src : formulas) EXPECT_GT(checkGradient(src, rng, 60), 60) << src;
+    for (const char* src : formulas)
+        EXPECT_GT(checkGradient(src, rng, 60), 60) << src;
 }
 
 TEST(GradientProperty, ParametricGradientIsWithRespectToUVW) {

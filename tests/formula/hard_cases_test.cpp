@@ -99,7 +99,8 @@ TEST(HardCases, ZeroAndUndefinedGradients) {
         return g.evaluate(pointXYZ(x, y, z));
     };
     Dual d = grad("sqrt(x^2 + y^2 + z^2)", 0, 0, 0);
-    for (double c : d.d) EXPECT_EQ(c, 0.0); // not NaN from 0 * inf
+    for (double c : d.d)
+        EXPECT_EQ(c, 0.0); // not NaN from 0 * inf
     d = grad("abs(x)", 0, 0, 0);
     EXPECT_EQ(d.d[0], 0.0);
     d = grad("7", 1, 2, 3);
@@ -156,6 +157,28 @@ TEST(HardCases, ComparisonsWithNaNAreFalse) {
     EXPECT_EQ(eval("!x", NAN), 1.0);
     EXPECT_TRUE(std::isnan(eval("min(x, 1)", NAN)));
     EXPECT_TRUE(std::isnan(eval("max(1, x)", NAN)));
+}
+
+} // namespace
+} // namespace fl::formula
+
+namespace fl::formula {
+namespace {
+
+// Found by the fuzzer: inf - inf, 0 * inf and inf / inf inside a box are NaN
+// even when no endpoint computation is; the interval must say "may be NaN".
+TEST(HardCases, IntervalsFlagNaNFromInfiniteArithmetic) {
+    auto range = [](const char* src, double lo, double hi) {
+        IntervalEvaluator e(*compile(src).tape);
+        return e.evaluate(boxXYZ(lo, hi, lo, hi, lo, hi));
+    };
+    EXPECT_TRUE(range("0^-z^21 - 0^-z^2", -1, 1).nan);
+    EXPECT_TRUE(range("x * (1 / y)", -1, 1).nan);    // 0 * inf
+    EXPECT_TRUE(range("(1/x) / (1/y)", -1, 1).nan);  // inf / inf
+    EXPECT_TRUE(range("1/x^2 + -1/y^2", -1, 1).nan); // inf + -inf
+    EXPECT_FALSE(range("x * y - z", -1, 1).nan);     // finite boxes stay clean
+    ScalarEvaluator s(*compile("0^-z^21 - 0^-z^2").tape);
+    EXPECT_TRUE(std::isnan(s.evaluate(pointXYZ(0, 0, 0.5))));
 }
 
 } // namespace

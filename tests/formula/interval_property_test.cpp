@@ -36,14 +36,15 @@ void checkContainment(const std::string& src, std::mt19937_64& rng, int boxes, i
             Point p{};
             for (int i = 0; i < 4; ++i) {
                 double u = s == 0 ? 0.0 : (s == 1 ? 1.0 : unit(rng)); // corners too
-                p[i] = std::min(hi[i], lo[i] + u * (hi[i] - lo[i])); // stay inside the box
+                p[i] = std::min(hi[i], lo[i] + u * (hi[i] - lo[i]));  // stay inside the box
             }
             double v = scalar.evaluate(p);
             ASSERT_TRUE(range.contains(v))
-                << "formula: " << src << "\nbox x[" << lo[0] << "," << hi[0] << "] y[" << lo[1] << ","
-                << hi[1] << "] z[" << lo[2] << "," << hi[2] << "] t[" << lo[3] << "," << hi[3]
-                << "]\npoint (" << p[0] << "," << p[1] << "," << p[2] << "," << p[3] << ") value "
-                << v << " not in [" << range.lo << ", " << range.hi << "] nan=" << range.nan;
+                << "formula: " << src << "\nbox x[" << lo[0] << "," << hi[0] << "] y[" << lo[1]
+                << "," << hi[1] << "] z[" << lo[2] << "," << hi[2] << "] t[" << lo[3] << ","
+                << hi[3] << "]\npoint (" << p[0] << "," << p[1] << "," << p[2] << "," << p[3]
+                << ") value " << v << " not in [" << range.lo << ", " << range.hi
+                << "] nan=" << range.nan;
         }
     }
 }
@@ -69,7 +70,8 @@ TEST(IntervalProperty, PaperFormulasContainEveryPointValue) {
         "torus(1, 0.3) | cylinder(0.2, 3) \\ cone(0.5, 1)",
         "superellipsoid(0, 0, 0, 1, 1, 1, 0.5, 0.5)",
     };
-    for (const char* f : formulas) checkContainment(f, rng, 200, 32);
+    for (const char* f : formulas)
+        checkContainment(f, rng, 200, 32);
 }
 
 TEST(IntervalProperty, TightForSquaresOfSignChangingIntervals) {

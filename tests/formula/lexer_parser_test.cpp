@@ -83,7 +83,8 @@ TEST(Parser, ScriptsParse) {
         for (i = 0; i < 3; i++) { s += sq(i); }
         if (s > 4) { s = s - 1; } else s = 0;
         return s;
-    )", d);
+    )",
+                      d);
     EXPECT_TRUE(d.empty()) << d[0].message;
     EXPECT_EQ(p.functions.size(), 1u);
     EXPECT_EQ(p.params.size(), 1u);
@@ -93,7 +94,8 @@ TEST(Parser, ScriptsParse) {
         s = 0;
         for (i = 0; i < 3; i++) { s += sq(i); }
         if (s > 4) { s = s - 1; } else s = 0;
-        return s;)"), 4.0);
+        return s;)"),
+              4.0);
 }
 
 } // namespace

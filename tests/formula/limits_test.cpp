@@ -23,7 +23,8 @@ TEST(Limits, NestingDepthOfParentheses) {
 
 TEST(Limits, NestingDepthOfOperatorChains) {
     std::string src = "x";
-    for (int i = 0; i < 20000; ++i) src += "+x";
+    for (int i = 0; i < 20000; ++i)
+        src += "+x";
     CompileResult r = compile(src);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.diagnostics[0].message.find("nested too deeply"), std::string::npos);
@@ -48,14 +49,15 @@ TEST(Limits, TapeSize) {
 }
 
 TEST(Limits, NestedLoopsCountTogether) {
-    CompileResult r = compile(
-        "s = 0; for (i = 0; i < 100; i++) { for (j = 0; j < 100; j++) { s += i * j * x; } } return s;");
+    CompileResult r = compile("s = 0; for (i = 0; i < 100; i++) { for (j = 0; j < 100; j++) { s += "
+                              "i * j * x; } } return s;");
     ASSERT_FALSE(r.ok());
 }
 
 TEST(Limits, DefaultsAdmitRealFormulas) {
     std::string src = "0";
-    for (int i = 0; i < 150; ++i) src += " | sphere(" + std::to_string(i) + ", 0, 0, 0.5)";
+    for (int i = 0; i < 150; ++i)
+        src += " | sphere(" + std::to_string(i) + ", 0, 0, 0.5)";
     EXPECT_TRUE(compile(src).ok());
 }
 

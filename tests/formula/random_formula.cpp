@@ -21,13 +21,13 @@ std::string leaf(std::mt19937_64& rng) {
 
 std::string randomFormula(std::mt19937_64& rng, int depth) {
     if (depth <= 0) return leaf(rng);
-    static const std::array<const char*, 17> unary = {"sin", "cos", "exp", "log", "sqrt", "abs",
-                                                      "atan", "tanh", "floor", "-", "cbrt", "tan",
-                                                      "asin", "acos", "cosh", "sinh", "sign"};
-    static const std::array<const char*, 12> binaryOps = {"+", "-", "*", "/", "^", "&",
+    static const std::array<const char*, 17> unary = {
+        "sin", "cos",  "exp", "log",  "sqrt", "abs",  "atan", "tanh", "floor",
+        "-",   "cbrt", "tan", "asin", "acos", "cosh", "sinh", "sign"};
+    static const std::array<const char*, 12> binaryOps = {"+", "-",  "*", "/",  "^",  "&",
                                                           "|", "\\", "<", ">=", "&&", "||"};
-    static const std::array<const char*, 8> binaryFns = {"min", "max", "atan2", "hypot", "mod",
-                                                         "rintersect", "runion", "pow"};
+    static const std::array<const char*, 8> binaryFns = {"min", "max",        "atan2",  "hypot",
+                                                         "mod", "rintersect", "runion", "pow"};
     std::uniform_int_distribution<int> kind(0, 9);
     int k = kind(rng);
     auto sub = [&]() { return randomFormula(rng, depth - 1); };
@@ -37,7 +37,8 @@ std::string randomFormula(std::mt19937_64& rng, int depth) {
         return std::string(f) + "(" + sub() + ")";
     }
     if (k <= 5) {
-        const char* op = binaryOps[std::uniform_int_distribution<std::size_t>(0, binaryOps.size() - 1)(rng)];
+        const char* op =
+            binaryOps[std::uniform_int_distribution<std::size_t>(0, binaryOps.size() - 1)(rng)];
         std::string rhs = sub();
         if (std::string(op) == "^") {
             // integer powers are the common case; keep some general ones
@@ -47,7 +48,8 @@ std::string randomFormula(std::mt19937_64& rng, int depth) {
         return "(" + sub() + " " + op + " " + rhs + ")";
     }
     if (k <= 7) {
-        const char* f = binaryFns[std::uniform_int_distribution<std::size_t>(0, binaryFns.size() - 1)(rng)];
+        const char* f =
+            binaryFns[std::uniform_int_distribution<std::size_t>(0, binaryFns.size() - 1)(rng)];
         std::string extra;
         if ((std::string(f) == "rintersect" || std::string(f) == "runion") && kind(rng) < 4)
             extra = ", " + std::to_string(std::uniform_int_distribution<int>(1, 2)(rng));

@@ -11,15 +11,19 @@ namespace fl::formula {
 namespace {
 
 // Reference in long double, textbook form, for inputs where it is accurate.
-long double refIntersect(long double a, long double b) { return a + b - std::sqrt(a * a + b * b); }
+long double refIntersect(long double a, long double b) {
+    return a + b - std::sqrt(a * a + b * b);
+}
 
 TEST(RFunction, MatchesTheDefinitionOnOrdinaryValues) {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> v(-10, 10);
     for (int i = 0; i < 10000; ++i) {
         double a = v(rng), b = v(rng);
-        EXPECT_NEAR(rIntersect0(a, b), static_cast<double>(refIntersect(a, b)), 1e-13 * (1 + std::abs(a) + std::abs(b)));
-        EXPECT_NEAR(rUnion0(a, b), static_cast<double>(-refIntersect(-a, -b)), 1e-13 * (1 + std::abs(a) + std::abs(b)));
+        EXPECT_NEAR(rIntersect0(a, b), static_cast<double>(refIntersect(a, b)),
+                    1e-13 * (1 + std::abs(a) + std::abs(b)));
+        EXPECT_NEAR(rUnion0(a, b), static_cast<double>(-refIntersect(-a, -b)),
+                    1e-13 * (1 + std::abs(a) + std::abs(b)));
     }
 }
 

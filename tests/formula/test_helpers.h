@@ -21,7 +21,8 @@ inline double eval(const std::string& src, double x = 0, double y = 0, double z 
 }
 
 // The first error's message (empty when it compiled).
-inline Diagnostic firstError(const std::string& src, DefinitionKind kind = DefinitionKind::Generic) {
+inline Diagnostic firstError(const std::string& src,
+                             DefinitionKind kind = DefinitionKind::Generic) {
     CompileOptions o;
     o.kind = kind;
     CompileResult r = compile(src, o);

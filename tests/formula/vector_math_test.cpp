@@ -41,7 +41,8 @@ TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
             impl->unaryArray[f](a.data(), out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 double s = impl->unary[f](a[i]);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) == std::bit_cast<std::uint64_t>(out[i]) ||
+                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
+                                std::bit_cast<std::uint64_t>(out[i]) ||
                             (std::isnan(s) && std::isnan(out[i])))
                     << impl->name << " unary " << f << " at " << a[i];
             }
@@ -50,14 +51,16 @@ TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
             impl->binaryArray[f](a.data(), 0, nullptr, 2.5, out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 double s = impl->binary[f](a[i], 2.5);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) == std::bit_cast<std::uint64_t>(out[i]) ||
+                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
+                                std::bit_cast<std::uint64_t>(out[i]) ||
                             (std::isnan(s) && std::isnan(out[i])))
                     << impl->name << " binary " << f;
             }
             impl->binaryArray[f](nullptr, 1.5, b.data(), 0, out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 double s = impl->binary[f](1.5, b[i]);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) == std::bit_cast<std::uint64_t>(out[i]) ||
+                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
+                                std::bit_cast<std::uint64_t>(out[i]) ||
                             (std::isnan(s) && std::isnan(out[i])));
             }
         }
@@ -67,16 +70,18 @@ TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
 TEST(VectorMath, WithinTwoUlpsOfTheCLibrary) {
     std::mt19937_64 rng(9);
     std::uniform_real_distribution<double> unit(-1, 1), wide(-20, 20), pos(1e-3, 50);
-    double (*ref[])(double) = {std::sin, std::cos, std::tan, std::asin, std::acos, std::atan, std::exp,
-                               std::log, std::log2, std::log10, std::sinh, std::cosh, std::tanh, std::cbrt};
+    double (*ref[])(double) = {std::sin,  std::cos,  std::tan,  std::asin, std::acos,
+                               std::atan, std::exp,  std::log,  std::log2, std::log10,
+                               std::sinh, std::cosh, std::tanh, std::cbrt};
     for (const Implementation* impl : variants()) {
         for (int f = 0; f < static_cast<int>(Unary::Count); ++f) {
             for (int k = 0; k < 2000; ++k) {
                 Unary u = static_cast<Unary>(f);
-                double x = (u == Unary::Asin || u == Unary::Acos) ? unit(rng)
+                double x = (u == Unary::Asin || u == Unary::Acos)                       ? unit(rng)
                            : (u == Unary::Log || u == Unary::Log2 || u == Unary::Log10) ? pos(rng)
                                                                                         : wide(rng);
-                ASSERT_LE(ulpDistance(impl->unary[f](x), ref[f](x)), 2.0) << impl->name << " " << f << " " << x;
+                ASSERT_LE(ulpDistance(impl->unary[f](x), ref[f](x)), 2.0)
+                    << impl->name << " " << f << " " << x;
             }
         }
         for (int k = 0; k < 2000; ++k) {

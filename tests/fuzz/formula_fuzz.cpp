@@ -30,7 +30,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         options.setOperations.m = 1.0;
     }
     CompileResult r = compile(src, options);
-    for (const Diagnostic& d : r.diagnostics) (void)formatDiagnostic(d, src);
+    for (const Diagnostic& d : r.diagnostics)
+        (void)formatDiagnostic(d, src);
     if (!r.ok()) return 0;
     const Tape& tape = *r.tape;
     (void)tape.disassemble();
@@ -44,25 +45,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const double coords[] = {0.0, 0.5, -1.25, 3.0, 1e-9};
     Point points[5];
     for (int i = 0; i < 5; ++i)
-        for (int k = 0; k < kInputCount; ++k) points[i][k] = coords[(i + k) % 5];
+        for (int k = 0; k < kInputCount; ++k)
+            points[i][k] = coords[(i + k) % 5];
 
     std::vector<double> scalarOut(outs), batchOut(outs * 5), column[kInputCount];
     for (int k = 0; k < kInputCount; ++k) {
         column[k].resize(5);
-        for (int i = 0; i < 5; ++i) column[k][i] = points[i][k];
+        for (int i = 0; i < 5; ++i)
+            column[k][i] = points[i][k];
     }
     BatchInputs in;
-    for (int k = 0; k < kInputCount; ++k) in.arrays[k] = k == 3 ? nullptr : column[k].data();
+    for (int k = 0; k < kInputCount; ++k)
+        in.arrays[k] = k == 3 ? nullptr : column[k].data();
     in.uniform[3] = points[0][3];
-    for (int i = 0; i < 5; ++i) points[i][3] = points[0][3]; // t is uniform in the batch
+    for (int i = 0; i < 5; ++i)
+        points[i][3] = points[0][3]; // t is uniform in the batch
     std::vector<double*> outPtrs(outs);
-    for (std::size_t o = 0; o < outs; ++o) outPtrs[o] = batchOut.data() + o * 5;
+    for (std::size_t o = 0; o < outs; ++o)
+        outPtrs[o] = batchOut.data() + o * 5;
     batch.evaluate(in, 5, outPtrs.data());
 
     std::vector<Dual> grads(outs);
     std::vector<Interval> ranges(outs);
     Box box;
-    for (int k = 0; k < kInputCount; ++k) box[k] = Interval::of(-1.25, 3.0);
+    for (int k = 0; k < kInputCount; ++k)
+        box[k] = Interval::of(-1.25, 3.0);
     box[3] = Interval::point(points[0][3]);
     interval.evaluateAll(box, ranges.data());
     for (int i = 0; i < 5; ++i) {
