@@ -2,6 +2,7 @@
 
 #include "noise.h"
 #include "scalar_ops.h"
+#include "tape_walk.h"
 
 #include <cmath>
 #include <numbers>
@@ -204,49 +205,44 @@ Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c) {
 
 } // namespace ad
 
+namespace {
+struct DualDomain {
+    using Value = Dual;
+    static Dual constant(double v) { return Dual{v, {0.0, 0.0, 0.0}}; }
+    static Dual unary(Op op, const Dual& a, double imm0) { return ad::unary(op, a, imm0); }
+    static Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
+        return ad::binary(op, a, b, imm0, imm1);
+    }
+    static Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c) {
+        return ad::ternary(op, a, b, c);
+    }
+};
+} // namespace
+
 GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt)
     : tape_(tape), wrt_(wrt), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount)) {}
 
 void GradientEvaluator::run(const Point& p) {
     Dual* r = regs_.data();
     for (int i = 0; i < kInputCount; ++i)
-        r[i] = Dual{p[i], {0.0, 0.0, 0.0}};
+        r[i] = DualDomain::constant(p[i]);
     for (int k = 0; k < 3; ++k)
         r[static_cast<int>(wrt_[k])].d[k] = 1.0;
     const std::vector<double>& pv = params_.values();
     for (std::size_t i = 0; i < pv.size(); ++i)
-        r[kInputCount + i] = Dual{pv[i], {0.0, 0.0, 0.0}};
-    auto get = [r](const Operand& o) {
-        return o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : r[o.reg];
-    };
-    for (const Instruction& ins : tape_.code) {
-        switch (opArity(ins.op)) {
-        case 1:
-            r[ins.out] = ad::unary(ins.op, get(ins.a), ins.imm0);
-            break;
-        case 2:
-            r[ins.out] = ad::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1);
-            break;
-        default:
-            r[ins.out] = ad::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c));
-            break;
-        }
-    }
+        r[kInputCount + i] = DualDomain::constant(pv[i]);
+    walkTape<DualDomain>(tape_, r);
 }
 
 Dual GradientEvaluator::evaluate(const Point& p) {
     run(p);
-    if (tape_.outputs.empty()) return {};
-    const Operand& o = tape_.outputs[0].value;
-    return o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : regs_[o.reg];
+    return tape_.outputs.empty() ? Dual{} : tapeOutput<DualDomain>(tape_, regs_.data(), 0);
 }
 
 void GradientEvaluator::evaluateAll(const Point& p, Dual* outputs) {
     run(p);
-    for (std::size_t i = 0; i < tape_.outputs.size(); ++i) {
-        const Operand& o = tape_.outputs[i].value;
-        outputs[i] = o.isConst() ? Dual{o.value, {0.0, 0.0, 0.0}} : regs_[o.reg];
-    }
+    for (std::size_t i = 0; i < tape_.outputs.size(); ++i)
+        outputs[i] = tapeOutput<DualDomain>(tape_, regs_.data(), i);
 }
 
 } // namespace fl::formula

@@ -1,5 +1,7 @@
 #include "eval_interval.h"
 
+#include "tape_walk.h"
+
 namespace fl::formula {
 
 Box boxXYZ(double x0, double x1, double y0, double y1, double z0, double z1, double t) {
@@ -13,6 +15,20 @@ Box boxXYZ(double x0, double x1, double y0, double y1, double z0, double z1, dou
     return b;
 }
 
+namespace {
+struct IntervalDomain {
+    using Value = Interval;
+    static Interval constant(double v) { return Interval::point(v); }
+    static Interval unary(Op op, const Interval& a, double imm0) { return iv::unary(op, a, imm0); }
+    static Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double imm1) {
+        return iv::binary(op, a, b, imm0, imm1);
+    }
+    static Interval ternary(Op op, const Interval& a, const Interval& b, const Interval& c) {
+        return iv::ternary(op, a, b, c);
+    }
+};
+} // namespace
+
 IntervalEvaluator::IntervalEvaluator(const Tape& tape)
     : tape_(tape), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount)) {}
 
@@ -23,35 +39,19 @@ void IntervalEvaluator::run(const Box& box) {
     const std::vector<double>& pv = params_.values();
     for (std::size_t i = 0; i < pv.size(); ++i)
         r[kInputCount + i] = Interval::point(pv[i]);
-    auto get = [r](const Operand& o) { return o.isConst() ? Interval::point(o.value) : r[o.reg]; };
-    for (const Instruction& ins : tape_.code) {
-        switch (opArity(ins.op)) {
-        case 1:
-            r[ins.out] = iv::unary(ins.op, get(ins.a), ins.imm0);
-            break;
-        case 2:
-            r[ins.out] = iv::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1);
-            break;
-        default:
-            r[ins.out] = iv::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c));
-            break;
-        }
-    }
+    walkTape<IntervalDomain>(tape_, r);
 }
 
 Interval IntervalEvaluator::evaluate(const Box& box) {
     run(box);
-    if (tape_.outputs.empty()) return Interval::point(0.0);
-    const Operand& o = tape_.outputs[0].value;
-    return o.isConst() ? Interval::point(o.value) : regs_[o.reg];
+    return tape_.outputs.empty() ? Interval::point(0.0)
+                                 : tapeOutput<IntervalDomain>(tape_, regs_.data(), 0);
 }
 
 void IntervalEvaluator::evaluateAll(const Box& box, Interval* outputs) {
     run(box);
-    for (std::size_t i = 0; i < tape_.outputs.size(); ++i) {
-        const Operand& o = tape_.outputs[i].value;
-        outputs[i] = o.isConst() ? Interval::point(o.value) : regs_[o.reg];
-    }
+    for (std::size_t i = 0; i < tape_.outputs.size(); ++i)
+        outputs[i] = tapeOutput<IntervalDomain>(tape_, regs_.data(), i);
 }
 
 } // namespace fl::formula

@@ -1,6 +1,7 @@
 #include "eval_scalar.h"
 
 #include "scalar_ops.h"
+#include "tape_walk.h"
 
 namespace fl::formula {
 
@@ -19,6 +20,18 @@ bool ParameterValues::set(std::string_view name, double value) {
     return false;
 }
 
+namespace {
+struct ScalarDomain {
+    using Value = double;
+    static double constant(double v) { return v; }
+    static double unary(Op op, double a, double imm0) { return ops::unary(op, a, imm0); }
+    static double binary(Op op, double a, double b, double imm0, double imm1) {
+        return ops::binary(op, a, b, imm0, imm1);
+    }
+    static double ternary(Op op, double a, double b, double c) { return ops::ternary(op, a, b, c); }
+};
+} // namespace
+
 ScalarEvaluator::ScalarEvaluator(const Tape& tape)
     : tape_(tape), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount), 0.0) {}
 
@@ -29,35 +42,18 @@ void ScalarEvaluator::run(const Point& p) {
     const std::vector<double>& pv = params_.values();
     for (std::size_t i = 0; i < pv.size(); ++i)
         r[kInputCount + i] = pv[i];
-    auto get = [r](const Operand& o) { return o.isConst() ? o.value : r[o.reg]; };
-    for (const Instruction& ins : tape_.code) {
-        switch (opArity(ins.op)) {
-        case 1:
-            r[ins.out] = ops::unary(ins.op, get(ins.a), ins.imm0);
-            break;
-        case 2:
-            r[ins.out] = ops::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1);
-            break;
-        default:
-            r[ins.out] = ops::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c));
-            break;
-        }
-    }
+    walkTape<ScalarDomain>(tape_, r);
 }
 
 double ScalarEvaluator::evaluate(const Point& p) {
     run(p);
-    if (tape_.outputs.empty()) return 0.0;
-    const Operand& o = tape_.outputs[0].value;
-    return o.isConst() ? o.value : regs_[o.reg];
+    return tape_.outputs.empty() ? 0.0 : tapeOutput<ScalarDomain>(tape_, regs_.data(), 0);
 }
 
 void ScalarEvaluator::evaluateAll(const Point& p, double* outputs) {
     run(p);
-    for (std::size_t i = 0; i < tape_.outputs.size(); ++i) {
-        const Operand& o = tape_.outputs[i].value;
-        outputs[i] = o.isConst() ? o.value : regs_[o.reg];
-    }
+    for (std::size_t i = 0; i < tape_.outputs.size(); ++i)
+        outputs[i] = tapeOutput<ScalarDomain>(tape_, regs_.data(), i);
 }
 
 } // namespace fl::formula

@@ -10,68 +10,19 @@
 namespace fl::formula::vmath {
 
 namespace {
-
-// SLEEF declares its results `const double`; these give plain function types.
-#define FL_SCALAR_UNARY(name, sleef)                                                               \
-    double sleef##Scalar(double a) {                                                               \
-        return Sleef_##sleef##d1_u10purecfma(a);                                                   \
-    }
-FL_VMATH_UNARY(FL_SCALAR_UNARY)
-#undef FL_SCALAR_UNARY
-#define FL_SCALAR_BINARY(name, sleef)                                                              \
-    double sleef##Scalar(double a, double b) {                                                     \
-        return Sleef_##sleef##d1_u10purecfma(a, b);                                                \
-    }
-FL_VMATH_BINARY(FL_SCALAR_BINARY)
-#undef FL_SCALAR_BINARY
-
-// Four lanes per step; the tail uses purecfma, the scalar routine with the
-// same fused operations as the AVX2 one, so every element matches eval().
-#define FL_AVX2_UNARY(name, sleef)                                                                 \
-    void sleef##Array(const double* a, double* out, std::size_t n) {                               \
-        std::size_t i = 0;                                                                         \
-        for (; i + 4 <= n; i += 4)                                                                 \
-            _mm256_storeu_pd(out + i, Sleef_##sleef##d4_u10avx2(_mm256_loadu_pd(a + i)));          \
-        for (; i < n; ++i)                                                                         \
-            out[i] = Sleef_##sleef##d1_u10purecfma(a[i]);                                          \
-    }
-FL_VMATH_UNARY(FL_AVX2_UNARY)
-#undef FL_AVX2_UNARY
-
-#define FL_AVX2_BINARY(name, sleef)                                                                \
-    void sleef##Array(const double* a, double ca, const double* b, double cb, double* out,         \
-                      std::size_t n) {                                                             \
-        std::size_t i = 0;                                                                         \
-        const __m256d va = _mm256_set1_pd(ca), vb = _mm256_set1_pd(cb);                            \
-        for (; i + 4 <= n; i += 4)                                                                 \
-            _mm256_storeu_pd(out + i, Sleef_##sleef##d4_u10avx2(a ? _mm256_loadu_pd(a + i) : va,   \
-                                                                b ? _mm256_loadu_pd(b + i) : vb)); \
-        for (; i < n; ++i)                                                                         \
-            out[i] = Sleef_##sleef##d1_u10purecfma(a ? a[i] : ca, b ? b[i] : cb);                  \
-    }
-FL_VMATH_BINARY(FL_AVX2_BINARY)
-#undef FL_AVX2_BINARY
-
-Implementation makeAvx2() {
-    Implementation impl{};
-    impl.name = "SLEEF AVX2+FMA";
-#define FL_FILL_UNARY(name, sleef)                                                                 \
-    impl.unary[static_cast<int>(Unary::name)] = sleef##Scalar;                                     \
-    impl.unaryArray[static_cast<int>(Unary::name)] = sleef##Array;
-    FL_VMATH_UNARY(FL_FILL_UNARY)
-#undef FL_FILL_UNARY
-#define FL_FILL_BINARY(name, sleef)                                                                \
-    impl.binary[static_cast<int>(Binary::name)] = sleef##Scalar;                                   \
-    impl.binaryArray[static_cast<int>(Binary::name)] = sleef##Array;
-    FL_VMATH_BINARY(FL_FILL_BINARY)
-#undef FL_FILL_BINARY
-    return impl;
-}
-
+#define FL_VEC __m256d
+#define FL_LANES 4
+#define FL_LOAD(p) _mm256_loadu_pd(p)
+#define FL_STORE(p, v) _mm256_storeu_pd(p, v)
+#define FL_SET1(x) _mm256_set1_pd(x)
+#define FL_VECTOR(f) Sleef_##f##d4_u10avx2
+#define FL_SCALAR(f) Sleef_##f##d1_u10purecfma // the same fused operations as AVX2
+#define FL_VARIANT_NAME "SLEEF AVX2+FMA"
+#include "vector_math_variant.inc"
 } // namespace
 
 const Implementation* makeAvx2Implementation() {
-    static const Implementation impl = makeAvx2();
+    static const Implementation impl = makeVariant();
     return &impl;
 }
 
