@@ -300,10 +300,14 @@ class Lexer {
                 advance();
         }
         Token t = make(TokenKind::Invalid, start);
-        std::string shown =
-            (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) >= 127)
-                ? "byte 0x" + toHex(static_cast<unsigned char>(c))
-                : "'" + std::string(1, c) + "'";
+        // (appending rather than "literal" + temporary avoids GCC 12's false -Wrestrict, PR105329)
+        std::string shown;
+        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) >= 127) {
+            shown = "byte 0x";
+            shown += toHex(static_cast<unsigned char>(c));
+        } else {
+            shown = {'\'', c, '\''};
+        }
         std::string hint = c == '#'   ? "comments start with '//'"
                            : c == '%' ? "use mod(a, b) for the remainder"
                                       : "remove it";
