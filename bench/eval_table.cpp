@@ -11,26 +11,35 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 namespace fl::bench {
 
 namespace {
 
-// Best time per point of `work`, repeated until `seconds` have passed (at least twice).
-double bestNsPerPoint(const std::function<void()>& work, std::size_t points, double seconds) {
+// Best time per point of each engine. The engines take turns, round after
+// round, until `seconds` have passed (at least three rounds): a noisy spell on
+// this shared machine then hits all of them alike, and the minimum of each
+// is its undisturbed speed.
+std::vector<double> bestNsPerPoint(const std::vector<std::function<void()>>& engines,
+                                   std::size_t points, double seconds) {
     using clock = std::chrono::steady_clock;
-    double best = 1e300;
-    auto start = clock::now();
-    for (int run = 0;; ++run) {
-        auto t0 = clock::now();
-        work();
-        auto t1 = clock::now();
-        best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count());
-        double elapsed = std::chrono::duration<double>(t1 - start).count();
-        if (run >= 1 && elapsed >= seconds) break;
+    std::vector<double> best(engines.size(), 1e300);
+    const auto start = clock::now();
+    for (int round = 0;; ++round) {
+        for (std::size_t e = 0; e < engines.size(); ++e) {
+            const auto t0 = clock::now();
+            engines[e]();
+            const auto t1 = clock::now();
+            best[e] = std::min(best[e], std::chrono::duration<double, std::nano>(t1 - t0).count());
+        }
+        const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
+        if (round >= 2 && elapsed >= seconds) break;
     }
-    return best / static_cast<double>(points);
+    for (double& b : best)
+        b /= static_cast<double>(points);
+    return best;
 }
 
 } // namespace
@@ -52,21 +61,26 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
         in.set(formula::Input::Y, grid.y.data());
         in.set(formula::Input::Z, grid.z.data());
         in.set(formula::Input::T, grid.t);
-        row.functionlab = bestNsPerPoint([&] { batch.evaluate(in, n, ours.data()); }, n, seconds);
-        row.native = bestNsPerPoint(
+        std::vector<std::function<void()>> engines = {
+            [&] { batch.evaluate(in, n, ours.data()); },
             [&] {
                 f.native(grid.x.data(), grid.y.data(), grid.z.data(), grid.t, native.data(), n);
             },
-            n, seconds);
+        };
+        std::unique_ptr<MuParserPeer> mp;
+        if (MuParserPeer::available()) {
+            mp = std::make_unique<MuParserPeer>(f.muparser);
+            engines.push_back([&] { mp->evaluateBulk(grid, peer.data()); });
+            engines.push_back([&] { mp->evaluatePerPoint(grid, peer.data()); });
+        }
+        std::vector<double> ns = bestNsPerPoint(engines, n, seconds);
+        row.functionlab = ns[0];
+        row.native = ns[1];
         for (std::size_t i = 0; i < n; ++i)
             row.maxDifference = std::max(row.maxDifference, std::abs(ours[i] - native[i]));
-        if (MuParserPeer::available()) {
-            MuParserPeer mp(f.muparser);
-            double bulk = bestNsPerPoint([&] { mp.evaluateBulk(grid, peer.data()); }, n, seconds);
-            double single =
-                bestNsPerPoint([&] { mp.evaluatePerPoint(grid, peer.data()); }, n, seconds);
-            row.muparser = std::min(bulk, single);
-            row.muparserMode = bulk <= single ? "bulk" : "per-point";
+        if (mp) {
+            row.muparser = std::min(ns[2], ns[3]);
+            row.muparserMode = ns[2] <= ns[3] ? "bulk" : "per-point";
             for (std::size_t i = 0; i < n; ++i)
                 row.maxDifference = std::max(row.maxDifference, std::abs(peer[i] - native[i]));
         }

@@ -209,10 +209,12 @@ bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const 
                      "write sphere(1) or sphere(0, 0, 0, 1)"};
             return false;
         }
+        // r^2 - dx^2 - dy^2 - dz^2, the classic FRep sphere (and one fused
+        // pass in the batch evaluator)
         Local p = centred(ctx, a, argc == 4);
         Val r = a[argc - 1];
-        Val d2 = tb.add(tb.add(tb.square(p.x), tb.square(p.y)), tb.square(p.z));
-        result = tb.sub(tb.square(r), d2);
+        result =
+            tb.sub(tb.sub(tb.sub(tb.square(r), tb.square(p.x)), tb.square(p.y)), tb.square(p.z));
     } else if (n == "ellipsoid") {
         Local p = centred(ctx, a, true);
         Val s = tb.add(tb.add(tb.square(tb.div(p.x, a[3])), tb.square(tb.div(p.y, a[4]))),

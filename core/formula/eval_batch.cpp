@@ -1,5 +1,6 @@
 #include "eval_batch.h"
 
+#include "batch_fusion.h"
 #include "scalar_ops.h"
 #include "vector_math.h"
 
@@ -10,27 +11,9 @@
 
 namespace fl::formula {
 
-// Hot pairs fused for the batch loops only (one pass over the block instead
-// of two or three). Each computes exactly what the unfused steps would.
-enum class Fused : std::uint8_t {
-    None,
-    SquareOfDiff, // out = (a - ca)^2           from  t = a - c; out = t * t
-    AddSquare,    // out = A + (b - cb)^2       from  q = square(...); out = A + q
-    SubSquare,    // out = A - (b - cb)^2       from  q = square(...); out = A - q
-};
-
-struct BatchEvaluator::Step {
-    Op op;
-    Fused fused;
-    bool constA, constB, constC;
-    std::int32_t out, a, b, c;
-    double ca, cb, cc;
-    double imm0, imm1;
-};
-
 namespace {
 
-using Step = BatchEvaluator::Step;
+using Step = BatchStep;
 
 template <typename F>
 inline void unaryLoop(double* __restrict o, const double* __restrict a, std::size_t n, F f) {
@@ -63,127 +46,79 @@ inline double cmpResult(bool v) {
     return v ? 1.0 : 0.0;
 }
 
-// Number of reads of each step's result before its register is written again
-// (a final output counts as one more read).
-std::vector<int> useCounts(const std::vector<Step>& steps, const Tape& tape) {
-    std::vector<int> uses(steps.size(), 0);
-    std::vector<int> writer(static_cast<std::size_t>(tape.registerCount), -1);
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        const Step& s = steps[i];
-        const int arity = opArity(s.op);
-        auto read = [&](bool isConst, std::int32_t reg) {
-            if (!isConst && writer[reg] >= 0) ++uses[writer[reg]];
-        };
-        read(s.constA, s.a);
-        if (arity >= 2) read(s.constB, s.b);
-        if (arity >= 3) read(s.constC, s.c);
-        writer[s.out] = static_cast<int>(i);
-    }
-    for (const OutputInfo& o : tape.outputs)
-        if (!o.value.isConst() && writer[o.value.reg] >= 0) ++uses[writer[o.value.reg]];
-    return uses;
-}
-
-// Whether register `reg` is written by any step in (from, to).
-bool writtenBetween(const std::vector<Step>& steps, std::size_t from, std::size_t to,
-                    std::int32_t reg) {
-    for (std::size_t k = from + 1; k < to; ++k)
-        if (steps[k].out == reg) return true;
-    return false;
-}
-
-// Index of the step that last wrote `reg` before step `at`, or -1.
-int definingStep(const std::vector<Step>& steps, std::size_t at, std::int32_t reg) {
-    for (std::size_t k = at; k-- > 0;)
-        if (steps[k].out == reg) return static_cast<int>(k);
-    return -1;
-}
-
-// Peephole: (a - c)^2 and A +/- (b - c)^2, the bread and butter of FRep
-// primitives (sums of squared offsets), become single passes.
-void fuseSquares(std::vector<Step>& steps, const Tape& tape) {
-    std::vector<int> uses = useCounts(steps, tape);
-    std::vector<char> dead(steps.size(), 0);
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        Step& s = steps[i];
-        if (s.op == Op::Square && s.fused == Fused::None) {
-            // square of (reg - const) or (reg + const) whose result feeds only this square
-            int d = definingStep(steps, i, s.a);
-            if (d < 0 || dead[d] || uses[d] != 1) continue;
-            const Step& diff = steps[d];
-            bool sub = diff.op == Op::Sub && !diff.constA && diff.constB;
-            bool add = diff.op == Op::Add &&
-                       ((!diff.constA && diff.constB) || (diff.constA && !diff.constB));
-            if ((!sub && !add) || diff.fused != Fused::None) continue;
-            std::int32_t reg = diff.constA ? diff.b : diff.a;
-            double c = diff.constA ? diff.ca : diff.cb;
-            if (add) c = -c; // x + c == x - (-c) exactly (IEEE subtraction adds the negation)
-            if (writtenBetween(steps, static_cast<std::size_t>(d), i, reg) || s.out == reg)
-                continue;
-            s.fused = Fused::SquareOfDiff;
-            s.a = reg;
-            s.ca = c;
-            dead[d] = 1;
+// out = A + sign0*(r0 - c0)^2 [+ sign1*(r1 - c1)^2 [+ sign2*(r2 - c2)^2]]: the
+// same operations in the same order as the steps it replaces (multiplying by
+// -1 and adding is exactly subtracting).
+template <int Terms, bool ConstA>
+inline void squareTermsLoop(const Step& s, double* const* base, double* __restrict o,
+                            std::size_t n) {
+    const double* __restrict r0 = base[s.termReg[0]];
+    const double* __restrict r1 = base[s.termReg[Terms > 1 ? 1 : 0]];
+    const double* __restrict r2 = base[s.termReg[Terms > 2 ? 2 : 0]];
+    const double* __restrict a = ConstA ? nullptr : base[s.a];
+    const double c0 = s.termOffset[0], c1 = s.termOffset[1], c2 = s.termOffset[2];
+    const double s0 = s.termSign[0], s1 = s.termSign[1], s2 = s.termSign[2];
+    const double ca = s.ca;
+    for (std::size_t i = 0; i < n; ++i) {
+        double acc = ConstA ? ca : a[i];
+        double d = r0[i] - c0;
+        acc = acc + s0 * (d * d);
+        if constexpr (Terms > 1) {
+            d = r1[i] - c1;
+            acc = acc + s1 * (d * d);
         }
-    }
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-        Step& s = steps[i];
-        if (dead[i] || s.fused != Fused::None || (s.op != Op::Add && s.op != Op::Sub)) continue;
-        // which operand is a square used only here?
-        for (int side = 1; side >= 0; --side) {
-            if (s.op == Op::Sub && side == 0) break; // A - q only
-            bool isConst = side ? s.constB : s.constA;
-            std::int32_t reg = side ? s.b : s.a;
-            if (isConst) continue;
-            int q = definingStep(steps, i, reg);
-            if (q < 0 || dead[q] || uses[q] != 1) continue;
-            const Step& sq = steps[q];
-            bool plain = sq.op == Op::Square && sq.fused == Fused::None;
-            bool ofDiff = sq.op == Op::Square && sq.fused == Fused::SquareOfDiff;
-            if (!plain && !ofDiff) continue;
-            std::int32_t base = sq.a;
-            if (writtenBetween(steps, static_cast<std::size_t>(q), i, base) || s.out == base)
-                continue;
-            // the other operand becomes A
-            if (side == 0) {
-                s.constA = s.constB;
-                s.a = s.b;
-                s.ca = s.cb;
-            }
-            s.fused = s.op == Op::Add ? Fused::AddSquare : Fused::SubSquare;
-            s.constB = false;
-            s.b = base;
-            s.cb = ofDiff ? sq.ca : 0.0;
-            dead[q] = 1;
-            break;
+        if constexpr (Terms > 2) {
+            d = r2[i] - c2;
+            acc = acc + s2 * (d * d);
         }
+        o[i] = acc;
     }
-    std::vector<Step> kept;
-    kept.reserve(steps.size());
-    for (std::size_t i = 0; i < steps.size(); ++i)
-        if (!dead[i]) kept.push_back(steps[i]);
-    steps.swap(kept);
 }
 
-template <bool Add>
-inline void squareTermLoop(const Step& s, double* const* base, double* o, std::size_t n) {
-    // o may be b's register only if fuseSquares allowed it (it does not), so
-    // these loops may assume no overlap between o and the operands
-    const double cb = s.cb;
-    const double* __restrict b = base[s.b];
+template <bool ConstA>
+inline void squareTermsDispatch(const Step& s, double* const* base, double* o, std::size_t n) {
+    switch (s.terms) {
+    case 1:
+        squareTermsLoop<1, ConstA>(s, base, o, n);
+        break;
+    case 2:
+        squareTermsLoop<2, ConstA>(s, base, o, n);
+        break;
+    default:
+        squareTermsLoop<3, ConstA>(s, base, o, n);
+        break;
+    }
+}
+
+// min/max with one operand negated on the fly (a \\ b is min(a, -b)). The
+// output may be the negated operand's own register (fusion allows it here),
+// so that case reads the operand through the output pointer: one pointer,
+// read then written at the same index, which vectorises without alias checks.
+template <bool NegA, typename F>
+inline void negatedLoop(const Step& s, double* const* base, double* o, std::size_t n, F f) {
+    auto apply = [f](double a, double b) { return NegA ? f(-a, b) : f(a, -b); };
+    const std::int32_t negReg = NegA ? s.a : s.b;
+    const bool otherConst = NegA ? s.constB : s.constA;
+    const double k = NegA ? s.cb : s.ca;
+    const double* __restrict other = otherConst ? nullptr : base[NegA ? s.b : s.a];
+    if (base[negReg] == o) {
+        if (otherConst) {
+            for (std::size_t i = 0; i < n; ++i)
+                o[i] = NegA ? apply(o[i], k) : apply(k, o[i]);
+        } else {
+            for (std::size_t i = 0; i < n; ++i)
+                o[i] = NegA ? apply(o[i], other[i]) : apply(other[i], o[i]);
+        }
+        return;
+    }
     double* __restrict out = o;
-    if (s.constA) {
-        const double ca = s.ca;
-        for (std::size_t i = 0; i < n; ++i) {
-            double d = b[i] - cb;
-            out[i] = Add ? ca + d * d : ca - d * d;
-        }
+    const double* __restrict v = base[negReg];
+    if (otherConst) {
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = NegA ? apply(v[i], k) : apply(k, v[i]);
     } else {
-        const double* __restrict a = base[s.a];
-        for (std::size_t i = 0; i < n; ++i) {
-            double d = b[i] - cb;
-            out[i] = Add ? a[i] + d * d : a[i] - d * d;
-        }
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = NegA ? apply(v[i], other[i]) : apply(other[i], v[i]);
     }
 }
 
@@ -191,12 +126,12 @@ inline void squareTermLoop(const Step& s, double* const* base, double* o, std::s
 
 BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape) {
     const std::size_t regs = static_cast<std::size_t>(tape.registerCount);
-    std::size_t bytes = (regs + 3) * kBlock * sizeof(double);
+    std::size_t bytes = (regs + 3) * kStride * sizeof(double);
     workspace_ = static_cast<double*>(std::aligned_alloc(64, bytes));
     if (!workspace_) throw std::bad_alloc();
     std::memset(workspace_, 0, bytes);
     for (int k = 0; k < 3; ++k)
-        scratch_[k] = workspace_ + (regs + k) * kBlock;
+        scratch_[k] = workspace_ + (regs + k) * kStride;
     uniformValue_.assign(regs, 0.0);
     isUniform_.assign(regs, 0);
 }
@@ -264,7 +199,7 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
         isUniform_[ins.out] = 0;
         steps_.push_back(s);
     }
-    fuseSquares(steps_, tape_);
+    fuseBatchSteps(steps_, tape_);
     specialised_ = true;
 }
 
@@ -287,12 +222,23 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
             });
             continue;
         }
-        case Fused::AddSquare:
-            squareTermLoop<true>(s, base, o, n);
+        case Fused::SquareTerms:
+            if (s.constA)
+                squareTermsDispatch<true>(s, base, o, n);
+            else
+                squareTermsDispatch<false>(s, base, o, n);
             continue;
-        case Fused::SubSquare:
-            squareTermLoop<false>(s, base, o, n);
+        case Fused::NegatedOperand: {
+            auto mn = [](double a, double b) { return ops::min(a, b); };
+            auto mx = [](double a, double b) { return ops::max(a, b); };
+            if (s.op == Op::Min)
+                s.negA ? negatedLoop<true>(s, base, o, n, mn)
+                       : negatedLoop<false>(s, base, o, n, mn);
+            else
+                s.negA ? negatedLoop<true>(s, base, o, n, mx)
+                       : negatedLoop<false>(s, base, o, n, mx);
             continue;
+        }
         }
         switch (s.op) {
         // ---- unary (the operand always varies: uniform ones were folded)
@@ -494,7 +440,7 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
     const std::size_t regs = static_cast<std::size_t>(tape_.registerCount);
     std::vector<double*> base(regs);
     for (std::size_t r = 0; r < regs; ++r)
-        base[r] = workspace_ + r * kBlock;
+        base[r] = workspace_ + r * kStride;
     for (std::size_t start = 0; start < n; start += kBlock) {
         const std::size_t count = std::min(kBlock, n - start);
         for (int i = 0; i < kInputCount; ++i)

@@ -7,6 +7,7 @@
 // computed once per call and folded into the loops as immediates.
 //
 // Threads belong above this class: one evaluator per thread.
+#include "batch_step.h"
 #include "eval_scalar.h"
 
 #include <array>
@@ -31,6 +32,10 @@ struct BatchInputs {
 class BatchEvaluator {
   public:
     static constexpr std::size_t kBlock = 256;
+    // Registers are kBlock doubles (2 KiB) plus two cache lines apart, so no
+    // two registers a loop reads and writes share their low 12 address bits
+    // (4K aliasing stalls loads behind unrelated stores).
+    static constexpr std::size_t kStride = kBlock + 16;
 
     explicit BatchEvaluator(const Tape& tape);
     ~BatchEvaluator();
@@ -47,12 +52,14 @@ class BatchEvaluator {
         evaluate(in, n, outs);
     }
 
-    struct Step; // an instruction specialised for the current uniform inputs
+    // Passes over each block for the last evaluate() (after uniform folding
+    // and fusion): what the loops really run, for tests and benchmarks.
+    std::size_t passesPerBlock() const { return steps_.size(); }
 
   private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
-    std::vector<Step> steps_;
+    std::vector<BatchStep> steps_;     // the tape specialised for the current uniform inputs
     std::vector<double> uniformValue_; // per register, valid where isUniform_
     std::vector<char> isUniform_;
     double* workspace_ = nullptr;      // registerCount * kBlock, 64-byte aligned

@@ -97,13 +97,21 @@ Val TapeBuilder::emit(Op op, Val a, Val b, Val c, double imm0, double imm1) {
 
     // Identities that hold for every double, NaN and infinities included.
     switch (op) {
-    case Op::Add: // only -0 is an exact additive identity (+0 + -0 = +0)
+    case Op::Add: { // only -0 is an exact additive identity (+0 + -0 = +0)
         if (a.isConst(0.0) && std::signbit(a.c)) return b;
         if (b.isConst(0.0) && std::signbit(b.c)) return a;
+        // IEEE defines a - b as a + (-b): the negation is free to drop
+        Val inner;
+        if (isNegOf(b, inner)) return emit(Op::Sub, a, inner);
+        if (isNegOf(a, inner)) return emit(Op::Sub, b, inner);
         break;
-    case Op::Sub: // a - (+0) = a for every a, -0 included
+    }
+    case Op::Sub: { // a - (+0) = a for every a, -0 included
         if (b.isConst(0.0) && !std::signbit(b.c)) return a;
+        Val inner;
+        if (isNegOf(b, inner)) return emit(Op::Add, a, inner);
         break;
+    }
     case Op::Mul:
         if (a.isConst(1.0)) return b;
         if (b.isConst(1.0)) return a;

@@ -130,3 +130,32 @@ TEST(Batch, FusedSquarePassesMatchScalar) {
 
 } // namespace
 } // namespace fl::formula
+
+namespace fl::formula {
+namespace {
+
+std::size_t passes(const char* src) {
+    CompileResult r = compile(src);
+    EXPECT_TRUE(r.ok());
+    BatchEvaluator b(*r.tape);
+    double xs[4] = {0, 1, 2, 3}, out[4];
+    BatchInputs in;
+    in.set(Input::X, xs);
+    in.set(Input::Y, xs);
+    in.set(Input::Z, xs);
+    in.set(Input::T, 0.5);
+    b.evaluate(in, 4, out);
+    return b.passesPerBlock();
+}
+
+TEST(Batch, FusionReducesPasses) {
+    EXPECT_EQ(passes("1 - x^2 - y^2 - z^2"), 1u);
+    EXPECT_EQ(passes("sphere(0.5, 0.2, -0.1, 1)"), 1u);
+    EXPECT_EQ(passes("x^2 + y^2"), 1u);
+    EXPECT_EQ(passes("0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2"), 1u); // t is uniform
+    EXPECT_EQ(passes("x \\ y"), 1u);                                            // min(x, -y)
+    EXPECT_LE(passes("(1-x^2-y^2-z^2) & (-((z-x) & y & z))"), 5u);
+}
+
+} // namespace
+} // namespace fl::formula

@@ -1,0 +1,34 @@
+#pragma once
+// One instruction of the batch evaluator after specialisation: operands that
+// are uniform for the call became constants, and hot sequences may have been
+// fused into one pass (batch_fusion.h). Private to the batch evaluator.
+#include "opcodes.h"
+
+#include <cstdint>
+
+namespace fl::formula {
+
+enum class Fused : std::uint8_t {
+    None,
+    SquareOfDiff,   // out = (a - ca)^2
+    SquareTerms,    // out = A + sign[0]*(r[0] - off[0])^2 + ... (1 to 3 terms, in order)
+    NegatedOperand, // op (min or max) with operand a (negA) or b (negB) negated first
+};
+
+struct BatchStep {
+    Op op = Op::Add;
+    Fused fused = Fused::None;
+    bool constA = false, constB = false, constC = false;
+    std::int32_t out = 0, a = 0, b = 0, c = 0;
+    double ca = 0.0, cb = 0.0, cc = 0.0;
+    double imm0 = 0.0, imm1 = 0.0;
+    // SquareTerms (A is operand a)
+    std::uint8_t terms = 0;
+    std::int32_t termReg[3] = {0, 0, 0};
+    double termOffset[3] = {0.0, 0.0, 0.0};
+    double termSign[3] = {1.0, 1.0, 1.0};
+    // NegatedOperand
+    bool negA = false, negB = false;
+};
+
+} // namespace fl::formula
