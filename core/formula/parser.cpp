@@ -471,15 +471,13 @@ class Parser {
     // Power binds tighter than unary minus on its left (-x^2 = -(x^2)) and is
     // right-associative (2^3^2 = 2^9); its exponent may carry a sign (x^-2).
     ExprPtr power() {
-        ExprPtr base = postfix();
+        ExprPtr base = primary();
         if (!at(TokenKind::Caret)) return base;
         DepthGuard guard(*this, cur().range);
         take();
         ExprPtr exponent = unary();
         return makeBinary(BinaryOp::Pow, std::move(base), std::move(exponent));
     }
-
-    ExprPtr postfix() { return primary(); }
 
     ExprPtr primary() {
         const Token& t = cur();

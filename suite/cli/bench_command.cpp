@@ -14,8 +14,9 @@ const char* kBenchHelp = R"(usage: functionlab bench eval [--json] [--side N] [-
 
 eval    evaluates the benchmark formulas over an N^3 grid (default 64) with
         FunctionLab's batch evaluator, the same formulas hand-written in C++,
-        and muParser; prints nanoseconds per point (best of runs lasting at
-        least S seconds each, default 0.2) and the ratios.
+        and muParser, all on one thread; prints nanoseconds per point and the
+        ratios. The engines take turns for at least S seconds (default 0.2)
+        and each reports its best turn.
         --json prints a list of {"formula", "ns_per_point": {"functionlab",
         "native", "muparser"}}.
 )";

@@ -112,9 +112,8 @@ struct Options {
 std::string parseOptions(const Args& args, std::size_t first, Options& o) {
     for (std::size_t i = first; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&](const char* name) -> std::optional<std::string> {
+        auto value = [&]() -> std::optional<std::string> {
             if (i + 1 >= args.size()) return std::nullopt;
-            (void)name;
             return args[++i];
         };
         if (a == "--json")
@@ -122,24 +121,24 @@ std::string parseOptions(const Args& args, std::size_t first, Options& o) {
         else if (a == "--tape")
             o.tape = true;
         else if (a == "--kind") {
-            auto v = value("--kind");
+            auto v = value();
             if (!v || !parseKind(*v, o.kind))
                 return "--kind needs one of generic, implicit, parametric, colour, force";
         } else if (a == "--at") {
-            auto v = value("--at");
+            auto v = value();
             double p[3];
             if (!v || !parseTriple(*v, p)) return "--at needs three numbers: --at X,Y,Z";
             o.at = std::array<double, 3>{p[0], p[1], p[2]};
         } else if (a == "--uvw") {
-            auto v = value("--uvw");
+            auto v = value();
             double p[3];
             if (!v || !parseTriple(*v, p)) return "--uvw needs three numbers: --uvw U,V,W";
             o.uvw = std::array<double, 3>{p[0], p[1], p[2]};
         } else if (a == "--t") {
-            auto v = value("--t");
+            auto v = value();
             if (!v || !parseNumber(*v, o.t)) return "--t needs a number";
         } else if (a == "--param") {
-            auto v = value("--param");
+            auto v = value();
             std::size_t eq = v ? v->find('=') : std::string::npos;
             double num;
             if (!v || eq == std::string::npos || eq == 0 || !parseNumber(v->substr(eq + 1), num))
