@@ -13,8 +13,10 @@ PACKAGES=(
   libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
   qt6-base-dev qt6-3d-dev qt6-websockets-dev
   xvfb xauth libgl1-mesa-dri
-  clang libclang-rt-14-dev
 )
+# Only for scripts/fuzz (libFuzzer); skipped with a warning where the
+# distribution names them differently.
+OPTIONAL_PACKAGES=(clang libclang-rt-14-dev)
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 
@@ -23,19 +25,30 @@ install_missing_packages() {
     log "not a Debian/Ubuntu system: install the equivalents of: ${PACKAGES[*]}"
     return 0
   fi
-  local missing=()
+  local missing=() optional=()
   for p in "${PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
-  [ ${#missing[@]} -eq 0 ] && return 0
+  for p in "${OPTIONAL_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || optional+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
   local sudo=""
   if [ "$(id -u)" -ne 0 ]; then
     command -v sudo >/dev/null 2>&1 || { log "need root or sudo to install: ${missing[*]}"; exit 1; }
     sudo="sudo"
   fi
-  log "installing: ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
   $sudo apt-get update -qq
+  for p in "${optional[@]}"; do
+    if apt-cache show "$p" >/dev/null 2>&1; then
+      missing+=("$p")
+    else
+      log "optional package $p is not available here: scripts/fuzz will not work"
+    fi
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing: ${missing[*]}"
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
