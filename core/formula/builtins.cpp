@@ -79,7 +79,8 @@ bool requireConstant(const Val& v, int index, const char* what, BuiltinError& er
     if (v.isConst()) return true;
     error.argument = index;
     error.message = std::string(what) + " must be a constant number";
-    error.suggestion = "use a number or an expression of numbers and named parameters' defaults";
+    error.suggestion =
+        "use a number (a parameter can change while the shape is shown, so it cannot set this)";
     return false;
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 
 namespace fl::formula {
 
@@ -64,10 +65,19 @@ class Compiler {
             Frame top;
             std::vector<TapeBuilder::Output> outputs;
             executeTop(top, outputs);
+            for (const auto& [name, fn] : functions_) {
+                if (calledFunctions_.count(name)) continue;
+                Frame scratch;
+                scratch.functionName = name;
+                for (const std::string& p : fn->params)
+                    scratch.vars[p] = Variable{};
+                checkNames(fn->body, scratch);
+                warning(fn->nameRange, "function '" + name + "' is never called",
+                        "call it, or remove it");
+            }
             if (hasErrors(diags_)) return std::nullopt;
-            for (Diagnostic& w : tb_.foldWarnings())
-                diags_.push_back(std::move(w));
             Tape tape = tb_.finish(outputs, params_);
+            warnAlwaysUndefined(tape);
             if (tape.code.size() > options_.limits.maxTapeSize) tooLarge(tape.code.size());
             return tape;
         } catch (const Abort&) {
@@ -86,11 +96,19 @@ class Compiler {
     std::vector<std::string> callStack_;
     bool inputAvailable_[kInputCount] = {};
     long unrolled_ = 0;
+    long expansionSteps_ = 0;
+    int errorCount_ = 0;
+    std::set<std::string> calledFunctions_;
 
     // ---- diagnostics ---------------------------------------------------
 
     void error(const SourceRange& r, std::string msg, std::string hint = {}) {
         diags_.push_back({Severity::Error, r, std::move(msg), std::move(hint)});
+        if (++errorCount_ >= options_.limits.maxErrors) {
+            diags_.push_back({Severity::Error, r, "too many errors; stopping here",
+                              "fix the errors above first"});
+            throw Abort{};
+        }
     }
     void warning(const SourceRange& r, std::string msg, std::string hint = {}) {
         diags_.push_back({Severity::Warning, r, std::move(msg), std::move(hint)});
@@ -103,6 +121,18 @@ class Compiler {
               "reduce loop counts or split the definition");
         throw Abort{};
     }
+    // Inlining can multiply work without growing the tape (shared subexpressions
+    // hash-cons away), so the work itself is bounded too.
+    void countStep(const SourceRange& where) {
+        if (++expansionSteps_ <= options_.limits.maxExpansionSteps) return;
+        error(where,
+              "formula expands to too much work: more than " +
+                  std::to_string(options_.limits.maxExpansionSteps) +
+                  " steps after inlining functions and unrolling loops",
+              "call functions fewer times, or use fewer loop iterations");
+        throw Abort{};
+    }
+
     void checkSize() {
         // nodes include dead ones; a generous multiple keeps the check cheap and the memory bounded
         if (tb_.nodeCount() > options_.limits.maxTapeSize * 2) tooLarge(tb_.nodeCount());
@@ -286,7 +316,7 @@ class Compiler {
                     break;
                 }
                 tb_.setOrigin(s.range);
-                lastValue = guardValue(top, expr(*s.value, top));
+                lastValue = expr(*s.value, top);
                 hasLastValue = true;
                 lastRange = s.range;
                 break;
@@ -356,13 +386,6 @@ class Compiler {
 
     static bool isDone(const Frame& f) { return f.done.isConst(1.0); }
 
-    // A value assigned after a conditional return keeps the old value where
-    // the return happened (so later reads see what the returning path saw).
-    Val guardValue(Frame& f, Val v, const Val* old = nullptr) {
-        if (f.done.isConst(0.0) || old == nullptr) return v;
-        return tb_.select(f.done, *old, v);
-    }
-
     void execBlock(const std::vector<StmtPtr>& body, Frame& f) {
         for (const StmtPtr& s : body) {
             if (isDone(f)) {
@@ -375,6 +398,7 @@ class Compiler {
     }
 
     void exec(const Stmt& s, Frame& f) {
+        countStep(s.range);
         tb_.setOrigin(s.range);
         checkSize();
         switch (s.kind) {
@@ -448,10 +472,9 @@ class Compiler {
                 break;
             }
         }
-        // After a conditional return, paths that returned keep the old value;
-        // a new name needs no guard: only paths that did not return read it.
-        if (!f.done.isConst(0.0) && old && !it->second.maybeUndefined)
-            value = tb_.select(f.done, *old, value);
+        // No guard is needed after a conditional return: the paths that
+        // returned have their result fixed (later returns are merged with
+        // select(done, result, …)), so what they assign is never read.
         Variable v;
         v.value = value;
         v.assignedAt = s.nameRange;
@@ -479,10 +502,13 @@ class Compiler {
     void doIf(const Stmt& s, Frame& f) {
         Val cond = expr(*s.value, f);
         if (cond.isConst()) {
-            if (cond.c < 0.0 || cond.c > 0.0)
+            bool taken = cond.c < 0.0 || cond.c > 0.0;
+            if (taken)
                 execBlock(s.body, f);
             else if (s.hasElse)
                 execBlock(s.elseBody, f);
+            // the branch never taken is not compiled, but its names are still checked
+            checkNames(taken ? s.elseBody : s.body, f);
             return;
         }
         Frame before = f;
@@ -493,7 +519,26 @@ class Compiler {
         Frame elseFrame = std::move(f);
         f = std::move(before);
         tb_.setOrigin(s.range);
-        // merge variables
+        // A branch that surely returned contributes no variables: code after
+        // the `if` runs only where the other branch was taken.
+        if (isDone(thenFrame) != isDone(elseFrame)) {
+            const Frame& continuing = isDone(thenFrame) ? elseFrame : thenFrame;
+            f.vars = continuing.vars;
+        } else {
+            f.vars = mergeVariables(cond, thenFrame, elseFrame);
+        }
+        f.done = tb_.select(cond, thenFrame.done, elseFrame.done);
+        if (thenFrame.hasResult && elseFrame.hasResult)
+            f.result = tb_.select(cond, thenFrame.result, elseFrame.result);
+        else if (thenFrame.hasResult)
+            f.result = thenFrame.result;
+        else if (elseFrame.hasResult)
+            f.result = elseFrame.result;
+        f.hasResult = thenFrame.hasResult || elseFrame.hasResult;
+    }
+
+    std::map<std::string, Variable> mergeVariables(Val cond, const Frame& thenFrame,
+                                                   const Frame& elseFrame) {
         std::map<std::string, Variable> merged;
         for (const auto& [name, tv] : thenFrame.vars) {
             auto e = elseFrame.vars.find(name);
@@ -512,15 +557,7 @@ class Compiler {
             v.maybeUndefined = true;
             merged[name] = v;
         }
-        f.vars = std::move(merged);
-        f.done = tb_.select(cond, thenFrame.done, elseFrame.done);
-        if (thenFrame.hasResult && elseFrame.hasResult)
-            f.result = tb_.select(cond, thenFrame.result, elseFrame.result);
-        else if (thenFrame.hasResult)
-            f.result = thenFrame.result;
-        else if (elseFrame.hasResult)
-            f.result = elseFrame.result;
-        f.hasResult = thenFrame.hasResult || elseFrame.hasResult;
+        return merged;
     }
 
     void doFor(const Stmt& s, Frame& f) {
@@ -529,6 +566,13 @@ class Compiler {
         if (paramVals_.count(var)) {
             error(s.nameRange, "'" + var + "' is a parameter and cannot be a loop variable",
                   "use another name, such as i");
+            return;
+        }
+        if (s.step->name != var) {
+            error(s.step->nameRange,
+                  "the loop step changes '" + s.step->name + "', not the loop variable '" + var +
+                      "'",
+                  "write: " + var + "++");
             return;
         }
         Val init = expr(*s.value, f);
@@ -568,6 +612,90 @@ class Compiler {
                       "the loop step must change the loop variable by a known amount",
                       "write: i++ or i += 1");
                 throw Abort{};
+            }
+        }
+    }
+
+    // Operations with only constant operands survive folding only when they
+    // are NaN for every point (TapeBuilder keeps them); the live ones are
+    // reported once per place in the source.
+    void warnAlwaysUndefined(const Tape& tape) {
+        std::set<std::size_t> reported;
+        for (const Instruction& ins : tape.code) {
+            const int arity = opArity(ins.op);
+            bool allConst =
+                ins.a.isConst() && (arity < 2 || ins.b.isConst()) && (arity < 3 || ins.c.isConst());
+            if (!allConst || ins.origin < 0) continue;
+            const SourceRange& where = tape.origins[static_cast<std::size_t>(ins.origin)];
+            if (!reported.insert(where.begin.offset).second) continue;
+            warning(where,
+                    std::string("'") + opName(ins.op) + "' is undefined (NaN) here for every point",
+                    "check the arguments: e.g. log and sqrt need non-negative values");
+        }
+    }
+
+    // ---- names in code that is never compiled --------------------------
+    // Dead branches and uncalled functions produce no tape, but a typo in
+    // them is still a typo: check names and call arity without evaluating.
+
+    void collectAssigned(const std::vector<StmtPtr>& body, std::set<std::string>& names) const {
+        for (const StmtPtr& s : body) {
+            if (s->kind == StmtKind::Assign || s->kind == StmtKind::For) names.insert(s->name);
+            collectAssigned(s->body, names);
+            collectAssigned(s->elseBody, names);
+        }
+    }
+
+    void checkNames(const std::vector<StmtPtr>& body, const Frame& frame) {
+        std::set<std::string> known;
+        for (const auto& [name, v] : frame.vars)
+            known.insert(name);
+        collectAssigned(body, known);
+        checkNamesIn(body, known);
+    }
+
+    void checkNamesIn(const std::vector<StmtPtr>& body, const std::set<std::string>& known) {
+        for (const StmtPtr& s : body) {
+            for (const Expr* e : {s->value.get(), s->condition.get()})
+                if (e) checkNamesIn(*e, known);
+            if (s->step && s->step->value) checkNamesIn(*s->step->value, known);
+            checkNamesIn(s->body, known);
+            checkNamesIn(s->elseBody, known);
+        }
+    }
+
+    void checkNamesIn(const Expr& e, const std::set<std::string>& known) {
+        for (const ExprPtr& a : e.args)
+            checkNamesIn(*a, known);
+        if (e.kind == ExprKind::Name) {
+            int in = inputIndex(e.name);
+            bool ok = known.count(e.name) || paramVals_.count(e.name) || e.name == "pi" ||
+                      e.name == "e" || (in >= 0 && inputAvailable_[in]);
+            if (!ok) {
+                std::vector<std::string> names(known.begin(), known.end());
+                for (const std::string& n : knownNames(Frame{}))
+                    names.push_back(n);
+                std::string near = closestName(e.name, names);
+                error(e.range, "unknown name '" + e.name + "'",
+                      near.empty() ? "define it first" : "did you mean '" + near + "'?");
+            }
+        } else if (e.kind == ExprKind::Call) {
+            int argc = static_cast<int>(e.args.size());
+            if (auto fit = functions_.find(e.name); fit != functions_.end()) {
+                if (fit->second->params.size() != e.args.size())
+                    error(e.range, "'" + e.name + "' takes " +
+                                       plural(fit->second->params.size(), "argument") +
+                                       " but was given " + std::to_string(argc));
+            } else if (const BuiltinInfo* info = findBuiltin(e.name)) {
+                if (argc < info->minArgs || (info->maxArgs >= 0 && argc > info->maxArgs))
+                    error(e.range,
+                          "'" + e.name + "' cannot take " + std::to_string(argc) + " arguments",
+                          "use " + std::string(info->signature));
+            } else {
+                std::string near = closestName(e.name, knownFunctions());
+                error(e.nameRange, "unknown function '" + e.name + "'",
+                      near.empty() ? "see the formula reference for the built-in functions"
+                                   : "did you mean '" + near + "'?");
             }
         }
     }
@@ -628,6 +756,7 @@ class Compiler {
     }
 
     Val expr(const Expr& e, Frame& f) {
+        countStep(e.range);
         switch (e.kind) {
         case ExprKind::Number:
             return Val::constant(e.number);
@@ -780,6 +909,7 @@ class Compiler {
             throw Abort{};
         }
         callStack_.push_back(fn.name);
+        calledFunctions_.insert(fn.name);
         Frame frame;
         frame.functionName = fn.name;
         for (std::size_t i = 0; i < args.size(); ++i) {

@@ -21,6 +21,9 @@ bool hasErrors(const std::vector<Diagnostic>& diagnostics) {
                        [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
+// The source line and a caret line under the diagnostic's range.
+static std::string caretLines(std::string_view text, const Diagnostic& d);
+
 namespace {
 
 std::string_view lineText(std::string_view source, int line) {
@@ -58,6 +61,25 @@ std::string formatDiagnostic(const Diagnostic& d, std::string_view source,
     out += '\n';
     std::string_view text = lineText(source, d.range.begin.line);
     if (text.empty() && source.empty()) return out;
+    // Long lines are shown as a window around the column, so a diagnostic's
+    // size does not grow with the line.
+    constexpr int kWindow = 120;
+    int col0 = std::max(1, d.range.begin.column);
+    if (static_cast<int>(text.size()) > kWindow) {
+        int first = std::clamp(col0 - 1 - kWindow / 2, 0, static_cast<int>(text.size()) - kWindow);
+        text = text.substr(static_cast<std::size_t>(first), kWindow);
+        Diagnostic shifted = d;
+        shifted.range.begin.column -= first;
+        shifted.range.end.column = shifted.range.end.line == d.range.begin.line
+                                       ? std::min(shifted.range.end.column - first, kWindow + 1)
+                                       : shifted.range.end.column;
+        return out + caretLines(text, shifted);
+    }
+    return out + caretLines(text, d);
+}
+
+static std::string caretLines(std::string_view text, const Diagnostic& d) {
+    std::string out;
     out += "  ";
     out += text;
     out += "\n  ";

@@ -18,15 +18,15 @@ Dual chain(double value, double fprime, const Dual& a) {
     Dual r;
     r.v = value;
     for (int i = 0; i < 3; ++i)
-        r.d[i] = a.d[i] == 0.0 ? 0.0 : fprime * a.d[i];
+        r.d[i] = (a.d[i] == 0.0 || fprime == 0.0) ? 0.0 : fprime * a.d[i];
     return r;
 }
 Dual chain2(double value, double fa, const Dual& a, double fb, const Dual& b) {
     Dual r;
     r.v = value;
     for (int i = 0; i < 3; ++i) {
-        double ta = a.d[i] == 0.0 ? 0.0 : fa * a.d[i];
-        double tb = b.d[i] == 0.0 ? 0.0 : fb * b.d[i];
+        double ta = (a.d[i] == 0.0 || fa == 0.0) ? 0.0 : fa * a.d[i];
+        double tb = (b.d[i] == 0.0 || fb == 0.0) ? 0.0 : fb * b.d[i];
         r.d[i] = ta + tb;
     }
     return r;
@@ -39,10 +39,9 @@ Dual constant(double v) {
 
 // Partial derivatives of the R_alpha intersection (m = 0) at (a, b).
 void rIntersectPartials(double a, double b, double alpha, double& da, double& db) {
-    if (alpha >= 1.0) {
-        bool first = a <= b;
-        da = first ? 1.0 : 0.0;
-        db = first ? 0.0 : 1.0;
+    if (alpha >= 1.0) { // min: the smaller one's slope, the average at a tie
+        da = a < b ? 1.0 : (a == b ? 0.5 : 0.0);
+        db = 1.0 - da;
         return;
     }
     double s = std::max(std::abs(a), std::abs(b));
@@ -154,13 +153,13 @@ Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1) {
         double dy = x > 0.0 ? v * std::log(x) : 0.0; // d/dy undefined for x <= 0
         return chain2(v, dx, a, dy, b);
     }
-    case Op::Min: {
-        bool first = ops::min(x, y) == x || std::isnan(x);
-        return first ? Dual{ops::min(x, y), a.d} : Dual{ops::min(x, y), b.d};
-    }
+    case Op::Min:
     case Op::Max: {
-        bool first = ops::max(x, y) == x || std::isnan(x);
-        return first ? Dual{ops::max(x, y), a.d} : Dual{ops::max(x, y), b.d};
+        // the chosen operand's gradient; at a tie (a kink) the average of both
+        const bool tie = x == y;
+        const bool first = op == Op::Min ? (x < y || x != x) : (x > y || x != x);
+        if (!tie) return first ? Dual{v, a.d} : Dual{v, b.d};
+        return chain2(v, 0.5, a, 0.5, b);
     }
     case Op::Atan2: {
         double r2 = x * x + y * y;

@@ -155,7 +155,9 @@ Interval absRange(const Interval& a) {
 }
 
 Interval powGeneral(const Interval& a, const Interval& b) {
-    if (b.lo == b.hi && b.lo == std::trunc(b.lo) && std::abs(b.lo) <= 1024.0 && !b.nan)
+    // the compiler turns x^n into PowI only for |n| <= 64; beyond that the
+    // point evaluators use pow, and so must its interval
+    if (b.lo == b.hi && b.lo == std::trunc(b.lo) && std::abs(b.lo) <= 64.0 && !b.nan)
         return powi(a, static_cast<int>(b.lo));
     Interval m = absRange(a);
     auto P = [](double x, double y) { return vmath::eval(vmath::Binary::Pow, x, y); };
@@ -168,8 +170,9 @@ Interval powGeneral(const Interval& a, const Interval& b) {
         lo = std::min(lo, 1.0);
         hi = std::max(hi, 1.0);
     }
-    if (a.lo >= 0.0) return make(lo, hi, nan);
-    // negative bases: NaN for non-integer exponents, ±|a|^b for integer ones
+    if (a.lo > 0.0) return make(lo, hi, nan);
+    // zero or negative bases: NaN for non-integer exponents, ±|a|^b for
+    // integer ones (and pow(-0, -1) = -inf: intervals do not track the sign of 0)
     return make(-hi, hi, true);
 }
 
@@ -291,7 +294,8 @@ namespace iv {
 
 Interval unary(Op op, const Interval& in, double imm0) {
     if (in.empty()) {
-        if (op == Op::Not) return {1.0, 1.0, false}; // NaN is false, so !NaN is 1
+        if (op == Op::Not) return {1.0, 1.0, false};                 // NaN is false, so !NaN is 1
+        if (op == Op::PowI && imm0 == 0.0) return {1.0, 1.0, false}; // NaN^0 = 1
         return Interval::undefined();
     }
     Interval a = in;

@@ -112,17 +112,26 @@ class Lexer {
 
     std::vector<Token> run() {
         std::vector<Token> tokens;
+        const std::size_t firstDiagnostic = diags_.size();
         for (;;) {
             skipSpaceAndComments();
             Token tok = next();
             bool end = tok.kind == TokenKind::End;
             tokens.push_back(std::move(tok));
             if (end) break;
+            if (diags_.size() - firstDiagnostic >= kMaxLexErrors) {
+                diags_.push_back({Severity::Error, tokens.back().range,
+                                  "too many bad characters; stopping here",
+                                  "is this really a formula? check the file's encoding"});
+                tokens.push_back(make(TokenKind::End, pos_));
+                break;
+            }
         }
         return tokens;
     }
 
   private:
+    static constexpr std::size_t kMaxLexErrors = 50;
     std::string_view src_;
     std::vector<Diagnostic>& diags_;
     SourcePos pos_;

@@ -11,6 +11,9 @@ struct Limits {
     long maxUnrolledIterations = 4096; // total loop iterations unrolled in one compilation
     std::size_t maxTapeSize = 200000;  // instructions after folding and sharing
     int maxCallDepth = 64;             // user-function inlining depth (recursion is refused)
+    long maxExpansionSteps =
+        1000000;        // statements and expressions visited while inlining and unrolling
+    int maxErrors = 50; // stop reporting (and working) after this many errors
 };
 
 } // namespace fl::formula

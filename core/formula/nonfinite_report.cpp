@@ -7,56 +7,100 @@
 
 namespace fl::formula {
 
+namespace {
+
+struct Trace {
+    double value = 0.0;
+    int operandWriter[3] = {-1, -1,
+                            -1}; // instruction that produced each operand, -1: input/constant
+    double operand[3] = {0.0, 0.0, 0.0};
+};
+
+} // namespace
+
 std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<double>& params,
                                            const Point& p) {
-    for (double c : p)
-        if (!std::isfinite(c)) return std::nullopt;
+    for (int i = 0; i < kInputCount; ++i)
+        if (tape.usesInput[i] && !std::isfinite(p[i]))
+            return std::nullopt; // not the formula's doing
     std::vector<double> r(static_cast<std::size_t>(tape.registerCount), 0.0);
+    std::vector<int> writer(static_cast<std::size_t>(tape.registerCount), -1);
     for (int i = 0; i < kInputCount; ++i)
         r[i] = p[i];
     for (std::size_t i = 0; i < params.size() && i < tape.params.size(); ++i)
         r[kInputCount + i] = params[i];
-    auto get = [&r](const Operand& o) { return o.isConst() ? o.value : r[o.reg]; };
 
-    const Instruction* culprit = nullptr;
-    double culpritValue = 0.0;
-    for (const Instruction& ins : tape.code) {
+    // Forward: values, and who produced each operand.
+    std::vector<Trace> trace(tape.code.size());
+    for (std::size_t k = 0; k < tape.code.size(); ++k) {
+        const Instruction& ins = tape.code[k];
+        const Operand* ops3[3] = {&ins.a, &ins.b, &ins.c};
         const int arity = opArity(ins.op);
-        double a = get(ins.a), b = arity >= 2 ? get(ins.b) : 0.0, c = arity >= 3 ? get(ins.c) : 0.0;
-        double v = arity == 1   ? ops::unary(ins.op, a, ins.imm0)
-                   : arity == 2 ? ops::binary(ins.op, a, b, ins.imm0, ins.imm1)
-                                : ops::ternary(ins.op, a, b, c);
-        r[ins.out] = v;
-        if (!culprit && std::isfinite(a) && std::isfinite(b) && std::isfinite(c) &&
-            !std::isfinite(v)) {
-            culprit = &ins;
-            culpritValue = v;
+        Trace& t = trace[k];
+        for (int j = 0; j < arity; ++j) {
+            t.operand[j] = ops3[j]->isConst() ? ops3[j]->value : r[ops3[j]->reg];
+            t.operandWriter[j] = ops3[j]->isConst() ? -1 : writer[ops3[j]->reg];
         }
+        t.value = arity == 1   ? ops::unary(ins.op, t.operand[0], ins.imm0)
+                  : arity == 2 ? ops::binary(ins.op, t.operand[0], t.operand[1], ins.imm0, ins.imm1)
+                               : ops::ternary(ins.op, t.operand[0], t.operand[1], t.operand[2]);
+        r[ins.out] = t.value;
+        writer[ins.out] = static_cast<int>(k);
     }
-    bool outputsFinite = true;
-    for (const OutputInfo& o : tape.outputs)
-        outputsFinite = outputsFinite && std::isfinite(get(o.value));
-    if (outputsFinite) return std::nullopt;
+
+    // The first non-finite output, then backwards along non-finite operands
+    // (for a select, only the branch it took) to the operation that turned
+    // finite operands into a non-finite result.
+    int at = -1;
+    bool constantOutput = false;
+    for (const OutputInfo& o : tape.outputs) {
+        double v = o.value.isConst() ? o.value.value : r[o.value.reg];
+        if (std::isfinite(v)) continue;
+        if (o.value.isConst())
+            constantOutput = true;
+        else
+            at = writer[o.value.reg];
+        break;
+    }
+    if (at < 0 && !constantOutput) return std::nullopt;
+    while (at >= 0) {
+        const Instruction& ins = tape.code[static_cast<std::size_t>(at)];
+        const Trace& t = trace[static_cast<std::size_t>(at)];
+        int next = -1;
+        const int arity = opArity(ins.op);
+        for (int j = 0; j < arity && next < 0; ++j) {
+            if (ins.op == Op::Select && j != (ops::truth(t.operand[0]) ? 1 : 2)) continue;
+            if (!std::isfinite(t.operand[j]) && t.operandWriter[j] >= 0) next = t.operandWriter[j];
+        }
+        if (next < 0) break;
+        at = next;
+    }
 
     Diagnostic d;
     d.severity = Severity::Warning;
     std::ostringstream os;
     os.precision(6);
-    if (culprit) {
-        if (culprit->origin >= 0 &&
-            culprit->origin < static_cast<std::int32_t>(tape.origins.size()))
-            d.range = tape.origins[culprit->origin];
-        os << (std::isnan(culpritValue) ? "undefined value (NaN)" : "infinite value") << " from '"
-           << opName(culprit->op) << "'";
-        d.suggestion = std::isnan(culpritValue)
-                           ? "keep arguments inside the function's domain (log and sqrt need "
-                             "non-negative input, asin and acos [-1, 1]; 0/0 is undefined)"
-                           : "avoid dividing by zero, log(0) and very large exponents";
+    if (at >= 0) {
+        const Instruction& ins = tape.code[static_cast<std::size_t>(at)];
+        const double v = trace[static_cast<std::size_t>(at)].value;
+        if (ins.origin >= 0 && ins.origin < static_cast<std::int32_t>(tape.origins.size()))
+            d.range = tape.origins[static_cast<std::size_t>(ins.origin)];
+        os << (std::isnan(v) ? "undefined value (NaN)" : "infinite value") << " from '"
+           << opName(ins.op) << "'";
+        d.suggestion = std::isnan(v) ? "keep arguments inside the function's domain (log and sqrt "
+                                       "need non-negative input, asin and acos [-1, 1]; 0/0 is "
+                                       "undefined)"
+                                     : "avoid dividing by zero, log(0) and very large exponents";
     } else {
         os << "the definition is not finite";
         d.suggestion = "check the constants of the formula";
     }
-    os << " at (x, y, z) = (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+    const char* sep = " at ";
+    for (int i = 0; i < kInputCount; ++i) {
+        if (!tape.usesInput[i]) continue;
+        os << sep << kInputNames[i] << " = " << p[i];
+        sep = ", ";
+    }
     d.message = os.str();
     return d;
 }

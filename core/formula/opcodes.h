@@ -92,19 +92,19 @@ constexpr const char* opName(Op op) {
     return "?";
 }
 
+// Operations whose operands the compiler may swap (to share a*b with b*a):
+// only those that give the same value either way for every pair of doubles.
+// min, max and the R-functions are left out: at ties they may return -0 or
+// +0 depending on the order.
 constexpr bool opIsCommutative(Op op) {
     switch (op) {
     case Op::Add:
     case Op::Mul:
-    case Op::Min:
-    case Op::Max:
     case Op::Hypot:
     case Op::Equal:
     case Op::NotEqual:
     case Op::And:
     case Op::Or:
-    case Op::RIntersect:
-    case Op::RUnion:
         return true;
     default:
         return false;

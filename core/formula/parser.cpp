@@ -47,7 +47,8 @@ class Parser {
     const Limits& limits_;
     std::size_t pos_ = 0;
     int depth_ = 0;
-    bool depthExceeded_ = false;
+    bool depthExceeded_ = false; // or too many errors: stop parsing
+    int errors_ = 0;
 
     const Token& cur() const { return toks_[std::min(pos_, toks_.size() - 1)]; }
     const Token& peekTok(std::size_t ahead) const {
@@ -68,6 +69,11 @@ class Parser {
 
     [[noreturn]] void fail(const SourceRange& r, std::string msg, std::string hint = {}) {
         diags_.push_back({Severity::Error, r, std::move(msg), std::move(hint)});
+        if (++errors_ >= limits_.maxErrors) {
+            diags_.push_back({Severity::Error, r, "too many errors; stopping here",
+                              "fix the errors above first"});
+            depthExceeded_ = true; // stops the statement loop
+        }
         throw SyntaxError{};
     }
 
@@ -488,10 +494,18 @@ class Parser {
             e->kind = ExprKind::Number;
             e->number = n.number;
             e->range = n.range;
-            if (at(TokenKind::Identifier) || at(TokenKind::LParen))
+            if (at(TokenKind::Identifier) || at(TokenKind::LParen)) {
+                if (cur().range.begin.line > n.range.end.line) {
+                    SourceRange where{n.range.end, n.range.end};
+                    where.end.column += 1;
+                    fail(where,
+                         "expected ';' at the end of line " + std::to_string(n.range.end.line),
+                         "add ';'");
+                }
                 fail(SourceRange::span(n.range, cur().range),
                      "a number is directly followed by " + found(),
                      "multiplication needs '*', for example 2*x");
+            }
             return e;
         }
         case TokenKind::Identifier: {

@@ -10,14 +10,24 @@
 // (1e200). With p = max(a, b), q = min(a, b), h = hypot(a, b) and p > 0,
 // p - h = -q^2 / (p + h), so a + b - h = q * (1 - q / (p + h)): a sum of two
 // terms of one sign and a ratio bounded by 1, hence no cancellation, no overflow.
+#include "minmax.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace fl::formula {
 
+// Beyond this magnitude p + h could overflow: R-functions are positively
+// homogeneous, so the arguments are scaled by an exact power of two and the
+// result scaled back (overflowing only when the true value does).
+constexpr double kRScaleAbove = 0x1p1000;
+
 inline double rIntersect0(double a, double b) {
-    double p = std::max(a, b), q = std::min(a, b);
     if (std::isnan(a) || std::isnan(b)) return a + b;
+    if ((std::abs(a) > kRScaleAbove || std::abs(b) > kRScaleAbove) && std::isfinite(a) &&
+        std::isfinite(b))
+        return 0x1p32 * rIntersect0(a * 0x1p-32, b * 0x1p-32);
+    double p = std::max(a, b), q = std::min(a, b);
     double h = std::hypot(a, b);
     if (std::isinf(h)) {
         // at least one infinity: the R-function tends to min(a, b) or its sign
@@ -35,9 +45,12 @@ inline double rUnion0(double a, double b) {
 // The R_alpha family: alpha in (-1, 1]; alpha = 0 is R0, alpha = 1 is min/max.
 inline double rIntersectAlpha(double a, double b, double alpha) {
     if (alpha == 0.0) return rIntersect0(a, b);
-    if (alpha >= 1.0) return std::min(a, b);
-    double p = std::max(a, b), q = std::min(a, b);
+    if (alpha >= 1.0) return minPropagating(a, b);
     if (std::isnan(a) || std::isnan(b)) return a + b;
+    if ((std::abs(a) > kRScaleAbove || std::abs(b) > kRScaleAbove) && std::isfinite(a) &&
+        std::isfinite(b))
+        return 0x1p32 * rIntersectAlpha(a * 0x1p-32, b * 0x1p-32, alpha);
+    double p = std::max(a, b), q = std::min(a, b);
     // a^2 + b^2 - 2 alpha a b, scaled to avoid overflow
     double s = std::max(std::abs(a), std::abs(b));
     if (s == 0.0) return 0.0;

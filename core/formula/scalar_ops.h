@@ -4,6 +4,7 @@
 //
 // Truth: a value is true when it is non-zero and not NaN; comparisons and
 // logic give exactly 0 or 1. NaN and infinities follow IEEE 754 and never trap.
+#include "minmax.h"
 #include "noise.h"
 #include "opcodes.h"
 #include "rfunctions.h"
@@ -37,15 +38,12 @@ inline double mod(double a, double b) {
     return r;
 }
 
-// min and max propagate NaN from either side (an undefined operand makes the
-// set operation undefined there, which the mesher reports) and are symmetric,
-// so the compiler may share min(a, b) with min(b, a). Written branch-free so
-// the batch loops vectorise.
+// min and max: NaN-propagating, operand order kept (minmax.h)
 inline double min(double a, double b) {
-    return (a < b || a != a) ? a : b;
+    return minPropagating(a, b);
 }
 inline double max(double a, double b) {
-    return (a > b || a != a) ? a : b;
+    return maxPropagating(a, b);
 }
 
 inline double sign(double a) {

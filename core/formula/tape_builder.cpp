@@ -65,7 +65,7 @@ Val TapeBuilder::power(Val base, Val exponent) {
         double e = exponent.c;
         if (e == 1.0) return base;
         if (e == 2.0) return square(base);
-        if (e == 0.5) return emit(Op::Sqrt, base);
+        // (not x^0.5 -> sqrt(x): they differ at -inf and -0)
         if (e == std::trunc(e) && std::abs(e) <= 64.0) return emit(Op::PowI, base, {}, {}, e);
     }
     return emit(Op::Pow, base, exponent);
@@ -80,12 +80,10 @@ Val TapeBuilder::fold(Op op, Val a, Val b, Val c, double imm0, double imm1) {
                                 : ops::ternary(op, a.c, b.c, c.c);
         bool inputsNaN =
             std::isnan(a.c) || (arity >= 2 && std::isnan(b.c)) || (arity >= 3 && std::isnan(c.c));
-        if (std::isnan(r) && !inputsNaN) {
-            foldWarnings_.push_back(
-                {Severity::Warning, origin_,
-                 std::string("'") + opName(op) + "' is undefined (NaN) here for every point",
-                 "check the arguments: e.g. log and sqrt need positive values"});
-        }
+        // An operation that is NaN for every point stays on the tape, so that
+        // it is reported where it matters (once, if it reaches an output; not at
+        // all in a branch that constant folding removes).
+        if (std::isnan(r) && !inputsNaN) return Val{-2, 0.0};
         return Val::constant(r);
     }
     return Val{-2, 0.0}; // not folded

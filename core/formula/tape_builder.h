@@ -48,9 +48,6 @@ class TapeBuilder {
 
     std::size_t nodeCount() const { return nodes_.size(); }
 
-    // Warnings found while folding (an operation that is NaN for every input).
-    std::vector<Diagnostic>& foldWarnings() { return foldWarnings_; }
-
     struct Output {
         std::string name;
         Val value;
@@ -81,7 +78,6 @@ class TapeBuilder {
     std::unordered_map<Key, std::int32_t, KeyHash> cse_;
     std::unordered_map<std::int32_t, std::int32_t> leaves_; // fixed register -> node
     SourceRange origin_;
-    std::vector<Diagnostic> foldWarnings_;
 
     Val leaf(std::int32_t reg);
     Val fold(Op op, Val a, Val b, Val c, double imm0, double imm1);

@@ -20,12 +20,13 @@ namespace {
 
 using namespace fl::formula;
 
-const char* kFormulaHelp = R"(usage: functionlab formula check "SRC" [--kind KIND] [--tape]
+const char* kFormulaHelp = R"(usage: functionlab formula check "SRC" [--kind KIND] [--tape] [--json]
        functionlab formula eval "SRC" --at X,Y,Z [--t T] [--uvw U,V,W]
                                 [--param NAME=VALUE ...] [--kind KIND] [--json]
 
 check   parse and check SRC; print diagnostics with a caret under the column.
-        --tape also prints the compiled tape.
+        --tape also prints the compiled tape; --json prints
+        {"ok": bool, "diagnostics": [...]}.
 eval    evaluate SRC at one point; print the value and the gradient (d/dx, d/dy,
         d/dz; d/du, d/dv, d/dw for --kind parametric).
         --json prints exactly one JSON object:
@@ -33,6 +34,8 @@ eval    evaluate SRC at one point; print the value and the gradient (d/dx, d/dy,
          "diagnostics": [...]}  (null where the value is NaN or infinite)
 
 KIND is generic (default), implicit, parametric, colour or force.
+A formula may start with '-' ("-x^2"); write -- before a formula that starts
+with "--".
 Exit status: 0 evaluated/checked, 1 the formula has errors, 2 usage error.
 )";
 
@@ -144,8 +147,11 @@ std::string parseOptions(const Args& args, std::size_t first, Options& o) {
             if (!v || eq == std::string::npos || eq == 0 || !parseNumber(v->substr(eq + 1), num))
                 return "--param needs NAME=VALUE";
             o.params.emplace_back(v->substr(0, eq), num);
-        } else if (!a.empty() && a[0] == '-' && a.size() > 1 &&
-                   !std::isdigit(static_cast<unsigned char>(a[1])) && a[1] != '.') {
+        } else if (a == "--" && !o.haveSource && i + 1 < args.size()) {
+            o.source = args[++i]; // everything after -- is the formula, even "--x"
+            o.haveSource = true;
+        } else if (a.rfind("--", 0) == 0) {
+            // options start with "--"; a single '-' starts a formula such as "-x^2"
             return "unknown option '" + a + "'";
         } else if (!o.haveSource) {
             o.source = a;
@@ -240,9 +246,11 @@ int eval(const Args& args) {
     if (auto warn = explainNonFinite(tape, s.parameters().values(), p)) diags.push_back(*warn);
 
     const double value = values.empty() ? 0.0 : values[0];
-    bool finite = std::isfinite(value);
+    bool finite = true; // every output, not only the first
+    for (double v : values)
+        finite = finite && std::isfinite(v);
     Dual d = outs[0];
-    if (!finite) d.d = {NAN, NAN, NAN}; // a gradient of an undefined value means nothing
+    if (!std::isfinite(value)) d.d = {NAN, NAN, NAN}; // no gradient of an undefined value
     if (o.json) {
         std::cout << "{\"value\": " << jsonNumber(value)
                   << ", \"finite\": " << (finite ? "true" : "false") << ", \"gradient\": ["

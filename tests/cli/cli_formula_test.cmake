@@ -42,6 +42,13 @@ run(2 formula eval "x")
 run(2 formula eval "x" --at 1,2)
 run(2 formula eval "x" --at 1,2,3 --bogus)
 
+# a formula may start with '-'; "--" ends the options
+run(0 formula eval "-x^2" --at 3,0,0 --json)
+expect_json_equal("${OUT}" "-9" value)
+run(0 formula eval --at 3,0,0 -- "-x" --json)
+expect_json_equal("${OUT}" "-3" value)
+run(2 formula eval "x" --at 3,0,0 --jsn)
+
 # check: caret diagnostics and exit status
 run(1 formula check "sine(x) + 1")
 expect_match("${ERR}" "formula:1:1: error: unknown function 'sine' \\(did you mean 'sin'\\?\\)")

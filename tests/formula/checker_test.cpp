@@ -102,5 +102,55 @@ TEST(Checker, FormatsACaretUnderTheColumn) {
                     "      ^~~~\n");
 }
 
+TEST(Checker, ReturnsInsideLoopsAndBranches) {
+    using testing::eval;
+    const char* loopReturn = "for (i = 0; i < 4; i++) { if (x < i) return i; } return 10;";
+    EXPECT_EQ(eval(loopReturn, 1.5), 2.0);
+    EXPECT_EQ(eval(loopReturn, 7), 10.0);
+    EXPECT_EQ(eval("if (x > 0) return 1; s = 0; for (i = 0; i < 4; i++) { s += i; } return s;", -1),
+              6.0);
+    EXPECT_EQ(eval("if (x > 0) { return 1; } else { a = 2; } return a;", -1), 2.0);
+    EXPECT_EQ(eval("if (x > 0) { return 1; } else { a = 2; } return a;", 1), 1.0);
+}
+
+TEST(Checker, CodeThatIsNeverCompiledIsStillChecked) {
+    Diagnostic d = firstError("function g(a) { return sine(a) + q; } return x;");
+    EXPECT_EQ(d.message, "unknown function 'sine'");
+    d = firstError("if (0) { return sine(x); } return x;");
+    EXPECT_EQ(d.message, "unknown function 'sine'");
+    CompileResult r = compile("function g(a) { return a; } return x;");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_NE(r.diagnostics[0].message.find("never called"), std::string::npos);
+}
+
+TEST(Checker, LoopStepMustChangeTheLoopVariable) {
+    Diagnostic d = firstError("j = 0; for (i = 0; i < 3; j++) { } return x;");
+    EXPECT_NE(d.message.find("changes 'j', not the loop variable 'i'"), std::string::npos);
+}
+
+TEST(Checker, MissingSemicolonAtTheEndOfALine) {
+    Diagnostic d = firstError("a = 1\nb = 2;\nreturn a + b;");
+    EXPECT_EQ(d.message, "expected ';' at the end of line 1");
+    EXPECT_EQ(d.range.begin.line, 1);
+    EXPECT_EQ(d.range.begin.column, 6);
+}
+
+TEST(Checker, ParametersCannotSetTheContinuity) {
+    Diagnostic d = firstError("param k = 1; return rintersect(x, y, k);");
+    EXPECT_NE(d.suggestion.find("use a number"), std::string::npos);
+}
+
+TEST(Checker, ErrorsStopAfterTheLimit) {
+    std::string src;
+    for (int i = 0; i < 500; ++i)
+        src += "a" + std::to_string(i) + " = zz" + std::to_string(i) + ";\n";
+    src += "return x;";
+    CompileResult r = compile(src);
+    ASSERT_FALSE(r.ok());
+    EXPECT_LE(r.diagnostics.size(), 51u);
+    EXPECT_EQ(r.diagnostics.back().message, "too many errors; stopping here");
+}
+
 } // namespace
 } // namespace fl::formula

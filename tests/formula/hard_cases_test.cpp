@@ -5,6 +5,7 @@
 #include "formula/eval_interval.h"
 #include "formula/noise.h"
 #include "formula/nonfinite_report.h"
+#include "formula/rfunctions.h"
 #include "test_helpers.h"
 
 #include <gtest/gtest.h>
@@ -110,9 +111,15 @@ TEST(HardCases, ZeroAndUndefinedGradients) {
     EXPECT_EQ(d.d[1], 0.5);
     d = grad("rintersect(x, y, 1)", 0, 0, 0);
     EXPECT_EQ(d.d[0], 0.0);
-    d = grad("min(x, y)", 1, 1, 0); // tie: the first argument's gradient
+    d = grad("min(x, y)", 1, 1, 0); // tie: the average, symmetric like the value
+    EXPECT_EQ(d.d[0], 0.5);
+    EXPECT_EQ(d.d[1], 0.5);
+    d = grad("min(x, y)", 1, 2, 0);
     EXPECT_EQ(d.d[0], 1.0);
     EXPECT_EQ(d.d[1], 0.0);
+    d = grad("sqrt(x)^0", -1, 0, 0); // NaN^0 = 1: a constant, so no NaN gradient
+    EXPECT_EQ(d.v, 1.0);
+    EXPECT_EQ(d.d[0], 0.0);
     d = grad("floor(x) + (x > 0)", 0.5, 0, 0);
     EXPECT_EQ(d.d[0], 0.0);
     d = grad("sqrt(x)", 0, 0, 0); // vertical tangent
@@ -179,6 +186,71 @@ TEST(HardCases, IntervalsFlagNaNFromInfiniteArithmetic) {
     EXPECT_FALSE(range("x * y - z", -1, 1).nan);     // finite boxes stay clean
     ScalarEvaluator s(*compile("0^-z^21 - 0^-z^2").tape);
     EXPECT_TRUE(std::isnan(s.evaluate(pointXYZ(0, 0, 0.5))));
+}
+
+} // namespace
+} // namespace fl::formula
+
+namespace fl::formula {
+namespace {
+
+// Found in review: each pins an exactness or containment promise.
+TEST(HardCases, ReviewFindings) {
+    // x^n beyond the PowI range is pow: its interval must contain pow's value
+    {
+        IntervalEvaluator iv(*compile("x^100").tape);
+        ScalarEvaluator sc(*compile("x^100").tape);
+        const double x = 1.0134319161723075;
+        EXPECT_TRUE(iv.evaluate(boxXYZ(x, x, 0, 0, 0, 0)).contains(sc.evaluate(pointXYZ(x, 0, 0))));
+    }
+    // pow(-0, -1) = -inf lies in the interval of a box whose base starts at 0
+    {
+        IntervalEvaluator iv(*compile("x^y").tape);
+        Box box = boxXYZ(-0.0, 1.0, -1.5, -0.5, 0, 0);
+        EXPECT_TRUE(iv.evaluate(box).contains(-INFINITY));
+    }
+    // NaN^0 = 1 even when the whole box is undefined for the base
+    {
+        IntervalEvaluator iv(*compile("sqrt(x)^0").tape);
+        EXPECT_TRUE(iv.evaluate(boxXYZ(-2, -1, 0, 0, 0, 0)).contains(1.0));
+    }
+    // R-functions near the largest double keep min/max's sign and are accurate
+    EXPECT_GT(rIntersect0(1.3e308, 1.3e308), 0.0);
+    EXPECT_LT(rUnion0(-1.3e308, -1.3e308), 0.0);
+    EXPECT_NEAR(rIntersect0(1e308, 1e308) / 1e308, 2.0 - std::sqrt(2.0), 1e-15);
+    {
+        IntervalEvaluator iv(*compile("rintersect(x, y)").tape);
+        Interval r = iv.evaluate(boxXYZ(1e308, 1.3e308, 1e308, 1.3e308, 0, 0));
+        EXPECT_FALSE(r.empty());
+        EXPECT_TRUE(r.contains(rIntersect0(1.2e308, 1.1e308)));
+    }
+    // x^0.5 is pow, not sqrt: they differ at -inf and -0
+    EXPECT_EQ(eval("x^0.5", -INFINITY), INFINITY);
+    EXPECT_EQ(eval("1/x^0.5", -0.0), INFINITY);
+    // min and max are symmetric for signed zeros, whatever order the compiler picks
+    EXPECT_EQ(eval("a = x; return 1/min(y, x);", -0.0, 0.0), -INFINITY);
+    EXPECT_EQ(eval("1/min(y, x)", -0.0, 0.0), -INFINITY);
+    EXPECT_EQ(eval("1/max(x, y)", -0.0, 0.0), INFINITY);
+}
+
+TEST(HardCases, NonFiniteReportFollowsTheValueThatReachedTheOutput) {
+    CompileResult r = compile("(x > 0 ? sqrt(x) : 0) + log(x)");
+    ASSERT_TRUE(r.ok());
+    auto d = explainNonFinite(*r.tape, {}, pointXYZ(-1, 0, 0));
+    ASSERT_TRUE(d.has_value());
+    EXPECT_NE(d->message.find("'log'"), std::string::npos) << d->message; // not the sqrt not taken
+    EXPECT_NE(d->message.find("x = -1"), std::string::npos);
+    EXPECT_EQ(d->message.find("y ="), std::string::npos); // only the inputs the formula reads
+}
+
+TEST(HardCases, AlwaysUndefinedOperationsAreReportedOnceAndOnlyWhenLive) {
+    CompileResult loop = compile("s = 0; for (i = 0; i < 5; i++) { s += log(-1) * x; } return s;");
+    ASSERT_TRUE(loop.ok());
+    EXPECT_EQ(loop.diagnostics.size(), 1u);
+    CompileResult dead = compile("0 ? log(-1) : 2");
+    ASSERT_TRUE(dead.ok());
+    EXPECT_TRUE(dead.diagnostics.empty());
+    EXPECT_EQ(eval("0 ? log(-1) : 2"), 2.0);
 }
 
 } // namespace

@@ -54,6 +54,18 @@ TEST(Limits, NestedLoopsCountTogether) {
     ASSERT_FALSE(r.ok());
 }
 
+TEST(Limits, ExpansionWorkThroughRepeatedInlining) {
+    // every level doubles the work while the tape stays tiny (shared subexpressions)
+    std::string src = "function f0(a) { return sin(a); } ";
+    for (int i = 1; i <= 40; ++i)
+        src += "function f" + std::to_string(i) + "(a) { return f" + std::to_string(i - 1) +
+               "(a) + f" + std::to_string(i - 1) + "(a); } ";
+    src += "return f40(x);";
+    CompileResult r = compile(src);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.diagnostics[0].message.find("too much work"), std::string::npos);
+}
+
 TEST(Limits, DefaultsAdmitRealFormulas) {
     std::string src = "0";
     for (int i = 0; i < 150; ++i)
