@@ -1,8 +1,8 @@
 #pragma once
 // Conservative interval arithmetic: every operation returns an interval that
 // contains the result for every point of its operand intervals, as computed in
-// double precision by the scalar evaluator (endpoints are widened outward by
-// two ulps, which covers round-to-nearest and glibc's < 1 ulp maths library).
+// double precision by the scalar evaluator (endpoints come from the same
+// maths routines — SLEEF, <= 1 ulp — and are widened outward by two ulps).
 //
 // `nan` records that some point of the box may evaluate to NaN (outside a
 // function's domain, 0/0, inf - inf). When no point has a numeric value the
