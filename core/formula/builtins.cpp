@@ -192,8 +192,9 @@ bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const 
     else if (n == "rintersect" || n == "runion") {
         double m = 0.0;
         if (argc == 3) {
-            if (!requireConstant(a[2], 2, "the continuity m", error)) return false;
-            m = a[2].c;
+            Val mv = tb.resolveConstant(a[2]);
+            if (!requireConstant(mv, 2, "the continuity m", error)) return false;
+            m = mv.c;
             if (!(m >= 0.0) || m > 16.0) {
                 error = {2, "the continuity m must be between 0 and 16", "use m = 0, 1 or 2"};
                 return false;

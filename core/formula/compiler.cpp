@@ -99,6 +99,11 @@ class Compiler {
     long expansionSteps_ = 0;
     int errorCount_ = 0;
     std::set<std::string> calledFunctions_;
+    std::set<const void*> checkedDeadBlocks_;
+    std::set<std::string> allAssigned_;
+    bool allAssignedCollected_ = false;
+    const SourceRange* colourReturn_ = nullptr; // a top-level return in a colour definition
+    const SourceRange* colourOutput_ = nullptr; // a top-level assignment to r, g or b
 
     // ---- diagnostics ---------------------------------------------------
 
@@ -206,7 +211,8 @@ class Compiler {
 
     Val constantExpression(const Expr& e, const char* what) {
         Frame scratch;
-        Val v = expr(e, scratch);
+        Val v =
+            tb_.resolveConstant(expr(e, scratch)); // (an always-NaN part is reported at the end)
         if (!v.isConst()) {
             error(e.range, std::string(what) + " must be a constant number",
                   "use numbers and pi or e only");
@@ -330,6 +336,14 @@ class Compiler {
             top.done = Val::constant(1.0);
         }
 
+        if (colourReturn_ && colourOutput_) {
+            error(*colourReturn_,
+                  "a colour definition either assigns r, g and b or returns one value for the "
+                  "colour map, not both",
+                  "remove the 'return', or the assignments to r, g, b (see line " +
+                      std::to_string(colourOutput_->begin.line) + ")");
+            return;
+        }
         if (multiOutput) {
             bool allAssigned = true;
             std::string missing;
@@ -444,6 +458,8 @@ class Compiler {
             return;
         }
         if (reservedName(name, s.nameRange, "variable")) return;
+        if (isOutputCoordinate && kind() == DefinitionKind::Colour && f.functionName.empty())
+            colourOutput_ = &s.nameRange;
         Val value = expr(*s.value, f);
         auto it = f.vars.find(name);
         const Val* old = nullptr;
@@ -491,6 +507,7 @@ class Compiler {
                       outputNames()[2] + " instead");
             return;
         }
+        if (kind() == DefinitionKind::Colour && f.functionName.empty()) colourReturn_ = &s.range;
         Val v = expr(*s.value, f);
         tb_.setOrigin(s.range);
         if (f.hasResult) v = tb_.select(f.done, f.result, v);
@@ -500,7 +517,7 @@ class Compiler {
     }
 
     void doIf(const Stmt& s, Frame& f) {
-        Val cond = expr(*s.value, f);
+        Val cond = tb_.resolveConstant(expr(*s.value, f));
         if (cond.isConst()) {
             bool taken = cond.c < 0.0 || cond.c > 0.0;
             if (taken)
@@ -575,7 +592,7 @@ class Compiler {
                   "write: " + var + "++");
             return;
         }
-        Val init = expr(*s.value, f);
+        Val init = tb_.resolveConstant(expr(*s.value, f));
         if (!init.isConst()) {
             error(s.value->range, "a loop's first value must be known when the formula is compiled",
                   "use a number here");
@@ -586,7 +603,7 @@ class Compiler {
         loopVar.assignedAt = s.nameRange;
         f.vars[var] = loopVar;
         for (;;) {
-            Val c = expr(*s.condition, f);
+            Val c = tb_.resolveConstant(expr(*s.condition, f));
             if (!c.isConst()) {
                 error(s.condition->range,
                       "a loop's condition must be known when the formula is compiled",
@@ -607,6 +624,7 @@ class Compiler {
             checkSize();
             assign(*s.step, f);
             if (hasErrors(diags_)) throw Abort{};
+            f.vars[var].value = tb_.resolveConstant(f.vars[var].value);
             if (!f.vars[var].value.isConst()) {
                 error(s.step->range,
                       "the loop step must change the loop variable by a known amount",
@@ -621,6 +639,10 @@ class Compiler {
     // reported once per place in the source.
     void warnAlwaysUndefined(const Tape& tape) {
         std::set<std::size_t> reported;
+        for (const SourceRange& where : tb_.resolvedUndefined()) {
+            if (!reported.insert(where.begin.offset).second) continue;
+            warning(where, "this is undefined (NaN) for every point", "check the arguments");
+        }
         for (const Instruction& ins : tape.code) {
             const int arity = opArity(ins.op);
             bool allConst =
@@ -646,11 +668,20 @@ class Compiler {
         }
     }
 
+    // Flow-insensitive on purpose: a name assigned anywhere in the program
+    // counts as known (a dead branch in an unrolled loop may read a variable
+    // assigned later in the body). Each dead block is checked once.
     void checkNames(const std::vector<StmtPtr>& body, const Frame& frame) {
-        std::set<std::string> known;
+        if (!checkedDeadBlocks_.insert(&body).second) return;
+        if (!allAssignedCollected_) {
+            collectAssigned(program_.statements, allAssigned_);
+            for (const FunctionDecl& fn : program_.functions)
+                collectAssigned(fn.body, allAssigned_);
+            allAssignedCollected_ = true;
+        }
+        std::set<std::string> known = allAssigned_;
         for (const auto& [name, v] : frame.vars)
             known.insert(name);
-        collectAssigned(body, known);
         checkNamesIn(body, known);
     }
 

@@ -60,10 +60,26 @@ Interval fromTruth(int t) {
     return {0.0, 1.0, false};
 }
 
+// For results that are never negative (squares, even powers, norms) the
+// outward widening must not push the lower end below 0.
+Interval nonNegative(Interval r) {
+    if (!r.empty()) r.lo = std::max(r.lo, 0.0);
+    return r;
+}
+
+// A sum or difference that rounds to exactly 0 was exact (results below the
+// smallest subnormal cannot round to 0), so a 0 endpoint needs no widening.
+Interval makeSum(double lo, double hi, bool nan) {
+    Interval r = make(lo, hi, nan);
+    if (lo == 0.0) r.lo = 0.0;
+    if (hi == 0.0) r.hi = 0.0;
+    return r;
+}
+
 Interval square(const Interval& a) {
     double l2 = a.lo * a.lo, h2 = a.hi * a.hi;
-    if (a.containsZero()) return make(0.0, std::max(l2, h2), a.nan);
-    return make(std::min(l2, h2), std::max(l2, h2), a.nan);
+    if (a.containsZero()) return nonNegative(make(0.0, std::max(l2, h2), a.nan));
+    return nonNegative(make(std::min(l2, h2), std::max(l2, h2), a.nan));
 }
 
 bool hasInf(const Interval& a) {
@@ -97,8 +113,8 @@ Interval powi(const Interval& a, int n) {
     // repeated squaring rounds at most log2(n) + popcount(n) times
     int ulps = 2 + 2 * static_cast<int>(std::log2(static_cast<double>(n)) + 1);
     if (n % 2 == 1) return make(l, h, a.nan, ulps);
-    if (a.containsZero()) return make(0.0, std::max(l, h), a.nan, ulps);
-    return make(std::min(l, h), std::max(l, h), a.nan, ulps);
+    if (a.containsZero()) return nonNegative(make(0.0, std::max(l, h), a.nan, ulps));
+    return nonNegative(make(std::min(l, h), std::max(l, h), a.nan, ulps));
 }
 
 // Range of sin over [lo, hi]: endpoints plus any interior extremum.
@@ -170,9 +186,11 @@ Interval powGeneral(const Interval& a, const Interval& b) {
         lo = std::min(lo, 1.0);
         hi = std::max(hi, 1.0);
     }
-    if (a.lo > 0.0) return make(lo, hi, nan);
+    // a base that may be -0 only matters for negative exponents
+    // (pow(-0, -1) = -inf); for positive ones it gives 0 like +0
+    if (a.lo > 0.0 || (a.lo == 0.0 && b.lo > 0.0)) return make(std::max(lo, 0.0), hi, nan);
     // zero or negative bases: NaN for non-integer exponents, ±|a|^b for
-    // integer ones (and pow(-0, -1) = -inf: intervals do not track the sign of 0)
+    // integer ones (intervals do not track the sign of 0)
     return make(-hi, hi, true);
 }
 
@@ -421,11 +439,11 @@ Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double
     switch (op) {
     // inf - inf inside the boxes is NaN even when the endpoint sums are not
     case Op::Add:
-        return make(a.lo + b.lo, a.hi + b.hi,
-                    nan || (a.hi == kInf && b.lo == -kInf) || (a.lo == -kInf && b.hi == kInf));
+        return makeSum(a.lo + b.lo, a.hi + b.hi,
+                       nan || (a.hi == kInf && b.lo == -kInf) || (a.lo == -kInf && b.hi == kInf));
     case Op::Sub:
-        return make(a.lo - b.hi, a.hi - b.lo,
-                    nan || (a.hi == kInf && b.hi == kInf) || (a.lo == -kInf && b.lo == -kInf));
+        return makeSum(a.lo - b.hi, a.hi - b.lo,
+                       nan || (a.hi == kInf && b.hi == kInf) || (a.lo == -kInf && b.lo == -kInf));
     case Op::Mul:
         return mul(a, b);
     case Op::Div:
@@ -440,7 +458,7 @@ Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double
         return atan2Range(a, b);
     case Op::Hypot: {
         Interval x = absRange(a), y = absRange(b);
-        return make(std::hypot(x.lo, y.lo), std::hypot(x.hi, y.hi), nan);
+        return nonNegative(make(std::hypot(x.lo, y.lo), std::hypot(x.hi, y.hi), nan));
     }
     case Op::Mod:
         return modRange(a, b);

@@ -63,24 +63,42 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
         break;
     }
     if (at < 0 && !constantOutput) return std::nullopt;
+    // Which operand to follow: one that is non-finite the same way as the
+    // result (NaN for NaN, infinite for infinite) first, then any non-finite one.
+    bool fromConstant = false; // the walk ended at a non-finite constant or parameter
     while (at >= 0) {
         const Instruction& ins = tape.code[static_cast<std::size_t>(at)];
         const Trace& t = trace[static_cast<std::size_t>(at)];
-        int next = -1;
         const int arity = opArity(ins.op);
-        for (int j = 0; j < arity && next < 0; ++j) {
-            if (ins.op == Op::Select && j != (ops::truth(t.operand[0]) ? 1 : 2)) continue;
-            if (!std::isfinite(t.operand[j]) && t.operandWriter[j] >= 0) next = t.operandWriter[j];
+        int pick = -1;
+        for (int pass = 0; pass < 2 && pick < 0; ++pass) {
+            for (int j = 0; j < arity && pick < 0; ++j) {
+                if (ins.op == Op::Select && j != (ops::truth(t.operand[0]) ? 1 : 2)) continue;
+                if (std::isfinite(t.operand[j])) continue;
+                if (pass == 0 && std::isnan(t.operand[j]) != std::isnan(t.value)) continue;
+                pick = j;
+            }
         }
-        if (next < 0) break;
-        at = next;
+        if (pick < 0) break; // finite operands, non-finite result: this operation did it
+        if (t.operandWriter[pick] < 0) {
+            fromConstant = true;
+            break;
+        }
+        at = t.operandWriter[pick];
     }
 
     Diagnostic d;
     d.severity = Severity::Warning;
     std::ostringstream os;
     os.precision(6);
-    if (at >= 0) {
+    if (at >= 0 && fromConstant) {
+        const Instruction& ins = tape.code[static_cast<std::size_t>(at)];
+        if (ins.origin >= 0 && ins.origin < static_cast<std::int32_t>(tape.origins.size()))
+            d.range = tape.origins[static_cast<std::size_t>(ins.origin)];
+        os << "a constant or parameter here is not finite ("
+           << trace[static_cast<std::size_t>(at)].value << ")";
+        d.suggestion = "check constants such as 1/0 and parameter values";
+    } else if (at >= 0) {
         const Instruction& ins = tape.code[static_cast<std::size_t>(at)];
         const double v = trace[static_cast<std::size_t>(at)].value;
         if (ins.origin >= 0 && ins.origin < static_cast<std::int32_t>(tape.origins.size()))

@@ -17,25 +17,21 @@
 
 namespace fl::formula {
 
-// Beyond this magnitude p + h could overflow: R-functions are positively
-// homogeneous, so the arguments are scaled by an exact power of two and the
-// result scaled back (overflowing only when the true value does).
-constexpr double kRScaleAbove = 0x1p1000;
-
 inline double rIntersect0(double a, double b) {
     if (std::isnan(a) || std::isnan(b)) return a + b;
-    if ((std::abs(a) > kRScaleAbove || std::abs(b) > kRScaleAbove) && std::isfinite(a) &&
-        std::isfinite(b))
-        return 0x1p32 * rIntersect0(a * 0x1p-32, b * 0x1p-32);
     double p = std::max(a, b), q = std::min(a, b);
-    double h = std::hypot(a, b);
-    if (std::isinf(h)) {
-        // at least one infinity: the R-function tends to min(a, b) or its sign
+    if (std::isinf(a) || std::isinf(b)) {
+        // the R-function tends to min(a, b) or its sign
         if (std::isinf(p) && p > 0) return q; // +inf with q: inside-ness decided by q
         return -INFINITY;                     // -inf present: outside
     }
-    if (p > 0) return q * (1.0 - q / (p + h));
-    return a + b - h; // all terms <= 0: no cancellation
+    if (p > 0) {
+        // in halves, so that p + h cannot overflow near the largest double;
+        // halving is exact, and only the negligible q/2 of a subnormal q rounds
+        double halfH = std::hypot(0.5 * a, 0.5 * b);
+        return q * (1.0 - (0.5 * q) / (0.5 * p + halfH));
+    }
+    return a + b - std::hypot(a, b); // all terms <= 0: no cancellation
 }
 
 inline double rUnion0(double a, double b) {
@@ -47,22 +43,19 @@ inline double rIntersectAlpha(double a, double b, double alpha) {
     if (alpha == 0.0) return rIntersect0(a, b);
     if (alpha >= 1.0) return minPropagating(a, b);
     if (std::isnan(a) || std::isnan(b)) return a + b;
-    if ((std::abs(a) > kRScaleAbove || std::abs(b) > kRScaleAbove) && std::isfinite(a) &&
-        std::isfinite(b))
-        return 0x1p32 * rIntersectAlpha(a * 0x1p-32, b * 0x1p-32, alpha);
+    if (std::isinf(a) || std::isinf(b)) return rIntersect0(a, b);
     double p = std::max(a, b), q = std::min(a, b);
-    // a^2 + b^2 - 2 alpha a b, scaled to avoid overflow
+    // a^2 + b^2 - 2 alpha a b, scaled to avoid overflow; h/2 as in rIntersect0
     double s = std::max(std::abs(a), std::abs(b));
     if (s == 0.0) return 0.0;
-    if (std::isinf(s)) return rIntersect0(a, b);
     double as = a / s, bs = b / s;
-    double h = s * std::sqrt(std::max(0.0, as * as + bs * bs - 2.0 * alpha * as * bs));
+    double halfH = (0.5 * s) * std::sqrt(std::max(0.0, as * as + bs * bs - 2.0 * alpha * as * bs));
     double r;
     if (p > 0) {
-        // p - h = (p^2 - h^2) / (p + h) = (2 alpha p q - q^2) / (p + h)
-        r = q + (q / (p + h)) * (2.0 * alpha * p - q);
+        // p - h = (p^2 - h^2) / (p + h) = q (2 alpha p - q) / (p + h)
+        r = q + (q / (0.5 * p + halfH)) * (alpha * p - 0.5 * q);
     } else {
-        r = a + b - h;
+        r = a + b - 2.0 * halfH;
     }
     return r / (1.0 + alpha);
 }

@@ -89,6 +89,27 @@ Val TapeBuilder::fold(Op op, Val a, Val b, Val c, double imm0, double imm1) {
     return Val{-2, 0.0}; // not folded
 }
 
+Val TapeBuilder::resolveConstant(Val v) {
+    if (v.isConst()) return v;
+    const Node& n = nodes_[static_cast<std::size_t>(v.node)];
+    if (n.isLeaf) return v;
+    const int arity = opArity(n.op);
+    const Op op = n.op;
+    const double imm0 = n.imm0, imm1 = n.imm1;
+    const std::int32_t origin = n.origin;
+    const Val na = n.a, nb = n.b, nc = n.c; // (the recursion may not grow nodes_, but be safe)
+    Val a = resolveConstant(na);
+    Val b = arity >= 2 ? resolveConstant(nb) : Val::constant(0.0);
+    Val c = arity >= 3 ? resolveConstant(nc) : Val::constant(0.0);
+    if (!a.isConst() || !b.isConst() || !c.isConst()) return v;
+    double r = arity == 1   ? ops::unary(op, a.c, imm0)
+               : arity == 2 ? ops::binary(op, a.c, b.c, imm0, imm1)
+                            : ops::ternary(op, a.c, b.c, c.c);
+    if (std::isnan(r) && !std::isnan(a.c) && !std::isnan(b.c) && !std::isnan(c.c) && origin >= 0)
+        resolvedUndefined_.push_back(origins_[static_cast<std::size_t>(origin)]);
+    return Val::constant(r);
+}
+
 Val TapeBuilder::emit(Op op, Val a, Val b, Val c, double imm0, double imm1) {
     Val folded = fold(op, a, b, c, imm0, imm1);
     if (folded.node != -2) return folded;

@@ -48,6 +48,15 @@ class TapeBuilder {
 
     std::size_t nodeCount() const { return nodes_.size(); }
 
+    // The value as a constant where it is one — including operations kept on
+    // the tape only because they are NaN for every point — else unchanged.
+    // For places that need a number at compile time (loop bounds, m, …).
+    Val resolveConstant(Val v);
+
+    // Source ranges of always-NaN operations that resolveConstant evaluated
+    // (they vanish from the tape when, say, a loop bound absorbs them).
+    const std::vector<SourceRange>& resolvedUndefined() const { return resolvedUndefined_; }
+
     struct Output {
         std::string name;
         Val value;
@@ -78,6 +87,7 @@ class TapeBuilder {
     std::unordered_map<Key, std::int32_t, KeyHash> cse_;
     std::unordered_map<std::int32_t, std::int32_t> leaves_; // fixed register -> node
     SourceRange origin_;
+    std::vector<SourceRange> resolvedUndefined_;
 
     Val leaf(std::int32_t reg);
     Val fold(Op op, Val a, Val b, Val c, double imm0, double imm1);

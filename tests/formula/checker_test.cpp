@@ -124,6 +124,42 @@ TEST(Checker, CodeThatIsNeverCompiledIsStillChecked) {
     EXPECT_NE(r.diagnostics[0].message.find("never called"), std::string::npos);
 }
 
+TEST(Checker, DeadBranchesInUnrolledLoopsSeeLaterAssignments) {
+    using testing::eval;
+    EXPECT_EQ(
+        eval("acc = 0; for (i = 0; i < 3; i++) { if (i > 0) { acc += prev; } prev = x * i; } acc",
+             2),
+        0.0 + 2.0 * 0 + 2.0 * 1);
+    CompileResult r = compile("function f(n) { if (n > 5) { return zz; } return n; } f(1) + f(2)");
+    ASSERT_FALSE(r.ok());
+    int reports = 0;
+    for (const Diagnostic& d : r.diagnostics)
+        reports += d.message == "unknown name 'zz'";
+    EXPECT_EQ(reports, 1);
+}
+
+TEST(Checker, ColourDefinitionsDoNotMixReturnAndOutputs) {
+    Diagnostic d = firstError("r = 0; g = 0; b = 0; if (x > 0) return 0.5; r = 1; g = 1; b = 1;",
+                              DefinitionKind::Colour);
+    EXPECT_NE(d.message.find("not both"), std::string::npos);
+    d = firstError("if (x > 0) { r = 1; g = 1; b = 1; } else { return 0.2; }",
+                   DefinitionKind::Colour);
+    EXPECT_NE(d.message.find("not both"), std::string::npos);
+    EXPECT_TRUE(
+        firstError("if (x > 0) return 0.5; return 0.1;", DefinitionKind::Colour).message.empty());
+}
+
+TEST(Checker, AlwaysUndefinedConstantsWhereNumbersAreNeeded) {
+    CompileResult p = compile("param k = sqrt(-1); x + k");
+    ASSERT_TRUE(p.ok());
+    ASSERT_FALSE(p.diagnostics.empty());
+    EXPECT_EQ(p.diagnostics[0].severity, Severity::Warning);
+    CompileResult loop = compile("s = 1; for (i = 0; i < log(-1); i++) { s += 1; } x + s");
+    ASSERT_TRUE(loop.ok());
+    EXPECT_EQ(testing::eval("s = 1; for (i = 0; i < log(-1); i++) { s += 1; } x + s", 1), 2.0);
+    EXPECT_FALSE(loop.diagnostics.empty());
+}
+
 TEST(Checker, LoopStepMustChangeTheLoopVariable) {
     Diagnostic d = firstError("j = 0; for (i = 0; i < 3; j++) { } return x;");
     EXPECT_NE(d.message.find("changes 'j', not the loop variable 'i'"), std::string::npos);

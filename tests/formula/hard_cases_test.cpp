@@ -243,6 +243,30 @@ TEST(HardCases, NonFiniteReportFollowsTheValueThatReachedTheOutput) {
     EXPECT_EQ(d->message.find("y ="), std::string::npos); // only the inputs the formula reads
 }
 
+TEST(HardCases, NonFiniteReportNamesConstantsAndMatchesTheKindOfValue) {
+    CompileResult c = compile("x + 1/0");
+    auto d = explainNonFinite(*c.tape, {}, pointXYZ(1, 0, 0));
+    ASSERT_TRUE(d.has_value());
+    EXPECT_NE(d->message.find("constant or parameter"), std::string::npos) << d->message;
+    CompileResult m = compile("min(exp(x*1000), sqrt(-x))");
+    d = explainNonFinite(*m.tape, {}, pointXYZ(1, 0, 0));
+    ASSERT_TRUE(d.has_value());
+    EXPECT_NE(d->message.find("NaN) from 'sqrt'"), std::string::npos) << d->message;
+}
+
+TEST(HardCases, RFunctionsKeepTinyOperandsNextToHugeOnes) {
+    EXPECT_LT(rIntersect0(1e308, -1e-315), 0.0);
+    EXPECT_EQ(rIntersect0(1e308, -1e-300), -1e-300);
+    EXPECT_GT(rUnion0(-1e308, 1e-315), 0.0);
+}
+
+TEST(HardCases, PowerIntervalsStayTightForPositiveExponents) {
+    IntervalEvaluator iv(*compile("(x^2 + y^2)^0.5").tape);
+    Interval r = iv.evaluate(boxXYZ(-1, 1, -1, 1, 0, 0));
+    EXPECT_GE(r.lo, -1e-300);
+    EXPECT_FALSE(r.nan);
+}
+
 TEST(HardCases, AlwaysUndefinedOperationsAreReportedOnceAndOnlyWhenLive) {
     CompileResult loop = compile("s = 0; for (i = 0; i < 5; i++) { s += log(-1) * x; } return s;");
     ASSERT_TRUE(loop.ok());
