@@ -20,6 +20,8 @@ class Fuser {
             squareTerms(i);
         for (std::size_t i = 0; i < steps_.size(); ++i)
             negatedOperand(i);
+        for (std::size_t i = 0; i < steps_.size(); ++i)
+            minMaxChain(i);
         std::vector<BatchStep> kept;
         kept.reserve(steps_.size());
         for (std::size_t i = 0; i < steps_.size(); ++i)
@@ -172,6 +174,62 @@ class Fuser {
             }
         }
         s = f;
+    }
+
+    // The operands of a plain or negated-operand min/max step as chain links;
+    // false when one is a constant (chains hold registers only).
+    static bool chainLinks(const BatchStep& s, std::int32_t reg[2], double sign[2]) {
+        if (s.constA || s.constB) return false;
+        reg[0] = s.a;
+        reg[1] = s.b;
+        sign[0] = s.negA ? -1.0 : 1.0;
+        sign[1] = s.negB ? -1.0 : 1.0;
+        return true;
+    }
+
+    // op(inner, c) where inner = op(a, b) [or a longer chain] has no other
+    // reader: one pass evaluating the same nesting left to right. Negation is
+    // a multiplication by -1, which IEEE makes exact.
+    void minMaxChain(std::size_t i) {
+        BatchStep& s = steps_[i];
+        if (dead_[i] || (s.op != Op::Min && s.op != Op::Max)) return;
+        if (s.fused != Fused::None && s.fused != Fused::NegatedOperand) return;
+        if (s.constA || s.constB || s.negA) return; // the chain continues through operand a only
+        int j = soleProducer(i, s.a);
+        if (j < 0) return;
+        const BatchStep& inner = steps_[j];
+        if (inner.op != s.op) return;
+        std::int32_t regs[4];
+        double signs[4];
+        int count = 0;
+        if (inner.fused == Fused::MinMaxChain) {
+            count = inner.chainCount;
+            for (int k = 0; k < count; ++k) {
+                regs[k] = inner.chainReg[k];
+                signs[k] = inner.chainSign[k];
+            }
+        } else if (inner.fused == Fused::None || inner.fused == Fused::NegatedOperand) {
+            if (!chainLinks(inner, regs, signs)) return;
+            count = 2;
+        } else {
+            return;
+        }
+        if (count + 1 > 4) return;
+        // the chain loop may write the register of its first operand (it reads
+        // that one through the output pointer), but no other
+        for (int k = 0; k < count; ++k)
+            if (!canReadLater(static_cast<std::size_t>(j), i, regs[k], /*inPlace=*/k == 0)) return;
+        if (s.out == s.b) return;
+        regs[count] = s.b;
+        signs[count] = s.negB ? -1.0 : 1.0;
+        ++count;
+        s.fused = Fused::MinMaxChain;
+        s.chainCount = static_cast<std::uint8_t>(count);
+        for (int k = 0; k < count; ++k) {
+            s.chainReg[k] = regs[k];
+            s.chainSign[k] = signs[k];
+        }
+        dead_[j] = 1;
     }
 
     void negatedOperand(std::size_t i) {

@@ -7,6 +7,7 @@
 //   t = a - c; s = t*t                 ->  (a - c)^2                 (SquareOfDiff)
 //   A - (b - c)^2 - (d - e)^2 ...      ->  one pass, up to 3 terms   (SquareTerms)
 //   n = -b; min(a, n)                  ->  min(a, -b)                (NegatedOperand)
+//   min(min(min(a, b), c), d)          ->  one pass, 3 or 4 operands (MinMaxChain)
 //
 // A step is fused away only when its result has exactly one reader and the
 // registers it read are not rewritten before the fused step runs.

@@ -13,6 +13,7 @@ enum class Fused : std::uint8_t {
     SquareOfDiff,   // out = (a - ca)^2
     SquareTerms,    // out = A + sign[0]*(r[0] - off[0])^2 + ... (1 to 3 terms, in order)
     NegatedOperand, // op (min or max) with operand a (negA) or b (negB) negated first
+    MinMaxChain,    // op(op(op(r0, r1), r2), r3): 3 or 4 registers, each maybe negated
 };
 
 struct BatchStep {
@@ -29,6 +30,10 @@ struct BatchStep {
     double termSign[3] = {1.0, 1.0, 1.0};
     // NegatedOperand
     bool negA = false, negB = false;
+    // MinMaxChain (left to right, exactly the nesting it replaces)
+    std::uint8_t chainCount = 0;
+    std::int32_t chainReg[4] = {0, 0, 0, 0};
+    double chainSign[4] = {1.0, 1.0, 1.0, 1.0}; // -1: the operand is negated first
 };
 
 } // namespace fl::formula

@@ -122,6 +122,46 @@ inline void negatedLoop(const Step& s, double* const* base, double* o, std::size
     }
 }
 
+// op(op(op(r0, r1), r2), r3) with each operand times its sign (+1 or -1).
+// When the output is r0's own register, r0 is read through the output
+// pointer: one pointer read and written at the same index still vectorises.
+template <int Count, bool IsMin, bool InPlace>
+inline void chainLoop(const Step& s, double* const* base, double* o, std::size_t n) {
+    const double* __restrict r1 = base[s.chainReg[1]];
+    const double* __restrict r2 = base[s.chainReg[2]];
+    const double* __restrict r3 = base[s.chainReg[Count > 3 ? 3 : 2]];
+    const double s0 = s.chainSign[0], s1 = s.chainSign[1], s2 = s.chainSign[2], s3 = s.chainSign[3];
+    auto op = [](double a, double b) { return IsMin ? ops::min(a, b) : ops::max(a, b); };
+    if constexpr (InPlace) {
+        for (std::size_t i = 0; i < n; ++i) { // o[i] is r0[i]: read, then written
+            double acc = op(s0 * o[i], s1 * r1[i]);
+            acc = op(acc, s2 * r2[i]);
+            if constexpr (Count > 3) acc = op(acc, s3 * r3[i]);
+            o[i] = acc;
+        }
+    } else {
+        double* __restrict out = o;
+        const double* __restrict r0 = base[s.chainReg[0]];
+        for (std::size_t i = 0; i < n; ++i) {
+            double acc = op(s0 * r0[i], s1 * r1[i]);
+            acc = op(acc, s2 * r2[i]);
+            if constexpr (Count > 3) acc = op(acc, s3 * r3[i]);
+            out[i] = acc;
+        }
+    }
+}
+
+template <bool IsMin>
+inline void chainDispatch(const Step& s, double* const* base, double* o, std::size_t n) {
+    const bool inPlace = base[s.chainReg[0]] == o;
+    if (s.chainCount == 3)
+        inPlace ? chainLoop<3, IsMin, true>(s, base, o, n)
+                : chainLoop<3, IsMin, false>(s, base, o, n);
+    else
+        inPlace ? chainLoop<4, IsMin, true>(s, base, o, n)
+                : chainLoop<4, IsMin, false>(s, base, o, n);
+}
+
 } // namespace
 
 BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape) {
@@ -227,6 +267,12 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
                 squareTermsDispatch<true>(s, base, o, n);
             else
                 squareTermsDispatch<false>(s, base, o, n);
+            continue;
+        case Fused::MinMaxChain:
+            if (s.op == Op::Min)
+                chainDispatch<true>(s, base, o, n);
+            else
+                chainDispatch<false>(s, base, o, n);
             continue;
         case Fused::NegatedOperand: {
             auto mn = [](double a, double b) { return ops::min(a, b); };

@@ -19,8 +19,8 @@ namespace fl::formula::vmath {
     X(Acos, acos)                                                                                  \
     X(Atan, atan)                                                                                  \
     X(Exp, exp)                                                                                    \
-    X(Log, log) X(Log2, log2) X(Log10, log10) X(Sinh, sinh) X(Cosh, cosh) X(Tanh, tanh)            \
-        X(Cbrt, cbrt)
+    X(Log, log)                                                                                    \
+    X(Log2, log2) X(Log10, log10) X(Sinh, sinh) X(Cosh, cosh) X(Tanh, tanh) X(Cbrt, cbrt)
 #define FL_VMATH_BINARY(X) X(Atan2, atan2) X(Pow, pow)
 
 enum class Unary : std::uint8_t {

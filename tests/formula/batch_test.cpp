@@ -121,6 +121,10 @@ TEST(Batch, FusedSquarePassesMatchScalar) {
         "0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2",
         "(x - 1)^2 * (x - 1)", // the difference is used twice: must not be fused away
         "blob(0.1, 0.2, 0.3, 1, 2) + blob(-0.1, 0, 0.3, 1, 3) - 0.5",
+        "min(min(min(x, y), z), -x)",
+        "max(max(max(max(max(x, -y), z), x * y), y - z), -z)",
+        "(1-x^2-y^2-z^2) & (-((z-x) & y & z))",
+        "x | y | z | (x - y) | (y \\ z)",
     };
     for (const char* f : formulas) {
         checkAgainstScalar(f, rng, 600, false);
@@ -154,7 +158,8 @@ TEST(Batch, FusionReducesPasses) {
     EXPECT_EQ(passes("x^2 + y^2"), 1u);
     EXPECT_EQ(passes("0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2"), 1u); // t is uniform
     EXPECT_EQ(passes("x \\ y"), 1u);                                            // min(x, -y)
-    EXPECT_LE(passes("(1-x^2-y^2-z^2) & (-((z-x) & y & z))"), 5u);
+    EXPECT_LE(passes("(1-x^2-y^2-z^2) & (-((z-x) & y & z))"), 4u);
+    EXPECT_EQ(passes("min(min(min(x, y), z), -x)"), 1u);
 }
 
 } // namespace
