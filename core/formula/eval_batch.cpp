@@ -15,15 +15,20 @@ namespace {
 
 using Step = BatchStep;
 
+// Every loop helper is forced inline: runBlock is compiled twice (baseline and
+// AVX2, see below), and a helper left out of line would be compiled once, for
+// the baseline, and run 2 lanes wide even on an AVX2 machine.
+#define FL_BATCH_LOOP [[gnu::always_inline]] inline
+
 template <typename F>
-inline void unaryLoop(double* __restrict o, const double* __restrict a, std::size_t n, F f) {
+FL_BATCH_LOOP void unaryLoop(double* __restrict o, const double* __restrict a, std::size_t n, F f) {
     for (std::size_t i = 0; i < n; ++i)
         o[i] = f(a[i]);
 }
 
 template <typename F>
-inline void binaryLoop(const Step& s, double* const* base, double* __restrict o, std::size_t n,
-                       F f) {
+FL_BATCH_LOOP void binaryLoop(const Step& s, double* const* base, double* __restrict o,
+                              std::size_t n, F f) {
     if (s.constA) {
         const double ca = s.ca;
         const double* __restrict b = base[s.b];
@@ -50,8 +55,8 @@ inline double cmpResult(bool v) {
 // same operations in the same order as the steps it replaces (multiplying by
 // -1 and adding is exactly subtracting).
 template <int Terms, bool ConstA>
-inline void squareTermsLoop(const Step& s, double* const* base, double* __restrict o,
-                            std::size_t n) {
+FL_BATCH_LOOP void squareTermsLoop(const Step& s, double* const* base, double* __restrict o,
+                                   std::size_t n) {
     const double* __restrict r0 = base[s.termReg[0]];
     const double* __restrict r1 = base[s.termReg[Terms > 1 ? 1 : 0]];
     const double* __restrict r2 = base[s.termReg[Terms > 2 ? 2 : 0]];
@@ -76,7 +81,8 @@ inline void squareTermsLoop(const Step& s, double* const* base, double* __restri
 }
 
 template <bool ConstA>
-inline void squareTermsDispatch(const Step& s, double* const* base, double* o, std::size_t n) {
+FL_BATCH_LOOP void squareTermsDispatch(const Step& s, double* const* base, double* o,
+                                       std::size_t n) {
     switch (s.terms) {
     case 1:
         squareTermsLoop<1, ConstA>(s, base, o, n);
@@ -95,7 +101,7 @@ inline void squareTermsDispatch(const Step& s, double* const* base, double* o, s
 // so that case reads the operand through the output pointer: one pointer,
 // read then written at the same index, which vectorises without alias checks.
 template <bool NegA, typename F>
-inline void negatedLoop(const Step& s, double* const* base, double* o, std::size_t n, F f) {
+FL_BATCH_LOOP void negatedLoop(const Step& s, double* const* base, double* o, std::size_t n, F f) {
     auto apply = [f](double a, double b) { return NegA ? f(-a, b) : f(a, -b); };
     const std::int32_t negReg = NegA ? s.a : s.b;
     const bool otherConst = NegA ? s.constB : s.constA;
@@ -126,7 +132,7 @@ inline void negatedLoop(const Step& s, double* const* base, double* o, std::size
 // When the output is r0's own register, r0 is read through the output
 // pointer: one pointer read and written at the same index still vectorises.
 template <int Count, bool IsMin, bool InPlace>
-inline void chainLoop(const Step& s, double* const* base, double* o, std::size_t n) {
+FL_BATCH_LOOP void chainLoop(const Step& s, double* const* base, double* o, std::size_t n) {
     const double* __restrict r1 = base[s.chainReg[1]];
     const double* __restrict r2 = base[s.chainReg[2]];
     const double* __restrict r3 = base[s.chainReg[Count > 3 ? 3 : 2]];
@@ -152,7 +158,7 @@ inline void chainLoop(const Step& s, double* const* base, double* o, std::size_t
 }
 
 template <bool IsMin>
-inline void chainDispatch(const Step& s, double* const* base, double* o, std::size_t n) {
+FL_BATCH_LOOP void chainDispatch(const Step& s, double* const* base, double* o, std::size_t n) {
     const bool inPlace = base[s.chainReg[0]] == o;
     if (s.chainCount == 3)
         inPlace ? chainLoop<3, IsMin, true>(s, base, o, n)
