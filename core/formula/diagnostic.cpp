@@ -81,7 +81,9 @@ std::string formatDiagnostic(const Diagnostic& d, std::string_view source,
 static std::string caretLines(std::string_view text, const Diagnostic& d) {
     std::string out;
     out += "  ";
-    out += text;
+    // control characters would garble a terminal: show them as '?'
+    for (char c : text)
+        out += (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f ? '?' : c;
     out += "\n  ";
     int col = std::max(1, d.range.begin.column);
     for (int i = 1; i < col; ++i)

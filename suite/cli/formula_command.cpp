@@ -8,6 +8,7 @@
 #include "formula/eval_scalar.h"
 #include "formula/nonfinite_report.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -55,11 +56,13 @@ bool parseKind(const std::string& s, DefinitionKind& kind) {
     return true;
 }
 
+// A finite number: "nan", "inf" and overflowing literals such as 1e400 are
+// refused rather than silently turned into non-finite coordinates.
 bool parseNumber(const std::string& s, double& out) {
     if (s.empty()) return false;
     char* end = nullptr;
     out = std::strtod(s.c_str(), &end);
-    return end && *end == '\0';
+    return end && *end == '\0' && std::isfinite(out);
 }
 
 bool parseTriple(const std::string& s, double out[3]) {
@@ -130,16 +133,16 @@ std::string parseOptions(const Args& args, std::size_t first, Options& o) {
         } else if (a == "--at") {
             auto v = value();
             double p[3];
-            if (!v || !parseTriple(*v, p)) return "--at needs three numbers: --at X,Y,Z";
+            if (!v || !parseTriple(*v, p)) return "--at needs three finite numbers: --at X,Y,Z";
             o.at = std::array<double, 3>{p[0], p[1], p[2]};
         } else if (a == "--uvw") {
             auto v = value();
             double p[3];
-            if (!v || !parseTriple(*v, p)) return "--uvw needs three numbers: --uvw U,V,W";
+            if (!v || !parseTriple(*v, p)) return "--uvw needs three finite numbers: --uvw U,V,W";
             o.uvw = std::array<double, 3>{p[0], p[1], p[2]};
         } else if (a == "--t") {
             auto v = value();
-            if (!v || !parseNumber(*v, o.t)) return "--t needs a number";
+            if (!v || !parseNumber(*v, o.t)) return "--t needs a finite number";
         } else if (a == "--param") {
             auto v = value();
             std::size_t eq = v ? v->find('=') : std::string::npos;

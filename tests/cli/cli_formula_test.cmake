@@ -41,6 +41,9 @@ run(2 formula)
 run(2 formula eval "x")
 run(2 formula eval "x" --at 1,2)
 run(2 formula eval "x" --at 1,2,3 --bogus)
+run(2 formula eval "x" --at nan,0,0)
+run(2 formula eval "x" --at 1e400,0,0)
+run(2 formula eval "x" --at 0,0,0 --t inf)
 
 # a formula may start with '-'; "--" ends the options
 run(0 formula eval "-x^2" --at 3,0,0 --json)
