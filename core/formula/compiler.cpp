@@ -711,24 +711,45 @@ class Compiler {
                       near.empty() ? "define it first" : "did you mean '" + near + "'?");
             }
         } else if (e.kind == ExprKind::Call) {
-            int argc = static_cast<int>(e.args.size());
-            if (auto fit = functions_.find(e.name); fit != functions_.end()) {
-                if (fit->second->params.size() != e.args.size())
-                    error(e.range, "'" + e.name + "' takes " +
-                                       plural(fit->second->params.size(), "argument") +
-                                       " but was given " + std::to_string(argc));
-            } else if (const BuiltinInfo* info = findBuiltin(e.name)) {
-                if (argc < info->minArgs || (info->maxArgs >= 0 && argc > info->maxArgs))
-                    error(e.range,
-                          "'" + e.name + "' cannot take " + std::to_string(argc) + " arguments",
-                          "use " + std::string(info->signature));
-            } else {
-                std::string near = closestName(e.name, knownFunctions());
-                error(e.nameRange, "unknown function '" + e.name + "'",
-                      near.empty() ? "see the formula reference for the built-in functions"
-                                   : "did you mean '" + near + "'?");
-            }
+            if (auto fit = functions_.find(e.name); fit != functions_.end())
+                checkArity(*fit->second, e);
+            else if (const BuiltinInfo* info = findBuiltin(e.name))
+                checkArity(*info, e);
+            else
+                unknownFunction(e);
         }
+    }
+
+    // ---- calls: checks shared by compiled and never-compiled code --------
+
+    // Reports a wrong number of arguments; true when the count is right.
+    bool checkArity(const FunctionDecl& fn, const Expr& e) {
+        if (e.args.size() == fn.params.size()) return true;
+        error(e.range,
+              "'" + fn.name + "' takes " + plural(fn.params.size(), "argument") +
+                  " but was given " + std::to_string(e.args.size()),
+              "see its definition at line " + std::to_string(fn.nameRange.begin.line));
+        return false;
+    }
+
+    bool checkArity(const BuiltinInfo& info, const Expr& e) {
+        const int argc = static_cast<int>(e.args.size());
+        if (argc >= info.minArgs && (info.maxArgs < 0 || argc <= info.maxArgs)) return true;
+        std::string expected = info.minArgs == info.maxArgs ? plural(info.minArgs, "argument")
+                               : info.maxArgs < 0 ? "at least " + plural(info.minArgs, "argument")
+                                                  : std::to_string(info.minArgs) + " to " +
+                                                        plural(info.maxArgs, "argument");
+        error(e.range,
+              "'" + e.name + "' takes " + expected + " but was given " + std::to_string(argc),
+              "use " + std::string(info.signature));
+        return false;
+    }
+
+    void unknownFunction(const Expr& e) {
+        std::string near = closestName(e.name, knownFunctions());
+        error(e.nameRange, "unknown function '" + e.name + "'",
+              near.empty() ? "see the formula reference for the built-in functions"
+                           : "did you mean '" + near + "'?");
     }
 
     // ---- expressions ---------------------------------------------------
@@ -880,24 +901,11 @@ class Compiler {
                       "multiplication needs '*': write " + name + "*(...)");
                 return Val::constant(0.0);
             }
-            std::string near = closestName(name, knownFunctions());
-            error(e.nameRange, "unknown function '" + name + "'",
-                  near.empty() ? "see the formula reference for the built-in functions"
-                               : "did you mean '" + near + "'?");
+            unknownFunction(e);
             return Val::constant(0.0);
         }
-        int argc = static_cast<int>(args.size());
-        if (argc < info->minArgs || (info->maxArgs >= 0 && argc > info->maxArgs)) {
-            std::string expected =
-                info->minArgs == info->maxArgs ? plural(info->minArgs, "argument")
-                : info->maxArgs < 0
-                    ? "at least " + plural(info->minArgs, "argument")
-                    : std::to_string(info->minArgs) + " to " + plural(info->maxArgs, "argument");
-            error(e.range,
-                  "'" + name + "' takes " + expected + " but was given " + std::to_string(argc),
-                  "use " + std::string(info->signature));
-            return Val::constant(0.0);
-        }
+        if (!checkArity(*info, e)) return Val::constant(0.0);
+        const int argc = static_cast<int>(args.size());
         BuiltinContext ctx{tb_, {}, {}, {}};
         if (info->readsCoordinates) {
             if (!inputAvailable_[0]) {
@@ -923,13 +931,7 @@ class Compiler {
     }
 
     Val callUser(const FunctionDecl& fn, const Expr& e, const std::vector<Val>& args) {
-        if (args.size() != fn.params.size()) {
-            error(e.range,
-                  "'" + fn.name + "' takes " + plural(fn.params.size(), "argument") +
-                      " but was given " + std::to_string(args.size()),
-                  "see its definition at line " + std::to_string(fn.nameRange.begin.line));
-            return Val::constant(0.0);
-        }
+        if (!checkArity(fn, e)) return Val::constant(0.0);
         if (std::find(callStack_.begin(), callStack_.end(), fn.name) != callStack_.end()) {
             error(e.nameRange, "'" + fn.name + "' calls itself; recursion is not supported",
                   "formulas must be finite: use a for loop instead");

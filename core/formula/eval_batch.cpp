@@ -235,9 +235,7 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
         if (arity >= 2) resolve(ins.b, s.constB, s.b, s.cb);
         if (arity >= 3) resolve(ins.c, s.constC, s.c, s.cc);
         if (s.constA && s.constB && s.constC) {
-            double v = arity == 1   ? ops::unary(ins.op, s.ca, ins.imm0)
-                       : arity == 2 ? ops::binary(ins.op, s.ca, s.cb, ins.imm0, ins.imm1)
-                                    : ops::ternary(ins.op, s.ca, s.cb, s.cc);
+            double v = ops::apply(ins.op, s.ca, s.cb, s.cc, ins.imm0, ins.imm1);
             isUniform_[ins.out] = 1;
             uniformValue_[ins.out] = v;
             continue;

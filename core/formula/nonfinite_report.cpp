@@ -41,9 +41,7 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
             t.operand[j] = ops3[j]->isConst() ? ops3[j]->value : r[ops3[j]->reg];
             t.operandWriter[j] = ops3[j]->isConst() ? -1 : writer[ops3[j]->reg];
         }
-        t.value = arity == 1   ? ops::unary(ins.op, t.operand[0], ins.imm0)
-                  : arity == 2 ? ops::binary(ins.op, t.operand[0], t.operand[1], ins.imm0, ins.imm1)
-                               : ops::ternary(ins.op, t.operand[0], t.operand[1], t.operand[2]);
+        t.value = ops::apply(ins.op, t.operand[0], t.operand[1], t.operand[2], ins.imm0, ins.imm1);
         r[ins.out] = t.value;
         writer[ins.out] = static_cast<int>(k);
     }

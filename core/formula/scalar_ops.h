@@ -163,4 +163,16 @@ inline double ternary(Op op, double a, double b, double c) {
     }
 }
 
+// Any opcode on constant operands (operands beyond the opcode's arity are ignored).
+inline double apply(Op op, double a, double b, double c, double imm0, double imm1) {
+    switch (opArity(op)) {
+    case 1:
+        return unary(op, a, imm0);
+    case 2:
+        return binary(op, a, b, imm0, imm1);
+    default:
+        return ternary(op, a, b, c);
+    }
+}
+
 } // namespace fl::formula::ops

@@ -75,9 +75,7 @@ Val TapeBuilder::fold(Op op, Val a, Val b, Val c, double imm0, double imm1) {
     int arity = opArity(op);
     bool allConst = a.isConst() && (arity < 2 || b.isConst()) && (arity < 3 || c.isConst());
     if (allConst) {
-        double r = arity == 1   ? ops::unary(op, a.c, imm0)
-                   : arity == 2 ? ops::binary(op, a.c, b.c, imm0, imm1)
-                                : ops::ternary(op, a.c, b.c, c.c);
+        double r = ops::apply(op, a.c, b.c, c.c, imm0, imm1);
         bool inputsNaN =
             std::isnan(a.c) || (arity >= 2 && std::isnan(b.c)) || (arity >= 3 && std::isnan(c.c));
         // An operation that is NaN for every point stays on the tape, so that
@@ -102,9 +100,7 @@ Val TapeBuilder::resolveConstant(Val v) {
     Val b = arity >= 2 ? resolveConstant(nb) : Val::constant(0.0);
     Val c = arity >= 3 ? resolveConstant(nc) : Val::constant(0.0);
     if (!a.isConst() || !b.isConst() || !c.isConst()) return v;
-    double r = arity == 1   ? ops::unary(op, a.c, imm0)
-               : arity == 2 ? ops::binary(op, a.c, b.c, imm0, imm1)
-                            : ops::ternary(op, a.c, b.c, c.c);
+    double r = ops::apply(op, a.c, b.c, c.c, imm0, imm1);
     if (std::isnan(r) && !std::isnan(a.c) && !std::isnan(b.c) && !std::isnan(c.c) && origin >= 0)
         resolvedUndefined_.push_back(origins_[static_cast<std::size_t>(origin)]);
     return Val::constant(r);
