@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
     try {
         if (cmd == "formula") return fl::cli::formulaCommand(rest);
         if (cmd == "bench") return fl::cli::benchCommand(rest);
+        if (cmd == "check") return fl::cli::checkCommand(rest);
     } catch (const std::exception& e) {
         std::cerr << "functionlab: " << e.what() << "\n";
         return fl::cli::kExitDiagnostic;

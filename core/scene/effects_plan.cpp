@@ -1,0 +1,307 @@
+#include "effects_plan.h"
+
+#include "field_access.h"
+
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace fl::scene {
+namespace {
+
+constexpr int kInputT = 3; // x y z t u v w
+
+bool definitionReadsT(const Scene& scene, const Node* node, std::string_view field) {
+    if (!node) return false;
+    const formula::Tape* tape = scene.definition(*node, field);
+    return tape && tape->usesInput[kInputT];
+}
+
+bool anyDefinitionReadsT(const Scene& scene, const Node* node) {
+    if (!node) return false;
+    for (const CompiledDefinition& d : scene.definitions)
+        if (d.node == node && d.tape.usesInput[kInputT]) return true;
+    return false;
+}
+
+bool wallClock(const Node* node) {
+    return node && node->spec && findFieldSpec(*node->spec, "timeBase") &&
+           stringField(*node, "timeBase") != "scene";
+}
+
+// The node a PROTO instance stands for; the node itself otherwise.
+const Node* effective(const Node* n) {
+    for (int i = 0; n && n->proto && i < 64; ++i)
+        n = n->expansion.empty() ? nullptr : n->expansion.front();
+    return n;
+}
+
+std::string location(const Scene& scene, const Node& n) {
+    std::string path = n.file >= 0 && n.file < static_cast<int>(scene.files.size())
+                           ? scene.files[n.file].path
+                           : std::string("<scene>");
+    return path + ":" + std::to_string(n.where.line) + ":" + std::to_string(n.where.column);
+}
+
+std::string nameOf(const Node& n) {
+    return n.defName.empty() ? n.type : n.type + " " + n.defName;
+}
+
+class Planner {
+  public:
+    explicit Planner(const Scene& scene) : scene_(scene) {}
+
+    EffectsPlan run() {
+        collectRouteTargets();
+        for (const Node* root : scene_.roots)
+            visit(root);
+        for (const PlanEntry& e : plan_.entries) {
+            plan_.timeVarying |= e.timeVarying;
+            plan_.usesWallClock |= e.usesWallClock;
+            plan_.needsHaptics |= !e.tangible.empty();
+        }
+        return std::move(plan_);
+    }
+
+  private:
+    void collectRouteTargets() {
+        auto add = [&](const Route& r) {
+            const Node* to = r.toNode;
+            std::string f = r.toField;
+            if (f.starts_with("set_")) f = f.substr(4);
+            unsigned bits = kStatic;
+            if (to->type == "Transform" && (f == "translation" || f == "rotation" || f == "scale" ||
+                                            f == "center" || f == "scaleOrientation"))
+                bits = kTransform;
+            else if (to->type == "Material" || to->type == "Color" || to->type == "ColorRGBA" ||
+                     to->type == "TwoSidedMaterial")
+                bits = kColour;
+            else if (to->type == "Coordinate" || to->type == "Normal" || to->type == "Sphere" ||
+                     to->type == "Box" || to->type == "Cone" || to->type == "Cylinder" ||
+                     to->type == "FGeometry")
+                bits = kGeometry;
+            else if (to->type == "Switch" || to->type == "FTransform")
+                bits = kTransform;
+            if (bits) {
+                routed_[to] |= bits;
+                routeNotes_[to].push_back("driven by ROUTE " + nameOf(*r.fromNode) + "." +
+                                          r.fromField + " TO " + r.toField);
+            }
+        };
+        for (const Route& r : scene_.routes)
+            add(r);
+        scene_.forEachNode([&](const Node& n) {
+            for (const Route& r : n.expansionRoutes)
+                add(r);
+        });
+    }
+
+    void visit(const Node* raw) {
+        const Node* n = effective(raw);
+        if (!n || !visited_.insert(n).second) return;
+        if (n->type == "FShape")
+            shape(*n);
+        else if (n->type == "FTransform")
+            transform(*n);
+        else if (auto it = routed_.find(n); it != routed_.end())
+            standard(*n, it->second);
+        for (const Field& f : n->fields)
+            for (const Node* child : f.value.nodes)
+                visit(child);
+    }
+
+    PlanEntry entryFor(const Node& n) {
+        PlanEntry e;
+        e.node = &n;
+        e.name = nameOf(n);
+        e.location = location(scene_, n);
+        if (auto it = routeNotes_.find(&n); it != routeNotes_.end()) e.notes = it->second;
+        if (auto it = routed_.find(&n); it != routed_.end()) e.timeVarying |= it->second;
+        return e;
+    }
+
+    void shape(const Node& n) {
+        ++plan_.functionShapes;
+        PlanEntry e = entryFor(n);
+        const Node* geometry = effective(nodeField(n, "geometry"));
+        const Node* appearance = effective(nodeField(n, "appearance"));
+        const Node* physics = effective(nodeField(n, "physics"));
+        if (!geometry) {
+            e.geometry = "none";
+            e.appliesToSiblings = true;
+        } else if (geometry->type == "FGeometry") {
+            e.geometry = stringField(*geometry, "type");
+            if (definitionReadsT(scene_, geometry, "definition")) e.timeVarying |= kGeometry;
+            e.usesWallClock |= wallClock(geometry);
+        } else {
+            e.geometry = geometry->type;
+            if (auto it = routed_.find(geometry); it != routed_.end()) e.timeVarying |= it->second;
+        }
+        if (appearance) {
+            const Node* material = effective(nodeField(*appearance, "material"));
+            const Node* texture = effective(nodeField(*appearance, "texture"));
+            if (material && material->type == "FMaterial" && anyDefinitionReadsT(scene_, material))
+                e.timeVarying |= kColour;
+            if (material && routed_.count(material)) e.timeVarying |= kColour;
+            if (texture && texture->type == "FTexture3D" &&
+                definitionReadsT(scene_, texture, "definition"))
+                e.timeVarying |= kDisplacement;
+            e.usesWallClock |= wallClock(material) || wallClock(texture);
+        }
+        if (physics) {
+            const Node* surface = effective(nodeField(*physics, "surface"));
+            if (surface) {
+                tangible(e, "friction", effective(nodeField(*surface, "friction")));
+                tangible(e, "tension", effective(nodeField(*surface, "tension")));
+            }
+            tangible(e, "density", effective(nodeField(*physics, "density")));
+            tangible(e, "force", effective(nodeField(*physics, "force")));
+        }
+        plan_.entries.push_back(std::move(e));
+    }
+
+    void tangible(PlanEntry& e, std::string kind, const Node* node) {
+        if (!node) return;
+        TangibleEffect t;
+        t.kind = std::move(kind);
+        t.node = node;
+        const auto lo = numbersField(*node, "domainMin"), hi = numbersField(*node, "domainMax");
+        for (int i = 0; i < 3 && lo.size() == 3 && hi.size() == 3; ++i) {
+            t.domainMin[i] = lo[i];
+            t.domainMax[i] = hi[i];
+        }
+        t.timeVarying = definitionReadsT(scene_, node, "definition");
+        if (t.timeVarying) e.timeVarying |= kPhysics;
+        e.usesWallClock |= wallClock(node);
+        e.tangible.push_back(std::move(t));
+    }
+
+    void transform(const Node& n) {
+        PlanEntry e = entryFor(n);
+        e.geometry = "operation " + stringField(n, "operation");
+        for (std::string_view f : {"translation", "rotationAngle", "scale"})
+            if (definitionReadsT(scene_, &n, f)) e.timeVarying |= kTransform;
+        for (std::string_view f : {"morphFactor", "operationDefinition"})
+            if (definitionReadsT(scene_, &n, f)) e.timeVarying |= kGeometry;
+        e.usesWallClock = wallClock(&n);
+        plan_.entries.push_back(std::move(e));
+    }
+
+    void standard(const Node& n, unsigned bits) {
+        PlanEntry e = entryFor(n);
+        e.geometry = n.type;
+        e.timeVarying = bits;
+        plan_.entries.push_back(std::move(e));
+    }
+
+    const Scene& scene_;
+    EffectsPlan plan_;
+    std::set<const Node*> visited_;
+    std::map<const Node*, unsigned> routed_;
+    std::map<const Node*, std::vector<std::string>> routeNotes_;
+};
+
+std::string jsonEscape(std::string_view s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(c));
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
+std::string jsonBits(unsigned bits) {
+    std::string out = "[";
+    const char* names[] = {"geometry", "displacement", "colour", "transform", "physics"};
+    bool first = true;
+    for (int i = 0; i < 5; ++i)
+        if (bits & (1u << i)) {
+            out += std::string(first ? "" : ",") + "\"" + names[i] + "\"";
+            first = false;
+        }
+    return out + "]";
+}
+
+} // namespace
+
+EffectsPlan makeEffectsPlan(const Scene& scene) {
+    return Planner(scene).run();
+}
+
+std::string timeVaryingText(unsigned bits) {
+    if (bits == kStatic) return "static";
+    std::string out;
+    const char* names[] = {"geometry", "displacement", "colour", "transform", "physics"};
+    for (int i = 0; i < 5; ++i)
+        if (bits & (1u << i)) out += std::string(out.empty() ? "" : ", ") + names[i];
+    return out;
+}
+
+std::string planText(const EffectsPlan& plan) {
+    std::string out = "effects plan: " + std::to_string(plan.functionShapes) +
+                      " function shape(s); varies with time: " + timeVaryingText(plan.timeVarying) +
+                      "; haptics: " + (plan.needsHaptics ? "needed" : "not needed") +
+                      "; wall clock: " + (plan.usesWallClock ? "yes" : "no") + "\n";
+    for (const PlanEntry& e : plan.entries) {
+        out += "  " + e.name + " (" + e.location + ")\n";
+        out +=
+            "    geometry: " + e.geometry +
+            (e.appliesToSiblings ? " (lends its properties to the shapes grouped with it)" : "") +
+            "\n";
+        out += "    varies with time: " + timeVaryingText(e.timeVarying) +
+               (e.usesWallClock ? " (wall clock)" : "") + "\n";
+        for (const TangibleEffect& t : e.tangible)
+            out += "    tangible: " + t.kind + " in [" + num(t.domainMin[0]) + " " +
+                   num(t.domainMin[1]) + " " + num(t.domainMin[2]) + " .. " + num(t.domainMax[0]) +
+                   " " + num(t.domainMax[1]) + " " + num(t.domainMax[2]) + "]" +
+                   (t.timeVarying ? ", varies with time" : "") + "\n";
+        for (const std::string& note : e.notes)
+            out += "    " + note + "\n";
+    }
+    return out;
+}
+
+std::string planJson(const EffectsPlan& plan) {
+    std::string out = "{\"functionShapes\":" + std::to_string(plan.functionShapes) +
+                      ",\"timeVarying\":" + jsonBits(plan.timeVarying) +
+                      ",\"needsHaptics\":" + (plan.needsHaptics ? "true" : "false") +
+                      ",\"usesWallClock\":" + (plan.usesWallClock ? "true" : "false") +
+                      ",\"entries\":[";
+    for (std::size_t i = 0; i < plan.entries.size(); ++i) {
+        const PlanEntry& e = plan.entries[i];
+        out += std::string(i ? "," : "") + "{\"name\":" + jsonEscape(e.name) +
+               ",\"location\":" + jsonEscape(e.location) +
+               ",\"geometry\":" + jsonEscape(e.geometry) +
+               ",\"timeVarying\":" + jsonBits(e.timeVarying) +
+               ",\"usesWallClock\":" + (e.usesWallClock ? "true" : "false") +
+               ",\"appliesToSiblings\":" + (e.appliesToSiblings ? "true" : "false") +
+               ",\"tangible\":[";
+        for (std::size_t j = 0; j < e.tangible.size(); ++j) {
+            const TangibleEffect& t = e.tangible[j];
+            out += std::string(j ? "," : "") + "{\"kind\":" + jsonEscape(t.kind) +
+                   ",\"domainMin\":[" + num(t.domainMin[0]) + "," + num(t.domainMin[1]) + "," +
+                   num(t.domainMin[2]) + "],\"domainMax\":[" + num(t.domainMax[0]) + "," +
+                   num(t.domainMax[1]) + "," + num(t.domainMax[2]) +
+                   "],\"timeVarying\":" + (t.timeVarying ? "true" : "false") + "}";
+        }
+        out += "]}";
+    }
+    return out + "]}";
+}
+
+} // namespace fl::scene

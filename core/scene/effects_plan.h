@@ -1,0 +1,59 @@
+#pragma once
+// The effects plan (DESIGN §3): what in a scene varies with time and which
+// tangible effects exist, so the viewer and the haptic loop simulate only what
+// the scene calls for (a clock whose hands only turn never re-meshes; a scene
+// with nothing tangible never starts the haptic loop).
+#include "scene.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fl::scene {
+
+enum TimeVarying : unsigned {
+    kStatic = 0,
+    kGeometry = 1u << 0,     // re-mesh when t changes
+    kDisplacement = 1u << 1, // FTexture3D reads t: re-mesh too
+    kColour = 1u << 2,       // recolour vertices only
+    kTransform = 1u << 3,    // update matrices only
+    kPhysics = 1u << 4,      // haptic fields change with t
+};
+
+struct TangibleEffect {
+    std::string kind; // "friction", "tension", "density", "force"
+    const Node* node = nullptr;
+    std::array<double, 3> domainMin{-1, -1, -1};
+    std::array<double, 3> domainMax{1, 1, 1};
+    bool timeVarying = false;
+};
+
+struct PlanEntry {
+    const Node* node = nullptr;
+    std::string name;     // DEF name, or type and position
+    std::string location; // file:line:column
+    unsigned timeVarying = kStatic;
+    std::string geometry; // "implicit", "parametric", "Box", "none" ...
+    bool usesWallClock = false;
+    // An FShape without geometry lends its appearance and physics to the
+    // standard shapes grouped with it.
+    bool appliesToSiblings = false;
+    std::vector<TangibleEffect> tangible;
+    std::vector<std::string> notes; // e.g. "driven by ROUTE from CLOCK.fraction_changed"
+};
+
+struct EffectsPlan {
+    std::vector<PlanEntry> entries;
+    unsigned timeVarying = kStatic; // union over entries
+    bool needsHaptics = false;
+    bool usesWallClock = false;
+    std::size_t functionShapes = 0;
+};
+
+EffectsPlan makeEffectsPlan(const Scene& scene);
+
+std::string timeVaryingText(unsigned bits); // "geometry, colour" or "static"
+std::string planText(const EffectsPlan& plan);
+std::string planJson(const EffectsPlan& plan);
+
+} // namespace fl::scene

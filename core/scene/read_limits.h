@@ -1,0 +1,20 @@
+#pragma once
+// Bounds on what a scene file may ask of us; each exceeded bound is a located
+// error, never a crash, a hang or unbounded memory (docs/nodes.md, "Limits").
+#include <cstddef>
+
+namespace fl::scene {
+
+struct ReadLimits {
+    std::size_t maxFileBytes = 64u << 20;     // a file as read from disk
+    std::size_t maxDecodedBytes = 256u << 20; // after gunzip
+    std::size_t maxNodes = 2'000'000;         // written in files, all Inlines together
+    std::size_t maxNestingDepth = 256;        // nodes within nodes
+    std::size_t maxExpandedNodes = 2'000'000; // created by PROTO expansion
+    std::size_t maxProtoDepth = 32;           // PROTO instances within PROTO bodies
+    std::size_t maxInlineDepth = 8;           // Inline within Inline
+    std::size_t maxInlineFiles = 256;         // files one scene may pull in
+    std::size_t maxDiagnostics = 200;         // then one "too many" note
+};
+
+} // namespace fl::scene

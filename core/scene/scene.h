@@ -1,0 +1,192 @@
+#pragma once
+// The scene model every part reads: nodes with typed fields, DEF names shared
+// by USE, ROUTEs, PROTO declarations and their expanded instances. Encoding-
+// neutral: the X3D XML, ClassicVRML and VRML97 readers fill it, the writers
+// print it. Plain data; the scene owns every node, references are pointers.
+#include "field_type.h"
+#include "formula/compiler.h"
+#include "formula/tape.h"
+#include "node_catalogue.h"
+#include "scene_diagnostic.h"
+
+#include <cstddef>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fl::scene {
+
+struct Node;
+struct ProtoDeclaration;
+
+enum class Encoding { Vrml97, ClassicVrml, Xml };
+
+// How the characters of a string value were written in its file, so that an
+// offset into the decoded string can be mapped back to line:column.
+enum class StringEscapes : std::uint8_t {
+    Classic,            // "..." with \" and \\ escapes
+    XmlAttribute,       // attribute text: entities and character references
+    XmlAttributeQuoted, // a "..." element of an MFString inside an XML attribute
+    XmlText,            // element text or CDATA (Script source)
+    None,               // not from a file (defaults, built by code)
+};
+
+struct StringOrigin {
+    int file = -1;          // index into Scene::files; -1 when not from a file
+    std::size_t offset = 0; // byte offset of the first content character
+    StringEscapes escapes = StringEscapes::None;
+};
+
+// One field value. Numbers of every numeric type live in `numbers` (booleans as
+// 0/1, SFImage as its integers); strings in `strings`; nodes in `nodes` (an
+// SFNode holds zero or one; NULL is empty). A value of an unknown field keeps
+// its source text in `strings[0]`.
+struct FieldValue {
+    FieldType type = FieldType::Unknown;
+    std::vector<double> numbers;
+    std::vector<std::string> strings;
+    std::vector<Node*> nodes;
+    std::vector<StringOrigin> stringOrigins; // parallel to `strings` when read from a file
+
+    std::size_t elementCount() const;
+};
+
+// A field given in the file (fields left at their default are not stored).
+struct Field {
+    std::string name;
+    FieldValue value;
+    FilePos where;
+    int file = -1;
+    // Inside a PROTO body: `IS interfaceName` instead of (or, for
+    // inputOutput, besides) a value.
+    std::string isReference;
+};
+
+// A field a Script node or a PROTO interface declares.
+struct FieldDeclaration {
+    std::string name;
+    FieldType type = FieldType::Unknown;
+    AccessType access = AccessType::InitializeOnly;
+    FieldValue value; // initial value (initializeOnly / inputOutput)
+    bool hasValue = false;
+    std::string isReference; // Script field inside a PROTO body
+    FilePos where;
+};
+
+struct Node {
+    std::string type;               // "Transform", "FShape", a PROTO name, or unknown
+    const NodeSpec* spec = nullptr; // built-in type; nullptr for PROTO instances and unknowns
+    const ProtoDeclaration* proto = nullptr; // PROTO instance
+    std::string defName;
+    std::vector<Field> fields;
+    std::vector<FieldDeclaration> declarations; // Script's own fields
+    std::string containerField;                 // XML containerField written explicitly in the file
+    FilePos where;
+    int file = -1;
+    // A PROTO instance expanded: its body with IS fields substituted. The
+    // first node is what the instance stands for. Empty for EXTERNPROTOs that
+    // could not be resolved.
+    std::vector<Node*> expansion;
+    std::vector<struct Route> expansionRoutes; // the body's ROUTEs, between expanded nodes
+    bool inProtoBody = false;                  // part of a PROTO body (a template, not shown)
+    // USE of a name not yet DEF'd (X3D allows it): resolved when the file ends.
+    std::string forwardUse;
+
+    const Field* field(std::string_view name) const;
+    Field* field(std::string_view name);
+    bool isUnknown() const { return spec == nullptr && proto == nullptr; }
+};
+
+struct Route {
+    Node* fromNode = nullptr;
+    std::string fromField;
+    Node* toNode = nullptr;
+    std::string toField;
+    FilePos where;
+    int file = -1;
+};
+
+// Statements we keep but do not act on (IMPORT, EXPORT), as text.
+struct KeptStatement {
+    std::string text;
+    FilePos where;
+};
+
+struct ProtoDeclaration {
+    std::string name;
+    bool external = false;
+    std::vector<FieldDeclaration> interface;
+    std::vector<std::string> urls; // EXTERNPROTO
+    // PROTO body (empty for an EXTERNPROTO); for a resolved EXTERNPROTO,
+    // `resolved` points at the PROTO it names.
+    std::vector<Node*> body;
+    std::vector<Route> routes;
+    std::vector<ProtoDeclaration*> protos; // nested declarations
+    const ProtoDeclaration* resolved = nullptr;
+    FilePos where;
+    int file = -1;
+
+    const FieldDeclaration* interfaceField(std::string_view name) const;
+    const ProtoDeclaration& definition() const { return resolved ? *resolved : *this; }
+};
+
+struct SourceFile {
+    std::string path;
+    std::string text; // decoded (gunzipped) text the positions refer to
+};
+
+struct Component {
+    std::string name;
+    int level = 1;
+};
+
+// A function node's definition compiled at load time (DESIGN §3).
+struct CompiledDefinition {
+    const Node* node = nullptr;
+    std::string field; // "definition", "translation", ...
+    formula::DefinitionKind kind = formula::DefinitionKind::Generic;
+    formula::Tape tape;
+};
+
+struct Scene {
+    Encoding encoding = Encoding::Xml;
+    std::string version; // "2.0" for VRML97, "3.3" ...
+    std::string profile; // X3D profile; empty for VRML97
+    std::vector<Component> components;
+    std::vector<std::pair<std::string, std::string>> meta; // X3D head meta / META
+    std::vector<std::string> units;                        // UNIT statements, kept as text
+
+    std::vector<Node*> roots;
+    std::vector<Route> routes;
+    std::vector<ProtoDeclaration*> protos;
+    std::vector<KeptStatement> imports;
+    std::vector<KeptStatement> exports;
+
+    std::vector<SourceFile> files; // files[0] is the scene file itself
+    // Every definition of every function node outside PROTO bodies.
+    std::vector<CompiledDefinition> definitions;
+    const formula::Tape* definition(const Node& node, std::string_view field) const;
+
+    Scene() = default;
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+    Scene(Scene&&) = default;
+    Scene& operator=(Scene&&) = default;
+
+    Node* newNode();
+    // Every node the scene owns, including PROTO bodies and expansions.
+    template <class F>
+    void forEachNode(F&& f) const {
+        for (const auto& n : nodes_)
+            f(*n);
+    }
+    ProtoDeclaration* newProto();
+    std::size_t nodeCount() const { return nodes_.size(); }
+
+  private:
+    std::deque<std::unique_ptr<Node>> nodes_;
+    std::deque<std::unique_ptr<ProtoDeclaration>> protos_;
+};
+
+} // namespace fl::scene

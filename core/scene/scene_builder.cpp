@@ -1,0 +1,478 @@
+#include "scene_builder.h"
+
+#include "formula/suggest.h"
+
+#include <algorithm>
+
+namespace fl::scene {
+
+std::string_view encodingName(Encoding encoding) {
+    switch (encoding) {
+    case Encoding::Vrml97:
+        return "VRML97";
+    case Encoding::ClassicVrml:
+        return "ClassicVRML";
+    case Encoding::Xml:
+        return "X3D XML";
+    }
+    return "X3D XML";
+}
+
+namespace {
+
+std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) {
+    std::string best = formula::closestName(name, candidates);
+    return best.empty() ? std::string() : "did you mean '" + best + "'?";
+}
+
+std::vector<std::string> nodeTypeNames() {
+    std::vector<std::string> names;
+    for (const NodeSpec& s : nodeCatalogue())
+        names.emplace_back(s.name);
+    return names;
+}
+
+// IS may join a node field to an interface field when both move events the
+// same way (ISO/IEC 19775-1, table 4.4): an inputOutput node field accepts any.
+bool isCompatible(AccessType interface, AccessType nodeField) {
+    return nodeField == AccessType::InputOutput || interface == nodeField;
+}
+
+} // namespace
+
+SceneBuilder::SceneBuilder(Scene& scene, int file, const ReadLimits& limits,
+                           std::vector<SceneDiagnostic>& diagnostics)
+    : scene_(scene), file_(file), limits_(limits), diagnostics_(diagnostics) {
+    scopes_.emplace_back();
+}
+
+void SceneBuilder::error(FilePos pos, std::string message, std::string suggestion) {
+    ++errorCount_;
+    if (diagnostics_.size() >= limits_.maxDiagnostics) {
+        diagnostics_.push_back({Severity::Error,
+                                scene_.files[file_].path,
+                                pos,
+                                "too many errors; stopped reading",
+                                {}});
+        throw StopReading{};
+    }
+    diagnostics_.push_back({Severity::Error, scene_.files[file_].path, pos, std::move(message),
+                            std::move(suggestion)});
+}
+
+void SceneBuilder::warning(FilePos pos, std::string message, std::string suggestion) {
+    if (diagnostics_.size() >= limits_.maxDiagnostics)
+        return; // warnings never stop a load; extra ones are dropped
+    diagnostics_.push_back({Severity::Warning, scene_.files[file_].path, pos, std::move(message),
+                            std::move(suggestion)});
+}
+
+void SceneBuilder::fail(FilePos pos, std::string message, std::string suggestion) {
+    error(pos, std::move(message), std::move(suggestion));
+    throw StopReading{};
+}
+
+bool SceneBuilder::hasErrors() const {
+    return errorCount_ > 0;
+}
+
+void SceneBuilder::pushScope(ProtoDeclaration* proto) {
+    Scope s;
+    s.proto = proto;
+    scopes_.push_back(std::move(s));
+}
+
+void SceneBuilder::popScope() {
+    Scope& scope = scopes_.back();
+    resolveForwardUses(scope);
+    for (const auto& r : scope.routes)
+        resolveRoute(scope, r);
+    // PROTO declarations stay visible to enclosing scopes' later lookups only
+    // through their owner; drop the scope.
+    scopes_.pop_back();
+}
+
+// Only the innermost scope: a PROTO interface's default value is its own
+// scope, where IS means nothing.
+ProtoDeclaration* SceneBuilder::currentProto() const {
+    return scopes_.back().proto;
+}
+
+void SceneBuilder::enterNode(FilePos pos) {
+    if (++depth_ > limits_.maxNestingDepth)
+        fail(pos,
+             "nodes are nested more than " + std::to_string(limits_.maxNestingDepth) + " deep");
+}
+
+void SceneBuilder::leaveNode() {
+    --depth_;
+}
+
+Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
+    if (++nodesCreated_ > limits_.maxNodes)
+        fail(pos, "the scene has more than " + std::to_string(limits_.maxNodes) + " nodes");
+    Node* node = scene_.newNode();
+    node->type = std::string(type);
+    node->where = pos;
+    node->file = file_;
+    node->inProtoBody = scopes_.back().proto != nullptr;
+    if (const ProtoDeclaration* proto = findProto(type)) {
+        node->proto = proto; // a PROTO may shadow a built-in type
+    } else if (const NodeSpec* spec = findNodeSpec(type)) {
+        node->spec = spec;
+    } else if (vrml97()) {
+        // VRML97 has a closed set of node types: an unknown name is a mistake.
+        error(pos, "unknown node type '" + std::string(type) + "'",
+              didYouMean(type, nodeTypeNames()).empty()
+                  ? std::string("VRML97 knows only its own nodes; declare new ones with PROTO")
+                  : didYouMean(type, nodeTypeNames()));
+    } else {
+        warning(pos,
+                "unknown node type '" + std::string(type) +
+                    "'; it is kept and written back on save, but not shown",
+                didYouMean(type, nodeTypeNames()));
+    }
+    return node;
+}
+
+void SceneBuilder::define(Node* node, std::string_view name, FilePos pos) {
+    Scope& scope = scopes_.back();
+    auto [it, inserted] = scope.defs.try_emplace(std::string(name), node);
+    if (!inserted) {
+        warning(pos,
+                "DEF " + std::string(name) + " names a second node; USE " + std::string(name) +
+                    " now means this one",
+                "give each DEF its own name");
+        it->second = node;
+    }
+    node->defName = std::string(name);
+}
+
+Node* SceneBuilder::use(std::string_view name, FilePos pos) {
+    Scope& scope = scopes_.back();
+    if (auto it = scope.defs.find(std::string(name)); it != scope.defs.end()) return it->second;
+    Node* placeholder = scene_.newNode();
+    placeholder->type = "USE";
+    placeholder->forwardUse = std::string(name);
+    placeholder->where = pos;
+    placeholder->file = file_;
+    scope.forwardUses.emplace_back(placeholder, pos);
+    return placeholder;
+}
+
+void SceneBuilder::resolveForwardUses(Scope& scope) {
+    std::vector<std::string> names;
+    for (auto& [placeholder, pos] : scope.forwardUses) {
+        auto it = scope.defs.find(placeholder->forwardUse);
+        if (it != scope.defs.end()) {
+            warning(pos,
+                    "USE " + placeholder->forwardUse + " comes before DEF " +
+                        placeholder->forwardUse + "; it refers to the node defined later",
+                    "move the DEF before its first USE");
+            resolvedPlaceholders_[placeholder] = it->second;
+            continue;
+        }
+        if (names.empty())
+            for (const auto& d : scope.defs)
+                names.push_back(d.first);
+        error(pos,
+              "USE " + placeholder->forwardUse + ": no node is named " + placeholder->forwardUse +
+                  " here",
+              didYouMean(placeholder->forwardUse, names));
+    }
+    scope.forwardUses.clear();
+}
+
+void SceneBuilder::replacePlaceholders() {
+    if (resolvedPlaceholders_.empty()) return;
+    auto resolve = [&](Node* n) {
+        // A placeholder may name a node that is itself a placeholder only
+        // through a cycle of forward USEs; stop after a bounded walk.
+        for (int i = 0; i < 64; ++i) {
+            auto it = resolvedPlaceholders_.find(n);
+            if (it == resolvedPlaceholders_.end()) return n;
+            n = it->second;
+        }
+        return n;
+    };
+    scene_.forEachNode([&](const Node& constNode) {
+        Node& node = const_cast<Node&>(constNode);
+        for (Field& f : node.fields)
+            for (Node*& child : f.value.nodes)
+                child = resolve(child);
+        for (FieldDeclaration& d : node.declarations)
+            for (Node*& child : d.value.nodes)
+                child = resolve(child);
+    });
+    for (Node*& root : scene_.roots)
+        root = resolve(root);
+    scene_.forEachNode([&](const Node&) {});
+    auto fixProto = [&](auto& self, ProtoDeclaration& p) -> void {
+        for (Node*& n : p.body)
+            n = resolve(n);
+        for (FieldDeclaration& d : p.interface)
+            for (Node*& child : d.value.nodes)
+                child = resolve(child);
+        for (ProtoDeclaration* nested : p.protos)
+            self(self, *nested);
+    };
+    for (ProtoDeclaration* p : scene_.protos)
+        fixProto(fixProto, *p);
+}
+
+void SceneBuilder::declareImport(std::string_view name, FilePos pos) {
+    Node* n = scene_.newNode();
+    n->type = "IMPORT";
+    n->defName = std::string(name);
+    n->where = pos;
+    n->file = file_;
+    scopes_.back().defs[std::string(name)] = n;
+}
+
+void SceneBuilder::declareProto(ProtoDeclaration* proto, FilePos pos) {
+    Scope& scope = scopes_.back();
+    auto [it, inserted] = scope.protos.try_emplace(proto->name, proto);
+    if (!inserted) {
+        warning(pos, "PROTO " + proto->name + " is declared twice; the later one is used");
+        it->second = proto;
+    }
+}
+
+const ProtoDeclaration* SceneBuilder::findProto(std::string_view name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+        if (auto p = it->protos.find(std::string(name)); p != it->protos.end()) return p->second;
+    return nullptr;
+}
+
+FieldInfo SceneBuilder::fieldInfo(const Node& node, std::string_view name) const {
+    FieldInfo info;
+    if (node.spec) {
+        bool eventName = false;
+        if (const FieldSpec* f = findFieldSpec(*node.spec, name, &eventName)) {
+            info = {f->type, f->access, true, eventName, f->name};
+            return info;
+        }
+    }
+    for (const FieldDeclaration& d : node.declarations)
+        if (d.name == name) return {d.type, d.access, true, false, d.name};
+    if (node.proto) {
+        const ProtoDeclaration& p = *node.proto;
+        if (const FieldDeclaration* d = p.interfaceField(name))
+            return {d->type, d->access, true, false, d->name};
+        std::string_view base;
+        if (name.starts_with("set_"))
+            base = name.substr(4);
+        else if (name.ends_with("_changed"))
+            base = name.substr(0, name.size() - 8);
+        if (!base.empty())
+            if (const FieldDeclaration* d = p.interfaceField(base);
+                d && d->access == AccessType::InputOutput)
+                return {d->type, d->access, true, true, d->name};
+    }
+    return info;
+}
+
+std::string SceneBuilder::suggestField(const Node& node, std::string_view name) const {
+    std::vector<std::string> names;
+    if (node.spec)
+        for (const FieldSpec& f : node.spec->fields)
+            names.emplace_back(f.name);
+    if (node.proto)
+        for (const FieldDeclaration& d : node.proto->interface)
+            names.push_back(d.name);
+    for (const FieldDeclaration& d : node.declarations)
+        names.push_back(d.name);
+    return didYouMean(name, names);
+}
+
+void SceneBuilder::checkIs(const Node& node, const FieldInfo& field, std::string_view fieldName,
+                           std::string_view interfaceName, FilePos pos) {
+    const ProtoDeclaration* proto = currentProto();
+    if (!proto) {
+        error(pos, "IS " + std::string(interfaceName) + " outside a PROTO body",
+              "IS connects a field to the interface of the PROTO it is written in");
+        return;
+    }
+    const FieldDeclaration* decl = proto->interfaceField(interfaceName);
+    if (!decl) {
+        std::vector<std::string> names;
+        for (const auto& d : proto->interface)
+            names.push_back(d.name);
+        error(pos,
+              "PROTO " + proto->name + " has no interface field '" + std::string(interfaceName) +
+                  "'",
+              didYouMean(interfaceName, names));
+        return;
+    }
+    if (!field.known) return; // field of an unknown node: nothing to check against
+    if (decl->type != field.type) {
+        error(pos,
+              "field '" + std::string(fieldName) + "' of " + node.type + " is " +
+                  std::string(fieldTypeName(field.type)) + " but interface field '" + decl->name +
+                  "' is " + std::string(fieldTypeName(decl->type)),
+              "IS joins fields of the same type");
+        return;
+    }
+    if (!isCompatible(decl->access, field.access))
+        error(pos,
+              "interface field '" + decl->name + "' is " +
+                  std::string(accessTypeName(decl->access)) + " but '" + std::string(fieldName) +
+                  "' of " + node.type + " is " + std::string(accessTypeName(field.access)),
+              "IS joins fields whose events flow the same way");
+}
+
+void SceneBuilder::addRoute(std::string_view fromDef, std::string_view fromField,
+                            std::string_view toDef, std::string_view toField, FilePos pos) {
+    scopes_.back().routes.push_back({std::string(fromDef), std::string(fromField),
+                                     std::string(toDef), std::string(toField), pos});
+}
+
+void SceneBuilder::resolveRoute(Scope& scope, const Scope::PendingRoute& r) {
+    auto lookup = [&](const std::string& name) -> Node* {
+        auto it = scope.defs.find(name);
+        if (it != scope.defs.end()) return it->second;
+        std::vector<std::string> names;
+        for (const auto& d : scope.defs)
+            names.push_back(d.first);
+        error(r.pos, "ROUTE names '" + name + "' but no node is DEF'd with that name here",
+              didYouMean(name, names));
+        return nullptr;
+    };
+    Node* from = lookup(r.fromDef);
+    Node* to = lookup(r.toDef);
+    if (!from || !to) return;
+    FieldInfo out = fieldInfo(*from, r.fromField);
+    if (!out.known && !from->isUnknown()) out = fieldInfo(*from, r.fromField + "_changed");
+    FieldInfo in = fieldInfo(*to, r.toField);
+    if (!in.known && !to->isUnknown()) in = fieldInfo(*to, "set_" + r.toField);
+    bool ok = true;
+    if (!from->isUnknown() && !out.known) {
+        error(r.pos, r.fromDef + " (" + from->type + ") has no field '" + r.fromField + "'",
+              suggestField(*from, r.fromField));
+        ok = false;
+    } else if (out.known && !canRead(out.access)) {
+        error(r.pos,
+              "ROUTE starts at " + r.fromDef + "." + r.fromField + ", an " +
+                  std::string(accessTypeName(out.access)) + " field that sends no events",
+              "a ROUTE starts at an outputOnly or inputOutput field");
+        ok = false;
+    }
+    if (!to->isUnknown() && !in.known) {
+        error(r.pos, r.toDef + " (" + to->type + ") has no field '" + r.toField + "'",
+              suggestField(*to, r.toField));
+        ok = false;
+    } else if (in.known && !canWrite(in.access)) {
+        error(r.pos,
+              "ROUTE ends at " + r.toDef + "." + r.toField + ", an " +
+                  std::string(accessTypeName(in.access)) + " field that receives no events",
+              "a ROUTE ends at an inputOnly or inputOutput field");
+        ok = false;
+    }
+    if (ok && out.known && in.known && out.type != in.type) {
+        error(r.pos,
+              "ROUTE connects " + std::string(fieldTypeName(out.type)) + " " + r.fromDef + "." +
+                  r.fromField + " to " + std::string(fieldTypeName(in.type)) + " " + r.toDef + "." +
+                  r.toField,
+              "both ends of a ROUTE must have the same type");
+        ok = false;
+    }
+    if (!ok) return;
+    Route route{from, r.fromField, to, r.toField, r.pos, file_};
+    if (scope.proto)
+        scope.proto->routes.push_back(std::move(route));
+    else
+        scene_.routes.push_back(std::move(route));
+}
+
+void SceneBuilder::finish() {
+    while (scopes_.size() > 1)
+        popScope(); // a reader stopped inside a PROTO body
+    Scope& top = scopes_.back();
+    resolveForwardUses(top);
+    for (const auto& r : top.routes)
+        resolveRoute(top, r);
+    top.routes.clear();
+    replacePlaceholders();
+    if (!hasErrors()) expandInstances();
+}
+
+void SceneBuilder::expandInstances() {
+    std::vector<Node*> stack(scene_.roots.rbegin(), scene_.roots.rend());
+    std::unordered_map<const Node*, bool> seen;
+    while (!stack.empty()) {
+        Node* n = stack.back();
+        stack.pop_back();
+        if (!n || !seen.emplace(n, true).second) continue;
+        if (n->proto && n->expansion.empty()) expand(*n, 0);
+        for (const Field& f : n->fields)
+            for (Node* child : f.value.nodes)
+                stack.push_back(child);
+        for (const FieldDeclaration& d : n->declarations)
+            for (Node* child : d.value.nodes)
+                stack.push_back(child);
+    }
+}
+
+void SceneBuilder::expand(Node& instance, std::size_t depth) {
+    const ProtoDeclaration& proto = instance.proto->definition();
+    if (proto.external) return; // unresolved EXTERNPROTO: warned at its declaration
+    if (depth >= limits_.maxProtoDepth)
+        fail(instance.where, "PROTO instances nest more than " +
+                                 std::to_string(limits_.maxProtoDepth) + " deep (does PROTO " +
+                                 proto.name + " contain itself?)");
+    std::unordered_map<const Node*, Node*> clones;
+    for (Node* bodyNode : proto.body)
+        instance.expansion.push_back(cloneForInstance(*bodyNode, instance, depth, clones));
+    for (const Route& r : proto.routes) {
+        auto from = clones.find(r.fromNode);
+        auto to = clones.find(r.toNode);
+        if (from != clones.end() && to != clones.end())
+            instance.expansionRoutes.push_back(
+                {from->second, r.fromField, to->second, r.toField, r.where, r.file});
+    }
+}
+
+Node* SceneBuilder::cloneForInstance(Node& original, const Node& instance, std::size_t depth,
+                                     std::unordered_map<const Node*, Node*>& clones) {
+    if (auto it = clones.find(&original); it != clones.end())
+        return it->second; // DEF/USE inside the body stays shared
+    if (++expandedNodes_ > limits_.maxExpandedNodes)
+        fail(instance.where, "PROTO expansion creates more than " +
+                                 std::to_string(limits_.maxExpandedNodes) + " nodes");
+    Node* copy = scene_.newNode();
+    clones.emplace(&original, copy);
+    copy->type = original.type;
+    copy->spec = original.spec;
+    copy->proto = original.proto;
+    copy->defName = original.defName;
+    copy->containerField = original.containerField;
+    copy->where = original.where;
+    copy->file = original.file;
+    copy->inProtoBody = false;
+    copy->declarations = original.declarations;
+    copy->fields = original.fields;
+    const ProtoDeclaration& proto = instance.proto->definition();
+    auto substitute = [&](FieldValue& value, const std::string& isName) {
+        if (isName.empty()) return false;
+        if (const Field* given = instance.field(isName)) {
+            value = given->value;
+        } else if (const FieldDeclaration* decl = proto.interfaceField(isName)) {
+            value = decl->value;
+        }
+        return true;
+    };
+    for (Field& f : copy->fields) {
+        if (substitute(f.value, f.isReference)) continue; // instance nodes are shared, not cloned
+        for (Node*& child : f.value.nodes)
+            if (child) child = cloneForInstance(*child, instance, depth, clones);
+    }
+    for (FieldDeclaration& d : copy->declarations) {
+        if (substitute(d.value, d.isReference)) continue;
+        for (Node*& child : d.value.nodes)
+            if (child) child = cloneForInstance(*child, instance, depth, clones);
+    }
+    if (copy->proto) expand(*copy, depth + 1);
+    return copy;
+}
+
+} // namespace fl::scene

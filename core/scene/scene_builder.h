@@ -1,0 +1,109 @@
+#pragma once
+// What the X3D XML and Classic readers share once a token or element has been
+// understood: node types and field lookup, DEF/USE scopes (with USE before DEF
+// resolved at the end), IS and ROUTE checks, limits, diagnostics, and PROTO
+// expansion. Encoding rules that differ are parameters, not copies.
+#include "read_limits.h"
+#include "scene.h"
+
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace fl::scene {
+
+// Thrown by a reader to stop at an error it cannot recover from; the builder
+// has already recorded the diagnostic.
+struct StopReading {};
+
+struct FieldInfo {
+    FieldType type = FieldType::Unknown;
+    AccessType access = AccessType::InputOutput;
+    bool known = false;
+    bool eventName = false; // set_x / x_changed of an inputOutput field
+    std::string_view canonicalName;
+};
+
+class SceneBuilder {
+  public:
+    SceneBuilder(Scene& scene, int file, const ReadLimits& limits,
+                 std::vector<SceneDiagnostic>& diagnostics);
+
+    Scene& scene() { return scene_; }
+    int file() const { return file_; }
+    const ReadLimits& limits() const { return limits_; }
+    bool vrml97() const { return scene_.encoding == Encoding::Vrml97; }
+
+    void error(FilePos pos, std::string message, std::string suggestion = {});
+    void warning(FilePos pos, std::string message, std::string suggestion = {});
+    [[noreturn]] void fail(FilePos pos, std::string message, std::string suggestion = {});
+    bool hasErrors() const;
+
+    // Scopes: the scene, each PROTO body, each PROTO interface default value.
+    void pushScope(ProtoDeclaration* proto);
+    void popScope(); // resolves forward USEs of the scope
+    ProtoDeclaration* currentProto() const;
+
+    // Node creation: type lookup (built-in, PROTO, unknown) by the encoding's rules.
+    Node* newNode(std::string_view type, FilePos pos);
+    void define(Node* node, std::string_view name, FilePos pos);
+    // The node a USE names; a placeholder when the name comes later in the file.
+    Node* use(std::string_view name, FilePos pos);
+
+    void declareProto(ProtoDeclaration* proto, FilePos pos);
+    // A name an IMPORT brings in: a node of another file, usable in ROUTE and USE.
+    void declareImport(std::string_view name, FilePos pos);
+    const ProtoDeclaration* findProto(std::string_view name) const;
+
+    FieldInfo fieldInfo(const Node& node, std::string_view name) const;
+    std::string suggestField(const Node& node, std::string_view name) const;
+
+    // Checks an `IS` between a node's field and the current PROTO's interface.
+    void checkIs(const Node& node, const FieldInfo& field, std::string_view fieldName,
+                 std::string_view interfaceName, FilePos pos);
+    // Validates and stores a ROUTE (in the current PROTO body or the scene).
+    void addRoute(std::string_view fromDef, std::string_view fromField, std::string_view toDef,
+                  std::string_view toField, FilePos pos);
+
+    void enterNode(FilePos pos); // nesting depth
+    void leaveNode();
+
+    // End of file: forward USEs, PROTO expansion.
+    void finish();
+
+  private:
+    struct Scope {
+        ProtoDeclaration* proto = nullptr;
+        std::unordered_map<std::string, Node*> defs;
+        std::vector<std::pair<Node*, FilePos>> forwardUses;
+        std::unordered_map<std::string, ProtoDeclaration*> protos;
+        struct PendingRoute {
+            std::string fromDef, fromField, toDef, toField;
+            FilePos pos;
+        };
+        std::vector<PendingRoute> routes; // checked when the scope ends (DEFs may follow)
+    };
+    void resolveRoute(Scope& scope, const Scope::PendingRoute& r);
+    Node* cloneForInstance(Node& original, const Node& instance, std::size_t depth,
+                           std::unordered_map<const Node*, Node*>& clones);
+    void resolveForwardUses(Scope& scope);
+    void expandInstances();
+    void expand(Node& instance, std::size_t depth);
+    void replacePlaceholders();
+
+    Scene& scene_;
+    int file_;
+    const ReadLimits& limits_;
+    std::vector<SceneDiagnostic>& diagnostics_;
+    std::vector<Scope> scopes_;
+    std::unordered_map<Node*, Node*> resolvedPlaceholders_;
+    std::size_t depth_ = 0;
+    std::size_t nodesCreated_ = 0;
+    std::size_t expandedNodes_ = 0;
+    std::size_t errorCount_ = 0;
+};
+
+std::string_view encodingName(Encoding encoding);
+
+} // namespace fl::scene

@@ -1,0 +1,30 @@
+#pragma once
+// A message about a scene file, located by file:line:column.
+#include "formula/diagnostic.h"
+
+#include <string>
+#include <vector>
+
+namespace fl::scene {
+
+using formula::Severity;
+
+struct FilePos {
+    int line = 0; // 0: the file as a whole
+    int column = 0;
+};
+
+struct SceneDiagnostic {
+    Severity severity = Severity::Error;
+    std::string file;
+    FilePos pos;
+    std::string message;
+    std::string suggestion; // empty when there is none
+};
+
+// "FILE:LINE:COL: error: message (suggestion)"
+std::string formatSceneDiagnostic(const SceneDiagnostic& d);
+
+bool hasErrors(const std::vector<SceneDiagnostic>& diagnostics);
+
+} // namespace fl::scene

@@ -1,0 +1,95 @@
+#include "scene_reader.h"
+
+#include "classic_reader.h"
+#include "function_definitions.h"
+#include "gzip.h"
+#include "scene_builder.h"
+#include "xml_reader.h"
+
+#include <QString>
+
+#include <fstream>
+#include <sstream>
+
+namespace fl::scene {
+namespace {
+
+ReadResult failWith(const std::string& path, std::string message, std::string suggestion = {}) {
+    ReadResult r;
+    r.diagnostics.push_back({Severity::Error, path, {}, std::move(message), std::move(suggestion)});
+    return r;
+}
+
+} // namespace
+
+ReadResult readSceneBytes(std::string bytes, const std::string& path, const ReadOptions& options) {
+    if (bytes.size() > options.limits.maxFileBytes)
+        return failWith(path, "the file is larger than " +
+                                  std::to_string(options.limits.maxFileBytes >> 20) + " MiB");
+    if (isGzip(bytes)) {
+        std::string problem;
+        std::optional<std::string> text = gunzip(bytes, options.limits.maxDecodedBytes, problem);
+        if (!text) return failWith(path, problem);
+        bytes = std::move(*text);
+    }
+    if (bytes.size() >= 2 && ((bytes[0] == '\xFF' && bytes[1] == '\xFE') ||
+                              (bytes[0] == '\xFE' && bytes[1] == '\xFF'))) {
+        // UTF-16 with a byte order mark: read as UTF-8 from here on.
+        const bool little = bytes[0] == '\xFF';
+        std::u16string units;
+        for (std::size_t i = 2; i + 1 < bytes.size(); i += 2) {
+            const auto lo = static_cast<unsigned char>(bytes[i + (little ? 0 : 1)]);
+            const auto hi = static_cast<unsigned char>(bytes[i + (little ? 1 : 0)]);
+            units.push_back(static_cast<char16_t>(lo | (hi << 8)));
+        }
+        bytes = QString::fromUtf16(units.data(), static_cast<qsizetype>(units.size()))
+                    .toUtf8()
+                    .toStdString();
+    }
+    if (bytes.starts_with("\xEF\xBB\xBF")) bytes.erase(0, 3); // UTF-8 byte order mark
+    ReadResult result;
+    auto scene = std::make_unique<Scene>();
+    scene->files.push_back({path, std::move(bytes)});
+    const std::string& text = scene->files[0].text;
+    SceneBuilder builder(*scene, 0, options.limits, result.diagnostics);
+    try {
+        if (looksLikeClassic(text)) {
+            readClassic(builder);
+        } else if (looksLikeXml(text)) {
+            scene->encoding = Encoding::Xml;
+            readXml(builder);
+        } else {
+            builder.fail({1, 1}, "this is not a scene file",
+                         "a scene starts with '#VRML V2.0 utf8', '#X3D V3.3 utf8' or an XML <X3D> "
+                         "document");
+        }
+        builder.finish();
+    } catch (const StopReading&) {
+        return result;
+    }
+    if (builder.hasErrors()) return result;
+    if (options.compileFunctions) {
+        compileFunctionDefinitions(*scene, result.diagnostics);
+        if (hasErrors(result.diagnostics)) return result;
+    }
+    result.scene = std::move(scene);
+    return result;
+}
+
+ReadResult readSceneFile(const std::filesystem::path& path, const ReadOptions& options) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        return failWith(name, "this is a folder, not a scene file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return failWith(name, "cannot open the file", "check the path and the permissions");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > options.limits.maxFileBytes)
+        return failWith(name, "the file is larger than " +
+                                  std::to_string(options.limits.maxFileBytes >> 20) + " MiB");
+    std::ostringstream content;
+    content << in.rdbuf();
+    return readSceneBytes(std::move(content).str(), name, options);
+}
+
+} // namespace fl::scene
