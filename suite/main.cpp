@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
         if (cmd == "formula") return fl::cli::formulaCommand(rest);
         if (cmd == "bench") return fl::cli::benchCommand(rest);
         if (cmd == "check") return fl::cli::checkCommand(rest);
+        if (cmd == "convert") return fl::cli::convertCommand(rest);
     } catch (const std::exception& e) {
         std::cerr << "functionlab: " << e.what() << "\n";
         return fl::cli::kExitDiagnostic;

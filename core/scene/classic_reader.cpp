@@ -269,8 +269,17 @@ void ClassicReader::nodeBody(Node& n) {
             field.value = value(info.type, t);
         }
         if (Field* old = n.field(fieldName)) {
-            b_.warning(t.pos, "field '" + fieldName + "' is given twice; the later value is used");
-            *old = std::move(field);
+            // X3D 4 lets an inputOutput field have both an IS and a value.
+            if (old->isReference.empty() == !field.isReference.empty()) {
+                if (field.isReference.empty())
+                    old->value = std::move(field.value);
+                else
+                    old->isReference = std::move(field.isReference);
+            } else {
+                b_.warning(t.pos,
+                           "field '" + fieldName + "' is given twice; the later value is used");
+                *old = std::move(field);
+            }
         } else {
             n.fields.push_back(std::move(field));
         }
@@ -303,8 +312,21 @@ void ClassicReader::fieldDeclaration(Node& n) {
         d.value = value(*type, nameTok);
         d.hasValue = true;
     }
-    for (const FieldDeclaration& other : n.declarations)
-        if (other.name == d.name) b_.error(nameTok.pos, "field '" + d.name + "' is declared twice");
+    for (FieldDeclaration& other : n.declarations)
+        if (other.name == d.name) {
+            // an IS and an initial value for the same field (X3D 4)
+            if (other.type == d.type && other.access == d.access &&
+                other.isReference.empty() != d.isReference.empty()) {
+                if (d.isReference.empty()) {
+                    other.value = std::move(d.value);
+                    other.hasValue = d.hasValue;
+                } else {
+                    other.isReference = std::move(d.isReference);
+                }
+                return;
+            }
+            b_.error(nameTok.pos, "field '" + d.name + "' is declared twice");
+        }
     n.declarations.push_back(std::move(d));
 }
 
@@ -419,7 +441,10 @@ void ClassicReader::importExport(bool isImport) {
         text += " AS " + localName;
     }
     if (isImport) b_.declareImport(localName, at);
-    (isImport ? b_.scene().imports : b_.scene().exports).push_back({text, at});
+    if (isImport && b_.currentProto())
+        b_.currentProto()->imports.push_back({text, at});
+    else
+        (isImport ? b_.scene().imports : b_.scene().exports).push_back({text, at});
 }
 
 // ---------------------------------------------------------------- values

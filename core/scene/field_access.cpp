@@ -4,6 +4,28 @@
 
 namespace fl::scene {
 
+FieldValue typeDefault(FieldType type) {
+    FieldValue v;
+    v.type = type;
+    if (isMultiple(type) || holdsNodes(type) || type == FieldType::Unknown) return v;
+    if (type == FieldType::SFString) {
+        v.strings.emplace_back();
+        v.stringOrigins.push_back({});
+        return v;
+    }
+    if (type == FieldType::SFImage) {
+        v.numbers = {0, 0, 0};
+        return v;
+    }
+    v.numbers.assign(static_cast<std::size_t>(componentsPerElement(type)), 0.0);
+    if (type == FieldType::SFRotation) v.numbers[2] = 1.0;
+    if (type == FieldType::SFMatrix3f || type == FieldType::SFMatrix3d)
+        v.numbers = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    if (type == FieldType::SFMatrix4f || type == FieldType::SFMatrix4d)
+        v.numbers = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    return v;
+}
+
 FieldValue defaultValue(const FieldSpec& spec) {
     FieldValue v;
     v.type = spec.type;

@@ -11,6 +11,9 @@ namespace fl::scene {
 
 // The value the file gave, else the node type's default, else an empty value.
 FieldValue fieldValue(const Node& node, std::string_view name);
+// The default of a field type itself (X3D 19775-1 table 5.1): zeros,
+// "0 0 1 0" for rotations, one empty string for SFString, empty MF fields.
+FieldValue typeDefault(FieldType type);
 // A field spec's default, parsed from the catalogue text.
 FieldValue defaultValue(const FieldSpec& spec);
 

@@ -123,6 +123,7 @@ struct ProtoDeclaration {
     std::vector<Node*> body;
     std::vector<Route> routes;
     std::vector<ProtoDeclaration*> protos; // nested declarations
+    std::vector<KeptStatement> imports;    // IMPORT statements in the body
     const ProtoDeclaration* resolved = nullptr;
     FilePos where;
     int file = -1;

@@ -22,6 +22,7 @@ namespace {
 
 std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) {
     std::string best = formula::closestName(name, candidates);
+    if (best == name) return {}; // defined, but later or elsewhere: naming it again does not help
     return best.empty() ? std::string() : "did you mean '" + best + "'?";
 }
 
@@ -63,6 +64,18 @@ void SceneBuilder::error(FilePos pos, std::string message, std::string suggestio
 void SceneBuilder::warning(FilePos pos, std::string message, std::string suggestion) {
     if (diagnostics_.size() >= limits_.maxDiagnostics)
         return; // warnings never stop a load; extra ones are dropped
+    // The same warning for the 100th GeoCoordinate helps nobody: say it three
+    // times, then once that it repeats.
+    const int seen = ++warningCounts_[message];
+    if (seen > 3) {
+        if (seen == 4)
+            diagnostics_.push_back({Severity::Warning,
+                                    scene_.files[file_].path,
+                                    pos,
+                                    "(the warning above repeats; further repeats are not shown)",
+                                    {}});
+        return;
+    }
     diagnostics_.push_back({Severity::Warning, scene_.files[file_].path, pos, std::move(message),
                             std::move(suggestion)});
 }
@@ -137,6 +150,7 @@ Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
 
 void SceneBuilder::define(Node* node, std::string_view name, FilePos pos) {
     Scope& scope = scopes_.back();
+    scope.defHistory[std::string(name)].push_back(node);
     auto [it, inserted] = scope.defs.try_emplace(std::string(name), node);
     if (!inserted) {
         warning(pos,
@@ -156,20 +170,20 @@ Node* SceneBuilder::use(std::string_view name, FilePos pos) {
     placeholder->forwardUse = std::string(name);
     placeholder->where = pos;
     placeholder->file = file_;
-    scope.forwardUses.emplace_back(placeholder, pos);
+    scope.forwardUses.push_back({placeholder, pos, 0});
     return placeholder;
 }
 
 void SceneBuilder::resolveForwardUses(Scope& scope) {
     std::vector<std::string> names;
-    for (auto& [placeholder, pos] : scope.forwardUses) {
-        auto it = scope.defs.find(placeholder->forwardUse);
-        if (it != scope.defs.end()) {
+    for (auto& [placeholder, pos, defsBefore] : scope.forwardUses) {
+        auto it = scope.defHistory.find(placeholder->forwardUse);
+        if (it != scope.defHistory.end() && defsBefore < it->second.size()) {
             warning(pos,
                     "USE " + placeholder->forwardUse + " comes before DEF " +
                         placeholder->forwardUse + "; it refers to the node defined later",
                     "move the DEF before its first USE");
-            resolvedPlaceholders_[placeholder] = it->second;
+            resolvedPlaceholders_[placeholder] = it->second[defsBefore]; // the first DEF after it
             continue;
         }
         if (names.empty())
@@ -227,6 +241,7 @@ void SceneBuilder::declareImport(std::string_view name, FilePos pos) {
     n->where = pos;
     n->file = file_;
     scopes_.back().defs[std::string(name)] = n;
+    scopes_.back().defHistory[std::string(name)].push_back(n);
 }
 
 void SceneBuilder::declareProto(ProtoDeclaration* proto, FilePos pos) {

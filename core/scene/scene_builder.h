@@ -76,7 +76,13 @@ class SceneBuilder {
     struct Scope {
         ProtoDeclaration* proto = nullptr;
         std::unordered_map<std::string, Node*> defs;
-        std::vector<std::pair<Node*, FilePos>> forwardUses;
+        struct ForwardUse {
+            Node* placeholder;
+            FilePos pos;
+            std::size_t defsBefore; // how many DEFs of the name preceded the USE
+        };
+        std::vector<ForwardUse> forwardUses;
+        std::unordered_map<std::string, std::vector<Node*>> defHistory;
         std::unordered_map<std::string, ProtoDeclaration*> protos;
         struct PendingRoute {
             std::string fromDef, fromField, toDef, toField;
@@ -102,6 +108,7 @@ class SceneBuilder {
     std::size_t nodesCreated_ = 0;
     std::size_t expandedNodes_ = 0;
     std::size_t errorCount_ = 0;
+    std::unordered_map<std::string, int> warningCounts_;
 };
 
 std::string_view encodingName(Encoding encoding);

@@ -1,6 +1,7 @@
 #include "xml_reader.h"
 
 #include "components.h"
+#include "field_access.h"
 #include "source_map.h"
 
 #include <QString>
@@ -369,13 +370,13 @@ void XmlReader::nodeContent(Node& n) {
             b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
         if (t == QXmlStreamReader::EndElement) return;
         if (t == QXmlStreamReader::Characters && !xml_.isWhitespace() &&
-            (n.type == "Script" || n.type == "ShaderPart" || n.type == "ShaderProgram")) {
+            (n.type == "Script" || n.isUnknown())) {
             // Script source in CDATA: the same as a url entry holding it.
             Field* url = n.field("url");
             if (!url) {
                 n.fields.push_back({"url", {}, here(), b_.file(), {}});
                 url = &n.fields.back();
-                url->value.type = FieldType::MFString;
+                url->value.type = n.isUnknown() ? FieldType::Unknown : FieldType::MFString;
             }
             url->value.strings.push_back(str(xml_.text()));
             url->value.stringOrigins.push_back(
@@ -423,7 +424,7 @@ void XmlReader::attachChild(Node& parent, Node* child, const std::string& contai
     if (!f) {
         parent.fields.push_back({containerField, {}, pos, b_.file(), {}});
         f = &parent.fields.back();
-        f->value.type = info.known ? info.type : FieldType::MFNode;
+        f->value.type = info.known ? info.type : FieldType::Unknown;
     }
     if (f->value.type == FieldType::SFNode && !f->value.nodes.empty()) {
         b_.warning(pos, parent.type + "." + containerField + " holds one node; " + child->type +
@@ -479,7 +480,10 @@ FieldDeclaration XmlReader::fieldElement(bool external, bool inProtoInterface) {
         d.hasValue = true;
     }
     if (inProtoInterface) b_.popScope();
-    if (hasInitialValue(d.access) && holdsNodes(d.type)) d.hasValue = true;
+    if (hasInitialValue(d.access) && !external && !d.hasValue && d.isReference.empty()) {
+        d.value = typeDefault(d.type); // no value attribute: the type's default
+        d.hasValue = true;
+    }
     return d;
 }
 
@@ -539,9 +543,10 @@ void XmlReader::fieldValueElement(Node& instance) {
         Node* n = nodeElement();
         if (n) field.value.nodes.push_back(n);
     }
-    if (Field* old = instance.field(name))
+    if (Field* old = instance.field(name)) {
+        field.isReference = old->isReference; // an <IS> may come first
         *old = std::move(field);
-    else
+    } else
         instance.fields.push_back(std::move(field));
 }
 
@@ -623,7 +628,10 @@ void XmlReader::importExport(bool isImport) {
     if (!isImport && b_.currentProto()) b_.error(pos, "EXPORT is not allowed inside a PROTO body");
     if (isImport)
         b_.declareImport(attrValue("AS").empty() ? attrValue("importedDEF") : attrValue("AS"), pos);
-    (isImport ? b_.scene().imports : b_.scene().exports).push_back({text, pos});
+    if (isImport && b_.currentProto())
+        b_.currentProto()->imports.push_back({text, pos});
+    else
+        (isImport ? b_.scene().imports : b_.scene().exports).push_back({text, pos});
 }
 
 } // namespace

@@ -11,5 +11,6 @@ using Args = std::vector<std::string>;
 int formulaCommand(const Args& args);
 int benchCommand(const Args& args);
 int checkCommand(const Args& args);
+int convertCommand(const Args& args);
 
 } // namespace fl::cli

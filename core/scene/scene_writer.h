@@ -1,0 +1,23 @@
+#pragma once
+// Writes a Scene as X3D XML, ClassicVRML or VRML97. Only fields given in the
+// file are written (defaults stay implicit); PROTO instances are written as
+// instances, not as their expansion; unknown nodes and fields are written
+// back as they were read.
+#include "scene.h"
+
+#include <string>
+
+namespace fl::scene {
+
+std::string writeXml(const Scene& scene);
+std::string writeClassic(const Scene& scene, Encoding encoding = Encoding::ClassicVrml);
+std::string writeScene(const Scene& scene, Encoding encoding);
+
+// The encoding a file name asks for (.x3d, .x3dv, .wrl, with .gz or
+// .x3dz/.x3dvz/.wrz for gzip); false when the extension is not a scene's.
+bool encodingForPath(const std::string& path, Encoding& encoding, bool& gzipped);
+
+// Shortest text that reads back as exactly the same double.
+std::string formatNumber(double v);
+
+} // namespace fl::scene
