@@ -1,0 +1,224 @@
+// Behaviour of the scene readers that the corpus does not pin down: formula
+// diagnostics at the scene file's line:column, PROTO expansion, USE before
+// DEF, limits, gzip, and what the effects plan says.
+#include "scene/effects_plan.h"
+#include "scene/field_access.h"
+#include "scene/gzip.h"
+#include "scene/scene_compare.h"
+#include "scene/scene_reader.h"
+#include "scene/scene_writer.h"
+
+#include <gtest/gtest.h>
+
+using namespace fl::scene;
+
+namespace {
+
+ReadResult read(const std::string& text, const std::string& name = "test.x3dv") {
+    return readSceneBytes(text, name);
+}
+
+const SceneDiagnostic* firstError(const ReadResult& r) {
+    for (const auto& d : r.diagnostics)
+        if (d.severity == Severity::Error) return &d;
+    return nullptr;
+}
+
+TEST(FormulaDiagnostics, ClassicPointsIntoTheDefinitionString) {
+    const std::string text = "#X3D V3.3 utf8\nPROFILE Immersive\n"
+                             "FShape {\n"
+                             "  geometry FGeometry { definition \"1 - sine(x)\" }\n"
+                             "}\n";
+    ReadResult r = read(text);
+    ASSERT_FALSE(r.ok());
+    const SceneDiagnostic* e = firstError(r);
+    ASSERT_NE(e, nullptr);
+    EXPECT_EQ(e->pos.line, 4);
+    // `sine` starts at column 39 of line 4
+    EXPECT_EQ(e->pos.column,
+              static_cast<int>(std::string("  geometry FGeometry { definition \"1 - ").size()) + 1);
+    EXPECT_NE(e->message.find("sine"), std::string::npos);
+    EXPECT_NE(e->suggestion.find("sin"), std::string::npos);
+}
+
+TEST(FormulaDiagnostics, ClassicEscapesAndLaterLinesOfAnMFString) {
+    const std::string text = "#X3D V3.3 utf8\nPROFILE Immersive\n"
+                             "FShape { geometry FGeometry { type \"parametric\" definition [\n"
+                             "  \"x = u; // \\\"quoted\\\"\"\n"
+                             "  \"y = v;\" \"z = foo;\" ] } }\n";
+    ReadResult r = read(text);
+    const SceneDiagnostic* e = firstError(r);
+    ASSERT_NE(e, nullptr);
+    EXPECT_EQ(e->pos.line, 5);
+    EXPECT_EQ(e->pos.column, static_cast<int>(std::string("  \"y = v;\" \"z = ").size()) + 1);
+}
+
+TEST(FormulaDiagnostics, XmlAttributeWithEntities) {
+    const std::string text =
+        "<X3D profile='Immersive'><Scene>\n"
+        "<FShape><FGeometry definition='\"(1 &lt; 2) ? x : bogus\"'/></FShape>\n"
+        "</Scene></X3D>\n";
+    ReadResult r = read(text, "test.x3d");
+    const SceneDiagnostic* e = firstError(r);
+    ASSERT_NE(e, nullptr);
+    EXPECT_EQ(e->pos.line, 2);
+    EXPECT_EQ(
+        e->pos.column,
+        static_cast<int>(std::string("<FShape><FGeometry definition='\"(1 &lt; 2) ? x : ").size()) +
+            1);
+}
+
+TEST(FormulaDiagnostics, ErrorsInAProtoBodyAreReportedOnce) {
+    const std::string text =
+        "#X3D V3.3 utf8\nPROFILE Immersive\n"
+        "PROTO S [] { FShape { geometry FGeometry { definition \"1 - q\" } } }\n"
+        "S {} S {}\n";
+    ReadResult r = read(text);
+    int errors = 0;
+    for (const auto& d : r.diagnostics)
+        errors += d.severity == Severity::Error;
+    EXPECT_EQ(errors, 1);
+}
+
+TEST(Proto, InstancesAreExpandedWithTheirFieldValues) {
+    const std::string text =
+        "#X3D V3.3 utf8\nPROFILE Immersive\n"
+        "PROTO Ball [ initializeOnly SFFloat r 1 ] { Shape { geometry Sphere { radius IS r } } }\n"
+        "Ball { r 2.5 } Ball {}\n";
+    ReadResult r = read(text);
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.scene->roots.size(), 2u);
+    auto radiusOf = [](const Node* instance) {
+        const Node* shape = instance->expansion.at(0);
+        return numberField(*nodeField(*shape, "geometry"), "radius");
+    };
+    EXPECT_EQ(radiusOf(r.scene->roots[0]), 2.5);
+    EXPECT_EQ(radiusOf(r.scene->roots[1]), 1.0);
+}
+
+TEST(Proto, SelfInstantiationIsStoppedWithAnError) {
+    ReadResult r =
+        read("#X3D V3.3 utf8\nPROFILE Immersive\nPROTO P [] { Group { children P {} } }\nP {}\n");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(firstError(r)->message.find("nest more than"), std::string::npos);
+}
+
+TEST(DefUse, UseBeforeDefIsResolvedWithAWarning) {
+    ReadResult r =
+        read("#X3D V3.3 utf8\nPROFILE Immersive\nGroup { children USE B }\nDEF B Shape {}\n");
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(nodesField(*r.scene->roots[0], "children").at(0), r.scene->roots[1]);
+    EXPECT_FALSE(r.diagnostics.empty());
+}
+
+TEST(Limits, DeepNestingIsALocatedError) {
+    std::string text = "#X3D V3.3 utf8\nPROFILE Immersive\n";
+    for (int i = 0; i < 400; ++i)
+        text += "Group { children ";
+    ReadResult r = read(text);
+    ASSERT_FALSE(r.ok());
+    EXPECT_GT(firstError(r)->pos.line, 0);
+    EXPECT_NE(firstError(r)->message.find("nested"), std::string::npos);
+}
+
+TEST(Limits, ExponentialProtoExpansionIsBounded) {
+    // Each level doubles: 2^40 nodes if nothing stopped it.
+    std::string text = "#X3D V3.3 utf8\nPROFILE Immersive\nPROTO L0 [] { Group {} }\n";
+    for (int i = 1; i <= 40; ++i)
+        text += "PROTO L" + std::to_string(i) + " [] { Group { children [ L" +
+                std::to_string(i - 1) + " {} L" + std::to_string(i - 1) + " {} ] } }\n";
+    text += "L40 {}\n";
+    ReadResult r = read(text);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(firstError(r)->message.find("PROTO"), std::string::npos);
+}
+
+TEST(Limits, GzipBombIsRefused) {
+    ReadOptions options;
+    options.limits.maxDecodedBytes = 1 << 20;
+    std::string big = "#X3D V3.3 utf8\nPROFILE Immersive\n" + std::string(4 << 20, ' ');
+    ReadResult r = readSceneBytes(gzip(big), "bomb.x3dv.gz", options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.diagnostics.at(0).message.find("unpacks"), std::string::npos);
+}
+
+TEST(Gzip, CompressedFilesReadLikePlainOnes) {
+    const std::string text = "#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry Box {} }\n";
+    ReadResult plain = read(text);
+    ReadResult packed = readSceneBytes(gzip(text), "box.x3dv.gz");
+    ASSERT_TRUE(plain.ok() && packed.ok());
+    EXPECT_TRUE(sameModel(*plain.scene, *packed.scene));
+}
+
+TEST(Garbage, NeverCrashesAndSaysWhere) {
+    for (const std::string text :
+         {std::string("\0\1\2", 3),
+          std::string("#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry"),
+          std::string("<X3D profile='Full'><Scene><Shape>"), std::string("#VRML V2.0 utf8\n\"open"),
+          std::string("#X3D V3.3 utf8\nPROFILE Full\nTransform { translation 1e999 0 0 }")}) {
+        ReadResult r = read(text);
+        EXPECT_FALSE(r.ok());
+        EXPECT_FALSE(r.diagnostics.empty());
+    }
+}
+
+TEST(Writer, NumbersReadBackExactly) {
+    const std::string text =
+        "#X3D V3.3 utf8\nPROFILE Immersive\n"
+        "Transform { translation 0.1 -0 1e-300 scale 3.0000000000000004 1 1 }\n";
+    ReadResult r = read(text);
+    ASSERT_TRUE(r.ok());
+    for (Encoding e : {Encoding::Xml, Encoding::ClassicVrml, Encoding::Vrml97}) {
+        ReadResult back = readSceneBytes(writeScene(*r.scene, e), "back");
+        ASSERT_TRUE(back.ok());
+        std::string why;
+        EXPECT_TRUE(sameModel(*r.scene, *back.scene, &why)) << why;
+    }
+}
+
+TEST(Plan, TransformOnlyAnimationNeverNeedsRemeshing) {
+    const std::string text =
+        "#X3D V3.3 utf8\nPROFILE Immersive\n"
+        "FTransform { rotationAngle \"2*pi*t\" timeBase \"local\" cycleInterval 60 loop TRUE\n"
+        "  children FShape { geometry FGeometry { definition \"1 - x^2 - y^2 - z^2\" } } }\n";
+    ReadResult r = read(text);
+    ASSERT_TRUE(r.ok());
+    EffectsPlan plan = makeEffectsPlan(*r.scene);
+    EXPECT_EQ(plan.timeVarying, kTransform);
+    EXPECT_TRUE(plan.usesWallClock);
+    EXPECT_FALSE(plan.needsHaptics);
+}
+
+TEST(Plan, TimeDependentGeometryColourAndPhysics) {
+    const std::string text =
+        "#X3D V3.3 utf8\nPROFILE Immersive\n"
+        "FShape { geometry FGeometry { definition \"1 - x^2 - (y - sin(pi*t))^2 - z^2\" }\n"
+        "  appearance FAppearance { material FMaterial { definition [\"r = t;\" \"g = 1 - t;\" \"b "
+        "= 0;\"] } }\n"
+        "  physics FPhysics { density FDensity { definition \"0.5\" } } }\n";
+    ReadResult r = read(text);
+    ASSERT_TRUE(r.ok());
+    EffectsPlan plan = makeEffectsPlan(*r.scene);
+    EXPECT_EQ(plan.timeVarying, kGeometry | kColour);
+    EXPECT_TRUE(plan.needsHaptics);
+    ASSERT_EQ(plan.entries.size(), 1u);
+    ASSERT_EQ(plan.entries[0].tangible.size(), 1u);
+    EXPECT_EQ(plan.entries[0].tangible[0].kind, "density");
+    EXPECT_FALSE(plan.entries[0].tangible[0].timeVarying);
+}
+
+TEST(Plan, RoutedInterpolatorAnimatesATransform) {
+    const std::string text =
+        "#X3D V3.3 utf8\nPROFILE Immersive\n"
+        "DEF T Transform { children Shape { geometry Box {} } }\n"
+        "DEF C TimeSensor { loop TRUE }\n"
+        "DEF O OrientationInterpolator { key [0 1] keyValue [0 1 0 0, 0 1 0 3.14] }\n"
+        "ROUTE C.fraction_changed TO O.set_fraction\nROUTE O.value_changed TO T.set_rotation\n";
+    ReadResult r = read(text);
+    ASSERT_TRUE(r.ok());
+    EffectsPlan plan = makeEffectsPlan(*r.scene);
+    EXPECT_EQ(plan.timeVarying, kTransform);
+    EXPECT_EQ(plan.functionShapes, 0u);
+}
+
+} // namespace
