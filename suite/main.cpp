@@ -22,6 +22,10 @@ commands:
   formula check "SRC"       check a formula or script; diagnostics with carets
   formula eval "SRC" --at X,Y,Z [--t T] [--param N=V ...] [--json]
                             evaluate a formula: value and gradient
+  check FILE [--plan] [--json]
+                            load a scene (.x3d .x3dv .wrl, gzip too); diagnostics as
+                            FILE:LINE:COL; --plan: what varies with time, what is tangible
+  convert IN OUT            convert a scene between X3D XML, ClassicVRML and VRML97
   bench eval [--json]       evaluator speed: FunctionLab vs hand-written C++ vs muParser
 
 Run `functionlab <command> --help` for a command's options.
