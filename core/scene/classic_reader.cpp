@@ -1,7 +1,7 @@
 #include "classic_reader.h"
 
 #include "classic_lexer.h"
-#include "components.h"
+#include "number_text.h"
 
 #include <charconv>
 #include <cmath>
@@ -89,7 +89,6 @@ class ClassicReader {
     std::string_view text_;
     ClassicLexer lex_;
     bool sawNonHeader_ = false;
-    bool warnedScript_ = false;
 };
 
 void ClassicReader::readFile() {
@@ -106,10 +105,7 @@ void ClassicReader::headerStatements() {
     } else {
         next();
         ClassicTokenInfo p = expect(T::Identifier, "a profile name");
-        s.profile = std::string(p.text);
-        if (!isKnownProfile(s.profile))
-            b_.warning(p.pos, "unknown profile '" + s.profile + "'",
-                       "profiles are Core, Interchange, Interactive, Immersive, Full");
+        b_.setProfile(std::string(p.text), p.pos);
     }
     while (peekWord("COMPONENT")) {
         next();
@@ -125,13 +121,7 @@ void ClassicReader::headerStatements() {
         ClassicTokenInfo l = expect(T::Number, "a component level");
         int level = 0;
         std::from_chars(l.text.data(), l.text.data() + l.text.size(), level);
-        std::optional<int> max = componentMaxLevel(c.text);
-        if (!max)
-            b_.warning(c.pos, "unknown component '" + std::string(c.text) + "'");
-        else if (level < 1 || level > *max)
-            b_.error(l.pos, "component " + std::string(c.text) + " has levels 1 to " +
-                                std::to_string(*max) + ", not " + std::string(l.text));
-        s.components.push_back({std::string(c.text), level});
+        b_.addComponent(std::string(c.text), level, l.text, c.pos, l.pos);
     }
     while (peekWord("UNIT")) {
         ClassicTokenInfo u = next();
@@ -206,10 +196,6 @@ Node* ClassicReader::node(std::string_view defName, FilePos defPos) {
     b_.enterNode(type.pos);
     Node* n = b_.newNode(type.text, type.pos);
     if (!defName.empty()) b_.define(n, defName, defPos); // before the body: its ROUTEs may name it
-    if (n->type == "Script" && !warnedScript_) {
-        warnedScript_ = true;
-        b_.warning(type.pos, "Script nodes are kept but never run");
-    }
     expect(T::LeftBrace, "'{' after " + n->type);
     nodeBody(*n);
     expect(T::RightBrace, "'}' to close " + n->type);
@@ -246,25 +232,10 @@ void ClassicReader::nodeBody(Node& n) {
             field.isReference = std::string(iface.text);
             field.value.type = info.type;
         } else if (!info.known) {
-            const std::string suggestion = b_.suggestField(n, fieldName);
-            if (n.isUnknown()) {
-                // nothing to check against
-            } else if (n.proto && b_.vrml97()) {
-                b_.error(t.pos, "PROTO " + n.type + " has no field '" + fieldName + "'",
-                         suggestion);
-            } else {
-                b_.warning(t.pos,
-                           n.type + " has no field '" + fieldName + "'; it is kept but ignored",
-                           suggestion);
-            }
+            b_.reportUnknownField(n, fieldName, t.pos);
             field.value = unknownValue();
-        } else if (info.eventName || !hasInitialValue(info.access)) {
-            b_.fail(t.pos,
-                    "'" + fieldName + "' is an " + std::string(accessTypeName(info.access)) +
-                        (info.eventName ? " event" : " field") + " of " + n.type +
-                        "; it cannot be given a value in a file",
-                    info.eventName ? "write '" + std::string(info.canonicalName) + "' instead"
-                                   : std::string("send it events with a ROUTE"));
+        } else if (b_.reportUnassignable(n, info, fieldName, t.pos)) {
+            throw StopReading{}; // its value cannot be read without a type to read it as
         } else {
             field.value = value(info.type, t);
         }
@@ -462,48 +433,11 @@ double ClassicReader::number(FieldType single) {
                            " for " + std::string(fieldTypeName(single)) + ", found " + describe(t));
     }
     next();
-    std::string_view s = t.text;
-    const bool integral = single == FieldType::SFInt32 || single == FieldType::SFImage;
     if (single == FieldType::SFBool) b_.fail(t.pos, "expected TRUE or FALSE, found " + describe(t));
-    bool negative = false;
-    std::string_view digits = s;
-    if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) {
-        negative = digits[0] == '-';
-        digits.remove_prefix(1);
-    }
-    if (digits.size() > 2 && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
-        std::uint64_t u = 0;
-        auto [p, ec] = std::from_chars(digits.data() + 2, digits.data() + digits.size(), u, 16);
-        if (ec != std::errc() || u > 0xFFFFFFFFull)
-            b_.fail(t.pos, "hexadecimal number " + std::string(s) + " does not fit in 32 bits");
-        // 0xFFFFFFFF is a pixel, not 4294967295 in a signed field
-        const double v = single == FieldType::SFImage
-                             ? static_cast<double>(u)
-                             : static_cast<double>(static_cast<std::int32_t>(u));
-        return negative ? -v : v;
-    }
-    if (integral) {
-        long long v = 0;
-        auto [p, ec] = std::from_chars(s.data() + (s[0] == '+' ? 1 : 0), s.data() + s.size(), v);
-        if (ec != std::errc() || p != s.data() + s.size())
-            b_.fail(t.pos, "expected a whole number for " + std::string(fieldTypeName(single)) +
-                               ", found " + describe(t));
-        if (single == FieldType::SFInt32 && (v < std::numeric_limits<std::int32_t>::min() ||
-                                             v > std::numeric_limits<std::int32_t>::max()))
-            b_.fail(t.pos, std::string(s) + " does not fit in SFInt32");
-        return static_cast<double>(v);
-    }
     double v = 0;
-    auto [p, ec] = std::from_chars(s.data() + (s[0] == '+' ? 1 : 0), s.data() + s.size(), v);
-    if (ec == std::errc::result_out_of_range) {
-        // underflow to zero is harmless; overflow is not
-        if (std::string_view(s).find_first_of("eE") != std::string_view::npos &&
-            s.find("e-") == std::string_view::npos && s.find("E-") == std::string_view::npos)
-            b_.fail(t.pos, std::string(s) + " is too large for a number");
-        v = 0.0;
-    } else if (ec != std::errc() || p != s.data() + s.size()) {
-        b_.fail(t.pos, "malformed number " + describe(t));
-    }
+    std::string problem;
+    if (!parseNumberText(t.text, single, v, problem))
+        b_.fail(t.pos, problem + " (" + std::string(fieldTypeName(single)) + ")");
     return v;
 }
 

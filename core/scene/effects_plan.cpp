@@ -202,39 +202,10 @@ class Planner {
     std::map<const Node*, std::vector<std::string>> routeNotes_;
 };
 
-std::string jsonEscape(std::string_view s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(c));
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
 std::string num(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.9g", v);
     return buf;
-}
-
-std::string jsonBits(unsigned bits) {
-    std::string out = "[";
-    const char* names[] = {"geometry", "displacement", "colour", "transform", "physics"};
-    bool first = true;
-    for (int i = 0; i < 5; ++i)
-        if (bits & (1u << i)) {
-            out += std::string(first ? "" : ",") + "\"" + names[i] + "\"";
-            first = false;
-        }
-    return out + "]";
 }
 
 } // namespace
@@ -243,12 +214,20 @@ EffectsPlan makeEffectsPlan(const Scene& scene) {
     return Planner(scene).run();
 }
 
+std::vector<std::string_view> timeVaryingNames(unsigned bits) {
+    static constexpr std::string_view kNames[] = {"geometry", "displacement", "colour", "transform",
+                                                  "physics"}; // in bit order
+    std::vector<std::string_view> names;
+    for (unsigned i = 0; i < std::size(kNames); ++i)
+        if (bits & (1u << i)) names.push_back(kNames[i]);
+    return names;
+}
+
 std::string timeVaryingText(unsigned bits) {
     if (bits == kStatic) return "static";
     std::string out;
-    const char* names[] = {"geometry", "displacement", "colour", "transform", "physics"};
-    for (int i = 0; i < 5; ++i)
-        if (bits & (1u << i)) out += std::string(out.empty() ? "" : ", ") + names[i];
+    for (std::string_view name : timeVaryingNames(bits))
+        out += std::string(out.empty() ? "" : ", ") + std::string(name);
     return out;
 }
 
@@ -274,34 +253,6 @@ std::string planText(const EffectsPlan& plan) {
             out += "    " + note + "\n";
     }
     return out;
-}
-
-std::string planJson(const EffectsPlan& plan) {
-    std::string out = "{\"functionShapes\":" + std::to_string(plan.functionShapes) +
-                      ",\"timeVarying\":" + jsonBits(plan.timeVarying) +
-                      ",\"needsHaptics\":" + (plan.needsHaptics ? "true" : "false") +
-                      ",\"usesWallClock\":" + (plan.usesWallClock ? "true" : "false") +
-                      ",\"entries\":[";
-    for (std::size_t i = 0; i < plan.entries.size(); ++i) {
-        const PlanEntry& e = plan.entries[i];
-        out += std::string(i ? "," : "") + "{\"name\":" + jsonEscape(e.name) +
-               ",\"location\":" + jsonEscape(e.location) +
-               ",\"geometry\":" + jsonEscape(e.geometry) +
-               ",\"timeVarying\":" + jsonBits(e.timeVarying) +
-               ",\"usesWallClock\":" + (e.usesWallClock ? "true" : "false") +
-               ",\"appliesToSiblings\":" + (e.appliesToSiblings ? "true" : "false") +
-               ",\"tangible\":[";
-        for (std::size_t j = 0; j < e.tangible.size(); ++j) {
-            const TangibleEffect& t = e.tangible[j];
-            out += std::string(j ? "," : "") + "{\"kind\":" + jsonEscape(t.kind) +
-                   ",\"domainMin\":[" + num(t.domainMin[0]) + "," + num(t.domainMin[1]) + "," +
-                   num(t.domainMin[2]) + "],\"domainMax\":[" + num(t.domainMax[0]) + "," +
-                   num(t.domainMax[1]) + "," + num(t.domainMax[2]) +
-                   "],\"timeVarying\":" + (t.timeVarying ? "true" : "false") + "}";
-        }
-        out += "]}";
-    }
-    return out + "]}";
 }
 
 } // namespace fl::scene

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fl::scene {
@@ -52,8 +53,8 @@ struct EffectsPlan {
 
 EffectsPlan makeEffectsPlan(const Scene& scene);
 
-std::string timeVaryingText(unsigned bits); // "geometry, colour" or "static"
+std::vector<std::string_view> timeVaryingNames(unsigned bits); // {"geometry", "colour"}
+std::string timeVaryingText(unsigned bits);                    // "geometry, colour" or "static"
 std::string planText(const EffectsPlan& plan);
-std::string planJson(const EffectsPlan& plan);
 
 } // namespace fl::scene

@@ -77,14 +77,6 @@ constexpr FieldSpec kFMaterialFields[] = {
     FL_TIMING_FIELDS,
 };
 
-// A displacement (solid texture): added to f for FRep geometry, applied along
-// the normal for parametric geometry.
-constexpr FieldSpec kFTexture3DFields[] = {
-    {"definition", MFString, InputOutput, ""},
-    FL_DOMAIN_FIELDS,
-    FL_TIMING_FIELDS,
-};
-
 constexpr FieldSpec kFPhysicsFields[] = {
     {"surface", SFNode, InputOutput, "NULL"},
     {"density", SFNode, InputOutput, "NULL"},
@@ -96,16 +88,12 @@ constexpr FieldSpec kFSurfaceFields[] = {
     {"tension", SFNode, InputOutput, "NULL"},
 };
 
-// FFriction, FTension and FDensity: one explicit function of x, y, z, t.
-constexpr FieldSpec kScalarPropertyFields[] = {
-    {"definition", MFString, InputOutput, ""},
-    FL_DOMAIN_FIELDS,
-    FL_TIMING_FIELDS,
-};
-
-// fx, fy, fz as functions of x, y, z (or u, v, w: the point mapped into the
-// unit cube of the domain) and t.
-constexpr FieldSpec kFForceFields[] = {
+// FTexture3D (a displacement: added to f for FRep geometry, along the normal
+// for parametric geometry), FFriction, FTension and FDensity (one explicit
+// function of x, y, z, t) and FForce (a script assigning fx, fy, fz): one
+// definition in its own domain, with timing. What each definition must
+// produce is in function_definitions.cpp.
+constexpr FieldSpec kOneDefinitionFields[] = {
     {"definition", MFString, InputOutput, ""},
     FL_DOMAIN_FIELDS,
     FL_TIMING_FIELDS,
@@ -139,16 +127,16 @@ constexpr NodeSpec fn(std::string_view name, std::string_view container,
 // Sorted by name.
 constexpr std::array kFunctionNodes = {
     fn("FAppearance", "appearance", kFAppearanceFields),
-    fn("FDensity", "density", kScalarPropertyFields),
-    fn("FForce", "force", kFForceFields),
-    fn("FFriction", "friction", kScalarPropertyFields),
+    fn("FDensity", "density", kOneDefinitionFields),
+    fn("FForce", "force", kOneDefinitionFields),
+    fn("FFriction", "friction", kOneDefinitionFields),
     fn("FGeometry", "geometry", kFGeometryFields),
     fn("FMaterial", "material", kFMaterialFields),
     fn("FPhysics", "physics", kFPhysicsFields),
     fn("FShape", "children", kFShapeFields),
     fn("FSurface", "surface", kFSurfaceFields),
-    fn("FTension", "tension", kScalarPropertyFields),
-    fn("FTexture3D", "texture", kFTexture3DFields),
+    fn("FTension", "tension", kOneDefinitionFields),
+    fn("FTexture3D", "texture", kOneDefinitionFields),
     fn("FTransform", "children", kFTransformFields),
 };
 

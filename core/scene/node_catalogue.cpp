@@ -26,6 +26,12 @@ const NodeSpec* findNodeSpec(std::string_view typeName) {
     return it != all.end() && it->name == typeName ? &*it : nullptr;
 }
 
+std::string_view eventBaseName(std::string_view name) {
+    if (name.starts_with("set_")) return name.substr(4);
+    if (name.ends_with("_changed")) return name.substr(0, name.size() - 8);
+    return {};
+}
+
 const FieldSpec* findFieldSpec(const NodeSpec& node, std::string_view fieldName,
                                bool* isEventName) {
     if (isEventName) *isEventName = false;
@@ -33,11 +39,7 @@ const FieldSpec* findFieldSpec(const NodeSpec& node, std::string_view fieldName,
         if (f.name == fieldName) return &f;
     if (fieldName == kMetadataField.name) return &kMetadataField;
     // set_name and name_changed address an inputOutput field's events.
-    std::string_view base;
-    if (fieldName.starts_with("set_"))
-        base = fieldName.substr(4);
-    else if (fieldName.ends_with("_changed"))
-        base = fieldName.substr(0, fieldName.size() - 8);
+    const std::string_view base = eventBaseName(fieldName);
     if (base.empty()) return nullptr;
     for (const FieldSpec& f : node.fields)
         if (f.name == base && f.access == AccessType::InputOutput) {

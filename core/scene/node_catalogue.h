@@ -45,6 +45,10 @@ std::span<const NodeSpec> functionNodes();
 // nullptr when the type is not known.
 const NodeSpec* findNodeSpec(std::string_view typeName);
 
+// For an event name of an inputOutput field, the field's name: "set_x" and
+// "x_changed" give "x"; any other name gives an empty view.
+std::string_view eventBaseName(std::string_view name);
+
 // nullptr when the node has no such field. Accepts `metadata` on every node
 // and, for inputOutput fields, the event names `set_name` / `name_changed`
 // (with `isEventName` set so callers can refuse them where only a field name

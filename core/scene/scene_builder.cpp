@@ -1,5 +1,6 @@
 #include "scene_builder.h"
 
+#include "components.h"
 #include "formula/suggest.h"
 
 #include <algorithm>
@@ -95,13 +96,16 @@ void SceneBuilder::pushScope(ProtoDeclaration* proto) {
     scopes_.push_back(std::move(s));
 }
 
-void SceneBuilder::popScope() {
-    Scope& scope = scopes_.back();
+// What can only be checked once a scope's last DEF is known.
+void SceneBuilder::closeScope(Scope& scope) {
     resolveForwardUses(scope);
     for (const auto& r : scope.routes)
         resolveRoute(scope, r);
-    // PROTO declarations stay visible to enclosing scopes' later lookups only
-    // through their owner; drop the scope.
+    scope.routes.clear();
+}
+
+void SceneBuilder::popScope() {
+    closeScope(scopes_.back());
     scopes_.pop_back();
 }
 
@@ -133,17 +137,22 @@ Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
         node->proto = proto; // a PROTO may shadow a built-in type
     } else if (const NodeSpec* spec = findNodeSpec(type)) {
         node->spec = spec;
-    } else if (vrml97()) {
-        // VRML97 has a closed set of node types: an unknown name is a mistake.
-        error(pos, "unknown node type '" + std::string(type) + "'",
-              didYouMean(type, nodeTypeNames()).empty()
-                  ? std::string("VRML97 knows only its own nodes; declare new ones with PROTO")
-                  : didYouMean(type, nodeTypeNames()));
+        if (node->type == "Script" && !warnedScript_) {
+            warnedScript_ = true;
+            warning(pos, "Script nodes are kept but never run");
+        }
     } else {
-        warning(pos,
-                "unknown node type '" + std::string(type) +
-                    "'; it is kept and written back on save, but not shown",
-                didYouMean(type, nodeTypeNames()));
+        const std::string suggestion = didYouMean(type, nodeTypeNames());
+        if (vrml97()) // VRML97 has a closed set of node types: an unknown name is a mistake
+            error(pos, "unknown node type '" + std::string(type) + "'",
+                  suggestion.empty()
+                      ? std::string("VRML97 knows only its own nodes; declare new ones with PROTO")
+                      : suggestion);
+        else
+            warning(pos,
+                    "unknown node type '" + std::string(type) +
+                        "'; it is kept and written back on save, but not shown",
+                    suggestion);
     }
     return node;
 }
@@ -220,7 +229,6 @@ void SceneBuilder::replacePlaceholders() {
     });
     for (Node*& root : scene_.roots)
         root = resolve(root);
-    scene_.forEachNode([&](const Node&) {});
     auto fixProto = [&](auto& self, ProtoDeclaration& p) -> void {
         for (Node*& n : p.body)
             n = resolve(n);
@@ -259,6 +267,47 @@ const ProtoDeclaration* SceneBuilder::findProto(std::string_view name) const {
     return nullptr;
 }
 
+void SceneBuilder::setProfile(std::string profile, FilePos pos) {
+    if (!isKnownProfile(profile))
+        warning(pos, "unknown profile '" + profile + "'",
+                "profiles are Core, Interchange, Interactive, Immersive, Full");
+    scene_.profile = std::move(profile);
+}
+
+void SceneBuilder::addComponent(std::string name, int level, std::string_view levelText,
+                                FilePos namePos, FilePos levelPos) {
+    std::optional<int> max = componentMaxLevel(name);
+    if (!max)
+        warning(namePos, "unknown component '" + name + "'");
+    else if (level < 1 || level > *max)
+        error(levelPos, "component " + name + " has levels 1 to " + std::to_string(*max) +
+                            ", not " + std::string(levelText));
+    scene_.components.push_back({std::move(name), level});
+}
+
+void SceneBuilder::reportUnknownField(const Node& node, std::string_view name, FilePos pos) {
+    if (node.isUnknown()) return; // nothing to check against
+    const std::string suggestion = suggestField(node, name);
+    if (node.proto && vrml97())
+        error(pos, "PROTO " + node.type + " has no field '" + std::string(name) + "'", suggestion);
+    else
+        warning(pos,
+                node.type + " has no field '" + std::string(name) + "'; it is kept but ignored",
+                suggestion);
+}
+
+bool SceneBuilder::reportUnassignable(const Node& node, const FieldInfo& field,
+                                      std::string_view name, FilePos pos) {
+    if (!field.eventName && hasInitialValue(field.access)) return false;
+    error(pos,
+          "'" + std::string(name) + "' is an " + std::string(accessTypeName(field.access)) +
+              (field.eventName ? " event" : " field") + " of " + node.type +
+              "; it cannot be given a value in a file",
+          field.eventName ? "write '" + std::string(field.canonicalName) + "' instead"
+                          : std::string("send it events with a ROUTE"));
+    return true;
+}
+
 FieldInfo SceneBuilder::fieldInfo(const Node& node, std::string_view name) const {
     FieldInfo info;
     if (node.spec) {
@@ -274,11 +323,7 @@ FieldInfo SceneBuilder::fieldInfo(const Node& node, std::string_view name) const
         const ProtoDeclaration& p = *node.proto;
         if (const FieldDeclaration* d = p.interfaceField(name))
             return {d->type, d->access, true, false, d->name};
-        std::string_view base;
-        if (name.starts_with("set_"))
-            base = name.substr(4);
-        else if (name.ends_with("_changed"))
-            base = name.substr(0, name.size() - 8);
+        const std::string_view base = eventBaseName(name);
         if (!base.empty())
             if (const FieldDeclaration* d = p.interfaceField(base);
                 d && d->access == AccessType::InputOutput)
@@ -402,11 +447,7 @@ void SceneBuilder::resolveRoute(Scope& scope, const Scope::PendingRoute& r) {
 void SceneBuilder::finish() {
     while (scopes_.size() > 1)
         popScope(); // a reader stopped inside a PROTO body
-    Scope& top = scopes_.back();
-    resolveForwardUses(top);
-    for (const auto& r : top.routes)
-        resolveRoute(top, r);
-    top.routes.clear();
+    closeScope(scopes_.back());
     replacePlaceholders();
     if (!hasErrors()) expandInstances();
 }

@@ -56,7 +56,19 @@ class SceneBuilder {
     void declareImport(std::string_view name, FilePos pos);
     const ProtoDeclaration* findProto(std::string_view name) const;
 
+    // Header statements both encodings share.
+    void setProfile(std::string profile, FilePos pos);
+    void addComponent(std::string name, int level, std::string_view levelText, FilePos namePos,
+                      FilePos levelPos);
+
     FieldInfo fieldInfo(const Node& node, std::string_view name) const;
+    // A field the node's type does not have: a warning (kept, ignored), an
+    // error for PROTO instances in VRML97, nothing for unknown node types.
+    void reportUnknownField(const Node& node, std::string_view name, FilePos pos);
+    // True (with an error reported) when the file may not give this field a
+    // value: an event name, or an inputOnly/outputOnly field.
+    bool reportUnassignable(const Node& node, const FieldInfo& field, std::string_view name,
+                            FilePos pos);
     std::string suggestField(const Node& node, std::string_view name) const;
 
     // Checks an `IS` between a node's field and the current PROTO's interface.
@@ -93,6 +105,7 @@ class SceneBuilder {
     void resolveRoute(Scope& scope, const Scope::PendingRoute& r);
     Node* cloneForInstance(Node& original, const Node& instance, std::size_t depth,
                            std::unordered_map<const Node*, Node*>& clones);
+    void closeScope(Scope& scope);
     void resolveForwardUses(Scope& scope);
     void expandInstances();
     void expand(Node& instance, std::size_t depth);
@@ -109,6 +122,7 @@ class SceneBuilder {
     std::size_t expandedNodes_ = 0;
     std::size_t errorCount_ = 0;
     std::unordered_map<std::string, int> warningCounts_;
+    bool warnedScript_ = false;
 };
 
 std::string_view encodingName(Encoding encoding);

@@ -107,6 +107,7 @@ class Writer {
     std::string classicNodeRef(const Node* n, int depth); // "USE X" or a node written inline
     void classicNodeBody(const Node& n, int depth);
     std::string classicValue(const FieldValue& v, int depth);
+    std::string classicNodeList(const std::vector<Node*>& nodes, int depth); // "[ ... ]"
     void classicRoute(const Route& r, int depth);
 
     // --- XML
@@ -235,31 +236,26 @@ void Writer::classicNodeBody(const Node& n, int depth) {
     }
 }
 
+std::string Writer::classicNodeList(const std::vector<Node*>& nodes, int depth) {
+    std::string out = "[\n";
+    for (const Node* child : nodes) {
+        out.append(static_cast<std::size_t>(depth + 1) * 2, ' ');
+        out += classicNodeRef(child, depth + 1) + "\n";
+    }
+    out.append(static_cast<std::size_t>(depth) * 2, ' ');
+    return out + "]";
+}
+
 std::string Writer::classicValue(const FieldValue& v, int depth) {
     if (v.type == FieldType::Unknown) {
-        if (!v.nodes.empty()) {
-            std::string out = "[\n";
-            for (const Node* child : v.nodes) {
-                out.append(static_cast<std::size_t>(depth + 1) * 2, ' ');
-                out += classicNodeRef(child, depth + 1) + "\n";
-            }
-            out.append(static_cast<std::size_t>(depth) * 2, ' ');
-            return out + "]";
-        }
+        if (!v.nodes.empty()) return classicNodeList(v.nodes, depth);
         const std::string raw = v.strings.empty() ? std::string() : v.strings.front();
         return looksLikeClassicValue(raw) ? raw : quoteClassic(raw);
     }
     if (holdsNodes(v.type)) {
         if (v.type == FieldType::SFNode)
             return v.nodes.empty() ? "NULL" : classicNodeRef(v.nodes.front(), depth);
-        if (v.nodes.empty()) return "[]";
-        std::string out = "[\n";
-        for (const Node* child : v.nodes) {
-            out.append(static_cast<std::size_t>(depth + 1) * 2, ' ');
-            out += classicNodeRef(child, depth + 1) + "\n";
-        }
-        out.append(static_cast<std::size_t>(depth) * 2, ' ');
-        return out + "]";
+        return v.nodes.empty() ? "[]" : classicNodeList(v.nodes, depth);
     }
     if (holdsStrings(v.type)) {
         if (v.type == FieldType::SFString)
@@ -524,59 +520,29 @@ std::string writeScene(const Scene& scene, Encoding encoding) {
 }
 
 bool encodingForPath(const std::string& path, Encoding& encoding, bool& gzipped) {
-    auto ends = [&](std::string_view suffix) {
-        if (path.size() < suffix.size()) return false;
-        for (std::size_t i = 0; i < suffix.size(); ++i)
-            if (std::tolower(static_cast<unsigned char>(path[path.size() - suffix.size() + i])) !=
-                suffix[i])
-                return false;
-        return true;
+    std::string lower(path);
+    for (char& c : lower)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    struct Suffix {
+        std::string_view text;
+        Encoding encoding;
+        bool gzipped;
     };
-    std::string p = path;
+    // No suffix ends another one, so the order does not matter.
+    static constexpr Suffix kSuffixes[] = {
+        {".x3d.gz", Encoding::Xml, true},        {".x3dv.gz", Encoding::ClassicVrml, true},
+        {".wrl.gz", Encoding::Vrml97, true},     {".x3dz", Encoding::Xml, true},
+        {".x3dvz", Encoding::ClassicVrml, true}, {".wrz", Encoding::Vrml97, true},
+        {".x3d", Encoding::Xml, false},          {".x3dv", Encoding::ClassicVrml, false},
+        {".wrl", Encoding::Vrml97, false},
+    };
+    for (const Suffix& s : kSuffixes)
+        if (lower.ends_with(s.text)) {
+            encoding = s.encoding;
+            gzipped = s.gzipped;
+            return true;
+        }
     gzipped = false;
-    if (ends(".gz")) {
-        gzipped = true;
-        p = path.substr(0, path.size() - 3);
-    }
-    const std::string saved = path;
-    auto endsP = [&](std::string_view suffix) {
-        if (p.size() < suffix.size()) return false;
-        for (std::size_t i = 0; i < suffix.size(); ++i)
-            if (std::tolower(static_cast<unsigned char>(p[p.size() - suffix.size() + i])) !=
-                suffix[i])
-                return false;
-        return true;
-    };
-    (void)saved;
-    if (endsP(".x3d")) {
-        encoding = Encoding::Xml;
-        return true;
-    }
-    if (endsP(".x3dv")) {
-        encoding = Encoding::ClassicVrml;
-        return true;
-    }
-    if (endsP(".wrl")) {
-        encoding = Encoding::Vrml97;
-        return true;
-    }
-    if (!gzipped) {
-        if (endsP(".x3dz")) {
-            encoding = Encoding::Xml;
-            gzipped = true;
-            return true;
-        }
-        if (endsP(".x3dvz")) {
-            encoding = Encoding::ClassicVrml;
-            gzipped = true;
-            return true;
-        }
-        if (endsP(".wrz")) {
-            encoding = Encoding::Vrml97;
-            gzipped = true;
-            return true;
-        }
-    }
     return false;
 }
 

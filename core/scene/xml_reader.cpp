@@ -1,6 +1,5 @@
 #include "xml_reader.h"
 
-#include "components.h"
 #include "field_access.h"
 #include "source_map.h"
 
@@ -86,7 +85,6 @@ class XmlReader {
     LineIndex lines_;
     FilePos tagPos_;
     std::vector<Attr> attrs_;
-    bool warnedScript_ = false;
 };
 
 void XmlReader::buildOffsetMap() {
@@ -205,13 +203,11 @@ void XmlReader::readFile() {
     Scene& s = b_.scene();
     s.encoding = Encoding::Xml;
     s.version = attrValue("version");
-    s.profile = attrValue("profile");
-    if (s.profile.empty())
+    if (attrValue("profile").empty())
         b_.error(tagPos_, "<X3D> needs a profile attribute",
                  "write <X3D profile='Immersive' version='3.3'>");
-    else if (!isKnownProfile(s.profile))
-        b_.warning(tagPos_, "unknown profile '" + s.profile + "'",
-                   "profiles are Core, Interchange, Interactive, Immersive, Full");
+    else
+        b_.setProfile(attrValue("profile"), tagPos_);
     bool sawScene = false;
     while (nextChild()) {
         if (xml_.name() == u"head") {
@@ -253,13 +249,7 @@ void XmlReader::headElement() {
             } catch (...) {
                 level = 0;
             }
-            std::optional<int> max = componentMaxLevel(name);
-            if (!max)
-                b_.warning(tagPos_, "unknown component '" + name + "'");
-            else if (level < 1 || level > *max)
-                b_.error(tagPos_, "component " + name + " has levels 1 to " + std::to_string(*max) +
-                                      ", not " + attrValue("level"));
-            s.components.push_back({name, level});
+            b_.addComponent(name, level, attrValue("level"), tagPos_, tagPos_);
         } else if (xml_.name() == u"meta") {
             s.meta.emplace_back(attrValue("name"), attrValue("content"));
         } else if (xml_.name() == u"unit") {
@@ -316,10 +306,6 @@ Node* XmlReader::nodeElement() {
     b_.enterNode(pos);
     Node* n = b_.newNode(type, pos);
     if (const Attr* def = attr("DEF")) b_.define(n, def->value, def->pos);
-    if (n->type == "Script" && !warnedScript_) {
-        warnedScript_ = true;
-        b_.warning(pos, "Script nodes are kept but never run");
-    }
     for (const Attr& a : attrs_) {
         if (a.name == "DEF" || a.name == "containerField") {
             if (a.name == "containerField") n->containerField = a.value;
@@ -342,17 +328,9 @@ void XmlReader::setAttributeField(Node& n, const Attr& a) {
     field.file = b_.file();
     if (!info.known) {
         const bool htmlAttribute = a.name == "class" || a.name == "id" || a.name == "style";
-        if (!n.isUnknown() && !htmlAttribute)
-            b_.warning(a.pos, n.type + " has no field '" + a.name + "'; it is kept but ignored",
-                       b_.suggestField(n, a.name));
+        if (!htmlAttribute) b_.reportUnknownField(n, a.name, a.pos);
         parseValue(a, FieldType::Unknown, field.value);
-    } else if (info.eventName || !hasInitialValue(info.access)) {
-        b_.error(a.pos,
-                 "'" + a.name + "' is an " + std::string(accessTypeName(info.access)) +
-                     (info.eventName ? " event" : " field") + " of " + n.type +
-                     "; it cannot be given a value in a file",
-                 info.eventName ? "write '" + std::string(info.canonicalName) + "' instead"
-                                : std::string("send it events with a ROUTE"));
+    } else if (b_.reportUnassignable(n, info, a.name, a.pos)) {
         return;
     } else if (!parseValue(a, info.type, field.value)) {
         return;
@@ -533,8 +511,7 @@ void XmlReader::fieldValueElement(Node& instance) {
     field.file = b_.file();
     field.value.type = info.type;
     if (!info.known) {
-        b_.warning(pos, instance.type + " has no field '" + name + "'; it is kept but ignored",
-                   b_.suggestField(instance, name));
+        b_.reportUnknownField(instance, name, pos);
         field.value.type = FieldType::Unknown;
     }
     if (const Attr* v = attr("value"))

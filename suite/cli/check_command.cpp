@@ -34,6 +34,43 @@ std::string diagnosticJson(const scene::SceneDiagnostic& d) {
            "}";
 }
 
+std::string vectorJson(const std::array<double, 3>& v) {
+    return "[" + jsonNumber(v[0]) + "," + jsonNumber(v[1]) + "," + jsonNumber(v[2]) + "]";
+}
+
+std::string timeVaryingJson(unsigned bits) {
+    std::string out = "[";
+    for (std::string_view name : scene::timeVaryingNames(bits))
+        out += (out.size() > 1 ? "," : "") + jsonString(name);
+    return out + "]";
+}
+
+std::string planJson(const scene::EffectsPlan& plan) {
+    auto boolean = [](bool b) { return std::string(b ? "true" : "false"); };
+    std::string out = "{\"functionShapes\":" + std::to_string(plan.functionShapes) +
+                      ",\"timeVarying\":" + timeVaryingJson(plan.timeVarying) +
+                      ",\"needsHaptics\":" + boolean(plan.needsHaptics) +
+                      ",\"usesWallClock\":" + boolean(plan.usesWallClock) + ",\"entries\":[";
+    for (std::size_t i = 0; i < plan.entries.size(); ++i) {
+        const scene::PlanEntry& e = plan.entries[i];
+        out += std::string(i ? "," : "") + "{\"name\":" + jsonString(e.name) +
+               ",\"location\":" + jsonString(e.location) +
+               ",\"geometry\":" + jsonString(e.geometry) +
+               ",\"timeVarying\":" + timeVaryingJson(e.timeVarying) +
+               ",\"usesWallClock\":" + boolean(e.usesWallClock) +
+               ",\"appliesToSiblings\":" + boolean(e.appliesToSiblings) + ",\"tangible\":[";
+        for (std::size_t j = 0; j < e.tangible.size(); ++j) {
+            const scene::TangibleEffect& t = e.tangible[j];
+            out += std::string(j ? "," : "") + "{\"kind\":" + jsonString(t.kind) +
+                   ",\"domainMin\":" + vectorJson(t.domainMin) +
+                   ",\"domainMax\":" + vectorJson(t.domainMax) +
+                   ",\"timeVarying\":" + boolean(t.timeVarying) + "}";
+        }
+        out += "]}";
+    }
+    return out + "]}";
+}
+
 } // namespace
 
 int checkCommand(const Args& args) {
@@ -69,7 +106,7 @@ int checkCommand(const Args& args) {
         for (std::size_t i = 0; i < r.diagnostics.size(); ++i)
             out += (i ? "," : "") + diagnosticJson(r.diagnostics[i]);
         out += "]";
-        if (plan && r.ok()) out += ",\"plan\":" + scene::planJson(scene::makeEffectsPlan(*r.scene));
+        if (plan && r.ok()) out += ",\"plan\":" + planJson(scene::makeEffectsPlan(*r.scene));
         std::cout << out << "}\n";
     } else {
         for (const auto& d : r.diagnostics)
