@@ -358,19 +358,7 @@ void ClassicReader::interface(ProtoDeclaration& p, bool external) {
         d.access = *access;
         d.where = nameTok.pos;
         d.value.type = *type;
-        for (const FieldDeclaration& other : p.interface) {
-            const bool clash =
-                other.name == d.name ||
-                (other.access == AccessType::InputOutput &&
-                 (d.name == "set_" + other.name || d.name == other.name + "_changed")) ||
-                (d.access == AccessType::InputOutput &&
-                 (other.name == "set_" + d.name || other.name == d.name + "_changed"));
-            if (clash)
-                b_.error(nameTok.pos,
-                         "interface field '" + d.name + "' of " + p.name + " clashes with '" +
-                             other.name + "'",
-                         "an exposedField x already has the events set_x and x_changed");
-        }
+        b_.checkInterfaceField(p, d, nameTok.pos);
         if (!external && hasInitialValue(*access)) {
             b_.pushScope(nullptr); // a default value is a scope of its own
             d.value = value(*type, nameTok);

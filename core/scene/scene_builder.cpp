@@ -285,6 +285,20 @@ void SceneBuilder::addComponent(std::string name, int level, std::string_view le
     scene_.components.push_back({std::move(name), level});
 }
 
+void SceneBuilder::checkInterfaceField(const ProtoDeclaration& proto, const FieldDeclaration& d,
+                                       FilePos pos) {
+    auto eventOf = [](const FieldDeclaration& a, const FieldDeclaration& b) {
+        return a.access == AccessType::InputOutput &&
+               (b.name == "set_" + a.name || b.name == a.name + "_changed");
+    };
+    for (const FieldDeclaration& other : proto.interface)
+        if (other.name == d.name || eventOf(other, d) || eventOf(d, other))
+            error(pos,
+                  "interface field '" + d.name + "' of " + proto.name + " clashes with '" +
+                      other.name + "'",
+                  "an exposedField x already has the events set_x and x_changed");
+}
+
 void SceneBuilder::reportUnknownField(const Node& node, std::string_view name, FilePos pos) {
     if (node.isUnknown()) return; // nothing to check against
     const std::string suggestion = suggestField(node, name);

@@ -61,6 +61,11 @@ class SceneBuilder {
     void addComponent(std::string name, int level, std::string_view levelText, FilePos namePos,
                       FilePos levelPos);
 
+    // A new PROTO interface field may not repeat a name, nor an event name
+    // (set_x, x_changed) of an inputOutput field, already declared.
+    void checkInterfaceField(const ProtoDeclaration& proto, const FieldDeclaration& field,
+                             FilePos pos);
+
     FieldInfo fieldInfo(const Node& node, std::string_view name) const;
     // A field the node's type does not have: a warning (kept, ignored), an
     // error for PROTO instances in VRML97, nothing for unknown node types.

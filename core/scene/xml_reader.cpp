@@ -550,9 +550,7 @@ void XmlReader::protoDeclare(bool external) {
     bool sawBody = false;
     auto readInterfaceField = [&] {
         FieldDeclaration d = fieldElement(external, true);
-        for (const FieldDeclaration& other : p->interface)
-            if (other.name == d.name)
-                b_.error(d.where, "interface field '" + d.name + "' is declared twice");
+        b_.checkInterfaceField(*p, d, d.where);
         p->interface.push_back(std::move(d));
     };
     while (nextChild()) {
