@@ -90,6 +90,9 @@ struct Node {
     std::vector<Node*> expansion;
     std::vector<struct Route> expansionRoutes; // the body's ROUTEs, between expanded nodes
     bool inProtoBody = false;                  // part of a PROTO body (a template, not shown)
+    // For a node of an expansion: the PROTO instance it was made for (its IS
+    // fields connect to that instance's interface). Null elsewhere.
+    const Node* instance = nullptr;
     // USE of a name not yet DEF'd (X3D allows it): resolved when the file ends.
     std::string forwardUse;
 

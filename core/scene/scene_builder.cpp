@@ -519,6 +519,7 @@ Node* SceneBuilder::cloneForInstance(Node& original, const Node& instance, std::
     copy->where = original.where;
     copy->file = original.file;
     copy->inProtoBody = false;
+    copy->instance = &instance;
     copy->declarations = original.declarations;
     copy->fields = original.fields;
     const ProtoDeclaration& proto = instance.proto->definition();

@@ -4,6 +4,7 @@
 #include "cli/exit_codes.h"
 #include "cli/json.h"
 
+#include "animation/animator.h"
 #include "scene/effects_plan.h"
 #include "scene/scene_reader.h"
 
@@ -100,9 +101,21 @@ int checkCommand(const Args& args) {
         return kExitUsage;
     }
     scene::ReadResult r = scene::readSceneFile(file);
+    if (r.ok()) {
+        // Wiring the animation finds what only running it would show
+        // (interpolator keys it cannot use, UTC times sent into scene time).
+        const animation::Animator animator(*r.scene);
+        r.diagnostics.insert(r.diagnostics.end(), animator.diagnostics().begin(),
+                             animator.diagnostics().end());
+    }
     if (json) {
-        std::string out = "{\"file\":" + jsonString(file) +
-                          ",\"loaded\":" + (r.ok() ? "true" : "false") + ",\"diagnostics\":[";
+        // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug
+        // 105329) about literal + std::string chains here.
+        std::string out = "{\"file\":";
+        out += jsonString(file);
+        out += ",\"loaded\":";
+        out += r.ok() ? "true" : "false";
+        out += ",\"diagnostics\":[";
         for (std::size_t i = 0; i < r.diagnostics.size(); ++i)
             out += (i ? "," : "") + diagnosticJson(r.diagnostics[i]);
         out += "]";
