@@ -151,7 +151,7 @@ TEST(Gzip, CompressedFilesReadLikePlainOnes) {
 }
 
 TEST(Garbage, NeverCrashesAndSaysWhere) {
-    for (const std::string text :
+    for (const std::string& text :
          {std::string("\0\1\2", 3),
           std::string("#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry"),
           std::string("<X3D profile='Full'><Scene><Shape>"), std::string("#VRML V2.0 utf8\n\"open"),
