@@ -6,6 +6,7 @@
 #include "time_sensor.h"
 #include "time_window.h"
 
+#include <algorithm>
 #include <deque>
 #include <limits>
 #include <set>
@@ -126,6 +127,11 @@ struct Animator::Impl final : ResponseContext {
     }
 
     void wire() {
+        for (const scene::Scene* s : scene::scenesShownBy(scene))
+            wireScene(*s);
+    }
+
+    void wireScene(const scene::Scene& scene) {
         for (const scene::Route& r : scene.routes)
             addRoute(r);
         scene.forEachNode([&](const Node& n) {
@@ -167,6 +173,11 @@ struct Animator::Impl final : ResponseContext {
     }
 
     void checkScene() {
+        for (const scene::Scene* s : scene::scenesShownBy(scene))
+            checkScene(*s);
+    }
+
+    void checkScene(const scene::Scene& scene) {
         scene.forEachNode([&](const Node& n) {
             if (!isLive(n) || n.instance) return; // expansions: warned once, at the body
             if (const auto kind = interpolatorKind(n.type)) {

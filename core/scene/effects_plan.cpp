@@ -89,12 +89,14 @@ class Planner {
                                           r.fromField + " TO " + r.toField);
             }
         };
-        for (const Route& r : scene_.routes)
-            add(r);
-        scene_.forEachNode([&](const Node& n) {
-            for (const Route& r : n.expansionRoutes)
+        for (const Scene* s : scenesShownBy(scene_)) {
+            for (const Route& r : s->routes)
                 add(r);
-        });
+            s->forEachNode([&](const Node& n) {
+                for (const Route& r : n.expansionRoutes)
+                    add(r);
+            });
+        }
     }
 
     void visit(const Node* raw) {
@@ -109,6 +111,9 @@ class Planner {
         for (const Field& f : n->fields)
             for (const Node* child : f.value.nodes)
                 visit(child);
+        if (n->inlined)
+            for (const Node* root : n->inlined->roots)
+                visit(root);
     }
 
     PlanEntry entryFor(const Node& n) {

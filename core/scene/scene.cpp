@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include <algorithm>
+
 namespace fl::scene {
 
 std::size_t FieldValue::elementCount() const {
@@ -30,6 +32,8 @@ const FieldDeclaration* ProtoDeclaration::interfaceField(std::string_view fieldN
 const formula::Tape* Scene::definition(const Node& node, std::string_view field) const {
     for (const CompiledDefinition& d : definitions)
         if (d.node == &node && d.field == field) return &d.tape;
+    for (const auto& child : referenced) // a node of an Inline's scene
+        if (const formula::Tape* tape = child->definition(node, field)) return tape;
     return nullptr;
 }
 
@@ -41,6 +45,49 @@ Node* Scene::newNode() {
 ProtoDeclaration* Scene::newProto() {
     protos_.push_back(std::make_unique<ProtoDeclaration>());
     return protos_.back().get();
+}
+
+std::vector<const Scene*> scenesShownBy(const Scene& scene) {
+    std::vector<const Scene*> all{&scene};
+    for (std::size_t i = 0; i < all.size(); ++i)
+        all[i]->forEachNode([&](const Node& n) {
+            if (n.inlined && !n.inProtoBody &&
+                std::find(all.begin(), all.end(), n.inlined) == all.end())
+                all.push_back(n.inlined);
+        });
+    return all;
+}
+
+void Scene::shiftFileIndices(int offset) {
+    auto shift = [offset](int& file) {
+        if (file >= 0) file += offset;
+    };
+    auto shiftRoutes = [&](std::vector<Route>& routes) {
+        for (Route& r : routes)
+            shift(r.file);
+    };
+    for (auto& n : nodes_) {
+        shift(n->file);
+        for (Field& f : n->fields) {
+            shift(f.file);
+            for (StringOrigin& o : f.value.stringOrigins)
+                shift(o.file);
+        }
+        for (FieldDeclaration& d : n->declarations)
+            for (StringOrigin& o : d.value.stringOrigins)
+                shift(o.file);
+        shiftRoutes(n->expansionRoutes);
+    }
+    for (auto& p : protos_) {
+        shift(p->file);
+        shiftRoutes(p->routes);
+        for (FieldDeclaration& d : p->interface)
+            for (StringOrigin& o : d.value.stringOrigins)
+                shift(o.file);
+    }
+    shiftRoutes(routes);
+    for (auto& child : referenced)
+        child->shiftFileIndices(offset);
 }
 
 } // namespace fl::scene

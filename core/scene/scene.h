@@ -19,6 +19,7 @@ namespace fl::scene {
 
 struct Node;
 struct ProtoDeclaration;
+struct Scene;
 
 enum class Encoding { Vrml97, ClassicVrml, Xml };
 
@@ -93,6 +94,9 @@ struct Node {
     // For a node of an expansion: the PROTO instance it was made for (its IS
     // fields connect to that instance's interface). Null elsewhere.
     const Node* instance = nullptr;
+    // An Inline whose url was loaded: the scene it shows (owned by the scene
+    // that holds this node, in `referenced`). Null when not loaded.
+    const Scene* inlined = nullptr;
     // USE of a name not yet DEF'd (X3D allows it): resolved when the file ends.
     std::string forwardUse;
 
@@ -167,8 +171,13 @@ struct Scene {
     std::vector<KeptStatement> imports;
     std::vector<KeptStatement> exports;
 
-    std::vector<SourceFile> files; // files[0] is the scene file itself
+    // files[0] is the scene file itself; files of Inline and EXTERNPROTO
+    // references follow, so every node's `file` indexes this one table.
+    std::vector<SourceFile> files;
+    // Scenes loaded for Inline nodes and EXTERNPROTO declarations, owned here.
+    std::vector<std::unique_ptr<Scene>> referenced;
     // Every definition of every function node outside PROTO bodies.
+    // `definition()` also finds those of the scenes Inlines show.
     std::vector<CompiledDefinition> definitions;
     const formula::Tape* definition(const Node& node, std::string_view field) const;
 
@@ -185,12 +194,23 @@ struct Scene {
         for (const auto& n : nodes_)
             f(*n);
     }
+    template <class F>
+    void forEachNode(F&& f) {
+        for (auto& n : nodes_)
+            f(*n);
+    }
     ProtoDeclaration* newProto();
     std::size_t nodeCount() const { return nodes_.size(); }
+    // Adds `offset` to every file index this scene and the scenes it
+    // references hold: what moving its files into another scene's table takes.
+    void shiftFileIndices(int offset);
 
   private:
     std::deque<std::unique_ptr<Node>> nodes_;
     std::deque<std::unique_ptr<ProtoDeclaration>> protos_;
 };
+
+// The scene and every scene its Inlines show, each once, the scene first.
+std::vector<const Scene*> scenesShownBy(const Scene& scene);
 
 } // namespace fl::scene

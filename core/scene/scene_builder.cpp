@@ -463,7 +463,23 @@ void SceneBuilder::finish() {
         popScope(); // a reader stopped inside a PROTO body
     closeScope(scopes_.back());
     replacePlaceholders();
-    if (!hasErrors()) expandInstances();
+    if (hasErrors()) return;
+    resolveExternProtos();
+    expandInstances();
+}
+
+void SceneBuilder::resolveExternProtos() {
+    std::vector<ProtoDeclaration*> stack(scene_.protos.begin(), scene_.protos.end());
+    while (!stack.empty()) {
+        ProtoDeclaration* p = stack.back();
+        stack.pop_back();
+        stack.insert(stack.end(), p->protos.begin(), p->protos.end());
+        if (!p->external || p->resolved) continue;
+        const std::string why = resolveExtern_ ? resolveExtern_(*p) : "no file to look in";
+        if (!why.empty())
+            warning(p->where, "EXTERNPROTO " + p->name + " not loaded: " + why +
+                                  "; its instances show nothing");
+    }
 }
 
 void SceneBuilder::expandInstances() {

@@ -6,6 +6,7 @@
 #include "read_limits.h"
 #include "scene.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -86,7 +87,13 @@ class SceneBuilder {
     void enterNode(FilePos pos); // nesting depth
     void leaveNode();
 
-    // End of file: forward USEs, PROTO expansion.
+    // Loads what an EXTERNPROTO names (sets `resolved`); returns why not.
+    using ExternProtoResolver = std::function<std::string(ProtoDeclaration&)>;
+    void setExternProtoResolver(ExternProtoResolver resolver) {
+        resolveExtern_ = std::move(resolver);
+    }
+
+    // End of file: forward USEs, EXTERNPROTOs, PROTO expansion.
     void finish();
 
   private:
@@ -112,6 +119,7 @@ class SceneBuilder {
                            std::unordered_map<const Node*, Node*>& clones);
     void closeScope(Scope& scope);
     void resolveForwardUses(Scope& scope);
+    void resolveExternProtos();
     void expandInstances();
     void expand(Node& instance, std::size_t depth);
     void replacePlaceholders();
@@ -123,6 +131,7 @@ class SceneBuilder {
     std::vector<Scope> scopes_;
     std::unordered_map<Node*, Node*> resolvedPlaceholders_;
     std::size_t depth_ = 0;
+    ExternProtoResolver resolveExtern_;
     std::size_t nodesCreated_ = 0;
     std::size_t expandedNodes_ = 0;
     std::size_t errorCount_ = 0;

@@ -4,6 +4,7 @@
 #include "function_definitions.h"
 #include "gzip.h"
 #include "scene_builder.h"
+#include "scene_references.h"
 #include "xml_reader.h"
 
 #include <QString>
@@ -23,6 +24,11 @@ ReadResult failWith(const std::string& path, std::string message, std::string su
 } // namespace
 
 ReadResult readSceneBytes(std::string bytes, const std::string& path, const ReadOptions& options) {
+    return readSceneIn(std::move(bytes), path, options, nullptr, {});
+}
+
+ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOptions& options,
+                       ReferenceContext* context, const std::filesystem::path& baseDir) {
     if (bytes.size() > options.limits.maxFileBytes)
         return failWith(path, "the file is larger than " +
                                   std::to_string(options.limits.maxFileBytes >> 20) + " MiB");
@@ -52,6 +58,10 @@ ReadResult readSceneBytes(std::string bytes, const std::string& path, const Read
     scene->files.push_back({path, std::move(bytes)});
     const std::string& text = scene->files[0].text;
     SceneBuilder builder(*scene, 0, options.limits, result.diagnostics);
+    ReferenceLoader references(options.followReferences ? context : nullptr, *scene, baseDir,
+                               options, result.diagnostics);
+    builder.setExternProtoResolver(
+        [&](ProtoDeclaration& proto) { return references.resolveExternProto(proto); });
     try {
         if (looksLikeClassic(text)) {
             readClassic(builder);
@@ -68,6 +78,7 @@ ReadResult readSceneBytes(std::string bytes, const std::string& path, const Read
         return result;
     }
     if (builder.hasErrors()) return result;
+    references.resolveInlines();
     if (options.compileFunctions) {
         compileFunctionDefinitions(*scene, result.diagnostics);
         if (hasErrors(result.diagnostics)) return result;
@@ -89,7 +100,14 @@ ReadResult readSceneFile(const std::filesystem::path& path, const ReadOptions& o
                                   std::to_string(options.limits.maxFileBytes >> 20) + " MiB");
     std::ostringstream content;
     content << in.rdbuf();
-    return readSceneBytes(std::move(content).str(), name, options);
+    // References are followed inside the folder the scene file is in.
+    ReferenceContext context;
+    context.bytesRead = ec ? 0 : std::size_t(size);
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    context.root = canonical.parent_path();
+    context.displayRoot = path.parent_path();
+    context.loading.push_back(canonical);
+    return readSceneIn(std::move(content).str(), name, options, &context, context.root);
 }
 
 } // namespace fl::scene

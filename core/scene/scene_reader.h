@@ -15,6 +15,9 @@ namespace fl::scene {
 struct ReadOptions {
     ReadLimits limits;
     bool compileFunctions = true; // compile every FGeometry/FMaterial/... definition
+    // Load Inline and EXTERNPROTO urls (files in the scene's folder tree only;
+    // a scene read from bytes has no folder, so nothing is followed there).
+    bool followReferences = true;
 };
 
 struct ReadResult {

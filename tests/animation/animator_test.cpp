@@ -7,7 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 
 using namespace fl::animation;
@@ -337,4 +341,23 @@ TEST(AnimatedExamples, SharkTailSwingsAndItsForceKeepsStep) {
     });
     ASSERT_NE(force, nullptr);
     EXPECT_DOUBLE_EQ(a.time(*force), 0.2);
+}
+
+TEST(Animator, RunsTheAnimationsOfInlinedScenes) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("functionlab-anim-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "part.x3dv") << "#X3D V3.3 utf8\nPROFILE Full\n" << kMover;
+    std::ofstream(dir / "top.x3dv")
+        << "#X3D V3.3 utf8\nPROFILE Full\nInline { url \"part.x3dv\" }\n";
+    auto r = fl::scene::readSceneFile(dir / "top.x3dv");
+    fs::remove_all(dir);
+    ASSERT_TRUE(r.ok());
+    Animator a(*r.scene);
+    EXPECT_EQ(a.timeSensorCount(), 1u);
+    a.tick(at(1001));
+    const auto shown = fl::scene::scenesShownBy(*r.scene);
+    ASSERT_EQ(shown.size(), 2u);
+    EXPECT_EQ(numbers(a, byName(*shown[1], "T"), "translation"), (std::vector<double>{1, 0, 0}));
 }
