@@ -177,13 +177,13 @@ class Compiler {
         };
         switch (kind()) {
         case DefinitionKind::Implicit:
-        case DefinitionKind::Force:
             allow({Input::X, Input::Y, Input::Z, Input::T});
             break;
         case DefinitionKind::Parametric:
             allow({Input::U, Input::V, Input::W, Input::T});
             break;
         case DefinitionKind::Colour:
+        case DefinitionKind::Force: // u, v, w: the point in the force's unit domain
         case DefinitionKind::Generic:
             allow({Input::X, Input::Y, Input::Z, Input::T, Input::U, Input::V, Input::W});
             break;

@@ -19,7 +19,7 @@ enum class DefinitionKind {
     Implicit,   // FRep geometry or an explicit scalar field: x y z t -> value
     Parametric, // u v w t -> x, y, z
     Colour,     // x y z u v w t -> r, g, b (or one value for a colour map)
-    Force,      // x y z t -> fx, fy, fz
+    Force,      // x y z u v w t -> fx, fy, fz
 };
 
 const char* definitionKindName(DefinitionKind kind);

@@ -1,5 +1,8 @@
 #include "function_definitions.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "field_access.h"
 #include "source_map.h"
 
@@ -26,6 +29,12 @@ class DefinitionCompiler {
         const std::string path = file >= 0 ? scene_.files[file].path : std::string();
         // A PROTO body and each of its instances compile the same text: say it once.
         if (!seen_.emplace(path, pos.line, pos.column, message).second) return;
+        // "type '\"explicit\"' is not ...": the quotes of ClassicVRML carried
+        // into an XML attribute, where SFString values stand bare.
+        if (suggestion.empty() && message.find("'\"") != std::string::npos &&
+            message.find("\"'") != std::string::npos)
+            suggestion = "drop the double quotes: in X3D XML a single string is written bare, as "
+                         "in type='explicit'";
         out_.push_back({severity, path, pos, std::move(message), std::move(suggestion)});
     }
     FilePos fieldPos(const Node& node, std::string_view name) {
@@ -41,6 +50,9 @@ class DefinitionCompiler {
     }
     formula::CompileOptions optionsFor(const Node& node, DefinitionKind kind);
     void checkGeometry(const Node& node);
+    void warnDroppedBackslashes(const Node& node, const Field& field);
+    void checkTransform(const Node& node);
+    void checkMaterialOutputs(const Node& node, const formula::Tape& tape, const Field& field);
     void checkMaterial(const Node& node);
     void checkDomain(const Node& node);
 
@@ -99,6 +111,28 @@ void DefinitionCompiler::checkGeometry(const Node& node) {
     if (numberField(node, "resolution") <= 0)
         report(node, node.field("resolution"), Severity::Error, fieldPos(node, "resolution"),
                "resolution must be positive");
+    if (ops == "rfunction" &&
+        !(numberField(node, "rfunctionAlpha") > -1 && numberField(node, "rfunctionAlpha") <= 1))
+        report(node, node.field("rfunctionAlpha"), Severity::Error,
+               fieldPos(node, "rfunctionAlpha"),
+               "rfunctionAlpha must lie in (-1, 1]: at -1 and below the R-functions stop being "
+               "set operations",
+               "0 gives the R0 family (a smooth, exact-sign union and intersection)");
+    if (ops == "rfunction" && numberField(node, "rfunctionM") < 0)
+        report(node, node.field("rfunctionM"), Severity::Error, fieldPos(node, "rfunctionM"),
+               "rfunctionM (the continuity of the R-functions) must not be negative");
+    const auto lodRange = numbersField(node, "lodRange");
+    if (lodRange.size() == 2 && !(0 < lodRange[0] && lodRange[0] <= lodRange[1]))
+        report(node, node.field("lodRange"), Severity::Error, fieldPos(node, "lodRange"),
+               "lodRange gives the coarsest and the finest resolution: two positive numbers, the "
+               "first not above the second");
+    // The default "function" quietly means polygons for parametric geometry;
+    // only asking for it in the file is worth a word.
+    if (type == "parametric" && collision == "function" && node.field("collision"))
+        report(node, node.field("collision"), Severity::Warning, fieldPos(node, "collision"),
+               "collision 'function' needs a formula that says inside or outside; parametric "
+               "geometry has none, so it is touched through its polygons",
+               "write collision \"polygonal\"");
     for (std::string_view range : {"uRange", "vRange", "wRange"}) {
         const auto r = numbersField(node, range);
         if (r.size() == 2 && !(r[0] <= r[1]))
@@ -135,16 +169,80 @@ void DefinitionCompiler::checkMaterial(const Node& node) {
     }
 }
 
+// In a ClassicVRML string `\x` stands for x, so the difference operator `\`
+// written once vanishes ("a \ b" reads "a  b") and the formula fails with a
+// puzzling message, or worse, means something else. Say so where it happens.
+void DefinitionCompiler::warnDroppedBackslashes(const Node& node, const Field& field) {
+    for (const StringOrigin& origin : field.value.stringOrigins) {
+        if (origin.escapes != StringEscapes::Classic || origin.file < 0) continue;
+        const std::string& text = scene_.files[std::size_t(origin.file)].text;
+        for (std::size_t i = origin.offset; i < text.size() && text[i] != '"'; ++i) {
+            if (text[i] != '\\') continue;
+            if (i + 1 < text.size() && (text[i + 1] == '"' || text[i + 1] == '\\')) {
+                ++i;
+                continue;
+            }
+            report(node, &field, Severity::Warning, lines(origin.file).position(i),
+                   "a single \\ in a ClassicVRML string is dropped (it escapes the next "
+                   "character), so the difference operator disappears here",
+                   "write \\\\ for the difference operator");
+            break;
+        }
+    }
+}
+
+void DefinitionCompiler::checkTransform(const Node& node) {
+    const std::string op = stringField(node, "operation");
+    static const char* const known[] = {"group",      "union", "intersection",
+                                        "difference", "morph", "formula"};
+    if (std::find(std::begin(known), std::end(known), op) == std::end(known)) {
+        report(node, node.field("operation"), Severity::Error, fieldPos(node, "operation"),
+               "FTransform operation '" + op +
+                   "' is not group, union, intersection, difference, morph or formula");
+        return;
+    }
+    if (op == "formula" && stringsField(node, "operationDefinition").empty())
+        report(node, node.field("operation"), Severity::Error, fieldPos(node, "operation"),
+               "operation 'formula' combines the children by operationDefinition, which is empty",
+               "write operationDefinition \"max(f1, f2)\" (the union of the first two children)");
+    if (op == "morph" && stringsField(node, "morphFactor").empty())
+        report(node, node.field("operation"), Severity::Warning, fieldPos(node, "operation"),
+               "operation 'morph' without a morphFactor shows the first child only",
+               "write morphFactor \"0.5 - 0.5*cos(2*pi*t)\" to morph back and forth");
+}
+
+// Only `key`/`keyValue` decide a colour map; a parametric FMaterial assigns
+// r, g, b. A formula that gives the other shape is a mistake either way.
+void DefinitionCompiler::checkMaterialOutputs(const Node& node, const formula::Tape& tape,
+                                              const Field& field) {
+    const std::string type = stringField(node, "type");
+    const bool threeOutputs = tape.outputs.size() == 3;
+    if (type == "explicit" && threeOutputs)
+        report(node, &field, Severity::Error, fieldPos(node, "definition"),
+               "an explicit FMaterial maps one value through key and keyValue, but the definition "
+               "assigns r, g and b",
+               "write type \"parametric\" to give the colour directly");
+    else if (type == "parametric" && !threeOutputs)
+        report(node, &field, Severity::Error, fieldPos(node, "definition"),
+               "a parametric FMaterial assigns r = ...; g = ...; b = ...; but the definition gives "
+               "one value",
+               "write type \"explicit\" with key and keyValue to map one value to colours");
+}
+
 void DefinitionCompiler::checkDomain(const Node& node) {
-    if (!node.spec || !findFieldSpec(*node.spec, "domainMin")) return;
+    if (!node.spec || !findFieldSpec(*node.spec, "timeBase")) return;
     const auto lo = numbersField(node, "domainMin"), hi = numbersField(node, "domainMax");
     if (lo.size() == 3 && hi.size() == 3)
         for (int i = 0; i < 3; ++i)
             if (!(lo[i] < hi[i])) {
                 report(node, node.field("domainMax"), Severity::Error, fieldPos(node, "domainMax"),
                        "the domain box is empty: domainMax must exceed domainMin in x, y and z");
-                return;
+                break;
             }
+    const auto span = numbersField(node, "timeSpan");
+    if (span.size() == 2 && !(std::isfinite(span[0]) && std::isfinite(span[1])))
+        report(node, node.field("timeSpan"), Severity::Error, fieldPos(node, "timeSpan"),
+               "timeSpan must be two finite numbers");
     if (numberField(node, "cycleInterval", 0, 1) <= 0)
         report(node, node.field("cycleInterval"), Severity::Error, fieldPos(node, "cycleInterval"),
                "cycleInterval must be positive");
@@ -157,6 +255,7 @@ void DefinitionCompiler::checkDomain(const Node& node) {
 void DefinitionCompiler::compileNode(const Node& node) {
     if (node.type == "FGeometry") checkGeometry(node);
     if (node.type == "FMaterial") checkMaterial(node);
+    if (node.type == "FTransform") checkTransform(node);
     checkDomain(node);
     for (const DefinitionField& df : definitionFields(node)) {
         const Field* field = node.field(df.field);
@@ -168,12 +267,15 @@ void DefinitionCompiler::compileNode(const Node& node) {
             starts.push_back(source.size());
             source += line;
         }
+        warnDroppedBackslashes(node, *field);
         formula::CompileResult result = formula::compile(source, optionsFor(node, df.kind));
         for (const formula::Diagnostic& d : result.diagnostics) {
             const FilePos pos = locate(*field, starts, d.range.begin.offset);
             report(node, field, d.severity, pos,
                    node.type + "." + std::string(df.field) + ": " + d.message, d.suggestion);
         }
+        if (result.tape && node.type == "FMaterial" && df.field == "definition")
+            checkMaterialOutputs(node, *result.tape, *field);
         if (result.tape && !node.inProtoBody)
             scene_.definitions.push_back(
                 {&node, std::string(df.field), df.kind, std::move(*result.tape)});
@@ -194,8 +296,10 @@ std::vector<DefinitionField> definitionFields(const Node& node) {
         return {{"definition", DefinitionKind::Colour},
                 {"transparencyDefinition", DefinitionKind::Generic}};
     if (t == "FTexture3D") return {{"definition", DefinitionKind::Generic}};
+    // Physical properties read the point both ways: x, y, z in the domain
+    // box and u, v, w mapped to [0, 1]^3 (docs/nodes.md, Domains).
     if (t == "FFriction" || t == "FTension" || t == "FDensity")
-        return {{"definition", DefinitionKind::Implicit}};
+        return {{"definition", DefinitionKind::Generic}};
     if (t == "FForce") return {{"definition", DefinitionKind::Force}};
     if (t == "FTransform")
         return {{"translation", DefinitionKind::Parametric},

@@ -227,3 +227,91 @@ TEST(Plan, RoutedInterpolatorAnimatesATransform) {
 }
 
 } // namespace
+
+namespace {
+
+// The diagnostics of a one-node scene, as "line:col: severity: message".
+std::vector<std::string> checks(const std::string& body) {
+    ReadResult r = read("#X3D V3.3 utf8\nPROFILE Immersive\n" + body);
+    std::vector<std::string> out;
+    for (const auto& d : r.diagnostics)
+        out.push_back(std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column) + ": " +
+                      std::string(fl::formula::severityName(d.severity)) + ": " + d.message);
+    return out;
+}
+
+::testing::AssertionResult mentions(const std::vector<std::string>& all, const std::string& text) {
+    std::string listed;
+    for (const std::string& s : all) {
+        if (s.find(text) != std::string::npos) return ::testing::AssertionSuccess();
+        listed += "\n  " + s;
+    }
+    return ::testing::AssertionFailure() << "no '" << text << "' among:" << listed;
+}
+
+} // namespace
+
+TEST(Checks, PhysicalPropertiesReadUvwAsWellAsXyz) {
+    EXPECT_TRUE(checks("FShape { physics FPhysics { surface FSurface {\n"
+                       "  friction FFriction { definition \"0.1 + 0.2*u*v\" }\n"
+                       "  tension FTension { definition \"w\" } }\n"
+                       "  density FDensity { definition \"x + u\" }\n"
+                       "  force FForce { definition \"fx = u; fy = v; fz = w - z;\" } } }\n")
+                    .empty());
+}
+
+TEST(Checks, GeometryModeAndLodValues) {
+    auto all =
+        checks("FShape { geometry FGeometry { definition \"1 - x*x - y*y - z*z\"\n"
+               "  setOperations \"rfunction\" rfunctionAlpha -1 rfunctionM -2 lodRange 64 8 } }\n");
+    EXPECT_TRUE(mentions(all, "4:29: error: rfunctionAlpha must lie in (-1, 1]"));
+    EXPECT_TRUE(mentions(all, "error: rfunctionM"));
+    EXPECT_TRUE(mentions(all, "error: lodRange"));
+    all = checks("FShape { geometry FGeometry { type \"parametric\" collision \"function\"\n"
+                 "  definition \"x = u; y = v; z = 0;\" } }\n");
+    EXPECT_TRUE(mentions(all, "warning: collision 'function' needs a formula"));
+    // Left at its default, "function" quietly means polygons: no warning.
+    EXPECT_TRUE(checks("FShape { geometry FGeometry { type \"parametric\"\n"
+                       "  definition \"x = u; y = v; z = 0;\" } }\n")
+                    .empty());
+}
+
+TEST(Checks, MaterialTypeMustMatchWhatTheDefinitionGives) {
+    auto all =
+        checks("FShape { appearance FAppearance { material FMaterial { type \"explicit\"\n"
+               "  key [0 1] keyValue [0 0 0, 1 1 1] definition \"r = x; g = y; b = z;\" } } }\n");
+    EXPECT_TRUE(mentions(all, "error: an explicit FMaterial maps one value"));
+    all = checks("FShape { appearance FAppearance { material FMaterial { type \"parametric\"\n"
+                 "  definition \"x*x\" } } }\n");
+    EXPECT_TRUE(mentions(all, "error: a parametric FMaterial assigns r"));
+}
+
+TEST(Checks, TransformOperationAndTiming) {
+    auto all = checks("FTransform { operation \"blend\" }\n");
+    EXPECT_TRUE(mentions(all, "3:14: error: FTransform operation 'blend' is not group"));
+    all = checks("FTransform { operation \"formula\" }\n");
+    EXPECT_TRUE(
+        mentions(all, "error: operation 'formula' combines the children by operationDefinition"));
+    all = checks("FTransform { operation \"morph\" }\n");
+    EXPECT_TRUE(mentions(all, "warning: operation 'morph' without a morphFactor"));
+    all = checks("FTransform { cycleInterval 0 timeBase \"gmt\" }\n");
+    EXPECT_TRUE(mentions(all, "error: cycleInterval must be positive"));
+    EXPECT_TRUE(mentions(all, "error: timeBase 'gmt' is not scene, local or utc"));
+}
+
+TEST(Checks, HintsForStringsWrittenTheOtherEncodingsWay) {
+    // ClassicVRML: a single backslash escapes the next character and vanishes.
+    auto all = checks(
+        "FShape { geometry FGeometry { definition \"sphere(x,y,z,1) \\ box(x,y,z,1,1,1)\" } }\n");
+    EXPECT_TRUE(mentions(all, "3:59: warning: a single \\ in a ClassicVRML string is dropped"));
+    EXPECT_TRUE(checks("FShape { geometry FGeometry { definition \"sphere(x,y,z,1) \\\\ "
+                       "box(x,y,z,1,1,1)\" } }\n")
+                    .empty());
+    // X3D XML: SFString attributes are written without quotes.
+    ReadResult r = readSceneBytes("<X3D profile='Immersive'><Scene><FShape>\n"
+                                  "<FGeometry type='\"explicit\"' definition='\"1 - x*x\"'/>\n"
+                                  "</FShape></Scene></X3D>\n",
+                                  "q.x3d");
+    ASSERT_NE(firstError(r), nullptr);
+    EXPECT_NE(firstError(r)->suggestion.find("drop the double quotes"), std::string::npos);
+}
