@@ -2,6 +2,7 @@
 
 #include "classic_lexer.h"
 #include "number_text.h"
+#include "utf8.h"
 
 #include <charconv>
 #include <cmath>
@@ -436,7 +437,15 @@ void ClassicReader::element(FieldValue& v, FieldType single) {
         if (t.kind != T::String)
             b_.fail(t.pos, "expected a string in double quotes, found " + describe(t));
         next();
-        v.strings.push_back(ClassicLexer::unquote(t.text));
+        std::string text = ClassicLexer::unquote(t.text);
+        if (!isValidUtf8(text)) {
+            b_.warning(t.pos,
+                       "this string is not UTF-8 (was the file saved as Shift-JIS or Latin-1?); "
+                       "its invalid bytes read as \xEF\xBF\xBD",
+                       "save the file as UTF-8");
+            text = replaceInvalidUtf8(text);
+        }
+        v.strings.push_back(std::move(text));
         v.stringOrigins.push_back({b_.file(), t.offset + 1, StringEscapes::Classic});
         return;
     }
@@ -520,8 +529,9 @@ void ClassicReader::unknownItem(FieldValue& v) {
         while (peek().kind == T::Number)
             next();
         return;
-    case T::String:
-        next();
+    case T::String: // several strings without brackets: one MFString-like value
+        while (peek().kind == T::String)
+            next();
         return;
     case T::Identifier:
         if (t.text == "TRUE" || t.text == "FALSE" || t.text == "NULL") {

@@ -71,7 +71,8 @@ struct FieldDeclaration {
     AccessType access = AccessType::InitializeOnly;
     FieldValue value; // initial value (initializeOnly / inputOutput)
     bool hasValue = false;
-    std::string isReference; // Script field inside a PROTO body
+    bool valueIsDefault = false; // not written: the reader filled in the type's default
+    std::string isReference;     // Script field inside a PROTO body
     FilePos where;
 };
 

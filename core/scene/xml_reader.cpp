@@ -6,6 +6,8 @@
 #include <QString>
 #include <QXmlStreamReader>
 
+#include <algorithm>
+
 namespace fl::scene {
 namespace {
 
@@ -356,7 +358,8 @@ void XmlReader::nodeContent(Node& n) {
                 url = &n.fields.back();
                 url->value.type = n.isUnknown() ? FieldType::Unknown : FieldType::MFString;
             }
-            url->value.strings.push_back(str(xml_.text()));
+            const std::string text = str(xml_.text());
+            url->value.strings.emplace_back(n.isUnknown() ? trimmedUnknownValue(text) : text);
             url->value.stringOrigins.push_back(
                 {b_.file(), byteOffset(xml_.characterOffset() - xml_.text().size()),
                  StringEscapes::XmlText});
@@ -375,6 +378,19 @@ void XmlReader::nodeContent(Node& n) {
                 skipElement();
             } else {
                 FieldDeclaration d = fieldElement(false, false);
+                // An attribute of the same name (a field of a later X3D
+                // version, kept as unknown) would make the node say two
+                // things; the declared field is the one the Script sees.
+                const auto clash =
+                    std::find_if(n.fields.begin(), n.fields.end(), [&](const Field& f) {
+                        return f.name == d.name && f.value.type == FieldType::Unknown;
+                    });
+                if (clash != n.fields.end()) {
+                    b_.warning(clash->where, "attribute '" + d.name +
+                                                 "' has the name of a <field> "
+                                                 "this node declares; the <field> is used");
+                    n.fields.erase(clash);
+                }
                 n.declarations.push_back(std::move(d));
             }
         } else if (name == u"fieldValue") {
@@ -461,6 +477,7 @@ FieldDeclaration XmlReader::fieldElement(bool external, bool inProtoInterface) {
     if (hasInitialValue(d.access) && !external && !d.hasValue && d.isReference.empty()) {
         d.value = typeDefault(d.type); // no value attribute: the type's default
         d.hasValue = true;
+        d.valueIsDefault = true; // until an <IS> connects it (then it has no value)
     }
     return d;
 }
@@ -481,6 +498,10 @@ void XmlReader::isElement(Node& n) {
                 FieldInfo info{d.type, d.access, true, false, d.name};
                 b_.checkIs(n, info, nodeField, protoField, pos);
                 d.isReference = protoField;
+                if (d.valueIsDefault) { // the value comes through IS, as in ClassicVRML
+                    d.value = FieldValue{d.type, {}, {}, {}, {}};
+                    d.hasValue = d.valueIsDefault = false;
+                }
                 goto next;
             }
         {

@@ -17,6 +17,15 @@ bool isSep(char c) {
 
 } // namespace
 
+std::string_view trimmedUnknownValue(std::string_view text) {
+    auto separator = [](char c) { return isSep(c) || c == ','; };
+    while (!text.empty() && separator(text.back()))
+        text.remove_suffix(1);
+    while (!text.empty() && separator(text.front()))
+        text.remove_prefix(1);
+    return text;
+}
+
 bool parseXmlAttributeValue(std::string_view text, FieldType type, FieldValue& out,
                             const StringOrigin& origin, std::string_view fileText,
                             std::string& problem) {
@@ -24,7 +33,7 @@ bool parseXmlAttributeValue(std::string_view text, FieldType type, FieldValue& o
     out.type = type;
     const FieldType single = singleOf(type);
     if (type == FieldType::Unknown) {
-        out.strings.emplace_back(text);
+        out.strings.emplace_back(trimmedUnknownValue(text));
         out.stringOrigins.push_back(origin);
         return true;
     }

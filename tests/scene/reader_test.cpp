@@ -7,6 +7,7 @@
 #include "scene/scene_compare.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
+#include "scene/utf8.h"
 
 #include <gtest/gtest.h>
 
@@ -314,4 +315,26 @@ TEST(Checks, HintsForStringsWrittenTheOtherEncodingsWay) {
                                   "q.x3d");
     ASSERT_NE(firstError(r), nullptr);
     EXPECT_NE(firstError(r)->suggestion.find("drop the double quotes"), std::string::npos);
+}
+
+TEST(Utf8, ValidationFollowsRfc3629) {
+    EXPECT_TRUE(isValidUtf8("plain ascii"));
+    EXPECT_TRUE(isValidUtf8("\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80")); // é € 😀
+    EXPECT_FALSE(isValidUtf8("\xC0\xAF"));                            // overlong '/'
+    EXPECT_FALSE(isValidUtf8("\xED\xA0\x80"));                        // a surrogate
+    EXPECT_FALSE(isValidUtf8("\xF4\x90\x80\x80"));                    // above U+10FFFF
+    EXPECT_FALSE(isValidUtf8("\xE2\x82"));                            // cut short
+    EXPECT_EQ(replaceInvalidUtf8("a\x83L\xC3\xA9"), "a\xEF\xBF\xBDL\xC3\xA9");
+}
+
+TEST(Utf8, ClassicStringsInAnotherEncodingAreRepairedWithAWarning) {
+    ReadResult r =
+        read("#VRML V2.0 utf8\nShape { geometry Text { string \"\x83L\x83\x83\" } }\n", "sjis.wrl");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.diagnostics.size(), 1u);
+    EXPECT_EQ(r.diagnostics[0].pos.line, 2);
+    EXPECT_NE(r.diagnostics[0].message.find("not UTF-8"), std::string::npos);
+    const Node* text = nodeField(*r.scene->roots[0], "geometry");
+    ASSERT_NE(text, nullptr);
+    EXPECT_TRUE(isValidUtf8(stringsField(*text, "string").at(0)));
 }
