@@ -1,0 +1,184 @@
+// Property: writing a scene and reading it back gives the same model, for
+// scenes generated at random from the node catalogue — every standard node
+// type, every field with an initial value, values chosen to be awkward
+// (extreme and tiny numbers, quotes, backslashes, XML specials, non-ASCII
+// text), DEF/USE sharing and ROUTEs — in X3D XML, ClassicVRML and, for the
+// nodes it has, VRML97.
+#include "scene/node_catalogue.h"
+#include "scene/scene_compare.h"
+#include "scene/scene_reader.h"
+#include "scene/scene_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+
+using namespace fl::scene;
+
+namespace {
+
+// Fields whose values the reader checks or follows beyond their type.
+bool skipped(const NodeSpec& node, const FieldSpec& f) {
+    const std::string_view n = f.name;
+    return f.type == FieldType::SFImage || f.type == FieldType::MFImage || n == "url" ||
+           n == "metadata" || (node.name == "Script") || holdsNodes(f.type);
+}
+
+class Generator {
+  public:
+    explicit Generator(unsigned seed, bool vrml97) : rng_(seed), vrml97_(vrml97) {
+        for (const NodeSpec& s : standardNodes())
+            if ((!vrml97 || s.inVrml97) && s.containerField == "children" && s.name != "Script" &&
+                s.name != "Inline")
+                childTypes_.push_back(&s);
+    }
+
+    std::string scene() {
+        std::string out = vrml97_ ? "#VRML V2.0 utf8\n" : "#X3D V3.3 utf8\nPROFILE Full\n";
+        const int roots = pick(1, 4);
+        for (int i = 0; i < roots; ++i)
+            out += node(0) + "\n";
+        out += routes_;
+        return out;
+    }
+
+  private:
+    int pick(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+    bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
+
+    std::string number(bool integral) {
+        if (integral) return std::to_string(pick(-100000, 100000));
+        static const char* const special[] = {
+            "0", "-0", "1e-300", "1.7976931348623157e308", "4.9e-324", "0.1", "-123456.789", "3"};
+        if (chance(0.2)) return special[pick(0, 7)];
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g",
+                      std::uniform_real_distribution<double>(-1e6, 1e6)(rng_));
+        return buf;
+    }
+
+    std::string text() {
+        static const char* const pieces[] = {
+            "a", "Zz", " ", "\\\"",         "\\\\", "&", "<", ">",  "'",
+            ",", "#",  "é", "\xE2\x82\xAC", "日本", "]", "[", "{}", "x y"};
+        std::string s;
+        const int n = pick(0, 6);
+        for (int i = 0; i < n; ++i)
+            s += pieces[pick(0, 17)];
+        return "\"" + s + "\"";
+    }
+
+    std::string element(FieldType single) {
+        if (single == FieldType::SFBool) return chance(0.5) ? "TRUE" : "FALSE";
+        if (holdsStrings(single)) return text();
+        std::string out;
+        const int n = componentsPerElement(single);
+        for (int i = 0; i < n; ++i)
+            out += (i ? " " : "") + number(isIntegral(single));
+        return out;
+    }
+
+    std::string value(FieldType type) {
+        if (!isMultiple(type)) return element(type);
+        std::string out = "[";
+        const int n = pick(0, 4);
+        for (int i = 0; i < n; ++i)
+            out += (i ? ", " : "") + element(singleOf(type));
+        return out + "]";
+    }
+
+    std::string node(int depth) {
+        if (!defs_.empty() && chance(0.1))
+            return "USE " + defs_[std::size_t(pick(0, int(defs_.size()) - 1))].first;
+        const NodeSpec& spec = *childTypes_[std::size_t(pick(0, int(childTypes_.size()) - 1))];
+        std::string out;
+        std::string def;
+        if (chance(0.3)) {
+            def = "N" + std::to_string(nextDef_++);
+            out += "DEF " + def + " ";
+        }
+        out += std::string(spec.name) + " {\n";
+        const FieldSpec* children = nullptr;
+        for (const FieldSpec& f : spec.fields) {
+            if (f.name == "children" && f.type == FieldType::MFNode) children = &f;
+            if (!hasInitialValue(f.access) || skipped(spec, f) || !chance(0.5)) continue;
+            out += "  " + std::string(f.name) + " " + value(f.type) + "\n";
+        }
+        if (children && depth < 3 && chance(0.6)) {
+            out += "  children [\n";
+            const int n = pick(1, 3);
+            for (int i = 0; i < n; ++i)
+                out += node(depth + 1) + "\n";
+            out += "  ]\n";
+        }
+        out += "}";
+        if (!def.empty()) {
+            defs_.emplace_back(def, &spec);
+            addRoute(def, spec);
+        }
+        return out;
+    }
+
+    // A ROUTE from an output of an earlier DEF'd node to an input of the same
+    // type on this one, when there is such a pair.
+    void addRoute(const std::string& def, const NodeSpec& to) {
+        if (defs_.size() < 2 || !chance(0.5)) return;
+        const auto& [fromDef, from] = defs_[std::size_t(pick(0, int(defs_.size()) - 2))];
+        for (const FieldSpec& out : from->fields) {
+            if (!canRead(out.access) || holdsNodes(out.type) || out.name == "metadata") continue;
+            for (const FieldSpec& in : to.fields)
+                if (canWrite(in.access) && in.type == out.type && in.name != "metadata" &&
+                    !holdsNodes(in.type)) {
+                    routes_ += "ROUTE " + fromDef + "." + std::string(out.name) + " TO " + def +
+                               "." + std::string(in.name) + "\n";
+                    return;
+                }
+        }
+    }
+
+    std::mt19937 rng_;
+    bool vrml97_;
+    std::vector<const NodeSpec*> childTypes_;
+    std::vector<std::pair<std::string, const NodeSpec*>> defs_;
+    std::string routes_;
+    int nextDef_ = 0;
+};
+
+void expectRoundTrip(const std::string& text, bool vrml97, unsigned seed) {
+    ReadOptions options;
+    options.compileFunctions = false;
+    ReadResult original = readSceneBytes(text, vrml97 ? "random.wrl" : "random.x3dv", options);
+    std::string problems;
+    for (const auto& d : original.diagnostics)
+        if (d.severity == Severity::Error) problems += formatSceneDiagnostic(d) + "\n";
+    ASSERT_TRUE(original.ok()) << "seed " << seed << ": the generated scene does not load\n"
+                               << problems << text;
+    for (Encoding e : {Encoding::Xml, Encoding::ClassicVrml, Encoding::Vrml97}) {
+        if (e == Encoding::Vrml97 && !vrml97) continue;
+        const std::string written = writeScene(*original.scene, e);
+        ReadResult back = readSceneBytes(written, e == Encoding::Xml ? "w.x3d" : "w.x3dv", options);
+        ASSERT_TRUE(back.ok()) << "seed " << seed << ": written scene does not read back\n"
+                               << written;
+        std::string difference;
+        EXPECT_TRUE(sameModel(*original.scene, *back.scene, &difference))
+            << "seed " << seed << ", encoding " << int(e) << ": " << difference << "\n"
+            << text;
+    }
+}
+
+} // namespace
+
+TEST(RandomScenes, X3dWritingThenReadingIsTheIdentity) {
+    for (unsigned seed = 1; seed <= 1000; ++seed) {
+        expectRoundTrip(Generator(seed, false).scene(), false, seed);
+        if (HasFailure()) return;
+    }
+}
+
+TEST(RandomScenes, Vrml97WritingThenReadingIsTheIdentity) {
+    for (unsigned seed = 1; seed <= 500; ++seed) {
+        expectRoundTrip(Generator(seed, true).scene(), true, seed);
+        if (HasFailure()) return;
+    }
+}
