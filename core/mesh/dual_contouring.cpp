@@ -1,0 +1,739 @@
+#include "dual_contouring.h"
+
+#include "formula/nonfinite_report.h"
+#include "qef.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+
+namespace fl::mesh {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+constexpr int kB = 8;      // cells along a block's edge
+constexpr int kC = kB + 1; // corners along a block's edge (the far ones shared with the next block)
+constexpr int kCorners = kC * kC * kC;
+constexpr int kCells = kB * kB * kB;
+
+// FRep: f >= 0 is the solid, f = 0 its boundary. The mesher meshes the
+// boundary of the interior f > 0, which is the same surface for every regular
+// solid, and nothing for f = -g^2, whose "solid" is only the surface itself.
+bool inside(double f) {
+    return f > 0;
+}
+
+// A corner is in the solid, out of it, or where f is undefined (NaN). With a
+// closed boundary the margin corners outside the domain box are out.
+enum State : std::uint8_t { kOut = 0, kIn = 1, kUndefined = 2 };
+bool crosses(std::uint8_t a, std::uint8_t b) {
+    return a != b && a != kUndefined && b != kUndefined;
+}
+
+struct Grid {
+    Vec3 origin{};
+    Vec3 h{};
+    std::array<int, 3> cells{};
+    std::array<int, 3> blocks{};
+
+    Vec3 corner(long i, long j, long k) const {
+        return {origin[0] + double(i) * h[0], origin[1] + double(j) * h[1],
+                origin[2] + double(k) * h[2]};
+    }
+};
+
+using BlockCoord = std::array<int, 3>;
+
+std::uint64_t keyOf(const BlockCoord& b) {
+    return (std::uint64_t(b[0]) << 42) | (std::uint64_t(b[1]) << 21) | std::uint64_t(b[2]);
+}
+
+int cornerIndex(int ci, int cj, int ck) {
+    return (ck * kC + cj) * kC + ci;
+}
+int cellIndex(int ci, int cj, int ck) {
+    return (ck * kB + cj) * kB + ci;
+}
+
+struct Crossing {
+    std::uint8_t state = 0; // 0 not computed, 1 none, 2 crossing
+    Vec3 point{};
+    Vec3 normal{}; // unit gradient direction (the sign does not matter to the QEF)
+};
+
+// What phase 1 leaves for each active block.
+struct Block {
+    BlockCoord coord{};
+    std::vector<double> values;         // kCorners corner values of f
+    std::vector<std::uint8_t> states;   // kCorners: kIn, kOut, kUndefined
+    std::vector<std::int32_t> vertexOf; // kCells: local vertex id, -1 none
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::uint32_t offset = 0; // first global vertex id
+    std::vector<Triangle> triangles;
+};
+
+// Facts gathered while sampling, for the warnings.
+struct Observations {
+    bool sawNaN = false;
+    Vec3 nanPoint{};
+    double maxValue = -std::numeric_limits<double>::infinity();
+    Vec3 maxPoint{};
+    double maxAbs = 0;
+    void merge(const Observations& o) {
+        if (o.sawNaN && !sawNaN) {
+            sawNaN = true;
+            nanPoint = o.nanPoint;
+        }
+        if (o.maxValue > maxValue) {
+            maxValue = o.maxValue;
+            maxPoint = o.maxPoint;
+        }
+        maxAbs = std::max(maxAbs, o.maxAbs);
+    }
+};
+
+// From the highest sample, Newton steps towards f = 0: does f become
+// positive somewhere (a solid thinner than a cell), or only touch zero (no
+// inside at all, as f = -g^2)? Returns the highest value reached.
+double climbTowardsZero(FieldSampler& sampler, Vec3 p) {
+    double best = sampler.value(p);
+    for (int step = 0; step < 60 && best < 0; ++step) {
+        const formula::Dual d = sampler.gradient(p);
+        const double g2 = d.d[0] * d.d[0] + d.d[1] * d.d[1] + d.d[2] * d.d[2];
+        if (!(g2 > 0) || !std::isfinite(d.v)) break;
+        for (std::size_t a = 0; a < 3; ++a)
+            p[a] -= d.v * d.d[a] / g2;
+        const double f = sampler.value(p);
+        if (!std::isfinite(f)) break;
+        best = std::max(best, f);
+    }
+    return best;
+}
+
+Vec3 normalised(const std::array<double, 3>& g, bool& ok) {
+    const double n = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    ok = std::isfinite(n) && n > 0;
+    if (!ok) return {0, 0, 0};
+    return {g[0] / n, g[1] / n, g[2] / n};
+}
+
+class Contourer {
+  public:
+    Contourer(const ImplicitField& field, const MeshOptions& options, const Grid& grid)
+        : field_(field), options_(options), grid_(grid) {}
+
+    // Phase 1: corner values, edge crossings and cell vertices of one block.
+    void sampleBlock(Block& block, FieldSampler& sampler, Observations& seen) {
+        const BlockCoord& b = block.coord;
+        const long i0 = long(b[0]) * kB, j0 = long(b[1]) * kB, k0 = long(b[2]) * kB;
+        xs_.resize(kCorners);
+        ys_.resize(kCorners);
+        zs_.resize(kCorners);
+        for (int ck = 0; ck < kC; ++ck)
+            for (int cj = 0; cj < kC; ++cj)
+                for (int ci = 0; ci < kC; ++ci) {
+                    const Vec3 p = grid_.corner(i0 + ci, j0 + cj, k0 + ck);
+                    const int c = cornerIndex(ci, cj, ck);
+                    xs_[std::size_t(c)] = p[0];
+                    ys_[std::size_t(c)] = p[1];
+                    zs_[std::size_t(c)] = p[2];
+                }
+        block.values.assign(kCorners, 0.0);
+        sampler.values(xs_.data(), ys_.data(), zs_.data(), kCorners, block.values.data());
+        block.states.assign(kCorners, kOut);
+        for (int ck = 0; ck < kC; ++ck)
+            for (int cj = 0; cj < kC; ++cj)
+                for (int ci = 0; ci < kC; ++ci) {
+                    const int c = cornerIndex(ci, cj, ck);
+                    const double v = block.values[std::size_t(c)];
+                    if (!inBox(i0 + ci, j0 + cj, k0 + ck)) continue; // margin: out
+                    block.states[std::size_t(c)] = std::isnan(v) ? kUndefined
+                                                   : inside(v)   ? kIn
+                                                                 : kOut;
+                }
+        for (int c = 0; c < kCorners; ++c) {
+            const double v = block.values[std::size_t(c)];
+            if (!cornerInBox(block, c)) continue;
+            if (std::isnan(v)) {
+                if (!seen.sawNaN)
+                    seen.nanPoint = {xs_[std::size_t(c)], ys_[std::size_t(c)], zs_[std::size_t(c)]};
+                seen.sawNaN = true;
+            } else {
+                if (v > seen.maxValue) {
+                    seen.maxValue = v;
+                    seen.maxPoint = {xs_[std::size_t(c)], ys_[std::size_t(c)], zs_[std::size_t(c)]};
+                }
+                if (std::isfinite(v)) seen.maxAbs = std::max(seen.maxAbs, std::abs(v));
+            }
+        }
+        crossings_.assign(std::size_t(3 * kCorners), Crossing{});
+        block.vertexOf.assign(kCells, -1);
+        block.positions.clear();
+        block.normals.clear();
+        for (int ck = 0; ck < kB; ++ck)
+            for (int cj = 0; cj < kB; ++cj)
+                for (int ci = 0; ci < kB; ++ci) {
+                    if (i0 + ci >= grid_.cells[0] || j0 + cj >= grid_.cells[1] ||
+                        k0 + ck >= grid_.cells[2])
+                        continue;
+                    cellVertex(block, sampler, ci, cj, ck);
+                }
+    }
+
+    // Phase 2: the quads around every sign-changing edge this block owns.
+    // Returns false (with `missing` filled) when a neighbouring cell has no
+    // vertex yet.
+    void connectBlock(Block& block, std::vector<BlockCoord>& missing) {
+        block.triangles.clear();
+        const BlockCoord& b = block.coord;
+        const long base[3] = {long(b[0]) * kB, long(b[1]) * kB, long(b[2]) * kB};
+        for (int ck = 0; ck < kB; ++ck)
+            for (int cj = 0; cj < kB; ++cj)
+                for (int ci = 0; ci < kB; ++ci) {
+                    const int local[3] = {ci, cj, ck};
+                    const long g[3] = {base[0] + ci, base[1] + cj, base[2] + ck};
+                    if (g[0] > grid_.cells[0] || g[1] > grid_.cells[1] || g[2] > grid_.cells[2])
+                        continue;
+                    const std::uint8_t sa = block.states[std::size_t(cornerIndex(ci, cj, ck))];
+                    for (int a = 0; a < 3; ++a) {
+                        if (g[a] + 1 > grid_.cells[a]) continue; // the edge leaves the grid
+                        int far[3] = {local[0], local[1], local[2]};
+                        ++far[a];
+                        const std::uint8_t sb =
+                            block.states[std::size_t(cornerIndex(far[0], far[1], far[2]))];
+                        if (!crosses(sa, sb)) continue;
+                        quad(block, a, g, sa == kIn, missing);
+                    }
+                }
+    }
+
+    // Global vertex lookup, valid after every block's offset is set.
+    void index(std::vector<Block>& blocks) {
+        lookup_.clear();
+        for (std::size_t i = 0; i < blocks.size(); ++i)
+            lookup_[keyOf(blocks[i].coord)] = &blocks[i];
+    }
+
+  private:
+    const Crossing& crossing(FieldSampler& sampler, const Block& block, int axis, int ci, int cj,
+                             int ck) {
+        Crossing& x = crossings_[std::size_t(axis * kCorners + cornerIndex(ci, cj, ck))];
+        if (x.state) return x;
+        x.state = 1;
+        int far[3] = {ci, cj, ck};
+        ++far[axis];
+        const int ca = cornerIndex(ci, cj, ck), cb = cornerIndex(far[0], far[1], far[2]);
+        const std::uint8_t sa = block.states[std::size_t(ca)], sb = block.states[std::size_t(cb)];
+        if (!crosses(sa, sb)) return x;
+        const BlockCoord& b = block.coord;
+        const long i = long(b[0]) * kB + ci, j = long(b[1]) * kB + cj, k = long(b[2]) * kB + ck;
+        const std::size_t ax = std::size_t(axis);
+        Vec3 pa = grid_.corner(i, j, k);
+        Vec3 pb = pa;
+        pb[ax] += grid_.h[ax];
+        double fa = block.values[std::size_t(ca)], fb = block.values[std::size_t(cb)];
+        const bool aInBox = cornerInBox(block, ca), bInBox = cornerInBox(block, cb);
+        if (!aInBox || !bInBox) {
+            // An edge through a face of the closed box: the solid ends at the
+            // face, or before it where f turns negative first.
+            Vec3 face = aInBox ? pa : pb;
+            face[ax] = aInBox ? field_.box.hi[ax] : field_.box.lo[ax];
+            const double ff = sampler.value(face);
+            if (inside(ff) || std::isnan(ff)) {
+                x.point = face;
+                x.normal = {0, 0, 0};
+                x.normal[ax] = 1;
+                x.state = 2;
+                return x;
+            }
+            if (aInBox) {
+                pb = face;
+                fb = ff;
+            } else {
+                pa = face;
+                fa = ff;
+            }
+        }
+        // Linear guess, then regula falsi on the bracket [ta, tb].
+        double ta = 0, tb = 1;
+        double t = fa / (fa - fb);
+        auto at = [&](double s) {
+            Vec3 p = pa;
+            p[ax] = pa[ax] + s * (pb[ax] - pa[ax]);
+            return p;
+        };
+        for (int step = 0; step < options_.refineSteps; ++step) {
+            const double f = sampler.value(at(t));
+            if (!std::isfinite(f) || f == 0) break;
+            if (inside(f) == inside(fa)) {
+                ta = t;
+                fa = f;
+            } else {
+                tb = t;
+                fb = f;
+            }
+            const double next = ta - fa * (tb - ta) / (fb - fa);
+            if (!(next >= ta && next <= tb)) break;
+            t = next;
+        }
+        x.point = at(std::clamp(t, 0.0, 1.0));
+        bool ok = false;
+        x.normal = normalised(sampler.gradient(x.point).d, ok);
+        if (!ok) { // no gradient here: the edge's own direction
+            x.normal = {0, 0, 0};
+            x.normal[ax] = 1;
+        }
+        x.state = 2;
+        return x;
+    }
+
+    // Whether a lattice corner lies in the domain box (always, when open).
+    bool inBox(long i, long j, long k) const {
+        if (field_.boundary != BoxBoundary::Closed) return true;
+        return i > 0 && j > 0 && k > 0 && i < grid_.cells[0] && j < grid_.cells[1] &&
+               k < grid_.cells[2];
+    }
+    bool cornerInBox(const Block& block, int c) const {
+        const int ci = c % kC, cj = (c / kC) % kC, ck = c / (kC * kC);
+        return inBox(long(block.coord[0]) * kB + ci, long(block.coord[1]) * kB + cj,
+                     long(block.coord[2]) * kB + ck);
+    }
+
+    // Outward unit normal at a vertex: the box face's where the vertex is
+    // nearer to a face than to the shape's surface (closed boundary), else
+    // -grad f; where the gradient vanishes, the crossings' normals.
+    Vec3 vertexNormal(FieldSampler& sampler, const Vec3& p, const Vec3& crossingNormals) {
+        const formula::Dual d = sampler.gradient(p);
+        bool ok = false;
+        Vec3 n = normalised({-d.d[0], -d.d[1], -d.d[2]}, ok);
+        if (field_.boundary == BoxBoundary::Closed) {
+            const double g = std::sqrt(d.d[0] * d.d[0] + d.d[1] * d.d[1] + d.d[2] * d.d[2]);
+            double surface = ok && std::isfinite(d.v) ? std::abs(d.v) / g
+                                                      : std::numeric_limits<double>::infinity();
+            for (std::size_t a = 0; a < 3; ++a) {
+                const double toLo = p[a] - field_.box.lo[a], toHi = field_.box.hi[a] - p[a];
+                if (toLo < surface) {
+                    surface = toLo;
+                    n = {0, 0, 0};
+                    n[a] = -1;
+                    ok = true;
+                }
+                if (toHi < surface) {
+                    surface = toHi;
+                    n = {0, 0, 0};
+                    n[a] = 1;
+                    ok = true;
+                }
+            }
+        }
+        if (!ok) n = normalised(crossingNormals, ok);
+        return n;
+    }
+
+    void cellVertex(Block& block, FieldSampler& sampler, int ci, int cj, int ck) {
+        // The 12 edges of the cell: per axis, the 4 edges starting at the
+        // corners of the cell's face across the other two axes.
+        Qef qef;
+        Vec3 normalSum{};
+        for (int a = 0; a < 3; ++a) {
+            const int u = (a + 1) % 3, v = (a + 2) % 3;
+            for (int du = 0; du < 2; ++du)
+                for (int dv = 0; dv < 2; ++dv) {
+                    int c[3] = {ci, cj, ck};
+                    c[u] += du;
+                    c[v] += dv;
+                    const Crossing& x = crossing(sampler, block, a, c[0], c[1], c[2]);
+                    if (x.state != 2) continue;
+                    qef.add(x.point, x.normal);
+                    // Outward: along the edge from its inside corner to its outside one.
+                    const bool lowerIn =
+                        block.states[std::size_t(cornerIndex(c[0], c[1], c[2]))] == kIn;
+                    const double sign = (x.normal[std::size_t(a)] >= 0) == lowerIn ? 1.0 : -1.0;
+                    for (int k = 0; k < 3; ++k)
+                        normalSum[std::size_t(k)] += sign * x.normal[std::size_t(k)];
+                }
+        }
+        if (!qef.count()) return;
+        const BlockCoord& b = block.coord;
+        const Vec3 lo =
+            grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
+        Vec3 p = qef.solve(0.1);
+        bool inCell = true;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double slack = 1e-9 * grid_.h[k];
+            inCell = inCell && std::isfinite(p[k]) && p[k] >= lo[k] - slack &&
+                     p[k] <= lo[k] + grid_.h[k] + slack;
+        }
+        if (!inCell) p = qef.massPoint(); // a wild solution: the crossings' centre instead
+        const Vec3 n = vertexNormal(sampler, p, normalSum);
+        block.vertexOf[std::size_t(cellIndex(ci, cj, ck))] = std::int32_t(block.positions.size());
+        block.positions.push_back(p);
+        block.normals.push_back(n);
+    }
+
+    // The vertex of global cell (i, j, k), or -1 (and `missing` noted).
+    std::int64_t vertexAt(long i, long j, long k, std::vector<BlockCoord>& missing) {
+        const BlockCoord b{int(i / kB), int(j / kB), int(k / kB)};
+        auto it = lookup_.find(keyOf(b));
+        if (it == lookup_.end()) {
+            missing.push_back(b);
+            return -1;
+        }
+        const Block& block = *it->second;
+        const std::int32_t local =
+            block.vertexOf[std::size_t(cellIndex(int(i % kB), int(j % kB), int(k % kB)))];
+        if (local < 0) return -1;
+        return std::int64_t(block.offset) + local;
+    }
+
+    void quad(Block& block, int a, const long g[3], bool lowerInside,
+              std::vector<BlockCoord>& missing) {
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        // Around the edge, counter-clockwise seen from +a (a = u x v).
+        static const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}};
+        std::int64_t ids[4];
+        for (int q = 0; q < 4; ++q) {
+            long c[3] = {g[0], g[1], g[2]};
+            c[u] += offsets[q][0];
+            c[v] += offsets[q][1];
+            if (c[u] < 0 || c[v] < 0 || c[u] >= grid_.cells[u] || c[v] >= grid_.cells[v])
+                return; // at the border of the grid: left open
+            ids[q] = vertexAt(c[0], c[1], c[2], missing);
+            if (ids[q] < 0) return;
+        }
+        // Inside below, outside above: the surface faces +a; else the other way.
+        if (!lowerInside) std::swap(ids[1], ids[3]);
+        auto id = [&](int q) { return std::uint32_t(ids[q]); };
+        const Vec3& p0 = position(ids[0]);
+        const Vec3& p1 = position(ids[1]);
+        const Vec3& p2 = position(ids[2]);
+        const Vec3& p3 = position(ids[3]);
+        auto dist2 = [](const Vec3& x, const Vec3& y) {
+            return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
+                   (x[2] - y[2]) * (x[2] - y[2]);
+        };
+        if (dist2(p0, p2) <= dist2(p1, p3)) {
+            block.triangles.push_back({id(0), id(1), id(2)});
+            block.triangles.push_back({id(0), id(2), id(3)});
+        } else {
+            block.triangles.push_back({id(0), id(1), id(3)});
+            block.triangles.push_back({id(1), id(2), id(3)});
+        }
+    }
+
+    const Vec3& position(std::int64_t global) const {
+        // Blocks are few and sorted by offset: binary search the owner.
+        auto it = std::upper_bound(
+            order_->begin(), order_->end(), global,
+            [](std::int64_t g, const Block* b) { return g < std::int64_t(b->offset); });
+        const Block* owner = *(it - 1);
+        return owner->positions[std::size_t(global - owner->offset)];
+    }
+
+  public:
+    void setOrder(const std::vector<const Block*>* order) { order_ = order; }
+
+  private:
+    const ImplicitField& field_;
+    const MeshOptions& options_;
+    const Grid& grid_;
+    std::vector<double> xs_, ys_, zs_;
+    std::vector<Crossing> crossings_;
+    std::unordered_map<std::uint64_t, Block*> lookup_;
+    const std::vector<const Block*>* order_ = nullptr;
+};
+
+// Octree over blocks: a node whose interval cannot hold a sign change is
+// dropped with everything below it.
+struct Pruner {
+    const Grid& grid;
+    FieldSampler& sampler;
+    std::size_t limit;
+    std::vector<BlockCoord> active;
+    std::vector<Vec3> undefinedCentres; // boxes where f may be undefined (first few)
+    std::vector<Vec3> touchCentres;     // boxes where f <= 0 reaches 0 at most (first few)
+    bool overLimit = false;
+
+    void run(std::array<int, 3> lo, std::array<int, 3> hi) {
+        if (overLimit) return;
+        Vec3 boxLo{}, boxHi{};
+        for (std::size_t a = 0; a < 3; ++a) {
+            boxLo[a] = grid.origin[a] + double(lo[a]) * kB * grid.h[a];
+            boxHi[a] = grid.origin[a] + double(std::min(hi[a] * kB, grid.cells[a])) * grid.h[a];
+        }
+        const formula::Interval r = sampler.interval(boxLo, boxHi);
+        const Vec3 centre{(boxLo[0] + boxHi[0]) / 2, (boxLo[1] + boxHi[1]) / 2,
+                          (boxLo[2] + boxHi[2]) / 2};
+        const bool possible = !r.empty() && r.lo <= 0 && r.hi > 0; // f may change sign here
+        const bool touching = !possible && !r.empty() && r.hi == 0;
+        if (!possible) {
+            if (r.nan && undefinedCentres.size() < 8) undefinedCentres.push_back(centre);
+            // f <= 0 here and reaches 0 at most: a surface without an inside?
+            // Followed down to blocks (only while none is found) to say where.
+            if (!touching || !touchCentres.empty() || !active.empty()) return;
+        }
+        int axis = 0;
+        for (int a = 1; a < 3; ++a)
+            if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+        if (hi[axis] - lo[axis] == 1) {
+            if (touching) {
+                touchCentres.push_back(centre);
+                return;
+            }
+            active.push_back(lo);
+            if (active.size() > limit) overLimit = true;
+            return;
+        }
+        const int mid = lo[axis] + (hi[axis] - lo[axis]) / 2;
+        std::array<int, 3> hiA = hi, loB = lo;
+        hiA[axis] = mid;
+        loB[axis] = mid;
+        run(lo, hiA);
+        run(loB, hi);
+    }
+};
+
+Grid makeGrid(const ImplicitField& field, double resolution) {
+    Grid g;
+    const double target = field.box.longestSide() / resolution;
+    for (std::size_t a = 0; a < 3; ++a) {
+        const double size = field.box.size(int(a));
+        const int n = std::max(1, int(std::ceil(size / target - 1e-9)));
+        g.h[a] = size / n;
+        // Closed: half a cell of margin on each side, so the box faces cut
+        // cells through their middle and never land on corners.
+        const bool closed = field.boundary == BoxBoundary::Closed;
+        g.origin[a] = field.box.lo[a] - (closed ? g.h[a] / 2 : 0);
+        g.cells[a] = n + (closed ? 1 : 0);
+        g.blocks[a] = (g.cells[a] + kB - 1) / kB;
+    }
+    return g;
+}
+
+template <class Task>
+void parallelFor(std::size_t count, int threads, const ImplicitField& field,
+                 std::vector<EvaluationCounts>& counts, Task task) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&](int w) {
+        FieldSampler sampler(field);
+        for (std::size_t i = next++; i < count; i = next++)
+            task(i, sampler, w);
+        counts[std::size_t(w)] += sampler.counts();
+    };
+    std::vector<std::thread> pool;
+    for (int w = 1; w < threads; ++w)
+        pool.emplace_back(worker, w);
+    worker(0);
+    for (std::thread& t : pool)
+        t.join();
+}
+
+std::string formatPoint(const Vec3& p) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p[0], p[1], p[2]);
+    return buf;
+}
+
+} // namespace
+
+MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    MeshResult result;
+    if (!field.box.valid()) {
+        result.error = "the domain box must be finite with max above min on every axis";
+        return result;
+    }
+    if (!(options.resolution >= 1) || !std::isfinite(options.resolution)) {
+        result.error = "the resolution must be at least 1 cell along the longest side";
+        return result;
+    }
+    if (options.resolution > double(kB) * (1 << 20)) {
+        result.error = "a resolution above " + std::to_string(kB << 20) + " cells is not supported";
+        return result;
+    }
+    const Grid grid = makeGrid(field, options.resolution);
+    result.stats.cells = grid.cells;
+    result.stats.cellSize = grid.h;
+    result.stats.blocks = std::size_t(grid.blocks[0]) * grid.blocks[1] * grid.blocks[2];
+
+    // What one active block costs while meshing, and its share of the mesh
+    // (a surface through a block makes about 2 kB^2 vertices at most).
+    const std::size_t bytesPerBlock =
+        kCorners * sizeof(double) + kCells * sizeof(std::int32_t) +
+        2 * kB * kB * (2 * sizeof(Vec3) + 2 * sizeof(Vec3f) + 2 * sizeof(Triangle));
+    const std::size_t blockLimit =
+        std::max<std::size_t>(1, options.memoryBudgetBytes / bytesPerBlock);
+
+    FieldSampler pruneSampler(field);
+    Pruner pruner{grid, pruneSampler, blockLimit, {}, {}, {}, false};
+    pruner.run({0, 0, 0}, grid.blocks);
+    EvaluationCounts counts = pruneSampler.counts();
+    if (pruner.overLimit) {
+        result.error =
+            "resolution " + std::to_string(int(options.resolution)) + " would need more than " +
+            std::to_string(options.memoryBudgetBytes >> 20) +
+            " MiB for this shape; lower the resolution (or the target accuracy) or raise "
+            "the memory budget";
+        result.stats.evaluations = counts;
+        return result;
+    }
+    std::sort(pruner.active.begin(), pruner.active.end(),
+              [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
+
+    const int threads = options.threads > 0 ? options.threads
+                                            : std::max(1, int(std::thread::hardware_concurrency()));
+    std::vector<Block> blocks(pruner.active.size());
+    for (std::size_t i = 0; i < blocks.size(); ++i)
+        blocks[i].coord = pruner.active[i];
+    std::vector<EvaluationCounts> perThread(static_cast<std::size_t>(threads));
+    std::vector<Observations> seen(static_cast<std::size_t>(threads));
+    std::atomic<bool> stopped{false};
+    std::mutex progressMutex;
+    std::atomic<std::size_t> done{0};
+    const std::size_t totalWork = 2 * blocks.size();
+    auto report = [&] {
+        const std::size_t d = ++done;
+        if (options.progress && (d % 64 == 0 || d == totalWork)) {
+            std::lock_guard lock(progressMutex);
+            options.progress(double(d) / double(std::max<std::size_t>(totalWork, 1)));
+        }
+    };
+    auto cancelled = [&] { return options.cancel && options.cancel->load(); };
+
+    std::vector<Contourer> contourers;
+    contourers.reserve(std::size_t(threads));
+    for (int w = 0; w < threads; ++w)
+        contourers.emplace_back(field, options, grid);
+    auto sample = [&](std::vector<Block>& list) {
+        parallelFor(list.size(), threads, field, perThread,
+                    [&](std::size_t i, FieldSampler& s, int w) {
+                        if (stopped || cancelled()) {
+                            stopped = true;
+                            return;
+                        }
+                        contourers[std::size_t(w)].sampleBlock(list[i], s, seen[std::size_t(w)]);
+                        report();
+                    });
+    };
+    sample(blocks);
+
+    // Phase 2, repeated in the rare case a neighbouring cell's block was not
+    // sampled (an interval that should have held a zero did not).
+    for (int round = 0; round < 3 && !stopped; ++round) {
+        std::sort(blocks.begin(), blocks.end(),
+                  [](const Block& a, const Block& b) { return keyOf(a.coord) < keyOf(b.coord); });
+        std::uint32_t offset = 0;
+        std::vector<const Block*> order;
+        for (Block& b : blocks) {
+            b.offset = offset;
+            offset += std::uint32_t(b.positions.size());
+            order.push_back(&b);
+        }
+        for (Contourer& c : contourers) {
+            c.index(blocks);
+            c.setOrder(&order);
+        }
+        std::vector<std::vector<BlockCoord>> missing(static_cast<std::size_t>(threads));
+        parallelFor(blocks.size(), threads, field, perThread,
+                    [&](std::size_t i, FieldSampler&, int w) {
+                        if (stopped || cancelled()) {
+                            stopped = true;
+                            return;
+                        }
+                        contourers[std::size_t(w)].connectBlock(blocks[i], missing[std::size_t(w)]);
+                        if (round == 0) report();
+                    });
+        std::vector<BlockCoord> extra;
+        for (auto& m : missing)
+            extra.insert(extra.end(), m.begin(), m.end());
+        std::sort(extra.begin(), extra.end(),
+                  [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
+        extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
+        if (extra.empty()) break;
+        std::vector<Block> added(extra.size());
+        for (std::size_t i = 0; i < extra.size(); ++i)
+            added[i].coord = extra[i];
+        sample(added);
+        for (Block& b : added)
+            blocks.push_back(std::move(b));
+    }
+    for (const EvaluationCounts& c : perThread)
+        counts += c;
+    result.stats.evaluations = counts;
+    result.stats.activeBlocks = blocks.size();
+    if (stopped) {
+        result.cancelled = true;
+        return result;
+    }
+
+    Mesh& mesh = result.mesh;
+    for (const Block& b : blocks) {
+        result.stats.surfaceCells += b.positions.size();
+        for (std::size_t i = 0; i < b.positions.size(); ++i) {
+            mesh.positions.push_back(
+                {float(b.positions[i][0]), float(b.positions[i][1]), float(b.positions[i][2])});
+            mesh.normals.push_back(
+                {float(b.normals[i][0]), float(b.normals[i][1]), float(b.normals[i][2])});
+        }
+    }
+    for (const Block& b : blocks)
+        mesh.triangles.insert(mesh.triangles.end(), b.triangles.begin(), b.triangles.end());
+
+    // Warnings: undefined regions, and a function that touches zero without
+    // ever changing sign (no inside, so no surface).
+    Observations all;
+    for (const Observations& o : seen)
+        all.merge(o);
+    if (!all.sawNaN) {
+        FieldSampler probe(field);
+        for (const Vec3& c : pruner.undefinedCentres)
+            if (std::isnan(probe.value(c))) {
+                all.sawNaN = true;
+                all.nanPoint = c;
+                break;
+            }
+    }
+    if (all.sawNaN) {
+        std::string where;
+        formula::ParameterValues params(field.tape);
+        for (const auto& [name, v] : field.parameters)
+            params.set(name, v);
+        if (auto d = formula::explainNonFinite(
+                field.tape, params.values(),
+                formula::pointXYZ(all.nanPoint[0], all.nanPoint[1], all.nanPoint[2], field.t)))
+            where = " (" + d->message + " at " + std::to_string(d->range.begin.line) + ":" +
+                    std::to_string(d->range.begin.column) + " of the formula)";
+        result.warnings.push_back("the function is undefined (NaN) in part of the box, e.g. at " +
+                                  formatPoint(all.nanPoint) + where +
+                                  "; the surface is meshed only where it is defined");
+    }
+    if (mesh.empty() && (std::isfinite(all.maxValue) || !pruner.touchCentres.empty())) {
+        FieldSampler probe(field);
+        if (!std::isfinite(all.maxValue)) {
+            all.maxPoint = pruner.touchCentres.front();
+            all.maxAbs = std::abs(probe.value(all.maxPoint));
+        }
+        const double reached = climbTowardsZero(probe, all.maxPoint);
+        if (reached > 0)
+            result.warnings.push_back("the solid is thinner than a cell near " +
+                                      formatPoint(all.maxPoint) +
+                                      " and no grid corner falls inside it; raise the resolution");
+        else if (reached > -1e-12 * std::max(all.maxAbs, 1e-300))
+            result.warnings.push_back(
+                "the function reaches zero near " + formatPoint(all.maxPoint) +
+                " but never becomes positive (as f = -g^2 does): there is no inside, so there is "
+                "no surface; write the function so that it is positive inside (for f = -g^2, use "
+                "g, or 0.01 - abs(g) for a thin shell)");
+    }
+    result.stats.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace fl::mesh

@@ -1,0 +1,82 @@
+#pragma once
+// What the mesher samples: an implicit / explicit (FRep) definition, f >= 0
+// inside, at a fixed time t with chosen parameter values, over a domain box,
+// optionally closed by the box (the solid is cut by the box, so its mesh is
+// closed where the shape meets the box). One `FieldSampler` per thread holds
+// the formula engine's evaluators and counts what it evaluated.
+#include "formula/eval_batch.h"
+#include "formula/eval_gradient.h"
+#include "formula/eval_interval.h"
+#include "formula/eval_scalar.h"
+#include "formula/tape.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::mesh {
+
+struct Box3 {
+    std::array<double, 3> lo{-1, -1, -1};
+    std::array<double, 3> hi{1, 1, 1};
+    double size(int axis) const { return hi[std::size_t(axis)] - lo[std::size_t(axis)]; }
+    double longestSide() const;
+    double diagonal() const;
+    bool valid() const; // finite and hi > lo on every axis
+};
+
+enum class BoxBoundary : std::uint8_t {
+    Closed, // the box cuts the solid: faces on the box close the mesh (default)
+    Open,   // the mesh simply stops at the box: open where the shape leaves it
+};
+
+struct ImplicitField {
+    formula::Tape tape; // first output is f
+    Box3 box;
+    double t = 0;
+    std::vector<std::pair<std::string, double>> parameters; // values other than the defaults
+    BoxBoundary boundary = BoxBoundary::Closed;
+};
+
+struct EvaluationCounts {
+    std::size_t points = 0;    // point evaluations (batch and scalar)
+    std::size_t gradients = 0; // value-and-gradient evaluations
+    std::size_t intervals = 0; // box evaluations
+    EvaluationCounts& operator+=(const EvaluationCounts& o) {
+        points += o.points;
+        gradients += o.gradients;
+        intervals += o.intervals;
+        return *this;
+    }
+};
+
+class FieldSampler {
+  public:
+    explicit FieldSampler(const ImplicitField& field);
+
+    // f at n points (x, y, z arrays); the box does not enter (see interval).
+    void values(const double* x, const double* y, const double* z, std::size_t n, double* out);
+    double value(const std::array<double, 3>& p);
+    // f and its gradient.
+    formula::Dual gradient(const std::array<double, 3>& p);
+    // An interval containing f over the box [lo, hi] — for a closed boundary,
+    // of min(f, distance to the domain box's faces): only its sign is used
+    // (can the solid's boundary pass through here?), so the two units may mix.
+    formula::Interval interval(const std::array<double, 3>& lo, const std::array<double, 3>& hi);
+
+    const EvaluationCounts& counts() const { return counts_; }
+
+  private:
+    const ImplicitField& field_;
+    bool clip_;
+    formula::BatchEvaluator batch_;
+    formula::ScalarEvaluator scalar_;
+    formula::GradientEvaluator gradient_;
+    formula::IntervalEvaluator interval_;
+    EvaluationCounts counts_;
+};
+
+} // namespace fl::mesh

@@ -1,0 +1,53 @@
+#include "mesh_topology.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace fl::mesh {
+
+Topology analyseTopology(const Mesh& mesh) {
+    Topology t;
+    // Per undirected edge: how many triangles use it, and the balance of
+    // directions (a well-oriented shared edge is walked once each way).
+    struct Use {
+        int count = 0;
+        int balance = 0;
+    };
+    std::unordered_map<std::uint64_t, Use> edges;
+    edges.reserve(mesh.triangles.size() * 2);
+    std::unordered_set<std::uint32_t> used;
+    for (const Triangle& tri : mesh.triangles) {
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+            ++t.degenerateTriangles;
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = tri[k], b = tri[(k + 1) % 3];
+            used.insert(a);
+            const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+            Use& u = edges[key];
+            ++u.count;
+            u.balance += a < b ? 1 : -1;
+        }
+        const Vec3f& p = mesh.positions[tri[0]];
+        const Vec3f& q = mesh.positions[tri[1]];
+        const Vec3f& r = mesh.positions[tri[2]];
+        // Divergence theorem: the sum of p . (q x r) / 6 over outward triangles.
+        t.signedVolume += (double(p[0]) * (double(q[1]) * r[2] - double(q[2]) * r[1]) -
+                           double(p[1]) * (double(q[0]) * r[2] - double(q[2]) * r[0]) +
+                           double(p[2]) * (double(q[0]) * r[1] - double(q[1]) * r[0])) /
+                          6.0;
+    }
+    t.edges = edges.size();
+    std::size_t faces = mesh.triangles.size() - t.degenerateTriangles;
+    for (const auto& [key, u] : edges) {
+        if (u.count == 1) ++t.boundaryEdges;
+        if (u.count > 2) ++t.nonManifoldEdges;
+        if (u.count == 2 && u.balance != 0) ++t.misorientedEdges;
+    }
+    t.eulerCharacteristic = long(used.size()) - long(t.edges) + long(faces);
+    return t;
+}
+
+} // namespace fl::mesh

@@ -1,0 +1,27 @@
+#pragma once
+// Facts about a mesh's connectivity that tests (and `functionlab mesh`)
+// check: is it closed, is every edge shared by exactly two triangles, are
+// neighbouring triangles oriented alike, which way does it enclose volume.
+#include "mesh.h"
+
+#include <cstddef>
+
+namespace fl::mesh {
+
+struct Topology {
+    std::size_t edges = 0;
+    std::size_t boundaryEdges = 0;       // used by one triangle: holes, open borders
+    std::size_t nonManifoldEdges = 0;    // used by three or more
+    std::size_t misorientedEdges = 0;    // two triangles walk it the same way
+    std::size_t degenerateTriangles = 0; // a repeated index
+    long eulerCharacteristic = 0;        // V - E + F over the vertices triangles use
+    double signedVolume = 0;             // > 0 when the triangles face outward
+
+    bool closed() const { return boundaryEdges == 0; }
+    bool manifold() const { return nonManifoldEdges == 0; }
+    bool consistentlyOriented() const { return misorientedEdges == 0; }
+};
+
+Topology analyseTopology(const Mesh& mesh);
+
+} // namespace fl::mesh

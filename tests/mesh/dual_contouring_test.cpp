@@ -1,0 +1,157 @@
+// The mesher on shapes whose answer is known: closed, manifold, outward,
+// on the surface, sharp where min/max make edges, the same for any number of
+// threads, and honest about budget, cancellation and progress.
+#include "mesh_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace fl::mesh;
+using namespace fl::mesh::testing;
+
+namespace {
+
+void expectWatertight(const Mesh& mesh) {
+    const Topology t = analyseTopology(mesh);
+    EXPECT_TRUE(t.closed()) << t.boundaryEdges << " boundary edges";
+    EXPECT_TRUE(t.manifold()) << t.nonManifoldEdges << " non-manifold edges";
+    EXPECT_TRUE(t.consistentlyOriented()) << t.misorientedEdges << " misoriented edges";
+    EXPECT_EQ(t.degenerateTriangles, 0u);
+    EXPECT_GT(t.signedVolume, 0); // faces outward
+}
+
+} // namespace
+
+TEST(DualContouring, SphereIsClosedOutwardAndOnTheSurface) {
+    const ImplicitField f = field("0.8^2 - x*x - y*y - z*z");
+    MeshOptions o;
+    o.resolution = 40;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_TRUE(r.warnings.empty());
+    expectWatertight(r.mesh);
+    const Topology t = analyseTopology(r.mesh);
+    EXPECT_EQ(t.eulerCharacteristic, 2); // a sphere
+    const double exact = 4.0 / 3.0 * std::numbers::pi * 0.512;
+    EXPECT_NEAR(t.signedVolume, exact, 0.01 * exact);
+    EXPECT_LT(maxSurfaceError(f, r.mesh), 1e-3);
+    // Normals are unit and point away from the centre.
+    for (std::size_t i = 0; i < r.mesh.vertexCount(); ++i) {
+        const Vec3f& p = r.mesh.positions[i];
+        const Vec3f& n = r.mesh.normals[i];
+        EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1, 1e-5);
+        EXPECT_GT(p[0] * n[0] + p[1] * n[1] + p[2] * n[2], 0);
+    }
+}
+
+TEST(DualContouring, MinMaxCubeKeepsItsEdgesAndCornersSharp) {
+    // A cube of half-size 0.5 as the intersection of six half-spaces; the
+    // grid does not line up with its faces.
+    const ImplicitField f = field("min(min(0.5 - abs(x), 0.5 - abs(y)), 0.5 - abs(z))");
+    MeshOptions o;
+    o.resolution = 23;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    expectWatertight(r.mesh);
+    float extreme = 0;
+    for (const Vec3f& p : r.mesh.positions) {
+        for (float c : p)
+            EXPECT_LE(std::abs(c), 0.5f + 1e-4f);
+        extreme = std::max(extreme, std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
+    }
+    EXPECT_NEAR(extreme, 1.5f, 1e-3f); // the corners are there, not rounded off
+    EXPECT_NEAR(analyseTopology(r.mesh).signedVolume, 1.0, 1e-3);
+}
+
+TEST(DualContouring, TheBoxClosesTheSolidOrLeavesItOpen) {
+    // The half-space z <= 0.3 fills most of the box.
+    const ImplicitField closed = field("0.3 - z");
+    MeshOptions o;
+    o.resolution = 16;
+    const MeshResult c = meshImplicit(closed, o);
+    ASSERT_TRUE(c.ok());
+    expectWatertight(c.mesh);
+    EXPECT_NEAR(analyseTopology(c.mesh).signedVolume, 2 * 2 * 1.3, 1e-3); // box below z = 0.3
+    const MeshResult open = meshImplicit(field("0.3 - z", 1.0, BoxBoundary::Open), o);
+    ASSERT_TRUE(open.ok());
+    const Topology t = analyseTopology(open.mesh);
+    EXPECT_GT(t.boundaryEdges, 0u); // a sheet with a border where it leaves the box
+    EXPECT_TRUE(t.manifold());
+    EXPECT_TRUE(t.consistentlyOriented());
+    for (const Vec3f& n : open.mesh.normals)
+        EXPECT_NEAR(n[2], 1, 1e-6); // facing up, out of the solid
+}
+
+TEST(DualContouring, SameOutputWhateverTheNumberOfThreads) {
+    const ImplicitField f = field("sin(3*x)*cos(3*y) + sin(3*y)*cos(3*z) + sin(3*z)*cos(3*x)");
+    MeshOptions one, two;
+    one.resolution = two.resolution = 30;
+    one.threads = 1;
+    two.threads = 2;
+    const MeshResult a = meshImplicit(f, one), b = meshImplicit(f, two);
+    ASSERT_TRUE(a.ok());
+    ASSERT_TRUE(b.ok());
+    EXPECT_EQ(a.mesh.positions, b.mesh.positions);
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+    expectWatertight(a.mesh); // a gyroid closed by the box
+}
+
+TEST(DualContouring, IntervalsSkipEmptySpace) {
+    const ImplicitField f = field("0.1^2 - x*x - y*y - z*z"); // a small ball in a big box
+    MeshOptions o;
+    o.resolution = 128;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    EXPECT_LT(r.stats.activeBlocks * 20, r.stats.blocks);
+    EXPECT_LT(r.stats.evaluations.points * 50, std::size_t(129 * 129 * 129));
+    expectWatertight(r.mesh);
+}
+
+TEST(DualContouring, ResolutionIsContinuous) {
+    const ImplicitField f = field("0.8 - sqrt(x*x + y*y + z*z)");
+    std::size_t previous = 0;
+    for (double res : {10.0, 10.5, 11.0, 14.2, 20.0}) {
+        MeshOptions o;
+        o.resolution = res;
+        const MeshResult r = meshImplicit(f, o);
+        ASSERT_TRUE(r.ok());
+        EXPECT_GE(r.mesh.triangleCount(), previous) << res;
+        previous = r.mesh.triangleCount();
+    }
+}
+
+TEST(DualContouring, BudgetCancelProgressAndBadInput) {
+    const ImplicitField f = field("0.5 - x*x - y*y - z*z");
+    MeshOptions o;
+    o.resolution = 4000;
+    o.memoryBudgetBytes = 1 << 20;
+    MeshResult r = meshImplicit(f, o);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(r.error.find("lower the resolution"), std::string::npos) << r.error;
+
+    std::atomic<bool> cancel{true};
+    o = {};
+    o.cancel = &cancel;
+    r = meshImplicit(f, o);
+    EXPECT_TRUE(r.cancelled);
+
+    o = {};
+    double last = -1;
+    bool monotonic = true;
+    o.progress = [&](double p) {
+        monotonic = monotonic && p >= last;
+        last = p;
+    };
+    r = meshImplicit(f, o);
+    EXPECT_TRUE(monotonic);
+    EXPECT_DOUBLE_EQ(last, 1.0);
+
+    ImplicitField bad = f;
+    bad.box.hi[0] = bad.box.lo[0];
+    EXPECT_NE(meshImplicit(bad).error.find("domain box"), std::string::npos);
+    o = {};
+    o.resolution = std::nan("");
+    EXPECT_NE(meshImplicit(f, o).error.find("resolution"), std::string::npos);
+}

@@ -1,0 +1,150 @@
+// The hard cases of docs/meshing.md, one test each: what the mesher does is
+// written down there and checked here.
+#include "mesh_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace fl::mesh;
+using namespace fl::mesh::testing;
+
+TEST(HardCases, TangentSpheresTouchingAtAPoint) {
+    // Two balls of radius 0.4 touching at the origin: one closed mesh (the
+    // contact cell joins them), never a crash or a hole.
+    const ImplicitField f =
+        field("max(0.16 - (x-0.4)^2 - y*y - z*z, 0.16 - (x+0.4)^2 - y*y - z*z)");
+    MeshOptions o;
+    o.resolution = 32;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    const Topology t = analyseTopology(r.mesh);
+    EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.consistentlyOriented());
+    // Where the gap between the balls is narrower than a cell (here within
+    // about 0.16 of the axis), one vertex per cell bridges it, up to a cell
+    // off the surface; everywhere else the vertices are on the surface.
+    EXPECT_LT(maxSurfaceError(f, r.mesh), 1.5 * r.stats.cellSize[0] / f.box.diagonal());
+    Mesh away = r.mesh;
+    away.triangles.clear();
+    away.positions.clear();
+    for (const Vec3f& p : r.mesh.positions)
+        if (p[1] * p[1] + p[2] * p[2] > 0.2 * 0.2) away.positions.push_back(p);
+    EXPECT_GT(away.positions.size(), r.mesh.positions.size() / 2);
+    EXPECT_LT(maxVertexError(f, away), 2e-3);
+}
+
+TEST(HardCases, ShellThinnerThanACellIsNotLostWhereItCrossesEdges) {
+    // A spherical shell 0.02 thick meshed with cells 0.1 wide: the grid sees
+    // it only where a corner falls inside; what it sees is closed.
+    const ImplicitField f = field("0.01 - abs(sqrt(x*x + y*y + z*z) - 0.7)");
+    MeshOptions o;
+    o.resolution = 20;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    const Topology t = analyseTopology(r.mesh);
+    EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.consistentlyOriented());
+    o.resolution = 150; // cells of 0.013: the shell is found everywhere
+    const MeshResult fine = meshImplicit(f, o);
+    ASSERT_TRUE(fine.ok());
+    EXPECT_TRUE(analyseTopology(fine.mesh).closed());
+    const double shell = 4 * M_PI * 0.49 * 0.02;
+    EXPECT_NEAR(analyseTopology(fine.mesh).signedVolume, shell, 0.05 * shell);
+}
+
+TEST(HardCases, ConeApexHasADefinedNormal) {
+    // A double cone: the gradient vanishes at the apex. Every normal is finite
+    // and unit length (the crossings' normals stand in there).
+    const ImplicitField f = field("min(x*x + z*z - y*y, 0.81 - y*y) * -1");
+    MeshOptions o;
+    o.resolution = 20; // the apex at the origin lands on a grid corner
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    for (const Vec3f& n : r.mesh.normals) {
+        ASSERT_TRUE(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]));
+        EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1, 1e-5);
+    }
+}
+
+TEST(HardCases, NoSignChangeIsWarnedNotSilentlyEmpty) {
+    const ImplicitField f = field("-(x*x + y*y + z*z - 0.25)^2", 1.0, BoxBoundary::Open);
+    MeshOptions o;
+    o.resolution = 24;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.mesh.empty());
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("never becomes positive"), std::string::npos);
+}
+
+TEST(HardCases, NaNRegionsAreMeshedOnlyWhereDefinedWithOneWarning) {
+    // sqrt(x) is undefined for x < 0: the ball is cut there and left open.
+    const ImplicitField f = field("0.6^2 - x*x - y*y - z*z + 0*sqrt(x)", 1.0, BoxBoundary::Open);
+    MeshOptions o;
+    o.resolution = 24;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("undefined (NaN)"), std::string::npos) << r.warnings[0];
+    EXPECT_NE(r.warnings[0].find("sqrt"), std::string::npos) << r.warnings[0];
+    EXPECT_FALSE(r.mesh.empty());
+    for (const Vec3f& p : r.mesh.positions)
+        EXPECT_GE(p[0], -1e-6f);
+}
+
+TEST(HardCases, VeryLargeAndVerySmallScalesGiveTheSameRelativeError) {
+    double errors[3];
+    int i = 0;
+    for (double s : {1e-6, 1.0, 1e6}) {
+        char formula[128];
+        std::snprintf(formula, sizeof formula, "(0.7*%.17g)^2 - x*x - y*y - z*z", s);
+        const ImplicitField f = field(formula, s);
+        MeshOptions o;
+        o.resolution = 24;
+        const MeshResult r = meshImplicit(f, o);
+        ASSERT_TRUE(r.ok());
+        EXPECT_TRUE(analyseTopology(r.mesh).closed());
+        errors[i++] = maxSurfaceError(f, r.mesh);
+    }
+    EXPECT_NEAR(errors[0], errors[1], 1e-6);
+    EXPECT_NEAR(errors[2], errors[1], 1e-6);
+}
+
+TEST(HardCases, HighFrequencyNoiseStaysClosed) {
+    const ImplicitField f = field("0.7 - sqrt(x*x + y*y + z*z) + 0.05*noise(20*x, 20*y, 20*z)");
+    MeshOptions o;
+    o.resolution = 48;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    const Topology t = analyseTopology(r.mesh);
+    EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.consistentlyOriented());
+}
+
+TEST(HardCases, BarthSexticNodesStayClosed) {
+    // Barth's sextic: 65 nodes (double points) where sheets meet.
+    const ImplicitField f =
+        field("-(4*(1.618034^2*x*x - y*y)*(1.618034^2*y*y - z*z)*(1.618034^2*z*z - x*x)"
+              " - (1 + 2*1.618034)*(x*x + y*y + z*z - 1)^2)",
+              1.8);
+    MeshOptions o;
+    o.resolution = 60;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    const Topology t = analyseTopology(r.mesh);
+    EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.consistentlyOriented());
+}
+
+TEST(HardCases, ASolidThinnerThanACellIsReported) {
+    const ImplicitField f =
+        field("0.02^2 - (x-0.03)^2 - (y-0.03)^2 - (z-0.03)^2", 1.0, BoxBoundary::Open);
+    MeshOptions o;
+    o.resolution = 8; // cells of 0.25 around a ball of radius 0.02
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.mesh.empty());
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("thinner than a cell"), std::string::npos) << r.warnings[0];
+}
