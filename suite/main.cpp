@@ -26,6 +26,9 @@ commands:
                             load a scene (.x3d .x3dv .wrl, gzip too); diagnostics as
                             FILE:LINE:COL; --plan: what varies with time, what is tangible
   convert IN OUT            convert a scene between X3D XML, ClassicVRML and VRML97
+  mesh FILE -o OUT [--time T] [--error E | --resolution N]
+  mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT
+                            polygonize function shapes; .stl .obj .ply .glb .x3d
   bench eval [--json]       evaluator speed: FunctionLab vs hand-written C++ vs muParser
 
 Run `functionlab <command> --help` for a command's options.
@@ -56,6 +59,7 @@ int main(int argc, char** argv) {
         if (cmd == "bench") return fl::cli::benchCommand(rest);
         if (cmd == "check") return fl::cli::checkCommand(rest);
         if (cmd == "convert") return fl::cli::convertCommand(rest);
+        if (cmd == "mesh") return fl::cli::meshCommand(rest);
     } catch (const std::exception& e) {
         std::cerr << "functionlab: " << e.what() << "\n";
         return fl::cli::kExitDiagnostic;

@@ -12,5 +12,6 @@ int formulaCommand(const Args& args);
 int benchCommand(const Args& args);
 int checkCommand(const Args& args);
 int convertCommand(const Args& args);
+int meshCommand(const Args& args);
 
 } // namespace fl::cli

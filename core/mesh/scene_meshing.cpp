@@ -1,0 +1,277 @@
+#include "scene_meshing.h"
+
+#include "animation/clock.h"
+#include "animation/time_window.h"
+#include "error_driven.h"
+#include "formula/eval_scalar.h"
+#include "scene/field_access.h"
+
+#include <cmath>
+#include <unordered_set>
+
+namespace fl::mesh {
+namespace {
+
+using scene::Node;
+
+// x' = m x + t
+struct Affine {
+    double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    double t[3] = {0, 0, 0};
+
+    Affine operator*(const Affine& o) const {
+        Affine r;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j)
+                r.m[i][j] = m[i][0] * o.m[0][j] + m[i][1] * o.m[1][j] + m[i][2] * o.m[2][j];
+            r.t[i] = m[i][0] * o.t[0] + m[i][1] * o.t[1] + m[i][2] * o.t[2] + t[i];
+        }
+        return r;
+    }
+    static Affine translate(double x, double y, double z) {
+        Affine a;
+        a.t[0] = x, a.t[1] = y, a.t[2] = z;
+        return a;
+    }
+    static Affine scale(double x, double y, double z) {
+        Affine a;
+        a.m[0][0] = x, a.m[1][1] = y, a.m[2][2] = z;
+        return a;
+    }
+    static Affine rotate(double ax, double ay, double az, double angle) {
+        Affine a;
+        const double n = std::sqrt(ax * ax + ay * ay + az * az);
+        if (!(n > 0) || !std::isfinite(angle)) return a;
+        ax /= n, ay /= n, az /= n;
+        const double c = std::cos(angle), s = std::sin(angle), k = 1 - c;
+        a.m[0][0] = c + ax * ax * k, a.m[0][1] = ax * ay * k - az * s, a.m[0][2] = ax * az * k + ay * s;
+        a.m[1][0] = ay * ax * k + az * s, a.m[1][1] = c + ay * ay * k, a.m[1][2] = ay * az * k - ax * s;
+        a.m[2][0] = az * ax * k - ay * s, a.m[2][1] = az * ay * k + ax * s, a.m[2][2] = c + az * az * k;
+        return a;
+    }
+    static Affine rotate(const std::vector<double>& r) {
+        return r.size() == 4 ? rotate(r[0], r[1], r[2], r[3]) : Affine{};
+    }
+    // Normals transform by the inverse transpose.
+    std::array<double, 3> normal(const Vec3f& n) const {
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        double cof[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+                cof[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+            }
+        std::array<double, 3> r{};
+        for (int i = 0; i < 3; ++i)
+            r[std::size_t(i)] = (cof[i][0] * n[0] + cof[i][1] * n[1] + cof[i][2] * n[2]) * (det < 0 ? -1 : 1);
+        const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+        if (len > 0)
+            for (double& c : r)
+                c /= len;
+        return r;
+    }
+};
+
+std::vector<double> vec(const Node& n, const char* field) { return scene::numbersField(n, field); }
+
+// X3D Transform: T * C * R * SR * S * -SR * -C.
+Affine transformOf(const Node& n) {
+    const auto t = vec(n, "translation"), c = vec(n, "center"), s = vec(n, "scale");
+    const auto r = vec(n, "rotation"), sr = vec(n, "scaleOrientation");
+    Affine srInverse = Affine::rotate(sr);
+    if (sr.size() == 4) srInverse = Affine::rotate(sr[0], sr[1], sr[2], -sr[3]);
+    return Affine::translate(t[0], t[1], t[2]) * Affine::translate(c[0], c[1], c[2]) *
+           Affine::rotate(r) * Affine::rotate(sr) * Affine::scale(s[0], s[1], s[2]) * srInverse *
+           Affine::translate(-c[0], -c[1], -c[2]);
+}
+
+class Walker {
+  public:
+    Walker(const scene::Scene& scene, const SceneMeshOptions& options, SceneMeshes& out)
+        : scene_(scene), options_(options), out_(out) {}
+
+    void walk(const Node* raw, const Affine& m) {
+        const Node* n = effective(raw);
+        if (!n) return;
+        const std::string& type = n->type;
+        if (type == "FShape") {
+            shape(*n, m);
+            return;
+        }
+        Affine here = m;
+        if (type == "Transform") here = m * transformOf(*n);
+        if (type == "FTransform") here = m * functionTransform(*n);
+        if (type == "Switch") {
+            const auto choice = scene::numberField(*n, "whichChoice", 0, -1);
+            const auto children = scene::nodesField(*n, "children");
+            if (choice >= 0 && choice < double(children.size())) walk(children[std::size_t(choice)], here);
+            return;
+        }
+        if (type == "LOD") { // the most detailed level
+            const auto levels = scene::nodesField(*n, "level");
+            const auto children = scene::nodesField(*n, "children");
+            if (!children.empty()) walk(children.front(), here);
+            else if (!levels.empty()) walk(levels.front(), here);
+            return;
+        }
+        for (const char* field : {"children"})
+            if (n->spec && scene::findFieldSpec(*n->spec, field))
+                for (const Node* child : scene::nodesField(*n, field))
+                    walk(child, here);
+        if (n->inlined)
+            for (const Node* root : n->inlined->roots)
+                walk(root, here);
+    }
+
+  private:
+    static const Node* effective(const Node* n) {
+        for (int i = 0; n && n->proto && i < 64; ++i)
+            n = n->expansion.empty() ? nullptr : n->expansion.front();
+        return n;
+    }
+
+    std::string nameOf(const Node& n) const {
+        std::string path = n.file >= 0 && std::size_t(n.file) < scene_.files.size()
+                               ? scene_.files[std::size_t(n.file)].path
+                               : "<scene>";
+        return n.type + (n.defName.empty() ? "" : " " + n.defName) + " (" + path + ":" +
+               std::to_string(n.where.line) + ":" + std::to_string(n.where.column) + ")";
+    }
+
+    // The node's t at the moment asked for.
+    double timeOf(const Node& n) const {
+        animation::TimeWindow w;
+        w.startNs = animation::secondsToNanoseconds(scene::numberField(n, "startTime"));
+        w.stopNs = animation::secondsToNanoseconds(scene::numberField(n, "stopTime"));
+        const double cycle = scene::numberField(n, "cycleInterval", 0, 1);
+        w.cycleSeconds = cycle > 0 ? cycle : 1;
+        w.loop = scene::boolField(n, "loop");
+        const auto span = vec(n, "timeSpan");
+        const std::int64_t now = animation::secondsToNanoseconds(options_.sceneSeconds);
+        return animation::functionTime(w, span.size() > 0 ? span[0] : 0, span.size() > 1 ? span[1] : 1,
+                                       now);
+    }
+
+    // translation, rotationAngle about rotationAxis and scale as functions of t, about center.
+    Affine functionTransform(const Node& n) {
+        const double t = timeOf(n);
+        auto outputs = [&](const char* field, std::vector<double> fallback) {
+            const formula::Tape* tape = scene_.definition(n, field);
+            if (!tape) return fallback;
+            formula::ScalarEvaluator e(*tape);
+            std::vector<double> values(tape->outputs.size());
+            e.evaluateAll({0, 0, 0, t, 0, 0, 0}, values.data());
+            return values;
+        };
+        const auto tr = outputs("translation", {0, 0, 0});
+        const auto angle = outputs("rotationAngle", {0});
+        const auto sc = outputs("scale", {1, 1, 1});
+        const auto axis = vec(n, "rotationAxis"), c = vec(n, "center");
+        const std::string op = scene::stringField(n, "operation");
+        if (op != "group" && !notedOperation_.count(&n)) {
+            notedOperation_.insert(&n);
+            out_.notes.push_back(nameOf(n) + ": operation '" + op +
+                                 "' is not combined yet; its children are meshed one by one");
+        }
+        if (tr.size() < 3 || sc.size() < 3 || angle.empty()) return {};
+        return Affine::translate(tr[0], tr[1], tr[2]) * Affine::translate(c[0], c[1], c[2]) *
+               Affine::rotate(axis[0], axis[1], axis[2], angle[0]) * Affine::scale(sc[0], sc[1], sc[2]) *
+               Affine::translate(-c[0], -c[1], -c[2]);
+    }
+
+    void shape(const Node& n, const Affine& m) {
+        const Node* geometry = effective(scene::nodeField(n, "geometry"));
+        if (!geometry) return; // lends its properties to the shapes grouped with it
+        if (geometry->type != "FGeometry") {
+            out_.notes.push_back(nameOf(n) + ": standard geometry " + geometry->type +
+                                 " is drawn by the viewer, not meshed here");
+            return;
+        }
+        const std::string type = scene::stringField(*geometry, "type");
+        if (type == "parametric") {
+            out_.notes.push_back(nameOf(n) + ": parametric geometry is not meshed yet");
+            return;
+        }
+        const formula::Tape* tape = scene_.definition(*geometry, "definition");
+        ShapeMesh sm;
+        sm.shape = &n;
+        sm.name = nameOf(n);
+        if (!tape) {
+            sm.error = "the geometry has no compiled definition";
+            out_.shapes.push_back(std::move(sm));
+            return;
+        }
+        ImplicitField field;
+        field.tape = *tape;
+        const auto lo = vec(*geometry, "domainMin"), hi = vec(*geometry, "domainMax");
+        field.box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        field.t = timeOf(*geometry);
+        MeshOptions o = options_.mesh;
+        MeshResult r;
+        if (options_.targetError > 0) {
+            ErrorDrivenResult e = meshForError(field, options_.targetError, o);
+            r = std::move(e.result);
+            sm.measuredError = e.error.max;
+            if (r.ok() && !e.met)
+                sm.warnings.push_back("the target error was not reached: " +
+                                      std::to_string(e.error.max) + " of the box diagonal");
+        } else {
+            if (options_.useFileResolution) o.resolution = scene::numberField(*geometry, "resolution", 0, 32);
+            r = meshImplicit(field, o);
+        }
+        sm.stats = r.stats;
+        sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
+        sm.error = r.cancelled ? "cancelled" : r.error;
+        sm.mesh = std::move(r.mesh);
+        for (std::size_t i = 0; i < sm.mesh.positions.size(); ++i) {
+            Vec3f& p = sm.mesh.positions[i];
+            const double x = p[0], y = p[1], z = p[2];
+            for (int k = 0; k < 3; ++k)
+                p[std::size_t(k)] = float(m.m[k][0] * x + m.m[k][1] * y + m.m[k][2] * z + m.t[k]);
+            const auto nn = m.normal(sm.mesh.normals[i]);
+            sm.mesh.normals[i] = {float(nn[0]), float(nn[1]), float(nn[2])};
+        }
+        // A mirroring transform turns the triangles inside out: turn them back.
+        const double det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
+                           m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
+                           m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
+        if (det < 0)
+            for (Triangle& t : sm.mesh.triangles)
+                std::swap(t[1], t[2]);
+        out_.shapes.push_back(std::move(sm));
+    }
+
+    const scene::Scene& scene_;
+    const SceneMeshOptions& options_;
+    SceneMeshes& out_;
+    std::unordered_set<const Node*> notedOperation_;
+};
+
+} // namespace
+
+SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options) {
+    SceneMeshes out;
+    Walker walker(scene, options, out);
+    for (const Node* root : scene.roots)
+        walker.walk(root, {});
+    return out;
+}
+
+Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes) {
+    Mesh all;
+    for (const ShapeMesh& s : shapes) {
+        const auto base = std::uint32_t(all.positions.size());
+        all.positions.insert(all.positions.end(), s.mesh.positions.begin(), s.mesh.positions.end());
+        all.normals.insert(all.normals.end(), s.mesh.normals.begin(), s.mesh.normals.end());
+        for (Triangle t : s.mesh.triangles) {
+            for (auto& i : t)
+                i += base;
+            all.triangles.push_back(t);
+        }
+    }
+    return all;
+}
+
+} // namespace fl::mesh

@@ -1,0 +1,41 @@
+#pragma once
+// Meshes the function shapes of a scene at one moment: every FShape whose
+// FGeometry is implicit or explicit, in its domain box, at the geometry's own
+// t for that moment, placed by the Transform and FTransform nodes above it.
+#include "dual_contouring.h"
+#include "mesh.h"
+#include "scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace fl::mesh {
+
+struct SceneMeshOptions {
+    MeshOptions mesh;         // threads, budget, cancel ...
+    bool useFileResolution = true; // each FGeometry's `resolution`; false: mesh.resolution
+    double targetError = 0;   // > 0: mesh each shape to this error instead
+    double sceneSeconds = 0;  // the moment, in scene time (wall clocks: the scene started at 0 UTC)
+};
+
+struct ShapeMesh {
+    const scene::Node* shape = nullptr;
+    std::string name;          // "FShape WATERMELON (file:line:col)"
+    Mesh mesh;                 // in scene coordinates
+    MeshStats stats;
+    double measuredError = -1; // with a target error: what was reached
+    std::vector<std::string> warnings;
+    std::string error;
+};
+
+struct SceneMeshes {
+    std::vector<ShapeMesh> shapes;
+    std::vector<std::string> notes; // what was not meshed and why
+};
+
+SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options);
+
+// All shapes' meshes as one.
+Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes);
+
+} // namespace fl::mesh

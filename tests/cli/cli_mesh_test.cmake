@@ -1,0 +1,58 @@
+# Runs `functionlab mesh` like a user: formats, warnings, exit codes.
+# Invoked by CTest: cmake -DFUNCTIONLAB=path -DEXAMPLES=dir -DOUT_DIR=dir -P cli_mesh_test.cmake
+
+function(run expected_code)
+  execute_process(COMMAND ${FUNCTIONLAB} ${ARGN}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL expected_code)
+    message(FATAL_ERROR "functionlab ${ARGN}\n exited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
+  endif()
+  set(OUT "${out}" PARENT_SCOPE)
+  set(ERR "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_match text regex)
+  if(NOT text MATCHES "${regex}")
+    message(FATAL_ERROR "expected output to match '${regex}', got:\n${text}")
+  endif()
+endfunction()
+
+file(MAKE_DIRECTORY ${OUT_DIR})
+set(SPHERE "0.8^2 - x*x - y*y - z*z")
+
+run(0 mesh --help)
+expect_match("${OUT}" "--formula")
+run(2 mesh --formula "${SPHERE}" -o ${OUT_DIR}/a.stl)                    # no --box
+run(2 mesh --formula "${SPHERE}" --box 1,1,1,0,0,0 -o ${OUT_DIR}/a.stl)  # empty box
+run(2 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 -o ${OUT_DIR}/a.dae)
+run(2 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1)                   # no -o
+run(2 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --resolution 8 --error 0.01 -o ${OUT_DIR}/a.stl)
+run(1 mesh --formula "sine(x)" --box -1,-1,-1,1,1,1 -o ${OUT_DIR}/a.stl)
+expect_match("${ERR}" "formula:1:1: error: .*sin")
+
+foreach(ext stl obj ply glb x3d)
+  run(0 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --resolution 12.5 -o ${OUT_DIR}/sphere.${ext})
+  expect_match("${ERR}" "triangles.*closed")
+  if(NOT EXISTS ${OUT_DIR}/sphere.${ext})
+    message(FATAL_ERROR "sphere.${ext} was not written")
+  endif()
+endforeach()
+# The X3D file is a scene our own checker loads.
+run(0 check ${OUT_DIR}/sphere.x3d)
+
+run(0 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --error 0.001 -o ${OUT_DIR}/e.stl)
+expect_match("${ERR}" "measured error 0?\\.000[0-9]")
+
+# No sign change: a warning on stderr, and still exit 0 with a file written.
+run(0 mesh --formula "-(x*x + y*y + z*z - 0.25)^2" --box -1,-1,-1,1,1,1 -o ${OUT_DIR}/none.obj)
+expect_match("${ERR}" "warning: .*never becomes positive")
+# Undefined regions: one warning naming the formula's sqrt.
+run(0 mesh --formula "0.5 - x*x - y*y - z*z + 0*sqrt(x)" --box -1,-1,-1,1,1,1 --open -o ${OUT_DIR}/nan.obj)
+expect_match("${ERR}" "warning: the function is undefined \\(NaN\\).*sqrt")
+
+# A scene: its function shapes, placed and meshed in their boxes.
+run(0 mesh ${EXAMPLES}/watermelon.x3d --resolution 24 -o ${OUT_DIR}/melon.glb)
+expect_match("${ERR}" "FShape .*watermelon.x3d:[0-9]+:[0-9]+.*triangles")
+run(1 mesh ${EXAMPLES}/clock.x3d -o ${OUT_DIR}/clock.glb)               # parametric only, for now
+expect_match("${ERR}" "no implicit or explicit function shape")
+run(1 mesh ${OUT_DIR}/missing.x3d -o ${OUT_DIR}/m.stl)
