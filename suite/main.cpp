@@ -30,6 +30,8 @@ commands:
   mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT
                             polygonize function shapes; .stl .obj .ply .glb .x3d
   bench eval [--json]       evaluator speed: FunctionLab vs hand-written C++ vs muParser
+  bench accuracy FILE|--formula "SRC" --box ... [--json] [--plot OUT.svg]
+                            what accuracy costs in time: adaptive mesher vs dense marching cubes
 
 Run `functionlab <command> --help` for a command's options.
 With no arguments functionlab will open the suite window; the window is not

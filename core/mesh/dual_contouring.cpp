@@ -61,7 +61,8 @@ int cellIndex(int ci, int cj, int ck) {
 }
 
 struct Crossing {
-    std::uint8_t state = 0; // 0 not computed, 1 none, 2 crossing
+    std::uint32_t generation = 0; // the block it was computed for (see Contourer::generation_)
+    std::uint8_t state = 0;       // 1 none, 2 crossing
     Vec3 point{};
     Vec3 normal{}; // unit gradient direction (the sign does not matter to the QEF)
 };
@@ -172,7 +173,9 @@ class Contourer {
                 if (std::isfinite(v)) seen.maxAbs = std::max(seen.maxAbs, std::abs(v));
             }
         }
-        crossings_.assign(std::size_t(3 * kCorners), Crossing{});
+        // Entries of earlier blocks are stale by generation: no clearing pass.
+        if (crossings_.size() != std::size_t(3 * kCorners)) crossings_.assign(std::size_t(3 * kCorners), Crossing{});
+        ++generation_;
         block.vertexOf.assign(kCells, -1);
         block.positions.clear();
         block.normals.clear();
@@ -224,7 +227,8 @@ class Contourer {
     const Crossing& crossing(FieldSampler& sampler, const Block& block, int axis, int ci, int cj,
                              int ck) {
         Crossing& x = crossings_[std::size_t(axis * kCorners + cornerIndex(ci, cj, ck))];
-        if (x.state) return x;
+        if (x.generation == generation_) return x;
+        x.generation = generation_;
         x.state = 1;
         int far[3] = {ci, cj, ck};
         ++far[axis];
@@ -339,6 +343,16 @@ class Contourer {
     void cellVertex(Block& block, FieldSampler& sampler, int ci, int cj, int ck) {
         // The 12 edges of the cell: per axis, the 4 edges starting at the
         // corners of the cell's face across the other two axes.
+        // Most cells of a block are wholly in or out: skip them before
+        // looking at any edge.
+        bool anyIn = false, anyOut = false;
+        for (int c = 0; c < 8; ++c) {
+            const std::uint8_t st =
+                block.states[std::size_t(cornerIndex(ci + (c & 1), cj + ((c >> 1) & 1), ck + ((c >> 2) & 1)))];
+            anyIn = anyIn || st == kIn;
+            anyOut = anyOut || st == kOut;
+        }
+        if (!anyIn || !anyOut) return;
         Qef qef;
         Vec3 normalSum{};
         for (int a = 0; a < 3; ++a) {
@@ -445,6 +459,7 @@ class Contourer {
     const Grid& grid_;
     std::vector<double> xs_, ys_, zs_;
     std::vector<Crossing> crossings_;
+    std::uint32_t generation_ = 0;
     std::unordered_map<std::uint64_t, Block*> lookup_;
     const std::vector<const Block*>* order_ = nullptr;
 };

@@ -34,7 +34,8 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
         ata += normal * normal.transpose();
         atb += normal * normal.dot(offset);
     }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(ata);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    eig.computeDirect(ata); // closed form for 3x3: several times faster than the iterative solver
     const Eigen::Vector3d values = eig.eigenvalues();
     const double largest = values.cwiseAbs().maxCoeff();
     Eigen::Vector3d x = Eigen::Vector3d::Zero();

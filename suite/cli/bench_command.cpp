@@ -11,6 +11,8 @@ namespace fl::cli {
 
 namespace {
 const char* kBenchHelp = R"(usage: functionlab bench eval [--json] [--side N] [--seconds S]
+       functionlab bench accuracy FILE|--formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1
+                                  [--json] [--plot OUT.svg] [--resolutions N,N,...]
 
 eval    evaluates the benchmark formulas over an N^3 grid (default 64) with
         FunctionLab's batch evaluator, the same formulas hand-written in C++,
@@ -19,6 +21,16 @@ eval    evaluates the benchmark formulas over an N^3 grid (default 64) with
         and each reports its best turn.
         --json prints a list of {"formula", "ns_per_point": {"functionlab",
         "native", "muparser"}}.
+
+accuracy  sweeps the resolution (default 16,32,64,128,256 cells along the
+        longest side) for the adaptive mesher and for dense marching cubes in
+        the same run, and reports per row: method, resolution, triangles,
+        function evaluations, milliseconds, and the max and mean distance from
+        mesh to true surface as a fraction of the box diagonal (|f|/|grad f|
+        sampled on triangle interiors). FILE: its first implicit or explicit
+        FShape. --json prints a list of {"method", "resolution", "triangles",
+        "evaluations", "ms", "max_error", "mean_error"}; --plot draws error
+        against time (log-log) for both methods as SVG.
 )";
 }
 
@@ -27,6 +39,7 @@ int benchCommand(const Args& args) {
         std::cout << kBenchHelp;
         return args.empty() ? kExitUsage : kExitOk;
     }
+    if (args[0] == "accuracy") return benchAccuracyCommand(Args(args.begin() + 1, args.end()));
     if (args[0] != "eval") {
         std::cerr << "functionlab bench: unknown benchmark '" << args[0] << "'\n\n" << kBenchHelp;
         return kExitUsage;

@@ -13,5 +13,6 @@ int benchCommand(const Args& args);
 int checkCommand(const Args& args);
 int convertCommand(const Args& args);
 int meshCommand(const Args& args);
+int benchAccuracyCommand(const Args& args); // `bench accuracy`
 
 } // namespace fl::cli

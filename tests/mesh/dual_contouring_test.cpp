@@ -9,7 +9,7 @@
 #include <numbers>
 
 using namespace fl::mesh;
-using namespace fl::mesh::testing;
+using namespace fl::mesh::support;
 
 namespace {
 

@@ -23,7 +23,7 @@ namespace {
 Mesh ball(bool colours = false) {
     MeshOptions o;
     o.resolution = 8;
-    Mesh m = meshImplicit(fl::mesh::testing::field("0.6 - x*x - y*y - z*z"), o).mesh;
+    Mesh m = meshImplicit(fl::mesh::support::field("0.6 - x*x - y*y - z*z"), o).mesh;
     if (colours)
         for (const Vec3f& p : m.positions)
             m.colours.push_back({p[0] * 0.5f + 0.5f, 0.2f, 0.9f, 1.0f});

@@ -7,7 +7,7 @@
 #include <cmath>
 
 using namespace fl::mesh;
-using namespace fl::mesh::testing;
+using namespace fl::mesh::support;
 
 TEST(HardCases, TangentSpheresTouchingAtAPoint) {
     // Two balls of radius 0.4 touching at the origin: one closed mesh (the

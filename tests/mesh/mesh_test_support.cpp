@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace fl::mesh::testing {
+namespace fl::mesh::support {
 
 ImplicitField field(const std::string& formula, Box3 box, BoxBoundary boundary) {
     formula::CompileOptions options;
@@ -54,4 +54,4 @@ double maxVertexError(const ImplicitField& f, const Mesh& mesh) {
     return surfaceError(f, mesh, false);
 }
 
-} // namespace fl::mesh::testing
+} // namespace fl::mesh::support

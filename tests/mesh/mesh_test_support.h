@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace fl::mesh::testing {
+namespace fl::mesh::support {
 
 ImplicitField field(const std::string& formula, double half = 1.0,
                     BoxBoundary boundary = BoxBoundary::Closed);
@@ -19,4 +19,4 @@ double maxSurfaceError(const ImplicitField& field, const Mesh& mesh);
 // The same over the vertices only.
 double maxVertexError(const ImplicitField& field, const Mesh& mesh);
 
-} // namespace fl::mesh::testing
+} // namespace fl::mesh::support

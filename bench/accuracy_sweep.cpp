@@ -1,0 +1,165 @@
+#include "accuracy_sweep.h"
+
+#include "mesh/dual_contouring.h"
+#include "mesh/marching_cubes.h"
+#include "mesh/mesh_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace fl::bench {
+
+std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
+                                          const std::vector<double>& resolutions, int threads) {
+    std::vector<AccuracyRow> rows;
+    // The error of a closed mesh's box faces is zero by construction; the
+    // comparison is about the shape, so both methods mesh the open surface.
+    mesh::ImplicitField open = field;
+    open.boundary = mesh::BoxBoundary::Open;
+    for (double res : resolutions) {
+        mesh::MeshOptions o;
+        o.resolution = res;
+        o.threads = threads;
+        const mesh::MeshResult a = mesh::meshImplicit(open, o);
+        if (a.ok()) {
+            const mesh::SurfaceError e = mesh::measureSurfaceError(open, a.mesh);
+            rows.push_back({"adaptive", res, a.mesh.triangleCount(),
+                            a.stats.evaluations.points + a.stats.evaluations.gradients,
+                            a.stats.evaluations.intervals, a.stats.milliseconds, e.max, e.mean});
+        }
+        const mesh::DenseResult d = mesh::marchingCubes(open, res, threads);
+        const mesh::SurfaceError e = mesh::measureSurfaceError(open, d.mesh);
+        rows.push_back({"dense", res, d.mesh.triangleCount(), d.evaluations.points, 0,
+                        d.milliseconds, e.max, e.mean});
+    }
+    return rows;
+}
+
+namespace {
+std::string num(double v, const char* format = "%.4g") {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+} // namespace
+
+std::string accuracyTableText(const std::vector<AccuracyRow>& rows) {
+    std::string out = "method    resolution  triangles  evaluations        ms   max error  mean error\n";
+    for (const AccuracyRow& r : rows) {
+        char line[200];
+        std::snprintf(line, sizeof line, "%-9s %10.4g %10zu %12zu %9.1f %11.3e %11.3e\n",
+                      r.method.c_str(), r.resolution, r.triangles, r.evaluations, r.ms, r.maxError,
+                      r.meanError);
+        out += line;
+    }
+    return out + accuracySummary(rows);
+}
+
+std::string accuracyJson(const std::vector<AccuracyRow>& rows) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const AccuracyRow& r = rows[i];
+        out += i ? ",\n " : "";
+        out += "{\"method\":\"" + r.method + "\",\"resolution\":" + num(r.resolution, "%.17g") +
+               ",\"triangles\":" + std::to_string(r.triangles) +
+               ",\"evaluations\":" + std::to_string(r.evaluations) + ",\"ms\":" + num(r.ms, "%.6g") +
+               ",\"max_error\":" + num(r.maxError, "%.6g") + ",\"mean_error\":" + num(r.meanError, "%.6g") +
+               "}";
+    }
+    return out + "]\n";
+}
+
+std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
+    std::string out;
+    // Same resolution, side by side: the largest resolution swept.
+    double top = 0;
+    for (const AccuracyRow& r : rows)
+        top = std::max(top, r.resolution);
+    const AccuracyRow *a = nullptr, *d = nullptr;
+    for (const AccuracyRow& r : rows)
+        if (r.resolution == top) (r.method == "adaptive" ? a : d) = &r;
+    if (a && d && a->ms > 0 && a->evaluations > 0)
+        out += "at resolution " + num(top) + ": adaptive " + num(d->ms / a->ms, "%.1f") +
+               "x faster, " + num(double(d->evaluations) / double(a->evaluations), "%.1f") +
+               "x fewer evaluations; max error adaptive " + num(a->maxError, "%.2e") + ", dense " +
+               num(d->maxError, "%.2e") + "\n";
+    // The finest error both reach: each method's fastest row at or below it.
+    double adaptiveBest = std::numeric_limits<double>::infinity(), denseBest = adaptiveBest;
+    for (const AccuracyRow& r : rows)
+        (r.method == "adaptive" ? adaptiveBest : denseBest) =
+            std::min(r.method == "adaptive" ? adaptiveBest : denseBest, r.maxError);
+    const double common = std::max(adaptiveBest, denseBest);
+    auto fastest = [&](const char* method) {
+        const AccuracyRow* best = nullptr;
+        for (const AccuracyRow& r : rows)
+            if (r.method == method && r.maxError <= common && (!best || r.ms < best->ms)) best = &r;
+        return best;
+    };
+    const AccuracyRow *fa = fastest("adaptive"), *fd = fastest("dense");
+    if (fa && fd && fa->ms > 0)
+        out += "finest error both reach (" + num(common, "%.2e") + "): adaptive " + num(fa->ms, "%.1f") +
+               " ms at resolution " + num(fa->resolution) + ", dense " + num(fd->ms, "%.1f") +
+               " ms at resolution " + num(fd->resolution) + " (" + num(fd->ms / fa->ms, "%.1f") +
+               "x)\n";
+    return out;
+}
+
+std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::string& title) {
+    const double W = 640, H = 420, left = 70, right = 20, top = 40, bottom = 50;
+    double tLo = 1e300, tHi = 0, eLo = 1e300, eHi = 0;
+    for (const AccuracyRow& r : rows) {
+        if (r.ms <= 0 || r.maxError <= 0) continue;
+        tLo = std::min(tLo, r.ms), tHi = std::max(tHi, r.ms);
+        eLo = std::min(eLo, r.maxError), eHi = std::max(eHi, r.maxError);
+    }
+    if (tHi <= 0) return "<svg xmlns='http://www.w3.org/2000/svg'/>\n";
+    const double x0 = std::floor(std::log10(tLo)), x1 = std::max(x0 + 1, std::ceil(std::log10(tHi)));
+    const double y0 = std::floor(std::log10(eLo)), y1 = std::max(y0 + 1, std::ceil(std::log10(eHi)));
+    auto X = [&](double ms) { return left + (std::log10(ms) - x0) / (x1 - x0) * (W - left - right); };
+    auto Y = [&](double e) { return H - bottom - (std::log10(e) - y0) / (y1 - y0) * (H - top - bottom); };
+    std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + num(W) + "' height='" + num(H) +
+                    "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
+    s += "<text x='" + num(W / 2) + "' y='22' text-anchor='middle' font-size='14'>" + title + "</text>\n";
+    for (double d = x0; d <= x1; ++d) {
+        const double x = X(std::pow(10, d));
+        s += "<line x1='" + num(x) + "' y1='" + num(top) + "' x2='" + num(x) + "' y2='" + num(H - bottom) +
+             "' stroke='#ddd'/><text x='" + num(x) + "' y='" + num(H - bottom + 16) +
+             "' text-anchor='middle'>1e" + num(d) + "</text>\n";
+    }
+    for (double d = y0; d <= y1; ++d) {
+        const double y = Y(std::pow(10, d));
+        s += "<line x1='" + num(left) + "' y1='" + num(y) + "' x2='" + num(W - right) + "' y2='" + num(y) +
+             "' stroke='#ddd'/><text x='" + num(left - 6) + "' y='" + num(y + 4) +
+             "' text-anchor='end'>1e" + num(d) + "</text>\n";
+    }
+    s += "<text x='" + num((left + W - right) / 2) + "' y='" + num(H - 12) +
+         "' text-anchor='middle'>time (ms)</text>\n";
+    s += "<text transform='translate(16 " + num((top + H - bottom) / 2) +
+         ") rotate(-90)' text-anchor='middle'>max error / box diagonal</text>\n";
+    const struct {
+        const char* method;
+        const char* colour;
+    } series[] = {{"adaptive", "#1f77b4"}, {"dense", "#d62728"}};
+    int legend = 0;
+    for (const auto& se : series) {
+        std::string points;
+        for (const AccuracyRow& r : rows)
+            if (r.method == se.method && r.ms > 0 && r.maxError > 0) {
+                points += num(X(r.ms)) + "," + num(Y(r.maxError)) + " ";
+                s += "<circle cx='" + num(X(r.ms)) + "' cy='" + num(Y(r.maxError)) + "' r='3' fill='" +
+                     se.colour + "'><title>" + se.method + " " + num(r.resolution) + "</title></circle>\n";
+            }
+        s += "<polyline fill='none' stroke='" + std::string(se.colour) + "' stroke-width='2' points='" +
+             points + "'/>\n";
+        const double ly = top + 14 + 18 * legend++;
+        s += "<line x1='" + num(W - right - 150) + "' y1='" + num(ly - 4) + "' x2='" + num(W - right - 125) +
+             "' y2='" + num(ly - 4) + "' stroke='" + se.colour + "' stroke-width='2'/><text x='" +
+             num(W - right - 120) + "' y='" + num(ly) + "'>" + (legend == 1 ? "adaptive (DC)" : "dense MC") +
+             "</text>\n";
+    }
+    return s + "</svg>\n";
+}
+
+} // namespace fl::bench

@@ -1,0 +1,114 @@
+// `functionlab bench accuracy`: what accuracy costs in time (bench/accuracy_sweep).
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+
+#include "accuracy_sweep.h"
+#include "formula/compiler.h"
+#include "scene/field_access.h"
+#include "scene/scene_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace fl::cli {
+namespace {
+
+int usage(const std::string& problem) {
+    std::cerr << "functionlab bench accuracy: " << problem
+              << "\n(see functionlab bench --help)\n";
+    return kExitUsage;
+}
+
+bool numbers(const std::string& text, std::vector<double>& out) {
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');) {
+        std::istringstream one(part);
+        double d = 0;
+        if (!(one >> d) || !one.eof() || !std::isfinite(d)) return false;
+        out.push_back(d);
+    }
+    return !out.empty();
+}
+
+// The first implicit or explicit FShape's geometry of a scene.
+bool fieldFromScene(const std::string& file, mesh::ImplicitField& field, std::string& name) {
+    scene::ReadResult r = scene::readSceneFile(file);
+    for (const auto& d : r.diagnostics)
+        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
+    if (!r.ok()) return false;
+    bool found = false;
+    r.scene->forEachNode([&](const scene::Node& n) {
+        if (found || n.inProtoBody || n.type != "FGeometry" ||
+            scene::stringField(n, "type") == "parametric")
+            return;
+        const formula::Tape* tape = r.scene->definition(n, "definition");
+        if (!tape) return;
+        field.tape = *tape;
+        const auto lo = scene::numbersField(n, "domainMin"), hi = scene::numbersField(n, "domainMax");
+        field.box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        name = file + ":" + std::to_string(n.where.line);
+        found = true;
+    });
+    if (!found) std::cerr << "functionlab bench accuracy: " << file << " has no implicit or explicit FGeometry\n";
+    return found;
+}
+
+} // namespace
+
+int benchAccuracyCommand(const Args& args) {
+    std::string file, formula, box, plot;
+    std::vector<double> resolutions{16, 32, 64, 128, 256};
+    bool json = false;
+    int threads = 0;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const bool hasValue = i + 1 < args.size();
+        if (a == "--json") json = true;
+        else if (a == "--formula" && hasValue) formula = args[++i];
+        else if (a == "--box" && hasValue) box = args[++i];
+        else if (a == "--plot" && hasValue) plot = args[++i];
+        else if (a == "--threads" && hasValue) threads = std::atoi(args[++i].c_str());
+        else if (a == "--resolutions" && hasValue) {
+            resolutions.clear();
+            if (!numbers(args[++i], resolutions)) return usage("--resolutions needs numbers like 16,32,64");
+            for (double r : resolutions)
+                if (r < 1 || r > 1024) return usage("resolutions must lie in 1..1024");
+        } else if (!a.starts_with("-") && file.empty()) file = a;
+        else return usage("unexpected argument '" + a + "'");
+    }
+    if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
+    mesh::ImplicitField field;
+    std::string name;
+    if (!formula.empty()) {
+        std::vector<double> b;
+        if (!numbers(box, b) || b.size() != 6) return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
+        field.box = {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
+        if (!field.box.valid()) return usage("the box needs max above min on every axis");
+        formula::CompileOptions co;
+        co.kind = formula::DefinitionKind::Implicit;
+        const formula::CompileResult c = formula::compile(formula, co);
+        for (const auto& d : c.diagnostics)
+            std::cerr << "formula:" << d.range.begin.line << ":" << d.range.begin.column << ": "
+                      << formula::severityName(d.severity) << ": " << d.message << "\n";
+        if (!c.ok()) return kExitDiagnostic;
+        field.tape = *c.tape;
+        name = formula;
+    } else if (!fieldFromScene(file, field, name)) {
+        return kExitDiagnostic;
+    }
+    const std::vector<bench::AccuracyRow> rows = bench::runAccuracySweep(field, resolutions, threads);
+    std::cout << (json ? bench::accuracyJson(rows) : bench::accuracyTableText(rows));
+    if (!plot.empty()) {
+        std::ofstream out(plot);
+        out << bench::accuracyPlotSvg(rows, "error against time: " + name);
+        if (!out) {
+            std::cerr << "functionlab bench accuracy: cannot write " << plot << "\n";
+            return kExitDiagnostic;
+        }
+    }
+    return kExitOk;
+}
+
+} // namespace fl::cli
