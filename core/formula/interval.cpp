@@ -6,6 +6,8 @@
 #include "vector_math.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <numbers>
 
 namespace fl::formula {
@@ -15,16 +17,24 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
 
-double down(double x, int ulps = 2) {
+// `ulps` steps of std::nextafter towards +inf (dir 1) or -inf (dir -1). For
+// finite numbers away from zero a step is one unit of the bit pattern —
+// libm's nextafter is a slow call, and the mesher widens millions of
+// intervals; the result is the same bit for bit.
+double step(double x, int ulps, int dir) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const std::uint64_t magnitude = bits & 0x7FFF'FFFF'FFFF'FFFFull;
+    if (std::isfinite(x) && magnitude > std::uint64_t(ulps)) {
+        const bool away = (x > 0) == (dir > 0); // moving away from zero grows the magnitude
+        const double r = std::bit_cast<double>(away ? bits + std::uint64_t(ulps) : bits - std::uint64_t(ulps));
+        return std::isnan(r) ? (x > 0 ? kInf : -kInf) : r; // past the largest double: infinity
+    }
     for (int i = 0; i < ulps; ++i)
-        x = std::nextafter(x, -kInf);
+        x = std::nextafter(x, dir > 0 ? kInf : -kInf);
     return x;
 }
-double up(double x, int ulps = 2) {
-    for (int i = 0; i < ulps; ++i)
-        x = std::nextafter(x, kInf);
-    return x;
-}
+double down(double x, int ulps = 2) { return step(x, ulps, -1); }
+double up(double x, int ulps = 2) { return step(x, ulps, 1); }
 
 // Build a result from computed endpoints: widen outward, and if an endpoint
 // came out NaN (inf - inf, 0 * inf …) fall back to everything.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <unordered_map>
 
@@ -29,10 +30,12 @@ bool inside(double f) {
 }
 
 // A corner is in the solid, out of it, or where f is undefined (NaN). With a
-// closed boundary the margin corners outside the domain box are out.
-enum State : std::uint8_t { kOut = 0, kIn = 1, kUndefined = 2 };
+// closed boundary the margin corners outside the domain box are out. Corners
+// the intervals showed to be far from the surface are never evaluated: their
+// state stays unknown, and no crossing touches them.
+enum State : std::uint8_t { kOut = 0, kIn = 1, kUndefined = 2, kUnknown = 3 };
 bool crosses(std::uint8_t a, std::uint8_t b) {
-    return a != b && a != kUndefined && b != kUndefined;
+    return a != b && a <= kIn && b <= kIn;
 }
 
 struct Grid {
@@ -67,12 +70,23 @@ struct Crossing {
     Vec3 normal{}; // unit gradient direction (the sign does not matter to the QEF)
 };
 
+// An edge crossing being refined: the bracket [pa, pb] with f at its ends.
+struct PendingCrossing {
+    int slot = 0; // index into the crossing cache
+    int axis = 0;
+    Vec3 pa{}, pb{};
+    double fa = 0, fb = 0;
+    double ta = 0, tb = 1, t = 0.5;
+    bool done = false;
+};
+
 // What phase 1 leaves for each active block.
 struct Block {
     BlockCoord coord{};
     std::vector<double> values;         // kCorners corner values of f
     std::vector<std::uint8_t> states;   // kCorners: kIn, kOut, kUndefined
     std::vector<std::int32_t> vertexOf; // kCells: local vertex id, -1 none
+    std::vector<std::uint8_t> kept;     // the 2x2x2-cell sub-blocks that may hold surface
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::uint32_t offset = 0; // first global vertex id
@@ -86,7 +100,9 @@ struct Observations {
     double maxValue = -std::numeric_limits<double>::infinity();
     Vec3 maxPoint{};
     double maxAbs = 0;
+    std::optional<Vec3> undefinedCandidate; // a sub-block f may be undefined in
     void merge(const Observations& o) {
+        if (!undefinedCandidate) undefinedCandidate = o.undefinedCandidate;
         if (o.sawNaN && !sawNaN) {
             sawNaN = true;
             nanPoint = o.nanPoint;
@@ -133,60 +149,67 @@ class Contourer {
     void sampleBlock(Block& block, FieldSampler& sampler, Observations& seen) {
         const BlockCoord& b = block.coord;
         const long i0 = long(b[0]) * kB, j0 = long(b[1]) * kB, k0 = long(b[2]) * kB;
-        xs_.resize(kCorners);
-        ys_.resize(kCorners);
-        zs_.resize(kCorners);
-        for (int ck = 0; ck < kC; ++ck)
-            for (int cj = 0; cj < kC; ++cj)
-                for (int ci = 0; ci < kC; ++ci) {
-                    const Vec3 p = grid_.corner(i0 + ci, j0 + cj, k0 + ck);
-                    const int c = cornerIndex(ci, cj, ck);
-                    xs_[std::size_t(c)] = p[0];
-                    ys_[std::size_t(c)] = p[1];
-                    zs_[std::size_t(c)] = p[2];
-                }
-        block.values.assign(kCorners, 0.0);
-        sampler.values(xs_.data(), ys_.data(), zs_.data(), kCorners, block.values.data());
-        block.states.assign(kCorners, kOut);
-        for (int ck = 0; ck < kC; ++ck)
-            for (int cj = 0; cj < kC; ++cj)
-                for (int ci = 0; ci < kC; ++ci) {
-                    const int c = cornerIndex(ci, cj, ck);
-                    const double v = block.values[std::size_t(c)];
-                    if (!inBox(i0 + ci, j0 + cj, k0 + ck)) continue; // margin: out
-                    block.states[std::size_t(c)] = std::isnan(v) ? kUndefined
-                                                   : inside(v)   ? kIn
-                                                                 : kOut;
-                }
+        // Which corners to evaluate: those of the 2x2x2-cell sub-blocks the
+        // intervals cannot rule out (looked at through their 4x4x4 parents).
+        std::array<bool, kCorners> needed{};
+        markNeededCorners(block, sampler, seen, needed);
+        xs_.clear();
+        ys_.clear();
+        zs_.clear();
+        index_.clear();
         for (int c = 0; c < kCorners; ++c) {
-            const double v = block.values[std::size_t(c)];
-            if (!cornerInBox(block, c)) continue;
+            if (!needed[std::size_t(c)]) continue;
+            const int ci = c % kC, cj = (c / kC) % kC, ck = c / (kC * kC);
+            const Vec3 p = grid_.corner(i0 + ci, j0 + cj, k0 + ck);
+            xs_.push_back(p[0]);
+            ys_.push_back(p[1]);
+            zs_.push_back(p[2]);
+            index_.push_back(c);
+        }
+        out_.resize(index_.size());
+        if (!index_.empty())
+            sampler.values(xs_.data(), ys_.data(), zs_.data(), index_.size(), out_.data());
+        block.values.assign(kCorners, std::numeric_limits<double>::quiet_NaN());
+        block.states.assign(kCorners, kUnknown);
+        for (std::size_t n = 0; n < index_.size(); ++n) {
+            const int c = index_[n];
+            const double v = out_[n];
+            block.values[std::size_t(c)] = v;
+            if (!cornerInBox(block, c)) {
+                block.states[std::size_t(c)] = kOut; // margin of a closed box
+                continue;
+            }
+            block.states[std::size_t(c)] = std::isnan(v) ? kUndefined : inside(v) ? kIn : kOut;
             if (std::isnan(v)) {
-                if (!seen.sawNaN)
-                    seen.nanPoint = {xs_[std::size_t(c)], ys_[std::size_t(c)], zs_[std::size_t(c)]};
+                if (!seen.sawNaN) seen.nanPoint = {xs_[n], ys_[n], zs_[n]};
                 seen.sawNaN = true;
             } else {
                 if (v > seen.maxValue) {
                     seen.maxValue = v;
-                    seen.maxPoint = {xs_[std::size_t(c)], ys_[std::size_t(c)], zs_[std::size_t(c)]};
+                    seen.maxPoint = {xs_[n], ys_[n], zs_[n]};
                 }
                 if (std::isfinite(v)) seen.maxAbs = std::max(seen.maxAbs, std::abs(v));
             }
         }
         // Entries of earlier blocks are stale by generation: no clearing pass.
-        if (crossings_.size() != std::size_t(3 * kCorners)) crossings_.assign(std::size_t(3 * kCorners), Crossing{});
+        if (crossings_.size() != std::size_t(3 * kCorners))
+            crossings_.assign(std::size_t(3 * kCorners), Crossing{});
         ++generation_;
+        computeCrossings(block, sampler);
         block.vertexOf.assign(kCells, -1);
         block.positions.clear();
         block.normals.clear();
-        for (int ck = 0; ck < kB; ++ck)
-            for (int cj = 0; cj < kB; ++cj)
-                for (int ci = 0; ci < kB; ++ci) {
-                    if (i0 + ci >= grid_.cells[0] || j0 + cj >= grid_.cells[1] ||
-                        k0 + ck >= grid_.cells[2])
-                        continue;
-                    cellVertex(block, sampler, ci, cj, ck);
-                }
+        buildVertices(block, sampler);
+    }
+
+    // The cells of the kept sub-blocks, in a fixed order.
+    template <class F>
+    static void forEachKeptCell(const Block& block, F f) {
+        for (std::uint8_t sub : block.kept) {
+            const int si = (sub % 4) * 2, sj = (sub / 4 % 4) * 2, sk = (sub / 16) * 2;
+            for (int c = 0; c < 8; ++c)
+                f(si + (c & 1), sj + ((c >> 1) & 1), sk + ((c >> 2) & 1));
+        }
     }
 
     // Phase 2: the quads around every sign-changing edge this block owns.
@@ -195,25 +218,30 @@ class Contourer {
     void connectBlock(Block& block, std::vector<BlockCoord>& missing) {
         block.triangles.clear();
         const BlockCoord& b = block.coord;
+        // The 27 blocks around (and including) this one, looked up once.
+        for (int n = 0; n < 27; ++n) {
+            const BlockCoord nb{b[0] + n % 3 - 1, b[1] + n / 3 % 3 - 1, b[2] + n / 9 - 1};
+            auto it = nb[0] < 0 || nb[1] < 0 || nb[2] < 0 ? lookup_.end() : lookup_.find(keyOf(nb));
+            neighbours_[std::size_t(n)] = it == lookup_.end() ? nullptr : it->second;
+            neighbourCoords_[std::size_t(n)] = nb;
+        }
         const long base[3] = {long(b[0]) * kB, long(b[1]) * kB, long(b[2]) * kB};
-        for (int ck = 0; ck < kB; ++ck)
-            for (int cj = 0; cj < kB; ++cj)
-                for (int ci = 0; ci < kB; ++ci) {
-                    const int local[3] = {ci, cj, ck};
-                    const long g[3] = {base[0] + ci, base[1] + cj, base[2] + ck};
-                    if (g[0] > grid_.cells[0] || g[1] > grid_.cells[1] || g[2] > grid_.cells[2])
-                        continue;
-                    const std::uint8_t sa = block.states[std::size_t(cornerIndex(ci, cj, ck))];
-                    for (int a = 0; a < 3; ++a) {
-                        if (g[a] + 1 > grid_.cells[a]) continue; // the edge leaves the grid
-                        int far[3] = {local[0], local[1], local[2]};
-                        ++far[a];
-                        const std::uint8_t sb =
-                            block.states[std::size_t(cornerIndex(far[0], far[1], far[2]))];
-                        if (!crosses(sa, sb)) continue;
-                        quad(block, a, g, sa == kIn, missing);
-                    }
-                }
+        // Every edge this block owns with a sign change starts at the lowest
+        // corner of a cell of a kept sub-block.
+        forEachKeptCell(block, [&](int ci, int cj, int ck) {
+            const int local[3] = {ci, cj, ck};
+            const long g[3] = {base[0] + ci, base[1] + cj, base[2] + ck};
+            if (g[0] >= grid_.cells[0] || g[1] >= grid_.cells[1] || g[2] >= grid_.cells[2]) return;
+            const std::uint8_t sa = block.states[std::size_t(cornerIndex(ci, cj, ck))];
+            for (int a = 0; a < 3; ++a) {
+                int far[3] = {local[0], local[1], local[2]};
+                ++far[a];
+                const std::uint8_t sb =
+                    block.states[std::size_t(cornerIndex(far[0], far[1], far[2]))];
+                if (!crosses(sa, sb)) continue;
+                quad(block, a, local, sa == kIn, missing);
+            }
+        });
     }
 
     // Global vertex lookup, valid after every block's offset is set.
@@ -224,77 +252,223 @@ class Contourer {
     }
 
   private:
-    const Crossing& crossing(FieldSampler& sampler, const Block& block, int axis, int ci, int cj,
-                             int ck) {
-        Crossing& x = crossings_[std::size_t(axis * kCorners + cornerIndex(ci, cj, ck))];
-        if (x.generation == generation_) return x;
-        x.generation = generation_;
-        x.state = 1;
-        int far[3] = {ci, cj, ck};
-        ++far[axis];
-        const int ca = cornerIndex(ci, cj, ck), cb = cornerIndex(far[0], far[1], far[2]);
-        const std::uint8_t sa = block.states[std::size_t(ca)], sb = block.states[std::size_t(cb)];
-        if (!crosses(sa, sb)) return x;
-        const BlockCoord& b = block.coord;
-        const long i = long(b[0]) * kB + ci, j = long(b[1]) * kB + cj, k = long(b[2]) * kB + ck;
-        const std::size_t ax = std::size_t(axis);
-        Vec3 pa = grid_.corner(i, j, k);
-        Vec3 pb = pa;
-        pb[ax] += grid_.h[ax];
-        double fa = block.values[std::size_t(ca)], fb = block.values[std::size_t(cb)];
-        const bool aInBox = cornerInBox(block, ca), bInBox = cornerInBox(block, cb);
-        if (!aInBox || !bInBox) {
-            // An edge through a face of the closed box: the solid ends at the
-            // face, or before it where f turns negative first.
-            Vec3 face = aInBox ? pa : pb;
-            face[ax] = aInBox ? field_.box.hi[ax] : field_.box.lo[ax];
-            const double ff = sampler.value(face);
-            if (inside(ff) || std::isnan(ff)) {
-                x.point = face;
-                x.normal = {0, 0, 0};
-                x.normal[ax] = 1;
-                x.state = 2;
-                return x;
+    // The box of cells [c0, c1) of this block (clamped to the grid), or false
+    // when it holds no cell.
+    bool cellBox(const Block& block, const int c0[3], const int c1[3], Vec3& lo, Vec3& hi) const {
+        for (std::size_t a = 0; a < 3; ++a) {
+            const long first = long(block.coord[a]) * kB + c0[a];
+            const long last = std::min<long>(long(block.coord[a]) * kB + c1[a], grid_.cells[a]);
+            if (first >= last) return false;
+            lo[a] = grid_.origin[a] + double(first) * grid_.h[a];
+            hi[a] = grid_.origin[a] + double(last) * grid_.h[a];
+        }
+        return true;
+    }
+
+    static bool mayCross(const formula::Interval& r) { return !r.empty() && r.lo <= 0 && r.hi > 0; }
+
+    void markNeededCorners(Block& block, FieldSampler& sampler, Observations& seen,
+                           std::array<bool, kCorners>& needed) {
+        block.kept.clear();
+        for (int octant = 0; octant < 8; ++octant) {
+            const int o0[3] = {(octant & 1) * 4, ((octant >> 1) & 1) * 4, ((octant >> 2) & 1) * 4};
+            const int o1[3] = {o0[0] + 4, o0[1] + 4, o0[2] + 4};
+            Vec3 lo{}, hi{};
+            if (!cellBox(block, o0, o1, lo, hi)) continue;
+            const formula::Interval r = sampler.interval(lo, hi);
+            if (!mayCross(r)) {
+                if (r.nan && !seen.undefinedCandidate)
+                    seen.undefinedCandidate =
+                        Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+                continue;
             }
-            if (aInBox) {
-                pb = face;
-                fb = ff;
-            } else {
-                pa = face;
-                fa = ff;
+            for (int sub = 0; sub < 8; ++sub) {
+                const int s0[3] = {o0[0] + (sub & 1) * 2, o0[1] + ((sub >> 1) & 1) * 2,
+                                   o0[2] + ((sub >> 2) & 1) * 2};
+                const int s1[3] = {s0[0] + 2, s0[1] + 2, s0[2] + 2};
+                if (!cellBox(block, s0, s1, lo, hi)) continue;
+                const formula::Interval rs = sampler.interval(lo, hi);
+                if (!mayCross(rs)) {
+                    if (rs.nan && !seen.undefinedCandidate)
+                        seen.undefinedCandidate =
+                            Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+                    continue;
+                }
+                block.kept.push_back(std::uint8_t((s0[2] / 2 * 4 + s0[1] / 2) * 4 + s0[0] / 2));
+                for (int dk = 0; dk <= 2; ++dk)
+                    for (int dj = 0; dj <= 2; ++dj)
+                        for (int di = 0; di <= 2; ++di)
+                            needed[std::size_t(cornerIndex(s0[0] + di, s0[1] + dj, s0[2] + dk))] =
+                                true;
             }
         }
-        // Linear guess, then regula falsi on the bracket [ta, tb].
-        double ta = 0, tb = 1;
-        double t = fa / (fa - fb);
-        auto at = [&](double s) {
-            Vec3 p = pa;
-            p[ax] = pa[ax] + s * (pb[ax] - pa[ax]);
-            return p;
+    }
+
+    // Every sign-changing edge of the block's lattice: its crossing moved onto
+    // f = 0 by regula falsi, all edges of the block at once (one batch
+    // evaluation per step), and its normal from the analytic gradient.
+    void computeCrossings(const Block& block, FieldSampler& sampler) {
+        pending_.clear();
+        found_.clear();
+        // Every lattice edge of the block, scanned in memory order: corners
+        // never evaluated are unknown and cross nothing.
+        static constexpr int kStride[3] = {1, kC, kC * kC};
+        for (int axis = 0; axis < 3; ++axis)
+            for (int ck = 0; ck < (axis == 2 ? kB : kC); ++ck)
+                for (int cj = 0; cj < (axis == 1 ? kB : kC); ++cj)
+                    for (int ci = 0; ci < (axis == 0 ? kB : kC); ++ci) {
+                        const int c = cornerIndex(ci, cj, ck);
+                        const int cb = c + kStride[axis];
+                        const std::uint8_t sa = block.states[std::size_t(c)],
+                                           sb = block.states[std::size_t(cb)];
+                        if (!crosses(sa, sb)) continue;
+                        Crossing& slot = crossings_[std::size_t(axis * kCorners + c)];
+                        slot.generation = generation_;
+                        slot.state = 1;
+                        PendingCrossing p;
+                        p.slot = axis * kCorners + c;
+                        p.axis = axis;
+                        const BlockCoord& b = block.coord;
+                        p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj,
+                                            long(b[2]) * kB + ck);
+                        p.pb = p.pa;
+                        p.pb[std::size_t(axis)] += grid_.h[std::size_t(axis)];
+                        p.fa = block.values[std::size_t(c)];
+                        p.fb = block.values[std::size_t(cb)];
+                        const bool aInBox = cornerInBox(block, c), bInBox = cornerInBox(block, cb);
+                        if (!aInBox || !bInBox) {
+                            // Through a face of the closed box: the solid ends at the
+                            // face, or before it where f turns negative first.
+                            Vec3 face = aInBox ? p.pa : p.pb;
+                            face[std::size_t(axis)] = aInBox ? field_.box.hi[std::size_t(axis)]
+                                                             : field_.box.lo[std::size_t(axis)];
+                            const double ff = sampler.value(face);
+                            Crossing& x = crossings_[std::size_t(p.slot)];
+                            x.generation = generation_;
+                            if (inside(ff) || std::isnan(ff)) {
+                                x.state = 2;
+                                x.point = face;
+                                x.normal = {0, 0, 0};
+                                x.normal[std::size_t(axis)] = 1;
+                                found_.push_back(p.slot);
+                                continue;
+                            }
+                            (aInBox ? p.pb : p.pa) = face;
+                            (aInBox ? p.fb : p.fa) = ff;
+                        }
+                        p.t = p.fa / (p.fa - p.fb);
+                        pending_.push_back(p);
+                    }
+        auto at = [](const PendingCrossing& p, double t) {
+            Vec3 q = p.pa;
+            const std::size_t a = std::size_t(p.axis);
+            q[a] = p.pa[a] + t * (p.pb[a] - p.pa[a]);
+            return q;
         };
-        for (int step = 0; step < options_.refineSteps; ++step) {
-            const double f = sampler.value(at(t));
-            if (!std::isfinite(f) || f == 0) break;
-            if (inside(f) == inside(fa)) {
-                ta = t;
-                fa = f;
-            } else {
-                tb = t;
-                fb = f;
+        for (int step = 0; step < options_.refineSteps && !pending_.empty(); ++step) {
+            xs_.clear();
+            ys_.clear();
+            zs_.clear();
+            for (const PendingCrossing& p : pending_) {
+                const Vec3 q = at(p, p.t);
+                xs_.push_back(q[0]);
+                ys_.push_back(q[1]);
+                zs_.push_back(q[2]);
             }
-            const double next = ta - fa * (tb - ta) / (fb - fa);
-            if (!(next >= ta && next <= tb)) break;
-            t = next;
+            out_.resize(pending_.size());
+            sampler.values(xs_.data(), ys_.data(), zs_.data(), pending_.size(), out_.data());
+            for (std::size_t n = 0; n < pending_.size(); ++n) {
+                PendingCrossing& p = pending_[n];
+                const double f = out_[n];
+                if (p.done || !std::isfinite(f) || f == 0) {
+                    p.done = true;
+                    continue;
+                }
+                if (inside(f) == inside(p.fa)) {
+                    p.ta = p.t;
+                    p.fa = f;
+                } else {
+                    p.tb = p.t;
+                    p.fb = f;
+                }
+                const double next = p.ta - p.fa * (p.tb - p.ta) / (p.fb - p.fa);
+                if (next >= p.ta && next <= p.tb)
+                    p.t = next;
+                else
+                    p.done = true;
+            }
         }
-        x.point = at(std::clamp(t, 0.0, 1.0));
-        bool ok = false;
-        x.normal = normalised(sampler.gradient(x.point).d, ok);
-        if (!ok) { // no gradient here: the edge's own direction
-            x.normal = {0, 0, 0};
-            x.normal[ax] = 1;
+        for (const PendingCrossing& p : pending_) {
+            Crossing& x = crossings_[std::size_t(p.slot)];
+            x.generation = generation_;
+            x.state = 2;
+            x.point = at(p, std::clamp(p.t, 0.0, 1.0));
+            bool ok = false;
+            x.normal = normalised(sampler.gradient(x.point).d, ok);
+            if (!ok) { // no gradient here: the edge's own direction
+                x.normal = {0, 0, 0};
+                x.normal[std::size_t(p.axis)] = 1;
+            }
+            found_.push_back(p.slot);
         }
-        x.state = 2;
-        return x;
+        std::sort(found_.begin(), found_.end()); // a fixed order, whatever happened above
+    }
+
+    // One vertex per cell the crossings touch: each crossing adds its plane
+    // to the QEFs of the (up to) four cells of this block around its edge.
+    void buildVertices(Block& block, FieldSampler& sampler) {
+        const long base[3] = {long(block.coord[0]) * kB, long(block.coord[1]) * kB,
+                              long(block.coord[2]) * kB};
+        if (cellQefs_.size() != std::size_t(kCells)) cellQefs_.resize(kCells);
+        touched_.clear();
+        for (int slot : found_) {
+            const Crossing& x = crossings_[std::size_t(slot)];
+            const int axis = slot / kCorners, c = slot % kCorners;
+            const int corner[3] = {c % kC, (c / kC) % kC, c / (kC * kC)};
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            // Outward: along the edge from its inside corner to its outside one.
+            const bool lowerIn = block.states[std::size_t(c)] == kIn;
+            const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
+            for (int q = 0; q < 4; ++q) {
+                int cell[3] = {corner[0], corner[1], corner[2]};
+                cell[u] -= q & 1;
+                cell[v] -= (q >> 1) & 1;
+                if (cell[u] < 0 || cell[v] < 0 || cell[u] >= kB || cell[v] >= kB ||
+                    cell[axis] >= kB)
+                    continue;
+                if (base[0] + cell[0] >= grid_.cells[0] || base[1] + cell[1] >= grid_.cells[1] ||
+                    base[2] + cell[2] >= grid_.cells[2])
+                    continue;
+                const int index = cellIndex(cell[0], cell[1], cell[2]);
+                CellQef& cq = cellQefs_[std::size_t(index)];
+                if (cq.generation != generation_) {
+                    cq = CellQef{};
+                    cq.generation = generation_;
+                    touched_.push_back(index);
+                }
+                cq.qef.add(x.point, x.normal);
+                for (std::size_t k = 0; k < 3; ++k)
+                    cq.normalSum[k] += sign * x.normal[k];
+            }
+        }
+        std::sort(touched_.begin(), touched_.end());
+        for (int index : touched_) {
+            const CellQef& cq = cellQefs_[std::size_t(index)];
+            const int ci = index % kB, cj = (index / kB) % kB, ck = index / (kB * kB);
+            const Vec3 lo = grid_.corner(base[0] + ci, base[1] + cj, base[2] + ck);
+            Vec3 p = cq.qef.solve(0.1);
+            bool inCell = true;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double slack = 1e-9 * grid_.h[k];
+                inCell = inCell && std::isfinite(p[k]) && p[k] >= lo[k] - slack &&
+                         p[k] <= lo[k] + grid_.h[k] + slack;
+            }
+            if (!inCell) p = cq.qef.massPoint(); // a wild solution: the crossings' centre instead
+            const Vec3 n = vertexNormal(sampler, p, cq.normalSum);
+            block.vertexOf[std::size_t(index)] = std::int32_t(block.positions.size());
+            block.positions.push_back(p);
+            block.normals.push_back(n);
+        }
     }
 
     // Whether a lattice corner lies in the domain box (always, when open).
@@ -340,99 +514,56 @@ class Contourer {
         return n;
     }
 
-    void cellVertex(Block& block, FieldSampler& sampler, int ci, int cj, int ck) {
-        // The 12 edges of the cell: per axis, the 4 edges starting at the
-        // corners of the cell's face across the other two axes.
-        // Most cells of a block are wholly in or out: skip them before
-        // looking at any edge.
-        bool anyIn = false, anyOut = false;
-        for (int c = 0; c < 8; ++c) {
-            const std::uint8_t st =
-                block.states[std::size_t(cornerIndex(ci + (c & 1), cj + ((c >> 1) & 1), ck + ((c >> 2) & 1)))];
-            anyIn = anyIn || st == kIn;
-            anyOut = anyOut || st == kOut;
+    // The vertex of the cell at `local` (possibly one block away, -1..kB),
+    // or none (with its block noted as missing when it was never sampled).
+    struct VertexRef {
+        const Block* block = nullptr;
+        std::int32_t local = -1;
+    };
+    VertexRef vertexAt(const int local[3], std::vector<BlockCoord>& missing) const {
+        int n = 0, cell[3];
+        for (int a = 2; a >= 0; --a) {
+            const int d = local[a] < 0 ? 0 : local[a] >= kB ? 2 : 1;
+            n = n * 3 + d;
+            cell[a] = local[a] - (d - 1) * kB;
         }
-        if (!anyIn || !anyOut) return;
-        Qef qef;
-        Vec3 normalSum{};
-        for (int a = 0; a < 3; ++a) {
-            const int u = (a + 1) % 3, v = (a + 2) % 3;
-            for (int du = 0; du < 2; ++du)
-                for (int dv = 0; dv < 2; ++dv) {
-                    int c[3] = {ci, cj, ck};
-                    c[u] += du;
-                    c[v] += dv;
-                    const Crossing& x = crossing(sampler, block, a, c[0], c[1], c[2]);
-                    if (x.state != 2) continue;
-                    qef.add(x.point, x.normal);
-                    // Outward: along the edge from its inside corner to its outside one.
-                    const bool lowerIn =
-                        block.states[std::size_t(cornerIndex(c[0], c[1], c[2]))] == kIn;
-                    const double sign = (x.normal[std::size_t(a)] >= 0) == lowerIn ? 1.0 : -1.0;
-                    for (int k = 0; k < 3; ++k)
-                        normalSum[std::size_t(k)] += sign * x.normal[std::size_t(k)];
-                }
+        const Block* owner = neighbours_[std::size_t(n)];
+        if (!owner) {
+            missing.push_back(neighbourCoords_[std::size_t(n)]);
+            return {};
         }
-        if (!qef.count()) return;
-        const BlockCoord& b = block.coord;
-        const Vec3 lo =
-            grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
-        Vec3 p = qef.solve(0.1);
-        bool inCell = true;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double slack = 1e-9 * grid_.h[k];
-            inCell = inCell && std::isfinite(p[k]) && p[k] >= lo[k] - slack &&
-                     p[k] <= lo[k] + grid_.h[k] + slack;
-        }
-        if (!inCell) p = qef.massPoint(); // a wild solution: the crossings' centre instead
-        const Vec3 n = vertexNormal(sampler, p, normalSum);
-        block.vertexOf[std::size_t(cellIndex(ci, cj, ck))] = std::int32_t(block.positions.size());
-        block.positions.push_back(p);
-        block.normals.push_back(n);
+        return {owner, owner->vertexOf[std::size_t(cellIndex(cell[0], cell[1], cell[2]))]};
     }
 
-    // The vertex of global cell (i, j, k), or -1 (and `missing` noted).
-    std::int64_t vertexAt(long i, long j, long k, std::vector<BlockCoord>& missing) {
-        const BlockCoord b{int(i / kB), int(j / kB), int(k / kB)};
-        auto it = lookup_.find(keyOf(b));
-        if (it == lookup_.end()) {
-            missing.push_back(b);
-            return -1;
-        }
-        const Block& block = *it->second;
-        const std::int32_t local =
-            block.vertexOf[std::size_t(cellIndex(int(i % kB), int(j % kB), int(k % kB)))];
-        if (local < 0) return -1;
-        return std::int64_t(block.offset) + local;
-    }
-
-    void quad(Block& block, int a, const long g[3], bool lowerInside,
+    void quad(Block& block, int a, const int local[3], bool lowerInside,
               std::vector<BlockCoord>& missing) {
         const int u = (a + 1) % 3, v = (a + 2) % 3;
+        const long base[3] = {long(block.coord[0]) * kB, long(block.coord[1]) * kB,
+                              long(block.coord[2]) * kB};
         // Around the edge, counter-clockwise seen from +a (a = u x v).
         static const int offsets[4][2] = {{-1, -1}, {0, -1}, {0, 0}, {-1, 0}};
-        std::int64_t ids[4];
+        VertexRef refs[4];
         for (int q = 0; q < 4; ++q) {
-            long c[3] = {g[0], g[1], g[2]};
+            int c[3] = {local[0], local[1], local[2]};
             c[u] += offsets[q][0];
             c[v] += offsets[q][1];
-            if (c[u] < 0 || c[v] < 0 || c[u] >= grid_.cells[u] || c[v] >= grid_.cells[v])
+            const long gu = base[u] + c[u], gv = base[v] + c[v];
+            if (gu < 0 || gv < 0 || gu >= grid_.cells[u] || gv >= grid_.cells[v])
                 return; // at the border of the grid: left open
-            ids[q] = vertexAt(c[0], c[1], c[2], missing);
-            if (ids[q] < 0) return;
+            refs[q] = vertexAt(c, missing);
+            if (refs[q].local < 0) return;
         }
         // Inside below, outside above: the surface faces +a; else the other way.
-        if (!lowerInside) std::swap(ids[1], ids[3]);
-        auto id = [&](int q) { return std::uint32_t(ids[q]); };
-        const Vec3& p0 = position(ids[0]);
-        const Vec3& p1 = position(ids[1]);
-        const Vec3& p2 = position(ids[2]);
-        const Vec3& p3 = position(ids[3]);
+        if (!lowerInside) std::swap(refs[1], refs[3]);
+        auto id = [&](int q) { return refs[q].block->offset + std::uint32_t(refs[q].local); };
+        auto pos = [&](int q) -> const Vec3& {
+            return refs[q].block->positions[std::size_t(refs[q].local)];
+        };
         auto dist2 = [](const Vec3& x, const Vec3& y) {
             return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
                    (x[2] - y[2]) * (x[2] - y[2]);
         };
-        if (dist2(p0, p2) <= dist2(p1, p3)) {
+        if (dist2(pos(0), pos(2)) <= dist2(pos(1), pos(3))) {
             block.triangles.push_back({id(0), id(1), id(2)});
             block.triangles.push_back({id(0), id(2), id(3)});
         } else {
@@ -441,27 +572,26 @@ class Contourer {
         }
     }
 
-    const Vec3& position(std::int64_t global) const {
-        // Blocks are few and sorted by offset: binary search the owner.
-        auto it = std::upper_bound(
-            order_->begin(), order_->end(), global,
-            [](std::int64_t g, const Block* b) { return g < std::int64_t(b->offset); });
-        const Block* owner = *(it - 1);
-        return owner->positions[std::size_t(global - owner->offset)];
-    }
-
-  public:
-    void setOrder(const std::vector<const Block*>* order) { order_ = order; }
-
   private:
     const ImplicitField& field_;
     const MeshOptions& options_;
     const Grid& grid_;
-    std::vector<double> xs_, ys_, zs_;
+    std::vector<double> xs_, ys_, zs_, out_;
+    std::vector<int> index_;
     std::vector<Crossing> crossings_;
     std::uint32_t generation_ = 0;
+    std::vector<PendingCrossing> pending_;
+    std::vector<int> found_; // crossing slots of the current block, sorted
+    struct CellQef {
+        std::uint32_t generation = 0;
+        Qef qef;
+        Vec3 normalSum{};
+    };
+    std::vector<CellQef> cellQefs_; // per cell of the block, valid by generation
+    std::vector<int> touched_;
     std::unordered_map<std::uint64_t, Block*> lookup_;
-    const std::vector<const Block*>* order_ = nullptr;
+    std::array<const Block*, 27> neighbours_{};
+    std::array<BlockCoord, 27> neighbourCoords_{};
 };
 
 // Octree over blocks: a node whose interval cannot hold a sign change is
@@ -644,16 +774,12 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         std::sort(blocks.begin(), blocks.end(),
                   [](const Block& a, const Block& b) { return keyOf(a.coord) < keyOf(b.coord); });
         std::uint32_t offset = 0;
-        std::vector<const Block*> order;
         for (Block& b : blocks) {
             b.offset = offset;
             offset += std::uint32_t(b.positions.size());
-            order.push_back(&b);
         }
-        for (Contourer& c : contourers) {
+        for (Contourer& c : contourers)
             c.index(blocks);
-            c.setOrder(&order);
-        }
         std::vector<std::vector<BlockCoord>> missing(static_cast<std::size_t>(threads));
         parallelFor(blocks.size(), threads, field, perThread,
                     [&](std::size_t i, FieldSampler&, int w) {
@@ -705,6 +831,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     Observations all;
     for (const Observations& o : seen)
         all.merge(o);
+    if (all.undefinedCandidate) pruner.undefinedCentres.push_back(*all.undefinedCandidate);
     if (!all.sawNaN) {
         FieldSampler probe(field);
         for (const Vec3& c : pruner.undefinedCentres)

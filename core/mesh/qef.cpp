@@ -5,48 +5,65 @@
 namespace fl::mesh {
 
 void Qef::add(const std::array<double, 3>& p, const std::array<double, 3>& n) {
-    if (count_ < 12) {
-        points_[std::size_t(count_)] = p;
-        normals_[std::size_t(count_)] = n;
-    }
+    if (count_ == 0) origin_ = p;
+    const double x = p[0] - origin_[0], y = p[1] - origin_[1], z = p[2] - origin_[2];
+    const double d = n[0] * x + n[1] * y + n[2] * z;
+    ata_[0] += n[0] * n[0];
+    ata_[1] += n[0] * n[1];
+    ata_[2] += n[0] * n[2];
+    ata_[3] += n[1] * n[1];
+    ata_[4] += n[1] * n[2];
+    ata_[5] += n[2] * n[2];
+    atb_[0] += n[0] * d;
+    atb_[1] += n[1] * d;
+    atb_[2] += n[2] * d;
+    pointSum_[0] += x;
+    pointSum_[1] += y;
+    pointSum_[2] += z;
+    normalSum_[0] += n[0];
+    normalSum_[1] += n[1];
+    normalSum_[2] += n[2];
     ++count_;
-    for (int a = 0; a < 3; ++a)
-        pointSum_[std::size_t(a)] += p[std::size_t(a)];
 }
 
 std::array<double, 3> Qef::massPoint() const {
     if (!count_) return {0, 0, 0};
-    return {pointSum_[0] / count_, pointSum_[1] / count_, pointSum_[2] / count_};
+    return {origin_[0] + pointSum_[0] / count_, origin_[1] + pointSum_[1] / count_,
+            origin_[2] + pointSum_[2] / count_};
 }
 
 std::array<double, 3> Qef::solve(double relativeCutoff) const {
-    const std::array<double, 3> c = massPoint();
-    // Built about the mass point: A^T A x = A^T b with b_i = n_i . (p_i - c).
-    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d atb = Eigen::Vector3d::Zero();
-    const int n = count_ < 12 ? count_ : 12;
-    for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d normal(normals_[std::size_t(i)][0], normals_[std::size_t(i)][1],
-                                     normals_[std::size_t(i)][2]);
-        const Eigen::Vector3d offset(points_[std::size_t(i)][0] - c[0],
-                                     points_[std::size_t(i)][1] - c[1],
-                                     points_[std::size_t(i)][2] - c[2]);
-        ata += normal * normal.transpose();
-        atb += normal * normal.dot(offset);
+    if (!count_) return {0, 0, 0};
+    Eigen::Matrix3d ata;
+    ata << ata_[0], ata_[1], ata_[2], ata_[1], ata_[3], ata_[4], ata_[2], ata_[4], ata_[5];
+    // About the mass point c (relative to the origin): minimise |A (c + x) - b|,
+    // i.e. A^T A x = A^T b - A^T A c.
+    const Eigen::Vector3d c(pointSum_[0] / count_, pointSum_[1] / count_, pointSum_[2] / count_);
+    const Eigen::Vector3d rhs = Eigen::Vector3d(atb_[0], atb_[1], atb_[2]) - ata * c;
+    // Nearly parallel unit normals (a smooth patch, most cells): A is about
+    // rank one along their mean, the other eigenvalues fall under any sensible
+    // cutoff, and the truncated solution moves along the mean normal only —
+    // no eigen-decomposition needed.
+    const Eigen::Vector3d nsum(normalSum_[0], normalSum_[1], normalSum_[2]);
+    const double spread = nsum.norm() / count_; // 1 when all normals agree
+    if (relativeCutoff >= 0.05 && spread > 0.9995) {
+        const Eigen::Vector3d n = nsum / nsum.norm();
+        const double along = n.dot(ata * n);
+        const Eigen::Vector3d x = along > 0 ? Eigen::Vector3d(n * (n.dot(rhs) / along)) : Eigen::Vector3d::Zero();
+        return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
     eig.computeDirect(ata); // closed form for 3x3: several times faster than the iterative solver
     const Eigen::Vector3d values = eig.eigenvalues();
     const double largest = values.cwiseAbs().maxCoeff();
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    if (largest > 0) {
+    if (largest > 0)
         for (int k = 0; k < 3; ++k) {
             if (std::abs(values[k]) < relativeCutoff * largest) continue;
             const Eigen::Vector3d v = eig.eigenvectors().col(k);
-            x += v * (v.dot(atb) / values[k]);
+            x += v * (v.dot(rhs) / values[k]);
         }
-    }
-    return {c[0] + x[0], c[1] + x[1], c[2] + x[2]};
+    return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
 }
 
 } // namespace fl::mesh

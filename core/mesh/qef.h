@@ -3,7 +3,9 @@
 // that best lies on every tangent plane (p_i, n_i) of the surface crossings in
 // a cell. Solved about the crossings' mass point with small eigenvalues
 // truncated, so flat and cylindrical cells stay near the mass point while
-// corners and creases of min/max set operations come out sharp.
+// corners and creases of min/max set operations come out sharp. Accumulated
+// as sums (A^T A, A^T b, the point sum) relative to the first point, so adding
+// a plane is a few multiplications and nothing is stored per plane.
 #include <array>
 
 namespace fl::mesh {
@@ -18,9 +20,11 @@ class Qef {
     std::array<double, 3> solve(double relativeCutoff = 0.05) const;
 
   private:
-    std::array<double, 3> pointSum_{};
-    std::array<std::array<double, 3>, 12> points_{};
-    std::array<std::array<double, 3>, 12> normals_{};
+    std::array<double, 3> origin_{};   // the first point: sums are relative to it
+    std::array<double, 6> ata_{};      // xx xy xz yy yz zz
+    std::array<double, 3> atb_{};
+    std::array<double, 3> pointSum_{}; // relative to origin_
+    std::array<double, 3> normalSum_{};
     int count_ = 0;
 };
 
