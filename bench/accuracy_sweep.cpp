@@ -46,7 +46,8 @@ std::string num(double v, const char* format = "%.4g") {
 } // namespace
 
 std::string accuracyTableText(const std::vector<AccuracyRow>& rows) {
-    std::string out = "method    resolution  triangles  evaluations        ms   max error  mean error\n";
+    std::string out =
+        "method    resolution  triangles  evaluations        ms   max error  mean error\n";
     for (const AccuracyRow& r : rows) {
         char line[200];
         std::snprintf(line, sizeof line, "%-9s %10.4g %10zu %12zu %9.1f %11.3e %11.3e\n",
@@ -64,9 +65,9 @@ std::string accuracyJson(const std::vector<AccuracyRow>& rows) {
         out += i ? ",\n " : "";
         out += "{\"method\":\"" + r.method + "\",\"resolution\":" + num(r.resolution, "%.17g") +
                ",\"triangles\":" + std::to_string(r.triangles) +
-               ",\"evaluations\":" + std::to_string(r.evaluations) + ",\"ms\":" + num(r.ms, "%.6g") +
-               ",\"max_error\":" + num(r.maxError, "%.6g") + ",\"mean_error\":" + num(r.meanError, "%.6g") +
-               "}";
+               ",\"evaluations\":" + std::to_string(r.evaluations) +
+               ",\"ms\":" + num(r.ms, "%.6g") + ",\"max_error\":" + num(r.maxError, "%.6g") +
+               ",\"mean_error\":" + num(r.meanError, "%.6g") + "}";
     }
     return out + "]\n";
 }
@@ -99,10 +100,10 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
     };
     const AccuracyRow *fa = fastest("adaptive"), *fd = fastest("dense");
     if (fa && fd && fa->ms > 0)
-        out += "finest error both reach (" + num(common, "%.2e") + "): adaptive " + num(fa->ms, "%.1f") +
-               " ms at resolution " + num(fa->resolution) + ", dense " + num(fd->ms, "%.1f") +
-               " ms at resolution " + num(fd->resolution) + " (" + num(fd->ms / fa->ms, "%.1f") +
-               "x)\n";
+        out += "finest error both reach (" + num(common, "%.2e") + "): adaptive " +
+               num(fa->ms, "%.1f") + " ms at resolution " + num(fa->resolution) + ", dense " +
+               num(fd->ms, "%.1f") + " ms at resolution " + num(fd->resolution) + " (" +
+               num(fd->ms / fa->ms, "%.1f") + "x)\n";
     return out;
 }
 
@@ -115,23 +116,32 @@ std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::str
         eLo = std::min(eLo, r.maxError), eHi = std::max(eHi, r.maxError);
     }
     if (tHi <= 0) return "<svg xmlns='http://www.w3.org/2000/svg'/>\n";
-    const double x0 = std::floor(std::log10(tLo)), x1 = std::max(x0 + 1, std::ceil(std::log10(tHi)));
-    const double y0 = std::floor(std::log10(eLo)), y1 = std::max(y0 + 1, std::ceil(std::log10(eHi)));
-    auto X = [&](double ms) { return left + (std::log10(ms) - x0) / (x1 - x0) * (W - left - right); };
-    auto Y = [&](double e) { return H - bottom - (std::log10(e) - y0) / (y1 - y0) * (H - top - bottom); };
-    std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + num(W) + "' height='" + num(H) +
-                    "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
-    s += "<text x='" + num(W / 2) + "' y='22' text-anchor='middle' font-size='14'>" + title + "</text>\n";
+    const double x0 = std::floor(std::log10(tLo)),
+                 x1 = std::max(x0 + 1, std::ceil(std::log10(tHi)));
+    const double y0 = std::floor(std::log10(eLo)),
+                 y1 = std::max(y0 + 1, std::ceil(std::log10(eHi)));
+    auto X = [&](double ms) {
+        return left + (std::log10(ms) - x0) / (x1 - x0) * (W - left - right);
+    };
+    auto Y = [&](double e) {
+        return H - bottom - (std::log10(e) - y0) / (y1 - y0) * (H - top - bottom);
+    };
+    std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + num(W) + "' height='" +
+                    num(H) +
+                    "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' "
+                    "fill='white'/>\n";
+    s += "<text x='" + num(W / 2) + "' y='22' text-anchor='middle' font-size='14'>" + title +
+         "</text>\n";
     for (double d = x0; d <= x1; ++d) {
         const double x = X(std::pow(10, d));
-        s += "<line x1='" + num(x) + "' y1='" + num(top) + "' x2='" + num(x) + "' y2='" + num(H - bottom) +
-             "' stroke='#ddd'/><text x='" + num(x) + "' y='" + num(H - bottom + 16) +
-             "' text-anchor='middle'>1e" + num(d) + "</text>\n";
+        s += "<line x1='" + num(x) + "' y1='" + num(top) + "' x2='" + num(x) + "' y2='" +
+             num(H - bottom) + "' stroke='#ddd'/><text x='" + num(x) + "' y='" +
+             num(H - bottom + 16) + "' text-anchor='middle'>1e" + num(d) + "</text>\n";
     }
     for (double d = y0; d <= y1; ++d) {
         const double y = Y(std::pow(10, d));
-        s += "<line x1='" + num(left) + "' y1='" + num(y) + "' x2='" + num(W - right) + "' y2='" + num(y) +
-             "' stroke='#ddd'/><text x='" + num(left - 6) + "' y='" + num(y + 4) +
+        s += "<line x1='" + num(left) + "' y1='" + num(y) + "' x2='" + num(W - right) + "' y2='" +
+             num(y) + "' stroke='#ddd'/><text x='" + num(left - 6) + "' y='" + num(y + 4) +
              "' text-anchor='end'>1e" + num(d) + "</text>\n";
     }
     s += "<text x='" + num((left + W - right) / 2) + "' y='" + num(H - 12) +
@@ -148,16 +158,17 @@ std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::str
         for (const AccuracyRow& r : rows)
             if (r.method == se.method && r.ms > 0 && r.maxError > 0) {
                 points += num(X(r.ms)) + "," + num(Y(r.maxError)) + " ";
-                s += "<circle cx='" + num(X(r.ms)) + "' cy='" + num(Y(r.maxError)) + "' r='3' fill='" +
-                     se.colour + "'><title>" + se.method + " " + num(r.resolution) + "</title></circle>\n";
+                s += "<circle cx='" + num(X(r.ms)) + "' cy='" + num(Y(r.maxError)) +
+                     "' r='3' fill='" + se.colour + "'><title>" + se.method + " " +
+                     num(r.resolution) + "</title></circle>\n";
             }
-        s += "<polyline fill='none' stroke='" + std::string(se.colour) + "' stroke-width='2' points='" +
-             points + "'/>\n";
+        s += "<polyline fill='none' stroke='" + std::string(se.colour) +
+             "' stroke-width='2' points='" + points + "'/>\n";
         const double ly = top + 14 + 18 * legend++;
-        s += "<line x1='" + num(W - right - 150) + "' y1='" + num(ly - 4) + "' x2='" + num(W - right - 125) +
-             "' y2='" + num(ly - 4) + "' stroke='" + se.colour + "' stroke-width='2'/><text x='" +
-             num(W - right - 120) + "' y='" + num(ly) + "'>" + (legend == 1 ? "adaptive (DC)" : "dense MC") +
-             "</text>\n";
+        s += "<line x1='" + num(W - right - 150) + "' y1='" + num(ly - 4) + "' x2='" +
+             num(W - right - 125) + "' y2='" + num(ly - 4) + "' stroke='" + se.colour +
+             "' stroke-width='2'/><text x='" + num(W - right - 120) + "' y='" + num(ly) + "'>" +
+             (legend == 1 ? "adaptive (DC)" : "dense MC") + "</text>\n";
     }
     return s + "</svg>\n";
 }

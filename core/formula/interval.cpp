@@ -26,15 +26,20 @@ double step(double x, int ulps, int dir) {
     const std::uint64_t magnitude = bits & 0x7FFF'FFFF'FFFF'FFFFull;
     if (std::isfinite(x) && magnitude > std::uint64_t(ulps)) {
         const bool away = (x > 0) == (dir > 0); // moving away from zero grows the magnitude
-        const double r = std::bit_cast<double>(away ? bits + std::uint64_t(ulps) : bits - std::uint64_t(ulps));
+        const double r =
+            std::bit_cast<double>(away ? bits + std::uint64_t(ulps) : bits - std::uint64_t(ulps));
         return std::isnan(r) ? (x > 0 ? kInf : -kInf) : r; // past the largest double: infinity
     }
     for (int i = 0; i < ulps; ++i)
         x = std::nextafter(x, dir > 0 ? kInf : -kInf);
     return x;
 }
-double down(double x, int ulps = 2) { return step(x, ulps, -1); }
-double up(double x, int ulps = 2) { return step(x, ulps, 1); }
+double down(double x, int ulps = 2) {
+    return step(x, ulps, -1);
+}
+double up(double x, int ulps = 2) {
+    return step(x, ulps, 1);
+}
 
 // Build a result from computed endpoints: widen outward, and if an endpoint
 // came out NaN (inf - inf, 0 * inf …) fall back to everything.

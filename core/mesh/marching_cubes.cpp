@@ -19,7 +19,8 @@ constexpr Edge kEdges[12] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
 
 int edgeBetween(int a, int b) {
     for (int e = 0; e < 12; ++e)
-        if ((kEdges[e].a == a && kEdges[e].b == b) || (kEdges[e].a == b && kEdges[e].b == a)) return e;
+        if ((kEdges[e].a == a && kEdges[e].b == b) || (kEdges[e].a == b && kEdges[e].b == a))
+            return e;
     return -1;
 }
 
@@ -32,7 +33,9 @@ struct Case {
     std::array<std::array<std::int8_t, 3>, 12> triangles{};
 };
 
-std::array<double, 3> cornerPosition(int c) { return {double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1)}; }
+std::array<double, 3> cornerPosition(int c) {
+    return {double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1)};
+}
 
 // One case: the crossings on each face joined into segments, the segments
 // chained into loops, each loop fanned into triangles facing outward.
@@ -50,7 +53,8 @@ Case buildCase(int config) {
             // Ambiguous face: cut off each inside corner on its own.
             for (int k = 0; k < 4; ++k)
                 if (in(f[k]))
-                    segments.push_back({edgeBetween(f[(k + 3) % 4], f[k]), edgeBetween(f[k], f[(k + 1) % 4])});
+                    segments.push_back(
+                        {edgeBetween(f[(k + 3) % 4], f[k]), edgeBetween(f[k], f[(k + 1) % 4])});
         }
     }
     Case out;
@@ -151,7 +155,8 @@ DenseResult marchingCubes(const ImplicitField& field, double resolution, int thr
                     double v[8];
                     int config = 0;
                     for (int c = 0; c < 8; ++c) {
-                        const std::size_t at = std::size_t(j + ((c >> 1) & 1)) * row + std::size_t(i + (c & 1));
+                        const std::size_t at =
+                            std::size_t(j + ((c >> 1) & 1)) * row + std::size_t(i + (c & 1));
                         v[c] = (c >> 2) & 1 ? above[at] : below[at];
                         if (v[c] > 0) config |= 1 << c; // f > 0: inside, as the adaptive mesher
                     }
@@ -165,8 +170,10 @@ DenseResult marchingCubes(const ImplicitField& field, double resolution, int thr
                             const int e = cs.triangles[std::size_t(t)][std::size_t(q)];
                             if (vertexOfEdge[e] < 0) {
                                 const double va = v[kEdges[e].a], vb = v[kEdges[e].b];
-                                const double s = std::isfinite(va / (va - vb)) ? va / (va - vb) : 0.5;
-                                const auto pa = cornerPosition(kEdges[e].a), pb = cornerPosition(kEdges[e].b);
+                                const double s =
+                                    std::isfinite(va / (va - vb)) ? va / (va - vb) : 0.5;
+                                const auto pa = cornerPosition(kEdges[e].a),
+                                           pb = cornerPosition(kEdges[e].b);
                                 Vec3f p{};
                                 for (std::size_t a = 0; a < 3; ++a) {
                                     const double local = pa[a] + s * (pb[a] - pa[a]);

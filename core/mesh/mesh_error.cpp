@@ -11,9 +11,10 @@ SurfaceError measureSurfaceError(const ImplicitField& field, const Mesh& mesh) {
     SurfaceError e;
     double sum = 0;
     // Barycentric points: the centroid and one towards each corner.
-    static constexpr double kWeights[4][3] = {
-        {1.0 / 3, 1.0 / 3, 1.0 / 3}, {2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6},
-        {1.0 / 6, 1.0 / 6, 2.0 / 3}};
+    static constexpr double kWeights[4][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3},
+                                              {2.0 / 3, 1.0 / 6, 1.0 / 6},
+                                              {1.0 / 6, 2.0 / 3, 1.0 / 6},
+                                              {1.0 / 6, 1.0 / 6, 2.0 / 3}};
     const bool closed = field.boundary == BoxBoundary::Closed;
     for (const Triangle& t : mesh.triangles) {
         for (const auto& w : kWeights) {

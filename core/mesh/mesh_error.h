@@ -10,7 +10,7 @@
 namespace fl::mesh {
 
 struct SurfaceError {
-    double max = 0;  // fraction of the box diagonal
+    double max = 0; // fraction of the box diagonal
     double mean = 0;
     std::size_t samples = 0;
 };

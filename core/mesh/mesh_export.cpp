@@ -109,7 +109,9 @@ std::string ply(const Mesh& m) {
     out += "element vertex " + std::to_string(m.vertexCount()) + "\n";
     out += "property float x\nproperty float y\nproperty float z\n";
     out += "property float nx\nproperty float ny\nproperty float nz\n";
-    if (colours) out += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+    if (colours)
+        out +=
+            "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
     out += "element face " + std::to_string(m.triangleCount()) + "\n";
     out += "property list uchar uint vertex_indices\nend_header\n";
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
@@ -158,12 +160,13 @@ std::string glb(const Mesh& m) {
             putBytes(bin, t.data(), 12);
         auto view = [](std::size_t offset, std::size_t length, int target) {
             return "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) +
-                   ",\"byteLength\":" + std::to_string(length) + ",\"target\":" + std::to_string(target) +
-                   "}";
+                   ",\"byteLength\":" + std::to_string(length) +
+                   ",\"target\":" + std::to_string(target) + "}";
         };
         json += R"("scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)";
         json += R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1)";
-        json += colours ? R"(,"COLOR_0":2},"indices":3,"mode":4}]}],)" : R"(},"indices":2,"mode":4}]}],)";
+        json += colours ? R"(,"COLOR_0":2},"indices":3,"mode":4}]}],)"
+                        : R"(},"indices":2,"mode":4}]}],)";
         json += "\"bufferViews\":[" + view(positionsAt, normalsAt - positionsAt, 34962) + "," +
                 view(normalsAt, coloursAt - normalsAt, 34962) + ",";
         if (colours) json += view(coloursAt, indicesAt - coloursAt, 34962) + ",";
@@ -172,9 +175,9 @@ std::string glb(const Mesh& m) {
         int v = 0;
         auto accessor = [&](const std::string& type, int componentType, const std::string& c,
                             const std::string& extra) {
-            return "{\"bufferView\":" + std::to_string(v++) + ",\"componentType\":" +
-                   std::to_string(componentType) + ",\"count\":" + c + ",\"type\":\"" + type + "\"" +
-                   extra + "}";
+            return "{\"bufferView\":" + std::to_string(v++) +
+                   ",\"componentType\":" + std::to_string(componentType) + ",\"count\":" + c +
+                   ",\"type\":\"" + type + "\"" + extra + "}";
         };
         std::string bounds = ",\"min\":[";
         appendTriple(bounds, "", lo[0], lo[1], lo[2]);
@@ -218,12 +221,13 @@ std::string glb(const Mesh& m) {
 
 std::string x3d(const Mesh& m) {
     const bool colours = m.colours.size() == m.positions.size();
-    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                      "<X3D profile='Interchange' version='3.3'>\n"
-                      "  <head><meta name='generator' content='FunctionLab'/></head>\n"
-                      "  <Scene>\n    <Shape>\n"
-                      "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n"
-                      "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
+    std::string out =
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<X3D profile='Interchange' version='3.3'>\n"
+        "  <head><meta name='generator' content='FunctionLab'/></head>\n"
+        "  <Scene>\n    <Shape>\n"
+        "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n"
+        "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
         for (std::uint32_t v : m.triangles[i]) {
             if (i || v != m.triangles[i][0]) out += ' ';
@@ -260,7 +264,8 @@ std::string x3d(const Mesh& m) {
 
 std::optional<MeshFormat> meshFormatForPath(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     if (ext == ".stl") return MeshFormat::Stl;
     if (ext == ".obj") return MeshFormat::Obj;
     if (ext == ".ply") return MeshFormat::Ply;
@@ -271,22 +276,32 @@ std::optional<MeshFormat> meshFormatForPath(const std::filesystem::path& path) {
 
 std::string_view meshFormatName(MeshFormat f) {
     switch (f) {
-    case MeshFormat::Stl: return "STL (binary)";
-    case MeshFormat::Obj: return "OBJ";
-    case MeshFormat::Ply: return "PLY (binary)";
-    case MeshFormat::Glb: return "glTF 2.0 binary";
-    case MeshFormat::X3d: return "X3D";
+    case MeshFormat::Stl:
+        return "STL (binary)";
+    case MeshFormat::Obj:
+        return "OBJ";
+    case MeshFormat::Ply:
+        return "PLY (binary)";
+    case MeshFormat::Glb:
+        return "glTF 2.0 binary";
+    case MeshFormat::X3d:
+        return "X3D";
     }
     return "";
 }
 
 std::string encodeMesh(const Mesh& mesh, MeshFormat format) {
     switch (format) {
-    case MeshFormat::Stl: return stl(mesh);
-    case MeshFormat::Obj: return obj(mesh);
-    case MeshFormat::Ply: return ply(mesh);
-    case MeshFormat::Glb: return glb(mesh);
-    case MeshFormat::X3d: return x3d(mesh);
+    case MeshFormat::Stl:
+        return stl(mesh);
+    case MeshFormat::Obj:
+        return obj(mesh);
+    case MeshFormat::Ply:
+        return ply(mesh);
+    case MeshFormat::Glb:
+        return glb(mesh);
+    case MeshFormat::X3d:
+        return x3d(mesh);
     }
     return {};
 }

@@ -49,7 +49,8 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
     if (relativeCutoff >= 0.05 && spread > 0.9995) {
         const Eigen::Vector3d n = nsum / nsum.norm();
         const double along = n.dot(ata * n);
-        const Eigen::Vector3d x = along > 0 ? Eigen::Vector3d(n * (n.dot(rhs) / along)) : Eigen::Vector3d::Zero();
+        const Eigen::Vector3d x =
+            along > 0 ? Eigen::Vector3d(n * (n.dot(rhs) / along)) : Eigen::Vector3d::Zero();
         return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;

@@ -20,8 +20,8 @@ class Qef {
     std::array<double, 3> solve(double relativeCutoff = 0.05) const;
 
   private:
-    std::array<double, 3> origin_{};   // the first point: sums are relative to it
-    std::array<double, 6> ata_{};      // xx xy xz yy yz zz
+    std::array<double, 3> origin_{}; // the first point: sums are relative to it
+    std::array<double, 6> ata_{};    // xx xy xz yy yz zz
     std::array<double, 3> atb_{};
     std::array<double, 3> pointSum_{}; // relative to origin_
     std::array<double, 3> normalSum_{};

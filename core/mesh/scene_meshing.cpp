@@ -44,9 +44,12 @@ struct Affine {
         if (!(n > 0) || !std::isfinite(angle)) return a;
         ax /= n, ay /= n, az /= n;
         const double c = std::cos(angle), s = std::sin(angle), k = 1 - c;
-        a.m[0][0] = c + ax * ax * k, a.m[0][1] = ax * ay * k - az * s, a.m[0][2] = ax * az * k + ay * s;
-        a.m[1][0] = ay * ax * k + az * s, a.m[1][1] = c + ay * ay * k, a.m[1][2] = ay * az * k - ax * s;
-        a.m[2][0] = az * ax * k - ay * s, a.m[2][1] = az * ay * k + ax * s, a.m[2][2] = c + az * az * k;
+        a.m[0][0] = c + ax * ax * k, a.m[0][1] = ax * ay * k - az * s,
+        a.m[0][2] = ax * az * k + ay * s;
+        a.m[1][0] = ay * ax * k + az * s, a.m[1][1] = c + ay * ay * k,
+        a.m[1][2] = ay * az * k - ax * s;
+        a.m[2][0] = az * ax * k - ay * s, a.m[2][1] = az * ay * k + ax * s,
+        a.m[2][2] = c + az * az * k;
         return a;
     }
     static Affine rotate(const std::vector<double>& r) {
@@ -65,7 +68,8 @@ struct Affine {
             }
         std::array<double, 3> r{};
         for (int i = 0; i < 3; ++i)
-            r[std::size_t(i)] = (cof[i][0] * n[0] + cof[i][1] * n[1] + cof[i][2] * n[2]) * (det < 0 ? -1 : 1);
+            r[std::size_t(i)] =
+                (cof[i][0] * n[0] + cof[i][1] * n[1] + cof[i][2] * n[2]) * (det < 0 ? -1 : 1);
         const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
         if (len > 0)
             for (double& c : r)
@@ -74,7 +78,9 @@ struct Affine {
     }
 };
 
-std::vector<double> vec(const Node& n, const char* field) { return scene::numbersField(n, field); }
+std::vector<double> vec(const Node& n, const char* field) {
+    return scene::numbersField(n, field);
+}
 
 // X3D Transform: T * C * R * SR * S * -SR * -C.
 Affine transformOf(const Node& n) {
@@ -106,14 +112,17 @@ class Walker {
         if (type == "Switch") {
             const auto choice = scene::numberField(*n, "whichChoice", 0, -1);
             const auto children = scene::nodesField(*n, "children");
-            if (choice >= 0 && choice < double(children.size())) walk(children[std::size_t(choice)], here);
+            if (choice >= 0 && choice < double(children.size()))
+                walk(children[std::size_t(choice)], here);
             return;
         }
         if (type == "LOD") { // the most detailed level
             const auto levels = scene::nodesField(*n, "level");
             const auto children = scene::nodesField(*n, "children");
-            if (!children.empty()) walk(children.front(), here);
-            else if (!levels.empty()) walk(levels.front(), here);
+            if (!children.empty())
+                walk(children.front(), here);
+            else if (!levels.empty())
+                walk(levels.front(), here);
             return;
         }
         for (const char* field : {"children"})
@@ -150,8 +159,8 @@ class Walker {
         w.loop = scene::boolField(n, "loop");
         const auto span = vec(n, "timeSpan");
         const std::int64_t now = animation::secondsToNanoseconds(options_.sceneSeconds);
-        return animation::functionTime(w, span.size() > 0 ? span[0] : 0, span.size() > 1 ? span[1] : 1,
-                                       now);
+        return animation::functionTime(w, span.size() > 0 ? span[0] : 0,
+                                       span.size() > 1 ? span[1] : 1, now);
     }
 
     // translation, rotationAngle about rotationAxis and scale as functions of t, about center.
@@ -177,8 +186,8 @@ class Walker {
         }
         if (tr.size() < 3 || sc.size() < 3 || angle.empty()) return {};
         return Affine::translate(tr[0], tr[1], tr[2]) * Affine::translate(c[0], c[1], c[2]) *
-               Affine::rotate(axis[0], axis[1], axis[2], angle[0]) * Affine::scale(sc[0], sc[1], sc[2]) *
-               Affine::translate(-c[0], -c[1], -c[2]);
+               Affine::rotate(axis[0], axis[1], axis[2], angle[0]) *
+               Affine::scale(sc[0], sc[1], sc[2]) * Affine::translate(-c[0], -c[1], -c[2]);
     }
 
     void shape(const Node& n, const Affine& m) {
@@ -218,7 +227,8 @@ class Walker {
                 sm.warnings.push_back("the target error was not reached: " +
                                       std::to_string(e.error.max) + " of the box diagonal");
         } else {
-            if (options_.useFileResolution) o.resolution = scene::numberField(*geometry, "resolution", 0, 32);
+            if (options_.useFileResolution)
+                o.resolution = scene::numberField(*geometry, "resolution", 0, 32);
             r = meshImplicit(field, o);
         }
         sm.stats = r.stats;

@@ -12,16 +12,16 @@
 namespace fl::mesh {
 
 struct SceneMeshOptions {
-    MeshOptions mesh;         // threads, budget, cancel ...
+    MeshOptions mesh;              // threads, budget, cancel ...
     bool useFileResolution = true; // each FGeometry's `resolution`; false: mesh.resolution
-    double targetError = 0;   // > 0: mesh each shape to this error instead
-    double sceneSeconds = 0;  // the moment, in scene time (wall clocks: the scene started at 0 UTC)
+    double targetError = 0;        // > 0: mesh each shape to this error instead
+    double sceneSeconds = 0; // the moment, in scene time (wall clocks: the scene started at 0 UTC)
 };
 
 struct ShapeMesh {
     const scene::Node* shape = nullptr;
-    std::string name;          // "FShape WATERMELON (file:line:col)"
-    Mesh mesh;                 // in scene coordinates
+    std::string name; // "FShape WATERMELON (file:line:col)"
+    Mesh mesh;        // in scene coordinates
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
     std::vector<std::string> warnings;

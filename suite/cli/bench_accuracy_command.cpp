@@ -16,8 +16,7 @@ namespace fl::cli {
 namespace {
 
 int usage(const std::string& problem) {
-    std::cerr << "functionlab bench accuracy: " << problem
-              << "\n(see functionlab bench --help)\n";
+    std::cerr << "functionlab bench accuracy: " << problem << "\n(see functionlab bench --help)\n";
     return kExitUsage;
 }
 
@@ -46,12 +45,15 @@ bool fieldFromScene(const std::string& file, mesh::ImplicitField& field, std::st
         const formula::Tape* tape = r.scene->definition(n, "definition");
         if (!tape) return;
         field.tape = *tape;
-        const auto lo = scene::numbersField(n, "domainMin"), hi = scene::numbersField(n, "domainMax");
+        const auto lo = scene::numbersField(n, "domainMin"),
+                   hi = scene::numbersField(n, "domainMax");
         field.box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
         name = file + ":" + std::to_string(n.where.line);
         found = true;
     });
-    if (!found) std::cerr << "functionlab bench accuracy: " << file << " has no implicit or explicit FGeometry\n";
+    if (!found)
+        std::cerr << "functionlab bench accuracy: " << file
+                  << " has no implicit or explicit FGeometry\n";
     return found;
 }
 
@@ -65,25 +67,34 @@ int benchAccuracyCommand(const Args& args) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         const bool hasValue = i + 1 < args.size();
-        if (a == "--json") json = true;
-        else if (a == "--formula" && hasValue) formula = args[++i];
-        else if (a == "--box" && hasValue) box = args[++i];
-        else if (a == "--plot" && hasValue) plot = args[++i];
-        else if (a == "--threads" && hasValue) threads = std::atoi(args[++i].c_str());
+        if (a == "--json")
+            json = true;
+        else if (a == "--formula" && hasValue)
+            formula = args[++i];
+        else if (a == "--box" && hasValue)
+            box = args[++i];
+        else if (a == "--plot" && hasValue)
+            plot = args[++i];
+        else if (a == "--threads" && hasValue)
+            threads = std::atoi(args[++i].c_str());
         else if (a == "--resolutions" && hasValue) {
             resolutions.clear();
-            if (!numbers(args[++i], resolutions)) return usage("--resolutions needs numbers like 16,32,64");
+            if (!numbers(args[++i], resolutions))
+                return usage("--resolutions needs numbers like 16,32,64");
             for (double r : resolutions)
                 if (r < 1 || r > 1024) return usage("resolutions must lie in 1..1024");
-        } else if (!a.starts_with("-") && file.empty()) file = a;
-        else return usage("unexpected argument '" + a + "'");
+        } else if (!a.starts_with("-") && file.empty())
+            file = a;
+        else
+            return usage("unexpected argument '" + a + "'");
     }
     if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
     mesh::ImplicitField field;
     std::string name;
     if (!formula.empty()) {
         std::vector<double> b;
-        if (!numbers(box, b) || b.size() != 6) return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
+        if (!numbers(box, b) || b.size() != 6)
+            return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
         field.box = {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
         if (!field.box.valid()) return usage("the box needs max above min on every axis");
         formula::CompileOptions co;
@@ -98,7 +109,8 @@ int benchAccuracyCommand(const Args& args) {
     } else if (!fieldFromScene(file, field, name)) {
         return kExitDiagnostic;
     }
-    const std::vector<bench::AccuracyRow> rows = bench::runAccuracySweep(field, resolutions, threads);
+    const std::vector<bench::AccuracyRow> rows =
+        bench::runAccuracySweep(field, resolutions, threads);
     std::cout << (json ? bench::accuracyJson(rows) : bench::accuracyTableText(rows));
     if (!plot.empty()) {
         std::ofstream out(plot);

@@ -17,7 +17,8 @@
 namespace fl::cli {
 namespace {
 
-const char* kMeshHelp = R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N]
+const char* kMeshHelp =
+    R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N]
        functionlab mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [options]
 
 Polygonizes the implicit and explicit function shapes of the scene FILE (each
@@ -74,9 +75,9 @@ void describe(const std::string& name, const mesh::Mesh& m, const mesh::MeshStat
               double measuredError) {
     const mesh::Topology t = mesh::analyseTopology(m);
     std::cerr << name << ": " << m.triangleCount() << " triangles, " << m.vertexCount()
-              << " vertices, " << s.evaluations.points + s.evaluations.gradients
-              << " evaluations, " << std::lround(s.milliseconds) << " ms, "
-              << (t.closed() ? "closed" : "open") << (t.manifold() ? "" : ", not manifold");
+              << " vertices, " << s.evaluations.points + s.evaluations.gradients << " evaluations, "
+              << std::lround(s.milliseconds) << " ms, " << (t.closed() ? "closed" : "open")
+              << (t.manifold() ? "" : ", not manifold");
     if (measuredError >= 0) std::cerr << ", measured error " << measuredError << " of the diagonal";
     std::cerr << "\n";
 }
@@ -112,8 +113,11 @@ int meshCommand(const Args& args) {
                    a == "--threads") {
             double d = 0;
             if (!(v = value("number")) || !parseNumber(*v, d)) return usage(a + " needs a number");
-            (a == "--time" ? time : a == "--resolution" ? resolution : a == "--error" ? error
-                            : a == "--memory" ? memory : threads) = d;
+            (a == "--time"         ? time
+             : a == "--resolution" ? resolution
+             : a == "--error"      ? error
+             : a == "--memory"     ? memory
+                                   : threads) = d;
         } else if (a == "--open") {
             open = true;
         } else if (a.starts_with("-")) {
@@ -127,7 +131,8 @@ int meshCommand(const Args& args) {
     if (output.empty()) return usage("give the output file with -o OUT");
     if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
     if (!mesh::meshFormatForPath(output))
-        return usage("cannot tell the format from '" + output + "'; use .stl, .obj, .ply, .glb or .x3d");
+        return usage("cannot tell the format from '" + output +
+                     "'; use .stl, .obj, .ply, .glb or .x3d");
     if (resolution && error) return usage("give --resolution or --error, not both");
     if (resolution < 0 || error < 0 || memory <= 0 || threads < 0)
         return usage("--resolution, --error, --memory and --threads must be positive");
@@ -174,7 +179,8 @@ int meshCommand(const Args& args) {
         result = std::move(r.mesh);
         anything = true;
     } else {
-        if (open) return usage("--open applies to --formula only (a scene's FGeometry boxes close it)");
+        if (open)
+            return usage("--open applies to --formula only (a scene's FGeometry boxes close it)");
         scene::ReadResult r = scene::readSceneFile(file);
         for (const auto& d : r.diagnostics)
             std::cerr << scene::formatSceneDiagnostic(d) << "\n";
@@ -211,8 +217,9 @@ int meshCommand(const Args& args) {
         return kExitDiagnostic;
     }
     if (!anything) std::cerr << "warning: the mesh is empty\n";
-    std::cerr << "wrote " << output << " (" << mesh::meshFormatName(*mesh::meshFormatForPath(output))
-              << ", " << result.triangleCount() << " triangles)\n";
+    std::cerr << "wrote " << output << " ("
+              << mesh::meshFormatName(*mesh::meshFormatForPath(output)) << ", "
+              << result.triangleCount() << " triangles)\n";
     return kExitOk;
 }
 

@@ -1,21 +1,7 @@
 # Runs `functionlab formula …` like a user and checks exit codes and output.
 # Invoked by CTest: cmake -DFUNCTIONLAB=path -P cli_formula_test.cmake
 
-function(run expected_code)
-  execute_process(COMMAND ${FUNCTIONLAB} ${ARGN}
-                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "functionlab ${ARGN}\n exited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  set(OUT "${out}" PARENT_SCOPE)
-  set(ERR "${err}" PARENT_SCOPE)
-endfunction()
-
-function(expect_match text regex)
-  if(NOT text MATCHES "${regex}")
-    message(FATAL_ERROR "expected output to match '${regex}', got:\n${text}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
 
 function(expect_json_null json)
   string(JSON type TYPE "${json}" ${ARGN})

@@ -1,21 +1,7 @@
 # Runs `functionlab mesh` like a user: formats, warnings, exit codes.
 # Invoked by CTest: cmake -DFUNCTIONLAB=path -DEXAMPLES=dir -DOUT_DIR=dir -P cli_mesh_test.cmake
 
-function(run expected_code)
-  execute_process(COMMAND ${FUNCTIONLAB} ${ARGN}
-                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL expected_code)
-    message(FATAL_ERROR "functionlab ${ARGN}\n exited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
-  endif()
-  set(OUT "${out}" PARENT_SCOPE)
-  set(ERR "${err}" PARENT_SCOPE)
-endfunction()
-
-function(expect_match text regex)
-  if(NOT text MATCHES "${regex}")
-    message(FATAL_ERROR "expected output to match '${regex}', got:\n${text}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
 
 file(MAKE_DIRECTORY ${OUT_DIR})
 set(SPHERE "0.8^2 - x*x - y*y - z*z")

@@ -12,9 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <sstream>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace fl::mesh;
 
@@ -106,8 +106,11 @@ TEST(Export, GlbIsAValidGltfContainer) {
         const std::size_t binAt = 20 + jsonLength;
         const std::uint32_t binLength = read<std::uint32_t>(g, binAt);
         EXPECT_EQ(read<std::uint32_t>(g, binAt + 4), 0x004E4942u);
-        EXPECT_EQ(binLength, std::uint32_t(root["buffers"].toArray()[0].toObject()["byteLength"].toInt() + 3) / 4 * 4);
-        const auto primitive = root["meshes"].toArray()[0].toObject()["primitives"].toArray()[0].toObject();
+        EXPECT_EQ(binLength,
+                  std::uint32_t(root["buffers"].toArray()[0].toObject()["byteLength"].toInt() + 3) /
+                      4 * 4);
+        const auto primitive =
+            root["meshes"].toArray()[0].toObject()["primitives"].toArray()[0].toObject();
         EXPECT_EQ(primitive["attributes"].toObject().contains("COLOR_0"), colours);
     }
     // An empty mesh is still a valid file: a scene with nothing in it.

@@ -1,0 +1,18 @@
+# Shared by the command-line tests: run functionlab like a user, check output.
+# run(EXPECTED_EXIT args...) sets OUT and ERR; expect_match(TEXT REGEX).
+
+function(run expected_code)
+  execute_process(COMMAND ${FUNCTIONLAB} ${ARGN}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL expected_code)
+    message(FATAL_ERROR "functionlab ${ARGN}\n exited ${code}, expected ${expected_code}\nstdout: ${out}\nstderr: ${err}")
+  endif()
+  set(OUT "${out}" PARENT_SCOPE)
+  set(ERR "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_match text regex)
+  if(NOT text MATCHES "${regex}")
+    message(FATAL_ERROR "expected output to match '${regex}', got:\n${text}")
+  endif()
+endfunction()
