@@ -16,6 +16,9 @@ struct Mesh {
     std::vector<Vec3f> positions;
     std::vector<Vec3f> normals;                // unit, outward; one per position
     std::vector<std::array<float, 4>> colours; // RGBA per position, or empty
+    // Parametric geometry: each vertex's (u, v, w), which colour and texture
+    // formulas read; empty for implicit and explicit geometry.
+    std::vector<std::array<float, 3>> parameters;
     std::vector<Triangle> triangles;
 
     std::size_t vertexCount() const { return positions.size(); }

@@ -2,8 +2,10 @@
 
 #include "animation/clock.h"
 #include "animation/time_window.h"
+#include "colouring.h"
 #include "error_driven.h"
 #include "formula/eval_scalar.h"
+#include "parametric.h"
 #include "scene/field_access.h"
 
 #include <cmath>
@@ -199,10 +201,6 @@ class Walker {
             return;
         }
         const std::string type = scene::stringField(*geometry, "type");
-        if (type == "parametric") {
-            out_.notes.push_back(nameOf(n) + ": parametric geometry is not meshed yet");
-            return;
-        }
         const formula::Tape* tape = scene_.definition(*geometry, "definition");
         ShapeMesh sm;
         sm.shape = &n;
@@ -219,7 +217,25 @@ class Walker {
         field.t = timeOf(*geometry);
         MeshOptions o = options_.mesh;
         MeshResult r;
-        if (options_.targetError > 0) {
+        if (type == "parametric") {
+            ParametricField pf;
+            pf.tape = *tape;
+            pf.t = field.t;
+            pf.box = field.box;
+            const char* ranges[3] = {"uRange", "vRange", "wRange"};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const auto range = vec(*geometry, ranges[k]);
+                pf.ranges[k] = {range[0], range[1]};
+            }
+            ParametricOptions po;
+            po.resolution = options_.useFileResolution || options_.targetError > 0
+                                ? scene::numberField(*geometry, "resolution", 0, 32)
+                                : o.resolution;
+            if (options_.targetError > 0)
+                sm.warnings.push_back("a target error applies to implicit and explicit geometry; "
+                                      "parametric geometry is meshed at its resolution");
+            r = meshParametric(pf, po);
+        } else if (options_.targetError > 0) {
             ErrorDrivenResult e = meshForError(field, options_.targetError, o);
             r = std::move(e.result);
             sm.measuredError = e.error.max;
@@ -235,6 +251,7 @@ class Walker {
         sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
+        colour(effective(scene::nodeField(n, "appearance")), field.box, sm);
         for (std::size_t i = 0; i < sm.mesh.positions.size(); ++i) {
             Vec3f& p = sm.mesh.positions[i];
             const double x = p[0], y = p[1], z = p[2];
@@ -251,6 +268,35 @@ class Walker {
             for (Triangle& t : sm.mesh.triangles)
                 std::swap(t[1], t[2]);
         out_.shapes.push_back(std::move(sm));
+    }
+
+    // Vertex colours from the shape's appearance, in the geometry's own
+    // coordinates (before the transforms above it move the mesh).
+    void colour(const Node* appearance, const Box3& geometryBox, ShapeMesh& sm) {
+        const Node* material =
+            appearance ? effective(scene::nodeField(*appearance, "material")) : nullptr;
+        if (!material || sm.mesh.empty()) return;
+        ColourField cf;
+        cf.geometryBox = geometryBox;
+        cf.componentBox = geometryBox;
+        const auto diffuse = vec(*material, "diffuseColor");
+        if (diffuse.size() == 3) cf.fallback = {diffuse[0], diffuse[1], diffuse[2]};
+        cf.constantTransparency = scene::numberField(*material, "transparency");
+        if (material->type == "FMaterial") {
+            if (const formula::Tape* tape = scene_.definition(*material, "definition"))
+                cf.colour = *tape;
+            if (const formula::Tape* tape = scene_.definition(*material, "transparencyDefinition"))
+                cf.transparency = *tape;
+            cf.key = vec(*material, "key");
+            const auto kv = vec(*material, "keyValue");
+            for (std::size_t i = 0; i + 2 < kv.size(); i += 3)
+                cf.keyValue.push_back({kv[i], kv[i + 1], kv[i + 2]});
+            const auto lo = vec(*material, "domainMin"), hi = vec(*material, "domainMax");
+            cf.componentBox = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+            cf.t = timeOf(*material);
+        }
+        const auto warnings = applyColour(sm.mesh, cf);
+        sm.warnings.insert(sm.warnings.end(), warnings.begin(), warnings.end());
     }
 
     const scene::Scene& scene_;
@@ -275,6 +321,14 @@ Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes) {
         const auto base = std::uint32_t(all.positions.size());
         all.positions.insert(all.positions.end(), s.mesh.positions.begin(), s.mesh.positions.end());
         all.normals.insert(all.normals.end(), s.mesh.normals.begin(), s.mesh.normals.end());
+        // Colours: a shape without them is shown in the default grey.
+        if (!s.mesh.colours.empty() || !all.colours.empty()) {
+            all.colours.resize(base, {0.8f, 0.8f, 0.8f, 1.0f});
+            if (s.mesh.colours.size() == s.mesh.positions.size())
+                all.colours.insert(all.colours.end(), s.mesh.colours.begin(), s.mesh.colours.end());
+            else
+                all.colours.resize(all.positions.size(), {0.8f, 0.8f, 0.8f, 1.0f});
+        }
         for (Triangle t : s.mesh.triangles) {
             for (auto& i : t)
                 i += base;

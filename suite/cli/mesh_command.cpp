@@ -21,10 +21,13 @@ const char* kMeshHelp =
     R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N]
        functionlab mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [options]
 
-Polygonizes the implicit and explicit function shapes of the scene FILE (each
-in its domain box, placed by the Transform/FTransform nodes above it), or one
-formula (f >= 0 inside) over a box, and writes OUT in the format its extension
-names: .stl (binary), .obj, .ply (binary), .glb (glTF 2.0 binary), .x3d.
+Polygonizes the function shapes of the scene FILE — implicit and explicit ones
+in their domain boxes, parametric curves (as tubes), surfaces and solids over
+their u, v, w ranges — coloured by their FMaterial or Material and placed by
+the Transform/FTransform nodes above them; or one formula (f >= 0 inside) over
+a box. Writes OUT in the format its extension names: .stl (binary), .obj,
+.ply (binary), .glb (glTF 2.0 binary), .x3d (vertex colours where the format
+has them).
 
 options:
   -o, --output OUT     the file to write
@@ -207,7 +210,7 @@ int meshCommand(const Args& args) {
         result = mesh::mergeMeshes(meshes.shapes);
         if (meshes.shapes.empty()) {
             std::cerr << "functionlab mesh: " << file
-                      << " has no implicit or explicit function shape to mesh\n";
+                      << " has no function shape to mesh (standard geometry is drawn by the viewer)\n";
             return kExitDiagnostic;
         }
     }

@@ -39,8 +39,11 @@ expect_match("${ERR}" "warning: the function is undefined \\(NaN\\).*sqrt")
 # A scene: its function shapes, placed and meshed in their boxes.
 run(0 mesh ${EXAMPLES}/watermelon.x3d --resolution 24 -o ${OUT_DIR}/melon.glb)
 expect_match("${ERR}" "FShape .*watermelon.x3d:[0-9]+:[0-9]+.*triangles")
-run(1 mesh ${EXAMPLES}/clock.x3d -o ${OUT_DIR}/clock.glb)               # parametric only, for now
-expect_match("${ERR}" "no implicit or explicit function shape")
+run(0 mesh ${EXAMPLES}/clock.x3d --time 15 -o ${OUT_DIR}/clock.glb)     # parametric surfaces
+expect_match("${ERR}" "FShape CAP .*triangles")
+file(WRITE ${OUT_DIR}/boxes.x3dv "#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry Box {} }\n")
+run(1 mesh ${OUT_DIR}/boxes.x3dv -o ${OUT_DIR}/boxes.glb)
+expect_match("${ERR}" "no function shape to mesh")
 run(1 mesh ${OUT_DIR}/missing.x3d -o ${OUT_DIR}/m.stl)
 
 # What accuracy costs in time: both methods per resolution, as JSON and a plot.

@@ -1,0 +1,38 @@
+#pragma once
+// Parametric geometry: x, y, z as functions of the parameters u, v, w (and t).
+// What the definition reads decides what it is: one parameter a curve (meshed
+// as a thin tube), two a surface, three a solid (its six boundary faces).
+// Seams and poles — where different parameters reach the same point, as a
+// sphere's u = 0 and u = 2 pi, or its whole v = 0 row — are welded, the
+// degenerate triangles they leave dropped, and normals there taken from the
+// surrounding triangles, so none is zero or NaN.
+#include "dual_contouring.h" // MeshResult, MeshStats
+#include "formula/tape.h"
+#include "mesh.h"
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fl::mesh {
+
+struct ParametricField {
+    formula::Tape tape;                                                    // outputs x, y, z
+    std::array<std::array<double, 2>, 3> ranges{{{0, 1}, {0, 1}, {0, 1}}}; // u, v, w
+    double t = 0;
+    std::vector<std::pair<std::string, double>> parameters;
+    // The box the object is expected to lie in: sizes the curve's tube.
+    Box3 box;
+};
+
+struct ParametricOptions {
+    double resolution = 32; // segments along each parameter (a real number)
+    double tubeRadius = 0;  // curves: 0 picks 1% of the box diagonal
+    int tubeSides = 8;
+};
+
+// The mesh carries each vertex's (u, v, w) in Mesh::parameters.
+MeshResult meshParametric(const ParametricField& field, const ParametricOptions& options = {});
+
+} // namespace fl::mesh
