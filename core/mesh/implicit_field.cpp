@@ -31,6 +31,34 @@ void setParameters(Evaluator& e, const ImplicitField& field) {
 
 } // namespace
 
+struct FieldSampler::DisplacementEvaluators {
+    explicit DisplacementEvaluators(const formula::Tape& tape)
+        : batch(tape), scalar(tape), gradientXyz(tape),
+          gradientUvw(tape, {formula::Input::U, formula::Input::V, formula::Input::W}),
+          interval(tape), readsUvw(tape.usesInput[std::size_t(formula::Input::U)] ||
+                                   tape.usesInput[std::size_t(formula::Input::V)] ||
+                                   tape.usesInput[std::size_t(formula::Input::W)]) {}
+    formula::BatchEvaluator batch;
+    formula::ScalarEvaluator scalar;
+    formula::GradientEvaluator gradientXyz, gradientUvw;
+    formula::IntervalEvaluator interval;
+    bool readsUvw;
+};
+
+FieldSampler::~FieldSampler() = default;
+
+std::array<double, 6> FieldSampler::mapped(const std::array<double, 3>& p) const {
+    const Box3& g = field_.box;
+    const Box3& c = field_.displacement->componentBox;
+    std::array<double, 6> m{};
+    for (std::size_t a = 0; a < 3; ++a) {
+        const double s = (p[a] - g.lo[a]) / (g.hi[a] - g.lo[a]);
+        m[a] = c.lo[a] + s * (c.hi[a] - c.lo[a]);
+        m[3 + a] = s;
+    }
+    return m;
+}
+
 FieldSampler::FieldSampler(const ImplicitField& field)
     : field_(field), clip_(field.boundary == BoxBoundary::Closed), batch_(field.tape),
       scalar_(field.tape), gradient_(field.tape), interval_(field.tape) {
@@ -38,6 +66,8 @@ FieldSampler::FieldSampler(const ImplicitField& field)
     setParameters(scalar_, field);
     setParameters(gradient_, field);
     setParameters(interval_, field);
+    if (field.displacement)
+        displacement_ = std::make_unique<DisplacementEvaluators>(field.displacement->tape);
 }
 
 void FieldSampler::values(const double* x, const double* y, const double* z, std::size_t n,
@@ -49,16 +79,54 @@ void FieldSampler::values(const double* x, const double* y, const double* z, std
     in.set(formula::Input::T, field_.t);
     batch_.evaluate(in, n, out);
     counts_.points += n;
+    if (!displacement_) return;
+    for (auto& v : mappedInputs_)
+        v.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto m = mapped({x[i], y[i], z[i]});
+        for (std::size_t k = 0; k < 6; ++k)
+            mappedInputs_[k][i] = m[k];
+    }
+    formula::BatchInputs d;
+    d.set(formula::Input::X, mappedInputs_[0].data());
+    d.set(formula::Input::Y, mappedInputs_[1].data());
+    d.set(formula::Input::Z, mappedInputs_[2].data());
+    d.set(formula::Input::U, mappedInputs_[3].data());
+    d.set(formula::Input::V, mappedInputs_[4].data());
+    d.set(formula::Input::W, mappedInputs_[5].data());
+    d.set(formula::Input::T, field_.t);
+    displacementValues_.resize(n);
+    displacement_->batch.evaluate(d, n, displacementValues_.data());
+    for (std::size_t i = 0; i < n; ++i)
+        out[i] += displacementValues_[i];
 }
 
 double FieldSampler::value(const std::array<double, 3>& p) {
     ++counts_.points;
-    return scalar_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    const double f = scalar_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    if (!displacement_) return f;
+    const auto m = mapped(p);
+    return f + displacement_->scalar.evaluate({m[0], m[1], m[2], field_.t, m[3], m[4], m[5]});
 }
 
 formula::Dual FieldSampler::gradient(const std::array<double, 3>& p) {
     ++counts_.gradients;
-    return gradient_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    formula::Dual d = gradient_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    if (!displacement_) return d;
+    // Chain rule through the linear map: d/dp = d/dx' * (c / g) + d/du * (1 / g).
+    const auto m = mapped(p);
+    const formula::Point q{m[0], m[1], m[2], field_.t, m[3], m[4], m[5]};
+    const formula::Dual dx = displacement_->gradientXyz.evaluate(q);
+    formula::Dual du{};
+    if (displacement_->readsUvw) du = displacement_->gradientUvw.evaluate(q);
+    d.v += dx.v;
+    const Box3& g = field_.box;
+    const Box3& c = field_.displacement->componentBox;
+    for (std::size_t a = 0; a < 3; ++a) {
+        const double size = g.hi[a] - g.lo[a];
+        d.d[a] += dx.d[a] * (c.hi[a] - c.lo[a]) / size + du.d[a] / size;
+    }
+    return d;
 }
 
 formula::Interval FieldSampler::interval(const std::array<double, 3>& lo,
@@ -66,6 +134,21 @@ formula::Interval FieldSampler::interval(const std::array<double, 3>& lo,
     ++counts_.intervals;
     formula::Interval r =
         interval_.evaluate(formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t));
+    if (displacement_) {
+        const auto mlo = mapped(lo), mhi = mapped(hi);
+        formula::Box b{};
+        b[std::size_t(formula::Input::T)] = formula::Interval::point(field_.t);
+        for (std::size_t k = 0; k < 6; ++k) {
+            const std::size_t input = k < 3 ? k : std::size_t(formula::Input::U) + (k - 3);
+            b[input] = formula::Interval::of(std::min(mlo[k], mhi[k]), std::max(mlo[k], mhi[k]));
+        }
+        const formula::Interval d = displacement_->interval.evaluate(b);
+        if (r.empty() || d.empty())
+            r = formula::Interval::undefined();
+        else // rounded outward, so the sum still contains every value
+            r = formula::Interval::of(std::nextafter(r.lo + d.lo, -HUGE_VAL),
+                                      std::nextafter(r.hi + d.hi, HUGE_VAL), r.nan || d.nan);
+    }
     if (!clip_) return r;
     // The box function over [lo, hi]: from its smallest to its largest value.
     double bLo = std::numeric_limits<double>::infinity(), bHi = bLo;

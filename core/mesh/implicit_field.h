@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,9 +34,18 @@ enum class BoxBoundary : std::uint8_t {
     Open,   // the mesh simply stops at the box: open where the shape leaves it
 };
 
+// A displacement texture (FTexture3D): d is added to f (positive d adds
+// material), read in its own box mapped onto the geometry's: x, y, z in the
+// component's box, u, v, w the point's place in the geometry's box in [0, 1].
+struct Displacement {
+    formula::Tape tape; // one value d
+    Box3 componentBox;
+};
+
 struct ImplicitField {
     formula::Tape tape; // first output is f
     Box3 box;
+    std::optional<Displacement> displacement;
     double t = 0;
     std::vector<std::pair<std::string, double>> parameters; // values other than the defaults
     BoxBoundary boundary = BoxBoundary::Closed;
@@ -70,13 +80,24 @@ class FieldSampler {
     const EvaluationCounts& counts() const { return counts_; }
 
   private:
+    // The displacement's view of a point: (x', y', z', u, v, w).
+    std::array<double, 6> mapped(const std::array<double, 3>& p) const;
+
     const ImplicitField& field_;
     bool clip_;
     formula::BatchEvaluator batch_;
     formula::ScalarEvaluator scalar_;
     formula::GradientEvaluator gradient_;
     formula::IntervalEvaluator interval_;
+    // The displacement's evaluators (when there is one).
+    struct DisplacementEvaluators;
+    std::unique_ptr<DisplacementEvaluators> displacement_;
+    std::array<std::vector<double>, 6> mappedInputs_;
+    std::vector<double> displacementValues_;
     EvaluationCounts counts_;
+
+  public:
+    ~FieldSampler();
 };
 
 } // namespace fl::mesh

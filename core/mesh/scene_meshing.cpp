@@ -7,8 +7,10 @@
 #include "formula/eval_scalar.h"
 #include "parametric.h"
 #include "scene/field_access.h"
+#include "surface_displacement.h"
 
 #include <cmath>
+#include <optional>
 #include <unordered_set>
 
 namespace fl::mesh {
@@ -215,6 +217,19 @@ class Walker {
         const auto lo = vec(*geometry, "domainMin"), hi = vec(*geometry, "domainMax");
         field.box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
         field.t = timeOf(*geometry);
+        // A displacement texture: added to f here, or moves a parametric
+        // surface along its normals once meshed.
+        const Node* appearance = effective(scene::nodeField(n, "appearance"));
+        const Node* texture =
+            appearance ? effective(scene::nodeField(*appearance, "texture")) : nullptr;
+        std::optional<Displacement> displacement;
+        if (texture && texture->type == "FTexture3D")
+            if (const formula::Tape* d = scene_.definition(*texture, "definition")) {
+                const auto tlo = vec(*texture, "domainMin"), thi = vec(*texture, "domainMax");
+                displacement =
+                    Displacement{*d, {{tlo[0], tlo[1], tlo[2]}, {thi[0], thi[1], thi[2]}}};
+            }
+        if (type != "parametric") field.displacement = displacement;
         MeshOptions o = options_.mesh;
         MeshResult r;
         if (type == "parametric") {
@@ -251,7 +266,12 @@ class Walker {
         sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
-        colour(effective(scene::nodeField(n, "appearance")), field.box, sm);
+        if (type == "parametric" && displacement && !sm.mesh.empty()) {
+            const auto w =
+                displaceAlongNormals(sm.mesh, *displacement, field.box, timeOf(*texture));
+            sm.warnings.insert(sm.warnings.end(), w.begin(), w.end());
+        }
+        colour(appearance, field.box, sm);
         for (std::size_t i = 0; i < sm.mesh.positions.size(); ++i) {
             Vec3f& p = sm.mesh.positions[i];
             const double x = p[0], y = p[1], z = p[2];
