@@ -1,5 +1,6 @@
 #include "colouring.h"
 
+#include "component_mapping.h"
 #include "formula/eval_batch.h"
 
 #include <algorithm>
@@ -26,21 +27,9 @@ std::array<double, 3> mapThroughKeys(double value, const std::vector<double>& ke
 std::vector<std::string> applyColour(Mesh& mesh, const ColourField& field) {
     std::vector<std::string> warnings;
     const std::size_t n = mesh.vertexCount();
-    const bool parametric = mesh.parameters.size() == n;
-    // The component's view of each vertex (docs/nodes.md): x, y, z in its own
-    // box, u, v, w in [0, 1] (or the surface's parameters).
-    std::array<std::vector<double>, 6> in;
-    for (auto& v : in)
-        v.resize(n);
-    const Box3& g = field.geometryBox;
-    const Box3& c = field.componentBox;
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t a = 0; a < 3; ++a) {
-            const double size = g.hi[a] - g.lo[a];
-            const double s = size > 0 ? (mesh.positions[i][a] - g.lo[a]) / size : 0;
-            in[a][i] = c.lo[a] + s * (c.hi[a] - c.lo[a]);
-            in[3 + a][i] = parametric ? mesh.parameters[i][a] : s;
-        }
+    // The component's view of each vertex.
+    const std::array<std::vector<double>, 6> in =
+        componentViews(mesh, field.geometryBox, field.componentBox);
     auto run = [&](const formula::Tape& tape, std::vector<std::vector<double>>& out) {
         formula::BatchEvaluator e(tape);
         formula::BatchInputs inputs;

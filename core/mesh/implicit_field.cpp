@@ -1,5 +1,7 @@
 #include "implicit_field.h"
 
+#include "component_mapping.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -48,15 +50,7 @@ struct FieldSampler::DisplacementEvaluators {
 FieldSampler::~FieldSampler() = default;
 
 std::array<double, 6> FieldSampler::mapped(const std::array<double, 3>& p) const {
-    const Box3& g = field_.box;
-    const Box3& c = field_.displacement->componentBox;
-    std::array<double, 6> m{};
-    for (std::size_t a = 0; a < 3; ++a) {
-        const double s = (p[a] - g.lo[a]) / (g.hi[a] - g.lo[a]);
-        m[a] = c.lo[a] + s * (c.hi[a] - c.lo[a]);
-        m[3 + a] = s;
-    }
-    return m;
+    return componentView(p, field_.box, field_.displacement->componentBox);
 }
 
 FieldSampler::FieldSampler(const ImplicitField& field)

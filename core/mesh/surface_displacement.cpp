@@ -1,5 +1,6 @@
 #include "surface_displacement.h"
 
+#include "component_mapping.h"
 #include "formula/eval_batch.h"
 
 #include <cmath>
@@ -10,18 +11,8 @@ std::vector<std::string> displaceAlongNormals(Mesh& mesh, const Displacement& di
                                               const Box3& g, double t) {
     std::vector<std::string> warnings;
     const std::size_t n = mesh.vertexCount();
-    const bool parametric = mesh.parameters.size() == n;
-    const Box3& c = displacement.componentBox;
-    std::array<std::vector<double>, 6> in;
-    for (auto& v : in)
-        v.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t a = 0; a < 3; ++a) {
-            const double size = g.hi[a] - g.lo[a];
-            const double s = size > 0 ? (mesh.positions[i][a] - g.lo[a]) / size : 0;
-            in[a][i] = c.lo[a] + s * (c.hi[a] - c.lo[a]);
-            in[3 + a][i] = parametric ? mesh.parameters[i][a] : s;
-        }
+    const std::array<std::vector<double>, 6> in =
+        componentViews(mesh, g, displacement.componentBox);
     formula::BatchEvaluator e(displacement.tape);
     formula::BatchInputs inputs;
     const formula::Input order[6] = {formula::Input::X, formula::Input::Y, formula::Input::Z,
