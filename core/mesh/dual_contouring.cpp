@@ -464,7 +464,16 @@ class Contourer {
                          p[k] <= lo[k] + grid_.h[k] + slack;
             }
             if (!inCell) p = cq.qef.massPoint(); // a wild solution: the crossings' centre instead
-            const Vec3 n = vertexNormal(sampler, p, cq.normalSum);
+            // Where the crossings' analytic normals agree (a smooth patch: most
+            // cells), their mean is the vertex normal; where they do not (a
+            // crease, a corner, a box face) the gradient at the vertex decides.
+            const double length = std::sqrt(cq.normalSum[0] * cq.normalSum[0] +
+                                            cq.normalSum[1] * cq.normalSum[1] +
+                                            cq.normalSum[2] * cq.normalSum[2]);
+            const Vec3 n = length > 0.9995 * cq.qef.count()
+                               ? Vec3{cq.normalSum[0] / length, cq.normalSum[1] / length,
+                                      cq.normalSum[2] / length}
+                               : vertexNormal(sampler, p, cq.normalSum);
             block.vertexOf[std::size_t(index)] = std::int32_t(block.positions.size());
             block.positions.push_back(p);
             block.normals.push_back(n);

@@ -209,8 +209,9 @@ int meshCommand(const Args& args) {
         }
         result = mesh::mergeMeshes(meshes.shapes);
         if (meshes.shapes.empty()) {
-            std::cerr << "functionlab mesh: " << file
-                      << " has no function shape to mesh (standard geometry is drawn by the viewer)\n";
+            std::cerr
+                << "functionlab mesh: " << file
+                << " has no function shape to mesh (standard geometry is drawn by the viewer)\n";
             return kExitDiagnostic;
         }
     }
