@@ -467,9 +467,9 @@ class Contourer {
             // Where the crossings' analytic normals agree (a smooth patch: most
             // cells), their mean is the vertex normal; where they do not (a
             // crease, a corner, a box face) the gradient at the vertex decides.
-            const double length = std::sqrt(cq.normalSum[0] * cq.normalSum[0] +
-                                            cq.normalSum[1] * cq.normalSum[1] +
-                                            cq.normalSum[2] * cq.normalSum[2]);
+            const double length =
+                std::sqrt(cq.normalSum[0] * cq.normalSum[0] + cq.normalSum[1] * cq.normalSum[1] +
+                          cq.normalSum[2] * cq.normalSum[2]);
             const Vec3 n = length > 0.9995 * cq.qef.count()
                                ? Vec3{cq.normalSum[0] / length, cq.normalSum[1] / length,
                                       cq.normalSum[2] / length}

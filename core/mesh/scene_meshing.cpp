@@ -5,6 +5,8 @@
 #include "colouring.h"
 #include "error_driven.h"
 #include "formula/eval_scalar.h"
+#include "formula/tape_builder.h"
+#include "formula/tape_compose.h"
 #include "parametric.h"
 #include "scene/field_access.h"
 #include "surface_displacement.h"
@@ -112,7 +114,13 @@ class Walker {
         }
         Affine here = m;
         if (type == "Transform") here = m * transformOf(*n);
-        if (type == "FTransform") here = m * functionTransform(*n);
+        if (type == "FTransform") {
+            here = m * functionTransform(*n);
+            if (scene::stringField(*n, "operation") != "group") {
+                composite(*n, here);
+                return;
+            }
+        }
         if (type == "Switch") {
             const auto choice = scene::numberField(*n, "whichChoice", 0, -1);
             const auto children = scene::nodesField(*n, "children");
@@ -182,12 +190,6 @@ class Walker {
         const auto angle = outputs("rotationAngle", {0});
         const auto sc = outputs("scale", {1, 1, 1});
         const auto axis = vec(n, "rotationAxis"), c = vec(n, "center");
-        const std::string op = scene::stringField(n, "operation");
-        if (op != "group" && !notedOperation_.count(&n)) {
-            notedOperation_.insert(&n);
-            out_.notes.push_back(nameOf(n) + ": operation '" + op +
-                                 "' is not combined yet; its children are meshed one by one");
-        }
         if (tr.size() < 3 || sc.size() < 3 || angle.empty()) return {};
         return Affine::translate(tr[0], tr[1], tr[2]) * Affine::translate(c[0], c[1], c[2]) *
                Affine::rotate(axis[0], axis[1], axis[2], angle[0]) *
@@ -272,6 +274,208 @@ class Walker {
             sm.warnings.insert(sm.warnings.end(), w.begin(), w.end());
         }
         colour(appearance, field.box, sm);
+        place(sm, m);
+        out_.shapes.push_back(std::move(sm));
+    }
+
+    // One function for a subtree of an FTransform that combines its children.
+    struct Piece {
+        formula::Val f;
+        Box3 box;                         // in the FTransform's local coordinates
+        const Node* appearance = nullptr; // of the first FShape in it
+        double resolution = 0;
+    };
+
+    // The inverse of an affine map (children's coordinates from local ones).
+    static Affine inverse(const Affine& a) {
+        Affine r;
+        const auto& m = a.m;
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+                r.m[i][j] = (m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1]) / det;
+            }
+        for (int i = 0; i < 3; ++i)
+            r.t[i] = -(r.m[i][0] * a.t[0] + r.m[i][1] * a.t[1] + r.m[i][2] * a.t[2]);
+        return r;
+    }
+
+    static Box3 boundsOf(const Box3& b, const Affine& a) {
+        Box3 out{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+        for (int c = 0; c < 8; ++c) {
+            const double p[3] = {c & 1 ? b.hi[0] : b.lo[0], c & 2 ? b.hi[1] : b.lo[1],
+                                 c & 4 ? b.hi[2] : b.lo[2]};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double q = a.m[k][0] * p[0] + a.m[k][1] * p[1] + a.m[k][2] * p[2] + a.t[k];
+                out.lo[k] = std::min(out.lo[k], q);
+                out.hi[k] = std::max(out.hi[k], q);
+            }
+        }
+        return out;
+    }
+
+    // The pieces under `raw`, whose coordinates are `toLocal` of the
+    // combining FTransform's.
+    void collect(const Node* raw, const Affine& toLocal, formula::TapeBuilder& b,
+                 const std::array<formula::Val, formula::kInputCount>& local,
+                 std::vector<Piece>& out) {
+        const Node* n = effective(raw);
+        if (!n) return;
+        if (n->type == "FShape") {
+            const Node* geometry = effective(scene::nodeField(*n, "geometry"));
+            if (!geometry || geometry->type != "FGeometry" ||
+                scene::stringField(*geometry, "type") == "parametric") {
+                out_.notes.push_back(nameOf(*n) +
+                                     ": only implicit and explicit geometry takes part in "
+                                     "an FTransform's set operation; left out");
+                return;
+            }
+            const formula::Tape* tape = scene_.definition(*geometry, "definition");
+            if (!tape) return;
+            // The child's own coordinates, from the local ones.
+            const Affine back = inverse(toLocal);
+            std::array<formula::Val, formula::kInputCount> in = local;
+            for (int k = 0; k < 3; ++k) {
+                formula::Val v = formula::Val::constant(back.t[k]);
+                for (int j = 0; j < 3; ++j)
+                    v = b.add(v,
+                              b.mul(formula::Val::constant(back.m[k][j]), local[std::size_t(j)]));
+                in[std::size_t(k)] = v;
+            }
+            in[std::size_t(formula::Input::T)] = formula::Val::constant(timeOf(*geometry));
+            formula::Val f = formula::inlineTape(b, *tape, in)[0];
+            // Nothing of the child exists outside its box.
+            const auto lo = vec(*geometry, "domainMin"), hi = vec(*geometry, "domainMax");
+            for (std::size_t k = 0; k < 3; ++k) {
+                f = b.min(f, b.sub(in[k], formula::Val::constant(lo[k])));
+                f = b.min(f, b.sub(formula::Val::constant(hi[k]), in[k]));
+            }
+            out.push_back({f, boundsOf({{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}, toLocal),
+                           effective(scene::nodeField(*n, "appearance")),
+                           scene::numberField(*geometry, "resolution", 0, 32)});
+            return;
+        }
+        if (n->type == "Transform" || n->type == "FTransform") {
+            const Affine inner =
+                toLocal * (n->type == "Transform" ? transformOf(*n) : functionTransform(*n));
+            std::vector<Piece> pieces;
+            for (const Node* child : scene::nodesField(*n, "children"))
+                collect(child, inner, b, local, pieces);
+            if (n->type == "FTransform" && scene::stringField(*n, "operation") != "group" &&
+                !pieces.empty()) {
+                out.push_back(combine(*n, pieces, b, local));
+                return;
+            }
+            out.insert(out.end(), pieces.begin(), pieces.end());
+            return;
+        }
+        if (n->spec && scene::findFieldSpec(*n->spec, "children"))
+            for (const Node* child : scene::nodesField(*n, "children"))
+                collect(child, toLocal, b, local, out);
+    }
+
+    Piece combine(const Node& ft, const std::vector<Piece>& pieces, formula::TapeBuilder& b,
+                  const std::array<formula::Val, formula::kInputCount>& local) {
+        const std::string op = scene::stringField(ft, "operation");
+        Piece r = pieces.front();
+        for (const Piece& p : pieces) {
+            r.resolution = std::max(r.resolution, p.resolution);
+            if (op != "intersection" && op != "difference")
+                for (std::size_t k = 0; k < 3; ++k) {
+                    r.box.lo[k] = std::min(r.box.lo[k], p.box.lo[k]);
+                    r.box.hi[k] = std::max(r.box.hi[k], p.box.hi[k]);
+                }
+            if (op == "intersection")
+                for (std::size_t k = 0; k < 3; ++k) {
+                    r.box.lo[k] = std::max(r.box.lo[k], p.box.lo[k]);
+                    r.box.hi[k] = std::min(r.box.hi[k], p.box.hi[k]);
+                }
+        }
+        const double t = timeOf(ft);
+        if (op == "union") {
+            for (std::size_t i = 1; i < pieces.size(); ++i)
+                r.f = b.max(r.f, pieces[i].f);
+        } else if (op == "intersection") {
+            for (std::size_t i = 1; i < pieces.size(); ++i)
+                r.f = b.min(r.f, pieces[i].f);
+        } else if (op == "difference") { // the first child minus the others
+            for (std::size_t i = 1; i < pieces.size(); ++i)
+                r.f = b.min(r.f, b.neg(pieces[i].f));
+        } else if (op == "morph") {
+            double s = 0;
+            if (const formula::Tape* tape = scene_.definition(ft, "morphFactor")) {
+                formula::ScalarEvaluator e(*tape);
+                s = e.evaluate({0, 0, 0, t, 0, 0, 0});
+            }
+            if (pieces.size() >= 2 && std::isfinite(s))
+                r.f = b.add(b.mul(formula::Val::constant(1 - s), pieces[0].f),
+                            b.mul(formula::Val::constant(s), pieces[1].f));
+        } else if (op == "formula") {
+            if (const formula::Tape* tape = scene_.definition(ft, "operationDefinition")) {
+                std::vector<formula::Val> values;
+                for (const formula::ParameterInfo& p : tape->params) {
+                    // f1, f2, ... are the children in order; a missing one reads 0.
+                    const std::size_t i = std::size_t(std::atoi(p.name.c_str() + 1)) - 1;
+                    values.push_back(i < pieces.size() ? pieces[i].f : formula::Val::constant(0));
+                }
+                auto in = local;
+                in[std::size_t(formula::Input::T)] = formula::Val::constant(t);
+                r.f = formula::inlineTape(b, *tape, in, values)[0];
+            }
+        }
+        return r;
+    }
+
+    // An FTransform whose children are combined into one shape.
+    void composite(const Node& ft, const Affine& m) {
+        formula::TapeBuilder b;
+        std::array<formula::Val, formula::kInputCount> local{};
+        for (int i = 0; i < formula::kInputCount; ++i)
+            local[std::size_t(i)] = b.input(formula::Input(i));
+        std::vector<Piece> pieces;
+        for (const Node* child : scene::nodesField(ft, "children"))
+            collect(child, Affine{}, b, local, pieces);
+        ShapeMesh sm;
+        sm.shape = &ft;
+        sm.name = nameOf(ft);
+        if (pieces.empty()) {
+            out_.notes.push_back(sm.name + ": no implicit or explicit child to combine");
+            return;
+        }
+        const Piece whole = combine(ft, pieces, b, local);
+        ImplicitField field;
+        field.tape = b.finish({{"value", whole.f}}, {});
+        field.box = whole.box;
+        if (!field.box.valid()) {
+            sm.error = "the children's boxes do not overlap: the " +
+                       scene::stringField(ft, "operation") + " is empty";
+            out_.shapes.push_back(std::move(sm));
+            return;
+        }
+        MeshOptions o = options_.mesh;
+        MeshResult r;
+        if (options_.targetError > 0) {
+            ErrorDrivenResult e = meshForError(field, options_.targetError, o);
+            r = std::move(e.result);
+            sm.measuredError = e.error.max;
+        } else {
+            if (options_.useFileResolution) o.resolution = whole.resolution;
+            r = meshImplicit(field, o);
+        }
+        sm.stats = r.stats;
+        sm.warnings = r.warnings;
+        sm.error = r.cancelled ? "cancelled" : r.error;
+        sm.mesh = std::move(r.mesh);
+        colour(whole.appearance, field.box, sm);
+        place(sm, m);
+        out_.shapes.push_back(std::move(sm));
+    }
+
+    // Moves a mesh from its geometry's coordinates into the scene's.
+    static void place(ShapeMesh& sm, const Affine& m) {
         for (std::size_t i = 0; i < sm.mesh.positions.size(); ++i) {
             Vec3f& p = sm.mesh.positions[i];
             const double x = p[0], y = p[1], z = p[2];
@@ -287,7 +491,6 @@ class Walker {
         if (det < 0)
             for (Triangle& t : sm.mesh.triangles)
                 std::swap(t[1], t[2]);
-        out_.shapes.push_back(std::move(sm));
     }
 
     // Vertex colours from the shape's appearance, in the geometry's own
@@ -322,7 +525,6 @@ class Walker {
     const scene::Scene& scene_;
     const SceneMeshOptions& options_;
     SceneMeshes& out_;
-    std::unordered_set<const Node*> notedOperation_;
 };
 
 } // namespace

@@ -92,3 +92,90 @@ TEST(SceneMeshing, ClockHandsTurnWithTime) {
     }
     EXPECT_TRUE(found);
 }
+
+namespace {
+
+SceneMeshes meshText(const std::string& body, double seconds = 0) {
+    auto r = fl::scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "ops.x3dv");
+    for (const auto& d : r.diagnostics)
+        ADD_FAILURE() << fl::scene::formatSceneDiagnostic(d);
+    static std::vector<std::unique_ptr<fl::scene::Scene>> keep;
+    keep.push_back(std::move(r.scene));
+    SceneMeshOptions o;
+    o.sceneSeconds = seconds;
+    o.useFileResolution = false;
+    o.mesh.resolution = 48;
+    return meshScene(*keep.back(), o);
+}
+
+const std::string kBall =
+    R"x(FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" } })x";
+const std::string kCube =
+    R"x(FShape { geometry FGeometry { definition "min(min(0.4 - abs(x), 0.4 - abs(y)), 0.4 - abs(z))" } })x";
+
+double volumeOf(const SceneMeshes& s) {
+    EXPECT_EQ(s.shapes.size(), 1u);
+    if (s.shapes.empty()) return 0;
+    EXPECT_TRUE(analyseTopology(s.shapes[0].mesh).closed());
+    return analyseTopology(s.shapes[0].mesh).signedVolume;
+}
+
+} // namespace
+
+TEST(FTransformOperations, SetOperationsCombineTheChildren) {
+    const double ball = 4.0 / 3.0 * M_PI * 0.125, cube = 0.8 * 0.8 * 0.8;
+    // The cube (half-size 0.4, corners at 0.69) pokes out of the ball (radius 0.5).
+    const double uni =
+        volumeOf(meshText("FTransform { operation \"union\" children [" + kBall + kCube + "] }"));
+    const double inter = volumeOf(
+        meshText("FTransform { operation \"intersection\" children [" + kBall + kCube + "] }"));
+    const double diff = volumeOf(
+        meshText("FTransform { operation \"difference\" children [" + kCube + kBall + "] }"));
+    EXPECT_NEAR(uni + inter, ball + cube, 0.01); // inclusion-exclusion
+    EXPECT_NEAR(diff, cube - inter, 0.01);
+    EXPECT_GT(uni, std::max(ball, cube));
+    EXPECT_LT(inter, std::min(ball, cube));
+    // A user formula: max(f1, f2) is the union.
+    const double formula = volumeOf(meshText(
+        "FTransform { operation \"formula\" operationDefinition \"max(f1, f2)\" children [" +
+        kBall + kCube + "] }"));
+    EXPECT_NEAR(formula, uni, 1e-6);
+}
+
+TEST(FTransformOperations, ChildrenKeepTheirPlacesAndMorphFollowsTime) {
+    // Two balls, one moved by a Transform: their union is two balls' worth.
+    const double two =
+        volumeOf(meshText("FTransform { operation \"union\" children [" + kBall +
+                          " Transform { translation 2 0 0 children " + kBall + " } ] }"));
+    EXPECT_NEAR(two, 2 * 4.0 / 3.0 * M_PI * 0.125, 0.01);
+    // Morph from a small ball (t = 0) to the cube (t = 1, the end of a 2 s cycle).
+    const std::string small =
+        R"x(FShape { geometry FGeometry { definition "0.09 - x*x - y*y - z*z" } })x";
+    const std::string morph =
+        "FTransform { operation \"morph\" morphFactor \"t\" cycleInterval 2 children [" + small +
+        kCube + "] }";
+    const double ball = 4.0 / 3.0 * M_PI * 0.027;
+    EXPECT_NEAR(volumeOf(meshText(morph, 0)), ball, 0.005);
+    EXPECT_NEAR(volumeOf(meshText(morph, 2)), 0.512, 0.01);
+    const double half = volumeOf(meshText(morph, 1));
+    EXPECT_GT(half, ball + 0.05);
+    EXPECT_LT(half, 0.512 - 0.05);
+}
+
+TEST(FTransformOperations, MetamorphosisExample) {
+    const SceneMeshes at0 = meshExample("metamorphosis.x3d", 0),
+                      at3 = meshExample("metamorphosis.x3d", 3);
+    ASSERT_EQ(at0.shapes.size(), 2u);
+    ASSERT_EQ(at3.shapes.size(), 2u);
+    // The morph is a ball at t = 0 and the rounded cube half a cycle later.
+    const double ball = analyseTopology(at0.shapes[0].mesh).signedVolume;
+    const double cube = analyseTopology(at3.shapes[0].mesh).signedVolume;
+    EXPECT_NEAR(ball, 4.0 / 3.0 * M_PI * 0.343, 0.02);
+    EXPECT_GT(cube, ball + 0.3);
+    // The ball bites the top off the cube on the right (centred at x = 1.2).
+    double top = -1;
+    for (const auto& p : at0.shapes[1].mesh.positions)
+        if (std::abs(p[0] - 1.2) < 0.05 && std::abs(p[2]) < 0.05) top = std::max(top, double(p[1]));
+    EXPECT_NEAR(top, 0.15, 0.03);
+    EXPECT_TRUE(analyseTopology(at0.shapes[1].mesh).closed());
+}
