@@ -61,7 +61,7 @@ TEST(TapeCompose, ParametersAreFixedAndScriptsInlineWhole) {
         fl::formula::compile("function s(q) { return q*q; } k = r*r; k - s(x) - s(y) - s(z)", o);
     ASSERT_TRUE(r.ok());
     TapeBuilder b;
-    const Val f = inlineTape(b, *r.tape, plainInputs(b), {0.8})[0];
+    const Val f = inlineTape(b, *r.tape, plainInputs(b), std::vector<double>{0.8})[0];
     const Tape t = b.finish({{"value", f}}, {});
     ScalarEvaluator e(t);
     EXPECT_DOUBLE_EQ(e.evaluate(pointXYZ(0.1, 0.2, 0.3)), 0.64 - 0.01 - 0.04 - 0.09);
