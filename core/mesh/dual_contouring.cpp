@@ -1,6 +1,7 @@
 #include "dual_contouring.h"
 
 #include "formula/nonfinite_report.h"
+#include "marching_cubes.h" // edgeGroups: the pieces of surface in a cell
 #include "qef.h"
 
 #include <algorithm>
@@ -63,6 +64,24 @@ int cellIndex(int ci, int cj, int ck) {
     return (ck * kB + cj) * kB + ci;
 }
 
+// A cell holds at most four separate pieces of surface (the marching-cubes
+// cases); each gets its own vertex, so two sheets passing through one cell do
+// not share a vertex (which would make edges with four triangles).
+constexpr int kPieces = 4;
+
+// The edge of a cell that starts at the cell's corner offset (du, dv) across
+// axis a, in the numbering of marching_cubes.h.
+int cubeEdge(int a, int du, int dv) {
+    switch (a) {
+    case 0:
+        return du + 2 * dv; // along x at (y, z) = (du, dv)
+    case 1:
+        return 4 + dv + 2 * du; // along y at (x, z) = (dv, du)
+    default:
+        return 8 + du + 2 * dv; // along z at (x, y) = (du, dv)
+    }
+}
+
 struct Crossing {
     std::uint32_t generation = 0; // the block it was computed for (see Contourer::generation_)
     std::uint8_t state = 0;       // 1 none, 2 crossing
@@ -83,10 +102,11 @@ struct PendingCrossing {
 // What phase 1 leaves for each active block.
 struct Block {
     BlockCoord coord{};
-    std::vector<double> values;         // kCorners corner values of f
-    std::vector<std::uint8_t> states;   // kCorners: kIn, kOut, kUndefined
-    std::vector<std::int32_t> vertexOf; // kCells: local vertex id, -1 none
-    std::vector<std::uint8_t> kept;     // the 2x2x2-cell sub-blocks that may hold surface
+    std::vector<double> values;       // kCorners corner values of f
+    std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
+    // Local vertex id per (cell, piece of surface in it): kCells * kPieces, -1 none.
+    std::vector<std::int32_t> vertexOf;
+    std::vector<std::uint8_t> kept; // the 2x2x2-cell sub-blocks that may hold surface
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::uint32_t offset = 0; // first global vertex id
@@ -138,6 +158,19 @@ Vec3 normalised(const std::array<double, 3>& g, bool& ok) {
     ok = std::isfinite(n) && n > 0;
     if (!ok) return {0, 0, 0};
     return {g[0] / n, g[1] / n, g[2] / n};
+}
+
+template <class States>
+int pieceOf(const States& states, int ci, int cj, int ck, int edge) {
+    int config = 0;
+    for (int c = 0; c < 8; ++c) {
+        const std::uint8_t st = states[std::size_t(
+            cornerIndex(ci + (c & 1), cj + ((c >> 1) & 1), ck + ((c >> 2) & 1)))];
+        if (st > kIn) return 0; // undefined or never evaluated: one piece
+        if (st == kIn) config |= 1 << c;
+    }
+    const int piece = edgeGroups(config).group[std::size_t(edge)];
+    return piece >= 0 && piece < kPieces ? piece : 0;
 }
 
 class Contourer {
@@ -196,7 +229,7 @@ class Contourer {
             crossings_.assign(std::size_t(3 * kCorners), Crossing{});
         ++generation_;
         computeCrossings(block, sampler);
-        block.vertexOf.assign(kCells, -1);
+        block.vertexOf.assign(std::size_t(kCells * kPieces), -1);
         block.positions.clear();
         block.normals.clear();
         buildVertices(block, sampler);
@@ -419,7 +452,8 @@ class Contourer {
     void buildVertices(Block& block, FieldSampler& sampler) {
         const long base[3] = {long(block.coord[0]) * kB, long(block.coord[1]) * kB,
                               long(block.coord[2]) * kB};
-        if (cellQefs_.size() != std::size_t(kCells)) cellQefs_.resize(kCells);
+        if (cellQefs_.size() != std::size_t(kCells * kPieces))
+            cellQefs_.resize(std::size_t(kCells * kPieces));
         touched_.clear();
         for (int slot : found_) {
             const Crossing& x = crossings_[std::size_t(slot)];
@@ -439,7 +473,9 @@ class Contourer {
                 if (base[0] + cell[0] >= grid_.cells[0] || base[1] + cell[1] >= grid_.cells[1] ||
                     base[2] + cell[2] >= grid_.cells[2])
                     continue;
-                const int index = cellIndex(cell[0], cell[1], cell[2]);
+                const int edge = cubeEdge(axis, corner[u] - cell[u], corner[v] - cell[v]);
+                const int index = cellIndex(cell[0], cell[1], cell[2]) * kPieces +
+                                  pieceOf(block.states, cell[0], cell[1], cell[2], edge);
                 CellQef& cq = cellQefs_[std::size_t(index)];
                 if (cq.generation != generation_) {
                     cq = CellQef{};
@@ -454,7 +490,8 @@ class Contourer {
         std::sort(touched_.begin(), touched_.end());
         for (int index : touched_) {
             const CellQef& cq = cellQefs_[std::size_t(index)];
-            const int ci = index % kB, cj = (index / kB) % kB, ck = index / (kB * kB);
+            const int cell = index / kPieces;
+            const int ci = cell % kB, cj = (cell / kB) % kB, ck = cell / (kB * kB);
             const Vec3 lo = grid_.corner(base[0] + ci, base[1] + cj, base[2] + ck);
             Vec3 p = cq.qef.solve(0.1);
             bool inCell = true;
@@ -529,7 +566,7 @@ class Contourer {
         const Block* block = nullptr;
         std::int32_t local = -1;
     };
-    VertexRef vertexAt(const int local[3], std::vector<BlockCoord>& missing) const {
+    VertexRef vertexAt(const int local[3], int edge, std::vector<BlockCoord>& missing) const {
         int n = 0, cell[3];
         for (int a = 2; a >= 0; --a) {
             const int d = local[a] < 0 ? 0 : local[a] >= kB ? 2 : 1;
@@ -541,7 +578,10 @@ class Contourer {
             missing.push_back(neighbourCoords_[std::size_t(n)]);
             return {};
         }
-        return {owner, owner->vertexOf[std::size_t(cellIndex(cell[0], cell[1], cell[2]))]};
+        const int piece = pieceOf(owner->states, cell[0], cell[1], cell[2], edge);
+        return {
+            owner,
+            owner->vertexOf[std::size_t(cellIndex(cell[0], cell[1], cell[2]) * kPieces + piece)]};
     }
 
     void quad(Block& block, int a, const int local[3], bool lowerInside,
@@ -559,7 +599,8 @@ class Contourer {
             const long gu = base[u] + c[u], gv = base[v] + c[v];
             if (gu < 0 || gv < 0 || gu >= grid_.cells[u] || gv >= grid_.cells[v])
                 return; // at the border of the grid: left open
-            refs[q] = vertexAt(c, missing);
+            // The edge as seen from this cell: it starts at offset (-du, -dv).
+            refs[q] = vertexAt(c, cubeEdge(a, -offsets[q][0], -offsets[q][1]), missing);
             if (refs[q].local < 0) return;
         }
         // Inside below, outside above: the surface faces +a; else the other way.

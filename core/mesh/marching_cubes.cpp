@@ -31,6 +31,7 @@ constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
 struct Case {
     int count = 0; // triangles
     std::array<std::array<std::int8_t, 3>, 12> triangles{};
+    EdgeGroups groups; // which loop each crossing edge is on
 };
 
 std::array<double, 3> cornerPosition(int c) {
@@ -58,6 +59,7 @@ Case buildCase(int config) {
         }
     }
     Case out;
+    out.groups.group.fill(-1);
     std::vector<bool> used(segments.size(), false);
     for (std::size_t s0 = 0; s0 < segments.size(); ++s0) {
         if (used[s0]) continue;
@@ -100,6 +102,9 @@ Case buildCase(int config) {
         for (std::size_t i = 1; i + 1 < loop.size(); ++i)
             out.triangles[std::size_t(out.count++)] = {std::int8_t(loop[0]), std::int8_t(loop[i]),
                                                        std::int8_t(loop[i + 1])};
+        for (int e : loop)
+            out.groups.group[std::size_t(e)] = std::int8_t(out.groups.count);
+        ++out.groups.count;
     }
     return out;
 }
@@ -115,6 +120,10 @@ const std::array<Case, 256>& caseTable() {
 }
 
 } // namespace
+
+const EdgeGroups& edgeGroups(int config) {
+    return caseTable()[std::size_t(config & 255)].groups;
+}
 
 DenseResult marchingCubes(const ImplicitField& field, double resolution, int threads) {
     const auto start = std::chrono::steady_clock::now();

@@ -8,6 +8,9 @@
 #include "implicit_field.h"
 #include "mesh.h"
 
+#include <array>
+#include <cstdint>
+
 namespace fl::mesh {
 
 struct DenseResult {
@@ -15,6 +18,17 @@ struct DenseResult {
     EvaluationCounts evaluations;
     double milliseconds = 0;
 };
+
+// The pieces of surface in one cell, by the same rule as the case table: for
+// a corner configuration (bit i set: corner i = x + 2y + 4z is inside), the
+// piece each of the 12 edges is on (-1: no crossing; edges 0-3 run along x
+// at (y, z) = (0,0) (1,0) (0,1) (1,1), 4-7 along y at (x, z), 8-11 along z
+// at (x, y)). Dual contouring uses it to give each piece its own vertex.
+struct EdgeGroups {
+    std::array<std::int8_t, 12> group{};
+    int count = 0;
+};
+const EdgeGroups& edgeGroups(int config);
 
 // Cells along the box's longest side, as meshImplicit; `threads` 0: one per core.
 // Slabs run in parallel; vertices on slab borders are not welded.

@@ -20,6 +20,7 @@ TEST(HardCases, TangentSpheresTouchingAtAPoint) {
     ASSERT_TRUE(r.ok());
     const Topology t = analyseTopology(r.mesh);
     EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.manifold()) << t.nonManifoldEdges << " non-manifold edges";
     EXPECT_TRUE(t.consistentlyOriented());
     // Where the gap between the balls is narrower than a cell (here within
     // about 0.16 of the axis), one vertex per cell bridges it, up to a cell
@@ -44,6 +45,7 @@ TEST(HardCases, ShellThinnerThanACellIsNotLostWhereItCrossesEdges) {
     ASSERT_TRUE(r.ok());
     const Topology t = analyseTopology(r.mesh);
     EXPECT_TRUE(t.closed());
+    EXPECT_TRUE(t.manifold()) << t.nonManifoldEdges << " non-manifold edges";
     EXPECT_TRUE(t.consistentlyOriented());
     o.resolution = 150; // cells of 0.013: the shell is found everywhere
     const MeshResult fine = meshImplicit(f, o);
@@ -119,6 +121,9 @@ TEST(HardCases, HighFrequencyNoiseStaysClosed) {
     ASSERT_TRUE(r.ok());
     const Topology t = analyseTopology(r.mesh);
     EXPECT_TRUE(t.closed());
+    // A few edges where sheets cross (the nodes) or noise packs pieces
+    // tightly may still carry four triangles (docs/meshing.md).
+    EXPECT_LT(t.nonManifoldEdges * 1000, t.edges) << t.nonManifoldEdges;
     EXPECT_TRUE(t.consistentlyOriented());
 }
 
@@ -134,6 +139,9 @@ TEST(HardCases, BarthSexticNodesStayClosed) {
     ASSERT_TRUE(r.ok());
     const Topology t = analyseTopology(r.mesh);
     EXPECT_TRUE(t.closed());
+    // A few edges where sheets cross (the nodes) or noise packs pieces
+    // tightly may still carry four triangles (docs/meshing.md).
+    EXPECT_LT(t.nonManifoldEdges * 1000, t.edges) << t.nonManifoldEdges;
     EXPECT_TRUE(t.consistentlyOriented());
 }
 
@@ -147,4 +155,20 @@ TEST(HardCases, ASolidThinnerThanACellIsReported) {
     EXPECT_TRUE(r.mesh.empty());
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("thinner than a cell"), std::string::npos) << r.warnings[0];
+}
+
+TEST(HardCases, TwoSheetsInOneCellGetTwoVertices) {
+    // A slab 0.06 thick, meshed with cells 0.1 wide: many cells hold both of
+    // its faces. One vertex per piece of surface keeps every edge between two
+    // triangles (one vertex per cell would join the faces there).
+    const ImplicitField f = field("0.03 - abs(y - 0.013)", 1.0, BoxBoundary::Open);
+    MeshOptions o;
+    o.resolution = 20;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok());
+    const Topology t = analyseTopology(r.mesh);
+    EXPECT_TRUE(t.manifold()) << t.nonManifoldEdges;
+    EXPECT_TRUE(t.consistentlyOriented());
+    for (const Vec3f& p : r.mesh.positions)
+        EXPECT_NEAR(std::abs(p[1] - 0.013f), 0.03f, 1e-4f);
 }
