@@ -106,7 +106,8 @@ struct Block {
     std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
     // Local vertex id per (cell, piece of surface in it): kCells * kPieces, -1 none.
     std::vector<std::int32_t> vertexOf;
-    std::vector<std::uint8_t> kept; // the 2x2x2-cell sub-blocks that may hold surface
+    std::vector<std::uint8_t> kept;    // the 2x2x2-cell sub-blocks that may hold surface
+    std::vector<std::int16_t> configs; // kCells: corner configuration, -1 unknown
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
     std::uint32_t offset = 0; // first global vertex id
@@ -160,15 +161,23 @@ Vec3 normalised(const std::array<double, 3>& g, bool& ok) {
     return {g[0] / n, g[1] / n, g[2] / n};
 }
 
-template <class States>
-int pieceOf(const States& states, int ci, int cj, int ck, int edge) {
+// The corner configuration of a cell (bit i: corner i = x + 2y + 4z inside),
+// or -1 when some corner is undefined or was never evaluated.
+int cellConfig(const std::vector<std::uint8_t>& states, int ci, int cj, int ck) {
     int config = 0;
     for (int c = 0; c < 8; ++c) {
         const std::uint8_t st = states[std::size_t(
             cornerIndex(ci + (c & 1), cj + ((c >> 1) & 1), ck + ((c >> 2) & 1)))];
-        if (st > kIn) return 0; // undefined or never evaluated: one piece
+        if (st > kIn) return -1;
         if (st == kIn) config |= 1 << c;
     }
+    return config;
+}
+
+// The piece of surface edge `edge` of a cell is on (0 for a cell of unknown
+// configuration: one piece).
+int pieceOf(int config, int edge) {
+    if (config < 0) return 0;
     const int piece = edgeGroups(config).group[std::size_t(edge)];
     return piece >= 0 && piece < kPieces ? piece : 0;
 }
@@ -232,6 +241,11 @@ class Contourer {
         block.vertexOf.assign(std::size_t(kCells * kPieces), -1);
         block.positions.clear();
         block.normals.clear();
+        block.configs.assign(kCells, -1); // only cells of kept sub-blocks can hold surface
+        forEachKeptCell(block, [&](int ci, int cj, int ck) {
+            block.configs[std::size_t(cellIndex(ci, cj, ck))] =
+                std::int16_t(cellConfig(block.states, ci, cj, ck));
+        });
         buildVertices(block, sampler);
     }
 
@@ -474,8 +488,9 @@ class Contourer {
                     base[2] + cell[2] >= grid_.cells[2])
                     continue;
                 const int edge = cubeEdge(axis, corner[u] - cell[u], corner[v] - cell[v]);
-                const int index = cellIndex(cell[0], cell[1], cell[2]) * kPieces +
-                                  pieceOf(block.states, cell[0], cell[1], cell[2], edge);
+                const int index =
+                    cellIndex(cell[0], cell[1], cell[2]) * kPieces +
+                    pieceOf(block.configs[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
                 CellQef& cq = cellQefs_[std::size_t(index)];
                 if (cq.generation != generation_) {
                     cq = CellQef{};
@@ -578,7 +593,8 @@ class Contourer {
             missing.push_back(neighbourCoords_[std::size_t(n)]);
             return {};
         }
-        const int piece = pieceOf(owner->states, cell[0], cell[1], cell[2], edge);
+        const int piece =
+            pieceOf(owner->configs[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
         return {
             owner,
             owner->vertexOf[std::size_t(cellIndex(cell[0], cell[1], cell[2]) * kPieces + piece)]};
