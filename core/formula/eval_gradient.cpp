@@ -245,3 +245,118 @@ void GradientEvaluator::evaluateAll(const Point& p, Dual* outputs) {
 }
 
 } // namespace fl::formula
+
+namespace fl::formula {
+
+namespace {
+// One instruction over a block, the operation fixed at compile time for the
+// commonest ones: with `flatten` the compiler inlines ad::binary/unary and
+// folds their switch away, leaving a plain loop (same arithmetic, same bits).
+template <Op kOp>
+[[gnu::flatten]] void binaryLoop(Dual* dst, const Dual* a, const Dual* b, std::size_t m) {
+    for (std::size_t j = 0; j < m; ++j)
+        dst[j] = ad::binary(kOp, a[j], b[j], 0.0, 0.0);
+}
+template <Op kOp>
+[[gnu::flatten]] void unaryLoop(Dual* dst, const Dual* a, std::size_t m) {
+    for (std::size_t j = 0; j < m; ++j)
+        dst[j] = ad::unary(kOp, a[j], 0.0);
+}
+} // namespace
+
+void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* out) {
+    constexpr std::size_t kManyBlock = 64;
+    if (tape_.outputs.empty()) {
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = Dual{};
+        return;
+    }
+    const std::size_t regCount = std::size_t(tape_.registerCount);
+    blockRegs_.resize(regCount * kManyBlock);
+    Dual* r = blockRegs_.data();
+    const std::vector<double>& pv = params_.values();
+    for (std::size_t start = 0; start < n; start += kManyBlock) {
+        const std::size_t m = std::min(kManyBlock, n - start);
+        for (std::size_t j = 0; j < m; ++j) {
+            const Point& p = points[start + j];
+            for (int i = 0; i < kInputCount; ++i)
+                r[std::size_t(i) * kManyBlock + j] = DualDomain::constant(p[std::size_t(i)]);
+            for (int k = 0; k < 3; ++k)
+                r[std::size_t(wrt_[std::size_t(k)]) * kManyBlock + j].d[std::size_t(k)] = 1.0;
+            for (std::size_t i = 0; i < pv.size(); ++i)
+                r[(kInputCount + i) * kManyBlock + j] = DualDomain::constant(pv[i]);
+        }
+        auto operand = [&](const Operand& o, std::size_t j) {
+            return o.isConst() ? DualDomain::constant(o.value)
+                               : r[std::size_t(o.reg) * kManyBlock + j];
+        };
+        // Operands as rows (a constant is spread over a scratch row).
+        auto row = [&](const Operand& o, Dual* scratch) -> const Dual* {
+            if (!o.isConst()) return r + std::size_t(o.reg) * kManyBlock;
+            for (std::size_t j = 0; j < m; ++j)
+                scratch[j] = DualDomain::constant(o.value);
+            return scratch;
+        };
+        Dual sa[kManyBlock], sb[kManyBlock];
+        for (const Instruction& ins : tape_.code) {
+            Dual* dst = r + std::size_t(ins.out) * kManyBlock;
+            bool done = true;
+            switch (ins.op) {
+            case Op::Add:
+                binaryLoop<Op::Add>(dst, row(ins.a, sa), row(ins.b, sb), m);
+                break;
+            case Op::Sub:
+                binaryLoop<Op::Sub>(dst, row(ins.a, sa), row(ins.b, sb), m);
+                break;
+            case Op::Mul:
+                binaryLoop<Op::Mul>(dst, row(ins.a, sa), row(ins.b, sb), m);
+                break;
+            case Op::Min:
+                binaryLoop<Op::Min>(dst, row(ins.a, sa), row(ins.b, sb), m);
+                break;
+            case Op::Max:
+                binaryLoop<Op::Max>(dst, row(ins.a, sa), row(ins.b, sb), m);
+                break;
+            case Op::Neg:
+                unaryLoop<Op::Neg>(dst, row(ins.a, sa), m);
+                break;
+            case Op::Square:
+                unaryLoop<Op::Square>(dst, row(ins.a, sa), m);
+                break;
+            case Op::Sin:
+                unaryLoop<Op::Sin>(dst, row(ins.a, sa), m);
+                break;
+            case Op::Cos:
+                unaryLoop<Op::Cos>(dst, row(ins.a, sa), m);
+                break;
+            case Op::Sqrt:
+                unaryLoop<Op::Sqrt>(dst, row(ins.a, sa), m);
+                break;
+            default:
+                done = false;
+            }
+            if (done) continue;
+            switch (opArity(ins.op)) {
+            case 1:
+                for (std::size_t j = 0; j < m; ++j)
+                    dst[j] = ad::unary(ins.op, operand(ins.a, j), ins.imm0);
+                break;
+            case 2:
+                for (std::size_t j = 0; j < m; ++j)
+                    dst[j] = ad::binary(ins.op, operand(ins.a, j), operand(ins.b, j), ins.imm0,
+                                        ins.imm1);
+                break;
+            default:
+                for (std::size_t j = 0; j < m; ++j)
+                    dst[j] = ad::ternary(ins.op, operand(ins.a, j), operand(ins.b, j),
+                                         operand(ins.c, j));
+                break;
+            }
+        }
+        const Operand& o = tape_.outputs[0].value;
+        for (std::size_t j = 0; j < m; ++j)
+            out[start + j] = operand(o, j);
+    }
+}
+
+} // namespace fl::formula

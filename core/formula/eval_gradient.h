@@ -26,6 +26,10 @@ class GradientEvaluator {
     ParameterValues& parameters() { return params_; }
 
     Dual evaluate(const Point& p);
+    // The first output at n points: the same values as evaluate() point by
+    // point, computed instruction by instruction over blocks of points (the
+    // dispatch is paid once per instruction and block, not per point).
+    void evaluateMany(const Point* points, std::size_t n, Dual* out);
     void evaluateAll(const Point& p, Dual* outputs);
 
   private:
@@ -33,6 +37,7 @@ class GradientEvaluator {
     std::array<Input, 3> wrt_;
     ParameterValues params_;
     std::vector<Dual> regs_;
+    std::vector<Dual> blockRegs_; // registerCount x kManyBlock, for evaluateMany
     void run(const Point& p);
 };
 

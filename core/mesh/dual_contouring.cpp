@@ -445,13 +445,21 @@ class Contourer {
                     p.done = true;
             }
         }
-        for (const PendingCrossing& p : pending_) {
+        // Normals: the gradients of all the block's crossings in one call.
+        gradientAt_.clear();
+        for (const PendingCrossing& p : pending_)
+            gradientAt_.push_back(at(p, std::clamp(p.t, 0.0, 1.0)));
+        gradientOut_.resize(gradientAt_.size());
+        if (!gradientAt_.empty())
+            sampler.gradients(gradientAt_.data(), gradientAt_.size(), gradientOut_.data());
+        for (std::size_t n = 0; n < pending_.size(); ++n) {
+            const PendingCrossing& p = pending_[n];
             Crossing& x = crossings_[std::size_t(p.slot)];
             x.generation = generation_;
             x.state = 2;
-            x.point = at(p, std::clamp(p.t, 0.0, 1.0));
+            x.point = gradientAt_[n];
             bool ok = false;
-            x.normal = normalised(sampler.gradient(x.point).d, ok);
+            x.normal = normalised(gradientOut_[n].d, ok);
             if (!ok) { // no gradient here: the edge's own direction
                 x.normal = {0, 0, 0};
                 x.normal[std::size_t(p.axis)] = 1;
@@ -648,6 +656,8 @@ class Contourer {
     std::uint32_t generation_ = 0;
     std::vector<PendingCrossing> pending_;
     std::vector<int> found_; // crossing slots of the current block, sorted
+    std::vector<Vec3> gradientAt_;
+    std::vector<formula::Dual> gradientOut_;
     struct CellQef {
         std::uint32_t generation = 0;
         Qef qef;

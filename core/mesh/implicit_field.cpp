@@ -123,6 +123,20 @@ formula::Dual FieldSampler::gradient(const std::array<double, 3>& p) {
     return d;
 }
 
+void FieldSampler::gradients(const std::array<double, 3>* points, std::size_t n,
+                             formula::Dual* out) {
+    if (displacement_) { // the chain rule through the mapping, point by point
+        for (std::size_t i = 0; i < n; ++i)
+            out[i] = gradient(points[i]);
+        return;
+    }
+    counts_.gradients += n;
+    gradientPoints_.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        gradientPoints_[i] = formula::pointXYZ(points[i][0], points[i][1], points[i][2], field_.t);
+    gradient_.evaluateMany(gradientPoints_.data(), n, out);
+}
+
 formula::Interval FieldSampler::interval(const std::array<double, 3>& lo,
                                          const std::array<double, 3>& hi) {
     ++counts_.intervals;

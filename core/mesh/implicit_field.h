@@ -72,6 +72,8 @@ class FieldSampler {
     double value(const std::array<double, 3>& p);
     // f and its gradient.
     formula::Dual gradient(const std::array<double, 3>& p);
+    // The same at n points at once (much cheaper per point).
+    void gradients(const std::array<double, 3>* points, std::size_t n, formula::Dual* out);
     // An interval containing f over the box [lo, hi] — for a closed boundary,
     // of min(f, distance to the domain box's faces): only its sign is used
     // (can the solid's boundary pass through here?), so the two units may mix.
@@ -94,6 +96,7 @@ class FieldSampler {
     std::unique_ptr<DisplacementEvaluators> displacement_;
     std::array<std::vector<double>, 6> mappedInputs_;
     std::vector<double> displacementValues_;
+    std::vector<formula::Point> gradientPoints_;
     EvaluationCounts counts_;
 
   public:

@@ -1,6 +1,7 @@
 // Inlining tapes into a builder: the composed tape computes exactly what the
 // pieces compute at the substituted inputs, for random formulas too.
 #include "formula/compiler.h"
+#include "formula/eval_gradient.h"
 #include "formula/eval_scalar.h"
 #include "formula/tape_compose.h"
 #include "random_formula.h"
@@ -85,6 +86,32 @@ TEST(TapeCompose, RandomFormulasInlineToTheSameValues) {
                 EXPECT_TRUE(std::isnan(v1)) << source;
             else
                 EXPECT_EQ(v0, v1) << source;
+        }
+    }
+}
+
+TEST(GradientMany, SameBitsAsPointByPointForRandomFormulas) {
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> d(-1.5, 1.5);
+    for (int i = 0; i < 300; ++i) {
+        const std::string source = fl::formula::testing::randomFormula(rng, 4);
+        CompileOptions o;
+        auto r = fl::formula::compile(source, o);
+        if (!r.ok()) continue;
+        GradientEvaluator one(*r.tape), many(*r.tape);
+        std::vector<Point> points(150); // more than one block of 64
+        for (Point& p : points)
+            p = {d(rng), d(rng), d(rng), d(rng), d(rng), d(rng), d(rng)};
+        std::vector<Dual> out(points.size());
+        many.evaluateMany(points.data(), points.size(), out.data());
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Dual a = one.evaluate(points[k]);
+            const auto same = [](double x, double y) {
+                return (std::isnan(x) && std::isnan(y)) || x == y;
+            };
+            ASSERT_TRUE(same(a.v, out[k].v) && same(a.d[0], out[k].d[0]) &&
+                        same(a.d[1], out[k].d[1]) && same(a.d[2], out[k].d[2]))
+                << source << " at point " << k;
         }
     }
 }
