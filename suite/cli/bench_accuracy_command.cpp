@@ -1,4 +1,5 @@
 // `functionlab bench accuracy`: what accuracy costs in time (bench/accuracy_sweep).
+#include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 
@@ -18,17 +19,6 @@ namespace {
 int usage(const std::string& problem) {
     std::cerr << "functionlab bench accuracy: " << problem << "\n(see functionlab bench --help)\n";
     return kExitUsage;
-}
-
-bool numbers(const std::string& text, std::vector<double>& out) {
-    std::stringstream in(text);
-    for (std::string part; std::getline(in, part, ',');) {
-        std::istringstream one(part);
-        double d = 0;
-        if (!(one >> d) || !one.eof() || !std::isfinite(d)) return false;
-        out.push_back(d);
-    }
-    return !out.empty();
 }
 
 // The first implicit or explicit FShape's geometry of a scene.
@@ -78,8 +68,7 @@ int benchAccuracyCommand(const Args& args) {
         else if (a == "--threads" && hasValue)
             threads = std::atoi(args[++i].c_str());
         else if (a == "--resolutions" && hasValue) {
-            resolutions.clear();
-            if (!numbers(args[++i], resolutions))
+            if (!parseNumberList(args[++i], resolutions))
                 return usage("--resolutions needs numbers like 16,32,64");
             for (double r : resolutions)
                 if (r < 1 || r > 1024) return usage("resolutions must lie in 1..1024");
@@ -93,18 +82,13 @@ int benchAccuracyCommand(const Args& args) {
     std::string name;
     if (!formula.empty()) {
         std::vector<double> b;
-        if (!numbers(box, b) || b.size() != 6)
+        if (!parseNumberList(box, b) || b.size() != 6)
             return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
         field.box = {{b[0], b[1], b[2]}, {b[3], b[4], b[5]}};
         if (!field.box.valid()) return usage("the box needs max above min on every axis");
-        formula::CompileOptions co;
-        co.kind = formula::DefinitionKind::Implicit;
-        const formula::CompileResult c = formula::compile(formula, co);
-        for (const auto& d : c.diagnostics)
-            std::cerr << "formula:" << d.range.begin.line << ":" << d.range.begin.column << ": "
-                      << formula::severityName(d.severity) << ": " << d.message << "\n";
-        if (!c.ok()) return kExitDiagnostic;
-        field.tape = *c.tape;
+        auto tape = compileFormulaArgument(formula, formula::DefinitionKind::Implicit);
+        if (!tape) return kExitDiagnostic;
+        field.tape = std::move(*tape);
         name = formula;
     } else if (!fieldFromScene(file, field, name)) {
         return kExitDiagnostic;

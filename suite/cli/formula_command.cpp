@@ -1,4 +1,5 @@
 // `functionlab formula check|eval`: the formula engine from the command line.
+#include "arguments.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "json.h"
@@ -56,24 +57,11 @@ bool parseKind(const std::string& s, DefinitionKind& kind) {
     return true;
 }
 
-// A finite number: "nan", "inf" and overflowing literals such as 1e400 are
-// refused rather than silently turned into non-finite coordinates.
-bool parseNumber(const std::string& s, double& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(out);
-}
-
 bool parseTriple(const std::string& s, double out[3]) {
-    std::stringstream ss(s);
-    std::string part;
-    int i = 0;
-    while (std::getline(ss, part, ',')) {
-        if (i >= 3 || !parseNumber(part, out[i])) return false;
-        ++i;
-    }
-    return i == 3;
+    std::vector<double> v;
+    if (!parseNumberList(s, v) || v.size() != 3) return false;
+    std::copy(v.begin(), v.end(), out);
+    return true;
 }
 
 int usage(const std::string& message) {

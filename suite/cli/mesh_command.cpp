@@ -1,5 +1,6 @@
 // `functionlab mesh`: polygonize a scene's function shapes, or one formula,
 // and write STL, OBJ, PLY, glTF binary or X3D.
+#include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 
@@ -50,21 +51,9 @@ exit status: 0 written, 1 the input could not be read or nothing could be
 written, 2 usage error
 )";
 
-bool parseNumber(const std::string& text, double& out) {
-    std::istringstream in(text);
-    in >> out;
-    return in && in.eof() && std::isfinite(out);
-}
-
 bool parseBox(const std::string& text, mesh::Box3& box) {
     std::vector<double> v;
-    std::stringstream in(text);
-    for (std::string part; std::getline(in, part, ',');) {
-        double d = 0;
-        if (!parseNumber(part, d)) return false;
-        v.push_back(d);
-    }
-    if (v.size() != 6) return false;
+    if (!parseNumberList(text, v) || v.size() != 6) return false;
     box = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
     return box.valid();
 }
@@ -149,15 +138,9 @@ int meshCommand(const Args& args) {
         mesh::ImplicitField field;
         if (boxText.empty() || !parseBox(boxText, field.box))
             return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1 with max above min");
-        formula::CompileOptions co;
-        co.kind = formula::DefinitionKind::Implicit;
-        const formula::CompileResult c = formula::compile(formula, co);
-        for (const auto& d : c.diagnostics)
-            std::cerr << "formula:" << d.range.begin.line << ":" << d.range.begin.column << ": "
-                      << formula::severityName(d.severity) << ": " << d.message
-                      << (d.suggestion.empty() ? "" : " (" + d.suggestion + ")") << "\n";
-        if (!c.ok()) return kExitDiagnostic;
-        field.tape = *c.tape;
+        auto tape = compileFormulaArgument(formula, formula::DefinitionKind::Implicit);
+        if (!tape) return kExitDiagnostic;
+        field.tape = std::move(*tape);
         field.t = time;
         field.boundary = open ? mesh::BoxBoundary::Open : mesh::BoxBoundary::Closed;
         mesh::MeshResult r;
