@@ -161,15 +161,9 @@ struct Animator::Impl final : ResponseContext {
         }
     }
 
-    std::string fileOf(int file) const {
-        return file >= 0 && std::size_t(file) < scene.files.size()
-                   ? scene.files[std::size_t(file)].path
-                   : std::string();
-    }
-
     void warn(int file, scene::FilePos pos, std::string message, std::string suggestion = {}) {
-        diagnostics.push_back(
-            {Severity::Warning, fileOf(file), pos, std::move(message), std::move(suggestion)});
+        diagnostics.push_back({Severity::Warning, scene.pathOf(file), pos, std::move(message),
+                               std::move(suggestion)});
     }
 
     void checkScene() {

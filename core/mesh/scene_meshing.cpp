@@ -105,7 +105,7 @@ class Walker {
         : scene_(scene), options_(options), out_(out) {}
 
     void walk(const Node* raw, const Affine& m) {
-        const Node* n = effective(raw);
+        const Node* n = scene::effectiveNode(raw);
         if (!n) return;
         const std::string& type = n->type;
         if (type == "FShape") {
@@ -147,18 +147,9 @@ class Walker {
     }
 
   private:
-    static const Node* effective(const Node* n) {
-        for (int i = 0; n && n->proto && i < 64; ++i)
-            n = n->expansion.empty() ? nullptr : n->expansion.front();
-        return n;
-    }
-
     std::string nameOf(const Node& n) const {
-        std::string path = n.file >= 0 && std::size_t(n.file) < scene_.files.size()
-                               ? scene_.files[std::size_t(n.file)].path
-                               : "<scene>";
-        return n.type + (n.defName.empty() ? "" : " " + n.defName) + " (" + path + ":" +
-               std::to_string(n.where.line) + ":" + std::to_string(n.where.column) + ")";
+        return n.type + (n.defName.empty() ? "" : " " + n.defName) + " (" + scene_.locationOf(n) +
+               ")";
     }
 
     // The node's t at the moment asked for.
@@ -197,7 +188,7 @@ class Walker {
     }
 
     void shape(const Node& n, const Affine& m) {
-        const Node* geometry = effective(scene::nodeField(n, "geometry"));
+        const Node* geometry = scene::effectiveNode(scene::nodeField(n, "geometry"));
         if (!geometry) return; // lends its properties to the shapes grouped with it
         if (geometry->type != "FGeometry") {
             out_.notes.push_back(nameOf(n) + ": standard geometry " + geometry->type +
@@ -221,9 +212,9 @@ class Walker {
         field.t = timeOf(*geometry);
         // A displacement texture: added to f here, or moves a parametric
         // surface along its normals once meshed.
-        const Node* appearance = effective(scene::nodeField(n, "appearance"));
+        const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
         const Node* texture =
-            appearance ? effective(scene::nodeField(*appearance, "texture")) : nullptr;
+            appearance ? scene::effectiveNode(scene::nodeField(*appearance, "texture")) : nullptr;
         std::optional<Displacement> displacement;
         if (texture && texture->type == "FTexture3D")
             if (const formula::Tape* d = scene_.definition(*texture, "definition")) {
@@ -322,10 +313,10 @@ class Walker {
     void collect(const Node* raw, const Affine& toLocal, formula::TapeBuilder& b,
                  const std::array<formula::Val, formula::kInputCount>& local,
                  std::vector<Piece>& out) {
-        const Node* n = effective(raw);
+        const Node* n = scene::effectiveNode(raw);
         if (!n) return;
         if (n->type == "FShape") {
-            const Node* geometry = effective(scene::nodeField(*n, "geometry"));
+            const Node* geometry = scene::effectiveNode(scene::nodeField(*n, "geometry"));
             if (!geometry || geometry->type != "FGeometry" ||
                 scene::stringField(*geometry, "type") == "parametric") {
                 out_.notes.push_back(nameOf(*n) +
@@ -354,7 +345,7 @@ class Walker {
                 f = b.min(f, b.sub(formula::Val::constant(hi[k]), in[k]));
             }
             out.push_back({f, boundsOf({{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}, toLocal),
-                           effective(scene::nodeField(*n, "appearance")),
+                           scene::effectiveNode(scene::nodeField(*n, "appearance")),
                            scene::numberField(*geometry, "resolution", 0, 32)});
             return;
         }
@@ -497,7 +488,7 @@ class Walker {
     // coordinates (before the transforms above it move the mesh).
     void colour(const Node* appearance, const Box3& geometryBox, ShapeMesh& sm) {
         const Node* material =
-            appearance ? effective(scene::nodeField(*appearance, "material")) : nullptr;
+            appearance ? scene::effectiveNode(scene::nodeField(*appearance, "material")) : nullptr;
         if (!material || sm.mesh.empty()) return;
         ColourField cf;
         cf.geometryBox = geometryBox;

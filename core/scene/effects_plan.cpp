@@ -30,20 +30,6 @@ bool wallClock(const Node* node) {
            stringField(*node, "timeBase") != "scene";
 }
 
-// The node a PROTO instance stands for; the node itself otherwise.
-const Node* effective(const Node* n) {
-    for (int i = 0; n && n->proto && i < 64; ++i)
-        n = n->expansion.empty() ? nullptr : n->expansion.front();
-    return n;
-}
-
-std::string location(const Scene& scene, const Node& n) {
-    std::string path = n.file >= 0 && n.file < static_cast<int>(scene.files.size())
-                           ? scene.files[n.file].path
-                           : std::string("<scene>");
-    return path + ":" + std::to_string(n.where.line) + ":" + std::to_string(n.where.column);
-}
-
 std::string nameOf(const Node& n) {
     return n.defName.empty() ? n.type : n.type + " " + n.defName;
 }
@@ -100,7 +86,7 @@ class Planner {
     }
 
     void visit(const Node* raw) {
-        const Node* n = effective(raw);
+        const Node* n = effectiveNode(raw);
         if (!n || !visited_.insert(n).second) return;
         if (n->type == "FShape")
             shape(*n);
@@ -120,7 +106,7 @@ class Planner {
         PlanEntry e;
         e.node = &n;
         e.name = nameOf(n);
-        e.location = location(scene_, n);
+        e.location = scene_.locationOf(n);
         if (auto it = routeNotes_.find(&n); it != routeNotes_.end()) e.notes = it->second;
         if (auto it = routed_.find(&n); it != routed_.end()) e.timeVarying |= it->second;
         return e;
@@ -129,9 +115,9 @@ class Planner {
     void shape(const Node& n) {
         ++plan_.functionShapes;
         PlanEntry e = entryFor(n);
-        const Node* geometry = effective(nodeField(n, "geometry"));
-        const Node* appearance = effective(nodeField(n, "appearance"));
-        const Node* physics = effective(nodeField(n, "physics"));
+        const Node* geometry = effectiveNode(nodeField(n, "geometry"));
+        const Node* appearance = effectiveNode(nodeField(n, "appearance"));
+        const Node* physics = effectiveNode(nodeField(n, "physics"));
         if (!geometry) {
             e.geometry = "none";
             e.appliesToSiblings = true;
@@ -144,8 +130,8 @@ class Planner {
             if (auto it = routed_.find(geometry); it != routed_.end()) e.timeVarying |= it->second;
         }
         if (appearance) {
-            const Node* material = effective(nodeField(*appearance, "material"));
-            const Node* texture = effective(nodeField(*appearance, "texture"));
+            const Node* material = effectiveNode(nodeField(*appearance, "material"));
+            const Node* texture = effectiveNode(nodeField(*appearance, "texture"));
             if (material && material->type == "FMaterial" && anyDefinitionReadsT(scene_, material))
                 e.timeVarying |= kColour;
             if (material && routed_.count(material)) e.timeVarying |= kColour;
@@ -155,13 +141,13 @@ class Planner {
             e.usesWallClock |= wallClock(material) || wallClock(texture);
         }
         if (physics) {
-            const Node* surface = effective(nodeField(*physics, "surface"));
+            const Node* surface = effectiveNode(nodeField(*physics, "surface"));
             if (surface) {
-                tangible(e, "friction", effective(nodeField(*surface, "friction")));
-                tangible(e, "tension", effective(nodeField(*surface, "tension")));
+                tangible(e, "friction", effectiveNode(nodeField(*surface, "friction")));
+                tangible(e, "tension", effectiveNode(nodeField(*surface, "tension")));
             }
-            tangible(e, "density", effective(nodeField(*physics, "density")));
-            tangible(e, "force", effective(nodeField(*physics, "force")));
+            tangible(e, "density", effectiveNode(nodeField(*physics, "density")));
+            tangible(e, "force", effectiveNode(nodeField(*physics, "force")));
         }
         plan_.entries.push_back(std::move(e));
     }

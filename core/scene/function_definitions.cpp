@@ -26,7 +26,7 @@ class DefinitionCompiler {
     void report(const Node& node, const Field* field, Severity severity, FilePos pos,
                 std::string message, std::string suggestion = {}) {
         const int file = field && field->file >= 0 ? field->file : node.file;
-        const std::string path = file >= 0 ? scene_.files[file].path : std::string();
+        const std::string& path = scene_.pathOf(file);
         // A PROTO body and each of its instances compile the same text: say it once.
         if (!seen_.emplace(path, pos.line, pos.column, message).second) return;
         // "type '\"explicit\"' is not ...": the quotes of ClassicVRML carried

@@ -47,6 +47,23 @@ ProtoDeclaration* Scene::newProto() {
     return protos_.back().get();
 }
 
+const std::string& Scene::pathOf(int file) const {
+    static const std::string none;
+    return file >= 0 && std::size_t(file) < files.size() ? files[std::size_t(file)].path : none;
+}
+
+std::string Scene::locationOf(const Node& n) const {
+    const std::string& path = pathOf(n.file);
+    return (path.empty() ? std::string("<scene>") : path) + ":" + std::to_string(n.where.line) +
+           ":" + std::to_string(n.where.column);
+}
+
+const Node* effectiveNode(const Node* n) {
+    for (int i = 0; n && n->proto && i < 64; ++i) // 64: deeper than any PROTO nesting allowed
+        n = n->expansion.empty() ? nullptr : n->expansion.front();
+    return n;
+}
+
 std::vector<const Scene*> scenesShownBy(const Scene& scene) {
     std::vector<const Scene*> all{&scene};
     for (std::size_t i = 0; i < all.size(); ++i)

@@ -188,6 +188,11 @@ struct Scene {
     Scene(Scene&&) = default;
     Scene& operator=(Scene&&) = default;
 
+    // The path of files[file]; empty for -1 (nodes built by code) or a bad index.
+    const std::string& pathOf(int file) const;
+    // "path:line:column" of a node ("<scene>:..." when it is not from a file).
+    std::string locationOf(const Node& node) const;
+
     Node* newNode();
     // Every node the scene owns, including PROTO bodies and expansions.
     template <class F>
@@ -210,6 +215,11 @@ struct Scene {
     std::deque<std::unique_ptr<Node>> nodes_;
     std::deque<std::unique_ptr<ProtoDeclaration>> protos_;
 };
+
+// What a node stands for: a PROTO instance's first expanded node (through
+// nested instances), any other node itself; null for an instance whose
+// EXTERNPROTO was not loaded.
+const Node* effectiveNode(const Node* node);
 
 // The scene and every scene its Inlines show, each once, the scene first.
 std::vector<const Scene*> scenesShownBy(const Scene& scene);

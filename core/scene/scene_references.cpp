@@ -245,11 +245,8 @@ void ReferenceLoader::resolveInlines() {
                 return true;
             });
         if (why.empty()) continue;
-        const std::string path = n->file >= 0 && std::size_t(n->file) < scene_.files.size()
-                                     ? scene_.files[std::size_t(n->file)].path
-                                     : "";
         diagnostics_.push_back({Severity::Warning,
-                                path,
+                                scene_.pathOf(n->file),
                                 n->where,
                                 "Inline not loaded: " + why + "; it shows nothing",
                                 {}});
