@@ -321,13 +321,9 @@ struct Animator::Impl final : ResponseContext {
     // ---- time ----------------------------------------------------------------------
 
     TimeWindow windowOf(const Node& node) const {
-        TimeWindow w;
-        w.startNs = secondsToNanoseconds(firstNumber(value(node, "startTime")));
-        w.stopNs = secondsToNanoseconds(firstNumber(value(node, "stopTime")));
-        const double cycle = firstNumber(value(node, "cycleInterval"), 1);
-        w.cycleSeconds = cycle > 0 ? cycle : 1;
-        w.loop = firstNumber(value(node, "loop")) != 0;
-        return w;
+        return timeWindowOf(
+            firstNumber(value(node, "startTime")), firstNumber(value(node, "stopTime")),
+            firstNumber(value(node, "cycleInterval"), 1), firstNumber(value(node, "loop")) != 0);
     }
 
     std::int64_t nowOn(const Node& node) const {

@@ -10,12 +10,7 @@ double seconds(std::int64_t ns) {
 }
 
 TimeWindow windowOf(const TimeSensorFields& f) {
-    TimeWindow w;
-    w.startNs = secondsToNanoseconds(f.startTime);
-    w.stopNs = secondsToNanoseconds(f.stopTime);
-    w.cycleSeconds = f.cycleInterval > 0 ? f.cycleInterval : 1;
-    w.loop = f.loop;
-    return w;
+    return timeWindowOf(f.startTime, f.stopTime, f.cycleInterval, f.loop);
 }
 
 void sendProgress(const WindowState& s, std::int64_t nowNs, const TimeSensorSink& sink) {

@@ -35,6 +35,11 @@ double cycleFraction(std::int64_t elapsedNs, double cycleSeconds, std::int64_t* 
     return fraction;
 }
 
+TimeWindow timeWindowOf(double startTime, double stopTime, double cycleInterval, bool loop) {
+    return {secondsToNanoseconds(startTime), secondsToNanoseconds(stopTime),
+            cycleInterval > 0 ? cycleInterval : 1, loop};
+}
+
 WindowState evaluateWindow(const TimeWindow& w, std::int64_t nowNs) {
     WindowState s;
     const bool stopCounts = w.stopNs > w.startNs;

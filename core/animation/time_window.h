@@ -15,6 +15,10 @@ struct TimeWindow {
     bool loop = false;
 };
 
+// The window of a time-dependent node from its fields, in seconds as SFTime
+// gives them (a cycleInterval of 0 or less, refused by the checker, reads as 1).
+TimeWindow timeWindowOf(double startTime, double stopTime, double cycleInterval, bool loop);
+
 enum class Phase : std::uint8_t { Before, Active, After };
 
 struct WindowState {

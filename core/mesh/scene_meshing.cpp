@@ -154,12 +154,9 @@ class Walker {
 
     // The node's t at the moment asked for.
     double timeOf(const Node& n) const {
-        animation::TimeWindow w;
-        w.startNs = animation::secondsToNanoseconds(scene::numberField(n, "startTime"));
-        w.stopNs = animation::secondsToNanoseconds(scene::numberField(n, "stopTime"));
-        const double cycle = scene::numberField(n, "cycleInterval", 0, 1);
-        w.cycleSeconds = cycle > 0 ? cycle : 1;
-        w.loop = scene::boolField(n, "loop");
+        const animation::TimeWindow w = animation::timeWindowOf(
+            scene::numberField(n, "startTime"), scene::numberField(n, "stopTime"),
+            scene::numberField(n, "cycleInterval", 0, 1), scene::boolField(n, "loop"));
         const auto span = vec(n, "timeSpan");
         const std::int64_t now = animation::secondsToNanoseconds(options_.sceneSeconds);
         return animation::functionTime(w, span.size() > 0 ? span[0] : 0,
