@@ -84,7 +84,6 @@ int cubeEdge(int a, int du, int dv) {
 
 struct Crossing {
     std::uint32_t generation = 0; // the block it was computed for (see Contourer::generation_)
-    std::uint8_t state = 0;       // 1 none, 2 crossing
     Vec3 point{};
     Vec3 normal{}; // unit gradient direction (the sign does not matter to the QEF)
 };
@@ -317,6 +316,12 @@ class Contourer {
     void markNeededCorners(Block& block, FieldSampler& sampler, Observations& seen,
                            std::array<bool, kCorners>& needed) {
         block.kept.clear();
+        // A box ruled out where f may be undefined: a place to look for NaN.
+        auto noteUndefined = [&](const formula::Interval& r, const Vec3& lo, const Vec3& hi) {
+            if (r.nan && !seen.undefinedCandidate)
+                seen.undefinedCandidate =
+                    Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+        };
         for (int octant = 0; octant < 8; ++octant) {
             const int o0[3] = {(octant & 1) * 4, ((octant >> 1) & 1) * 4, ((octant >> 2) & 1) * 4};
             const int o1[3] = {o0[0] + 4, o0[1] + 4, o0[2] + 4};
@@ -324,9 +329,7 @@ class Contourer {
             if (!cellBox(block, o0, o1, lo, hi)) continue;
             const formula::Interval r = sampler.interval(lo, hi);
             if (!mayCross(r)) {
-                if (r.nan && !seen.undefinedCandidate)
-                    seen.undefinedCandidate =
-                        Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+                noteUndefined(r, lo, hi);
                 continue;
             }
             for (int sub = 0; sub < 8; ++sub) {
@@ -336,9 +339,7 @@ class Contourer {
                 if (!cellBox(block, s0, s1, lo, hi)) continue;
                 const formula::Interval rs = sampler.interval(lo, hi);
                 if (!mayCross(rs)) {
-                    if (rs.nan && !seen.undefinedCandidate)
-                        seen.undefinedCandidate =
-                            Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+                    noteUndefined(rs, lo, hi);
                     continue;
                 }
                 block.kept.push_back(std::uint8_t((s0[2] / 2 * 4 + s0[1] / 2) * 4 + s0[0] / 2));
@@ -371,7 +372,6 @@ class Contourer {
                         if (!crosses(sa, sb)) continue;
                         Crossing& slot = crossings_[std::size_t(axis * kCorners + c)];
                         slot.generation = generation_;
-                        slot.state = 1;
                         PendingCrossing p;
                         p.slot = axis * kCorners + c;
                         p.axis = axis;
@@ -393,7 +393,6 @@ class Contourer {
                             Crossing& x = crossings_[std::size_t(p.slot)];
                             x.generation = generation_;
                             if (inside(ff) || std::isnan(ff)) {
-                                x.state = 2;
                                 x.point = face;
                                 x.normal = {0, 0, 0};
                                 x.normal[std::size_t(axis)] = 1;
@@ -456,7 +455,6 @@ class Contourer {
             const PendingCrossing& p = pending_[n];
             Crossing& x = crossings_[std::size_t(p.slot)];
             x.generation = generation_;
-            x.state = 2;
             x.point = gradientAt_[n];
             bool ok = false;
             x.normal = normalised(gradientOut_[n].d, ok);

@@ -61,26 +61,21 @@ struct Affine {
     static Affine rotate(const std::vector<double>& r) {
         return r.size() == 4 ? rotate(r[0], r[1], r[2], r[3]) : Affine{};
     }
-    // Normals transform by the inverse transpose.
-    std::array<double, 3> normal(const Vec3f& n) const {
-        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-        double cof[3][3];
+    double determinant() const {
+        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+               m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    }
+    // The cofactor matrix C of the linear part: its inverse is C^T / det and
+    // its inverse transpose, which carries normals, C / det.
+    std::array<std::array<double, 3>, 3> cofactors() const {
+        std::array<std::array<double, 3>, 3> c{};
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) {
                 const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-                cof[i][j] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+                c[std::size_t(i)][std::size_t(j)] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
             }
-        std::array<double, 3> r{};
-        for (int i = 0; i < 3; ++i)
-            r[std::size_t(i)] =
-                (cof[i][0] * n[0] + cof[i][1] * n[1] + cof[i][2] * n[2]) * (det < 0 ? -1 : 1);
-        const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-        if (len > 0)
-            for (double& c : r)
-                c /= len;
-        return r;
+        return c;
     }
 };
 
@@ -277,15 +272,11 @@ class Walker {
     // The inverse of an affine map (children's coordinates from local ones).
     static Affine inverse(const Affine& a) {
         Affine r;
-        const auto& m = a.m;
-        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        const double det = a.determinant();
+        const auto c = a.cofactors();
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) {
-                const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-                r.m[i][j] = (m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1]) / det;
-            }
+            for (int j = 0; j < 3; ++j)
+                r.m[i][j] = c[std::size_t(j)][std::size_t(i)] / det;
         for (int i = 0; i < 3; ++i)
             r.t[i] = -(r.m[i][0] * a.t[0] + r.m[i][1] * a.t[1] + r.m[i][2] * a.t[2]);
         return r;
@@ -464,18 +455,25 @@ class Walker {
 
     // Moves a mesh from its geometry's coordinates into the scene's.
     static void place(ShapeMesh& sm, const Affine& m) {
+        // Normals by the inverse transpose: the cofactors, with det's sign
+        // (the length is normalised away), once per shape.
+        const double det = m.determinant();
+        const auto c = m.cofactors();
+        const double sign = det < 0 ? -1 : 1;
         for (std::size_t i = 0; i < sm.mesh.positions.size(); ++i) {
             Vec3f& p = sm.mesh.positions[i];
             const double x = p[0], y = p[1], z = p[2];
             for (int k = 0; k < 3; ++k)
                 p[std::size_t(k)] = float(m.m[k][0] * x + m.m[k][1] * y + m.m[k][2] * z + m.t[k]);
-            const auto nn = m.normal(sm.mesh.normals[i]);
-            sm.mesh.normals[i] = {float(nn[0]), float(nn[1]), float(nn[2])};
+            const Vec3f& n = sm.mesh.normals[i];
+            std::array<double, 3> r{};
+            for (std::size_t k = 0; k < 3; ++k)
+                r[k] = sign * (c[k][0] * n[0] + c[k][1] * n[1] + c[k][2] * n[2]);
+            const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+            if (len > 0)
+                sm.mesh.normals[i] = {float(r[0] / len), float(r[1] / len), float(r[2] / len)};
         }
         // A mirroring transform turns the triangles inside out: turn them back.
-        const double det = m.m[0][0] * (m.m[1][1] * m.m[2][2] - m.m[1][2] * m.m[2][1]) -
-                           m.m[0][1] * (m.m[1][0] * m.m[2][2] - m.m[1][2] * m.m[2][0]) +
-                           m.m[0][2] * (m.m[1][0] * m.m[2][1] - m.m[1][1] * m.m[2][0]);
         if (det < 0)
             for (Triangle& t : sm.mesh.triangles)
                 std::swap(t[1], t[2]);
