@@ -199,8 +199,7 @@ class Walker {
         }
         ImplicitField field;
         field.tape = *tape;
-        const auto lo = vec(*geometry, "domainMin"), hi = vec(*geometry, "domainMax");
-        field.box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        field.box = domainOf(*geometry);
         field.t = timeOf(*geometry);
         // A displacement texture: added to f here, or moves a parametric
         // surface along its normals once meshed.
@@ -209,11 +208,8 @@ class Walker {
             appearance ? scene::effectiveNode(scene::nodeField(*appearance, "texture")) : nullptr;
         std::optional<Displacement> displacement;
         if (texture && texture->type == "FTexture3D")
-            if (const formula::Tape* d = scene_.definition(*texture, "definition")) {
-                const auto tlo = vec(*texture, "domainMin"), thi = vec(*texture, "domainMax");
-                displacement =
-                    Displacement{*d, {{tlo[0], tlo[1], tlo[2]}, {thi[0], thi[1], thi[2]}}};
-            }
+            if (const formula::Tape* d = scene_.definition(*texture, "definition"))
+                displacement = Displacement{*d, domainOf(*texture)};
         if (type != "parametric") field.displacement = displacement;
         MeshOptions o = options_.mesh;
         MeshResult r;
@@ -327,12 +323,12 @@ class Walker {
             in[std::size_t(formula::Input::T)] = formula::Val::constant(timeOf(*geometry));
             formula::Val f = formula::inlineTape(b, *tape, in)[0];
             // Nothing of the child exists outside its box.
-            const auto lo = vec(*geometry, "domainMin"), hi = vec(*geometry, "domainMax");
+            const Box3 box = domainOf(*geometry);
             for (std::size_t k = 0; k < 3; ++k) {
-                f = b.min(f, b.sub(in[k], formula::Val::constant(lo[k])));
-                f = b.min(f, b.sub(formula::Val::constant(hi[k]), in[k]));
+                f = b.min(f, b.sub(in[k], formula::Val::constant(box.lo[k])));
+                f = b.min(f, b.sub(formula::Val::constant(box.hi[k]), in[k]));
             }
-            out.push_back({f, boundsOf({{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}}, toLocal),
+            out.push_back({f, boundsOf(box, toLocal),
                            scene::effectiveNode(scene::nodeField(*n, "appearance")),
                            scene::numberField(*geometry, "resolution", 0, 32)});
             return;
@@ -500,8 +496,7 @@ class Walker {
             const auto kv = vec(*material, "keyValue");
             for (std::size_t i = 0; i + 2 < kv.size(); i += 3)
                 cf.keyValue.push_back({kv[i], kv[i + 1], kv[i + 2]});
-            const auto lo = vec(*material, "domainMin"), hi = vec(*material, "domainMax");
-            cf.componentBox = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+            cf.componentBox = domainOf(*material);
             cf.t = timeOf(*material);
         }
         const auto warnings = applyColour(sm.mesh, cf);
@@ -514,6 +509,13 @@ class Walker {
 };
 
 } // namespace
+
+Box3 domainOf(const scene::Node& node) {
+    const auto lo = scene::numbersField(node, "domainMin"),
+               hi = scene::numbersField(node, "domainMax");
+    if (lo.size() != 3 || hi.size() != 3) return {};
+    return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+}
 
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options) {
     SceneMeshes out;

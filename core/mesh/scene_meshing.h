@@ -35,6 +35,9 @@ struct SceneMeshes {
 
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options);
 
+// A function node's domain box (domainMin .. domainMax).
+Box3 domainOf(const scene::Node& node);
+
 // All shapes' meshes as one.
 Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes);
 

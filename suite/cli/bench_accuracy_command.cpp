@@ -5,6 +5,7 @@
 
 #include "accuracy_sweep.h"
 #include "formula/compiler.h"
+#include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 #include "scene/scene_reader.h"
 
@@ -35,9 +36,7 @@ bool fieldFromScene(const std::string& file, mesh::ImplicitField& field, std::st
         const formula::Tape* tape = r.scene->definition(n, "definition");
         if (!tape) return;
         field.tape = *tape;
-        const auto lo = scene::numbersField(n, "domainMin"),
-                   hi = scene::numbersField(n, "domainMax");
-        field.box = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+        field.box = mesh::domainOf(n);
         name = file + ":" + std::to_string(n.where.line);
         found = true;
     });
