@@ -40,6 +40,9 @@ struct MeshStats {
     std::size_t surfaceCells = 0; // cells with a vertex
     EvaluationCounts evaluations;
     double milliseconds = 0;
+    // Parametric geometry: the largest distance measured between the object
+    // and its sampled chords (0 when not measured: uniform sampling).
+    double chordError = 0;
 };
 
 struct MeshResult {

@@ -1,5 +1,7 @@
 #include "parametric.h"
 
+#include "parameter_lines.h"
+
 #include "formula/eval_batch.h"
 #include "formula/eval_gradient.h"
 
@@ -11,6 +13,9 @@
 
 namespace fl::mesh {
 namespace {
+
+// The default chord tolerance: this fraction of a cell of the resolution.
+constexpr double kToleranceOfACell = 0.02;
 
 using Vec3 = std::array<double, 3>;
 using formula::Input;
@@ -41,9 +46,12 @@ class Builder {
         }
     }
 
-    // A grid of (n+1) x (m+1) samples over two parameters (a, b), the third
-    // fixed at `fixed`; triangles oriented along a x b, or reversed.
-    void patch(int a, int b, int n, int m, std::array<double, 3> fixed, bool reversed) {
+    // A grid of samples over two parameters (a, b) at the parameter lines
+    // `la` and `lb`, the third fixed at `fixed`; triangles oriented along
+    // a x b, or reversed.
+    void patch(int a, int b, const std::vector<double>& la, const std::vector<double>& lb,
+               std::array<double, 3> fixed, bool reversed) {
+        const int n = int(la.size()) - 1, m = int(lb.size()) - 1;
         const std::size_t base = positions_.size();
         const std::size_t count = std::size_t(n + 1) * std::size_t(m + 1);
         std::array<std::vector<double>, 3> in;
@@ -52,8 +60,8 @@ class Builder {
         for (int j = 0; j <= m; ++j)
             for (int i = 0; i <= n; ++i) {
                 std::array<double, 3> q = fixed;
-                q[std::size_t(a)] = lerp(a, double(i) / n);
-                q[std::size_t(b)] = lerp(b, double(j) / m);
+                q[std::size_t(a)] = la[std::size_t(i)];
+                q[std::size_t(b)] = lb[std::size_t(j)];
                 for (std::size_t k = 0; k < 3; ++k)
                     in[k][std::size_t(j) * std::size_t(n + 1) + std::size_t(i)] = q[k];
             }
@@ -89,14 +97,15 @@ class Builder {
 
     // A curve: a ring of `sides` vertices around each sample, carried along
     // by parallel transport so the tube does not twist.
-    void tube(int a, int n, double radius, int sides) {
+    void tube(int a, const std::vector<double>& la, double radius, int sides) {
+        const int n = int(la.size()) - 1;
         std::array<std::vector<double>, 3> in;
         for (auto& v : in)
             v.assign(std::size_t(n + 1), 0);
         for (int i = 0; i <= n; ++i) {
             for (std::size_t k = 0; k < 3; ++k)
                 in[k][std::size_t(i)] = field_.ranges[k][0];
-            in[std::size_t(a)][std::size_t(i)] = lerp(a, double(i) / n);
+            in[std::size_t(a)][std::size_t(i)] = la[std::size_t(i)];
         }
         std::vector<Vec3> centre(std::size_t(n + 1)), tangent(std::size_t(n + 1));
         std::array<std::vector<double>, 3> xyz;
@@ -287,11 +296,7 @@ class Builder {
     bool sawNaN() const { return sawNaN_; }
 
   private:
-    double lerp(int axis, double s) const {
-        const auto& r = field_.ranges[std::size_t(axis)];
-        return r[0] + s * (r[1] - r[0]);
-    }
-
+  public:
     void evaluate(const std::array<std::vector<double>, 3>& in, std::size_t count,
                   std::array<std::vector<double>, 3>& xyz) {
         formula::BatchInputs inputs;
@@ -309,6 +314,7 @@ class Builder {
         out_.stats.evaluations.points += count;
     }
 
+  private:
     void sample(const std::array<std::vector<double>, 3>& in, std::size_t count) {
         std::array<std::vector<double>, 3> xyz;
         evaluate(in, count, xyz);
@@ -355,6 +361,28 @@ MeshResult meshParametric(const ParametricField& field, const ParametricOptions&
     }
     const int n = std::max(1, int(std::lround(options.resolution)));
     Builder b(field, result);
+    double extent = 0;
+    for (const auto& p : {field.box.size(0), field.box.size(1), field.box.size(2)})
+        extent = std::max(extent, p);
+    ParameterLineOptions lo;
+    if (options.adaptive) {
+        // From a quarter of the resolution, halving spans up to four times
+        // finer, until the chords stay within the tolerance.
+        lo.baseSegments = std::max(2, (n + 3) / 4);
+        lo.maxSegments = std::min(4096, 4 * n);
+        lo.tolerance = options.tolerance > 0 ? options.tolerance
+                                             : kToleranceOfACell * std::max(extent, 1e-9) / n;
+    } else {
+        lo.baseSegments = lo.maxSegments = n;
+    }
+    const ParameterLines lines = parameterLines(
+        used, field.ranges, lo,
+        [&](const std::array<std::vector<double>, 3>& uvw, std::size_t count,
+            std::array<std::vector<double>, 3>& xyz) { b.evaluate(uvw, count, xyz); });
+    result.stats.chordError = lines.worstDeviation;
+    std::size_t finest = 1;
+    for (int p : used)
+        finest = std::max(finest, lines.lines[std::size_t(p)].size() - 1);
     switch (used.size()) {
     case 0:
         result.warnings.push_back(
@@ -364,12 +392,13 @@ MeshResult meshParametric(const ParametricField& field, const ParametricOptions&
     case 1: {
         const double radius =
             options.tubeRadius > 0 ? options.tubeRadius : 0.01 * field.box.diagonal();
-        b.tube(used[0], n, radius, std::max(3, options.tubeSides));
+        b.tube(used[0], lines.lines[std::size_t(used[0])], radius, std::max(3, options.tubeSides));
         break;
     }
     case 2: {
         std::array<double, 3> fixed{field.ranges[0][0], field.ranges[1][0], field.ranges[2][0]};
-        b.patch(used[0], used[1], n, n, fixed, false);
+        b.patch(used[0], used[1], lines.lines[std::size_t(used[0])],
+                lines.lines[std::size_t(used[1])], fixed, false);
         break;
     }
     default: {
@@ -381,17 +410,15 @@ MeshResult meshParametric(const ParametricField& field, const ParametricOptions&
                 std::array<double, 3> fixed{field.ranges[0][0], field.ranges[1][0],
                                             field.ranges[2][0]};
                 fixed[std::size_t(axis)] = field.ranges[std::size_t(axis)][std::size_t(side)];
-                b.patch(a, c, n, n, fixed, side == 0);
+                b.patch(a, c, lines.lines[std::size_t(a)], lines.lines[std::size_t(c)], fixed,
+                        side == 0);
             }
         }
         break;
     }
     }
-    // Weld within a thousandth of the typical step between samples.
-    double extent = 0;
-    for (const auto& p : {field.box.size(0), field.box.size(1), field.box.size(2)})
-        extent = std::max(extent, p);
-    result.mesh = b.finish(1e-3 * std::max(extent, 1e-9) / n);
+    // Weld within a thousandth of the finest step between samples.
+    result.mesh = b.finish(1e-3 * std::max(extent, 1e-9) / double(finest));
     if (used.size() == 3) {
         // The parametrisation's orientation: the Jacobian's sign at the centre.
         formula::GradientEvaluator g(field.tape, {Input::U, Input::V, Input::W});

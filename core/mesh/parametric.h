@@ -1,5 +1,6 @@
 #pragma once
-// Parametric geometry: x, y, z as functions of the parameters u, v, w (and t).
+// Parametric geometry: x, y, z as functions of the parameters u, v, w (and t),
+// sampled on parameter lines placed adaptively (parameter_lines.h).
 // What the definition reads decides what it is: one parameter a curve (meshed
 // as a thin tube), two a surface, three a solid (its six boundary faces).
 // Seams and poles — where different parameters reach the same point, as a
@@ -27,8 +28,15 @@ struct ParametricField {
 };
 
 struct ParametricOptions {
-    double resolution = 32; // segments along each parameter (a real number)
-    double tubeRadius = 0;  // curves: 0 picks 1% of the box diagonal
+    // Uniform: segments along each parameter. Adaptive: the detail asked for
+    // — the parameter lines start a quarter as dense and are halved where the
+    // object strays from its chords, up to four times as dense.
+    double resolution = 32;
+    bool adaptive = true;
+    // Adaptive: the chord error allowed, in the units of x, y, z; 0 picks 2%
+    // of a cell (the box's longest side / resolution).
+    double tolerance = 0;
+    double tubeRadius = 0; // curves: 0 picks 1% of the box diagonal
     int tubeSides = 8;
 };
 

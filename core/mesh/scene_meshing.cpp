@@ -227,10 +227,20 @@ class Walker {
             po.resolution = options_.useFileResolution || options_.targetError > 0
                                 ? scene::numberField(*geometry, "resolution", 0, 32)
                                 : o.resolution;
-            if (options_.targetError > 0)
-                sm.warnings.push_back("a target error applies to implicit and explicit geometry; "
-                                      "parametric geometry is meshed at its resolution");
+            // A target error (a fraction of the box diagonal) is the chord
+            // tolerance of the adaptive parameter lines.
+            if (options_.targetError > 0) {
+                po.tolerance = options_.targetError * field.box.diagonal();
+                po.resolution = std::max(po.resolution, 64.0); // room to refine into
+            }
             r = meshParametric(pf, po);
+            if (options_.targetError > 0 && r.ok()) {
+                sm.measuredError = r.stats.chordError / field.box.diagonal();
+                if (r.stats.chordError > po.tolerance)
+                    sm.warnings.push_back("the target error was not reached: chords stray " +
+                                          std::to_string(sm.measuredError) +
+                                          " of the box diagonal at the finest sampling");
+            }
         } else if (options_.targetError > 0) {
             ErrorDrivenResult e = meshForError(field, options_.targetError, o);
             r = std::move(e.result);

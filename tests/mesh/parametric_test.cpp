@@ -109,3 +109,62 @@ TEST(Parametric, BadInputIsExplained) {
     EXPECT_FALSE(nan.mesh.empty());
     EXPECT_EQ(nan.warnings.size(), 1u);
 }
+
+// Adaptive sampling: parameter lines are halved only where the object bends.
+TEST(ParametricAdaptive, AFlatPatchKeepsTheCoarseGrid) {
+    ParametricOptions o;
+    o.resolution = 32;
+    const MeshResult flat = meshParametric(field("x = u; y = v; z = 0;"), o);
+    ASSERT_TRUE(flat.ok()) << flat.error;
+    EXPECT_EQ(flat.mesh.triangleCount(), 2u * 8 * 8); // a quarter of the resolution per side
+    o.adaptive = false;
+    EXPECT_EQ(meshParametric(field("x = u; y = v; z = 0;"), o).mesh.triangleCount(), 2u * 32 * 32);
+}
+
+TEST(ParametricAdaptive, ABumpIsRefinedWhereItIsAndTheChordsMeetTheTolerance) {
+    const ParametricField f = field("x = u; y = v; z = 0.3*exp(-200*((u - 0.5)^2 + (v - 0.5)^2));");
+    ParametricOptions o;
+    o.resolution = 32;
+    const MeshResult r = meshParametric(f, o);
+    ASSERT_TRUE(r.ok()) << r.error;
+    const double tolerance = 0.02 * 2.0 / 32; // the default: 2% of a cell of the [-1, 1] box
+    EXPECT_GT(r.stats.chordError, 0);
+    EXPECT_LE(r.stats.chordError, tolerance);
+    // Vertices crowd round the bump: its quarter of the patch (|u - 0.5|,
+    // |v - 0.5| < 0.25) holds far more than a quarter of them.
+    std::size_t nearBump = 0;
+    for (const auto& p : r.mesh.parameters)
+        if (std::abs(p[0] - 0.5f) < 0.25f && std::abs(p[1] - 0.5f) < 0.25f) ++nearBump;
+    EXPECT_GT(double(nearBump), 0.5 * double(r.mesh.vertexCount()));
+    // And the whole costs less than a uniform grid as fine as its finest span.
+    o.adaptive = false;
+    o.resolution = 128;
+    EXPECT_LT(r.mesh.triangleCount(), meshParametric(f, o).mesh.triangleCount() / 2);
+}
+
+TEST(ParametricAdaptive, AnSCurveWhoseMidpointIsOnItsChordIsStillRefined) {
+    // Over [0, 0.5] the curve's middle is on the chord; its quarters are not.
+    ParametricOptions o;
+    o.resolution = 4; // two segments to start from
+    o.tubeRadius = 0.01;
+    const MeshResult r = meshParametric(field("x = u; y = 0.3*sin(4*pi*u); z = 0;"), o);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_GT(r.stats.chordError, 0);
+    EXPECT_GT(r.mesh.vertexCount(), (2u + 1) * 8 + 2); // more rings than the two segments give
+}
+
+TEST(ParametricAdaptive, ASmallerToleranceGivesMoreDetailWithinIt) {
+    const ParametricField f =
+        field("x = (1 + 0.3*cos(v))*cos(u); y = (1 + 0.3*cos(v))*sin(u); z = 0.3*sin(v);",
+              {0, 2 * M_PI}, {0, 2 * M_PI});
+    ParametricOptions coarse, fine;
+    coarse.tolerance = 1e-2;
+    fine.tolerance = 1e-4;
+    fine.resolution = coarse.resolution = 64;
+    const MeshResult a = meshParametric(f, coarse), b = meshParametric(f, fine);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_LE(a.stats.chordError, 1e-2);
+    EXPECT_LE(b.stats.chordError, 1e-4);
+    EXPECT_GT(b.mesh.triangleCount(), 4 * a.mesh.triangleCount());
+    expectClosedAndUnitNormals(b.mesh); // the seams still meet vertex to vertex
+}
