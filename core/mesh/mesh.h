@@ -1,5 +1,5 @@
 #pragma once
-// A triangle mesh as plain arrays: what the mesher produces and every
+// A triangle mesh (or a point cloud) as plain arrays: what the mesher produces and every
 // consumer (viewer, exports, haptics' polygonal mode, thumbnails) reads.
 // Floats, as GPUs and file formats want them; indices 32-bit.
 #include <array>
@@ -12,9 +12,15 @@ namespace fl::mesh {
 using Vec3f = std::array<float, 3>;
 using Triangle = std::array<std::uint32_t, 3>; // counter-clockwise seen from outside
 
+// What the positions make: triangles, or a cloud of points (no triangles).
+enum class Primitive : std::uint8_t { Triangles, Points };
+
 struct Mesh {
+    Primitive primitive = Primitive::Triangles;
     std::vector<Vec3f> positions;
-    std::vector<Vec3f> normals;                // unit, outward; one per position
+    // Unit and outward, one per position; for points inside a solid or along
+    // a curve, which have no surface, zero (drawn unlit).
+    std::vector<Vec3f> normals;
     std::vector<std::array<float, 4>> colours; // RGBA per position, or empty
     // Parametric geometry: each vertex's (u, v, w), which colour and texture
     // formulas read; empty for implicit and explicit geometry.
@@ -23,7 +29,8 @@ struct Mesh {
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return triangles.size(); }
-    bool empty() const { return triangles.empty(); }
+    bool isPointCloud() const { return primitive == Primitive::Points; }
+    bool empty() const { return isPointCloud() ? positions.empty() : triangles.empty(); }
 };
 
 } // namespace fl::mesh

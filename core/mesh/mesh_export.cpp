@@ -74,8 +74,8 @@ std::string stl(const Mesh& m) {
 }
 
 std::string obj(const Mesh& m) {
-    std::string out = "# FunctionLab mesh: " + std::to_string(m.vertexCount()) + " vertices, " +
-                      std::to_string(m.triangleCount()) + " triangles\n";
+    std::string out = "# FunctionLab mesh: " + std::to_string(m.vertexCount()) + " vertices, ";
+    out += m.isPointCloud() ? "a point cloud\n" : std::to_string(m.triangleCount()) + " triangles\n";
     const bool colours = m.colours.size() == m.positions.size();
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
         const Vec3f& p = m.positions[i];
@@ -156,8 +156,10 @@ std::string glb(const Mesh& m) {
             for (const auto& c : m.colours)
                 putBytes(bin, c.data(), 16);
         const std::size_t indicesAt = bin.size();
-        for (const Triangle& t : m.triangles)
-            putBytes(bin, t.data(), 12);
+        const bool points = m.isPointCloud(); // mode POINTS, no indices
+        if (!points)
+            for (const Triangle& t : m.triangles)
+                putBytes(bin, t.data(), 12);
         auto view = [](std::size_t offset, std::size_t length, int target) {
             return "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) +
                    ",\"byteLength\":" + std::to_string(length) +
@@ -165,12 +167,23 @@ std::string glb(const Mesh& m) {
         };
         json += R"("scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)";
         json += R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1)";
-        json += colours ? R"(,"COLOR_0":2},"indices":3,"mode":4}]}],)"
-                        : R"(},"indices":2,"mode":4}]}],)";
+        if (colours) json += R"(,"COLOR_0":2)";
+        json += '}';
+        if (points)
+            json += R"(,"mode":0}]}],)";
+        else
+            json += colours ? R"(,"indices":3,"mode":4}]}],)" : R"(,"indices":2,"mode":4}]}],)";
         json += "\"bufferViews\":[" + view(positionsAt, normalsAt - positionsAt, 34962) + "," +
-                view(normalsAt, coloursAt - normalsAt, 34962) + ",";
-        if (colours) json += view(coloursAt, indicesAt - coloursAt, 34962) + ",";
-        json += view(indicesAt, bin.size() - indicesAt, 34963) + "],";
+                view(normalsAt, coloursAt - normalsAt, 34962);
+        if (colours) {
+            json += ',';
+            json += view(coloursAt, indicesAt - coloursAt, 34962);
+        }
+        if (!points) {
+            json += ',';
+            json += view(indicesAt, bin.size() - indicesAt, 34963);
+        }
+        json += "],";
         const std::string count = std::to_string(n);
         int v = 0;
         auto accessor = [&](const std::string& type, int componentType, const std::string& c,
@@ -194,8 +207,10 @@ std::string glb(const Mesh& m) {
             json += ',';
             json += accessor("VEC4", 5126, count, "");
         }
-        json += ',';
-        json += accessor("SCALAR", 5125, std::to_string(3 * m.triangleCount()), "");
+        if (!points) {
+            json += ',';
+            json += accessor("SCALAR", 5125, std::to_string(3 * m.triangleCount()), "");
+        }
         json += "],";
         json += "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
     }
@@ -226,26 +241,32 @@ std::string x3d(const Mesh& m) {
         "<X3D profile='Interchange' version='3.3'>\n"
         "  <head><meta name='generator' content='FunctionLab'/></head>\n"
         "  <Scene>\n    <Shape>\n"
-        "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n"
-        "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
-    for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+        "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n";
+    const bool points = m.isPointCloud();
+    // A point cloud: a PointSet (its points are lit by their own colour).
+    out += points ? "      <PointSet>\n        <Coordinate point='"
+                  : "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
+    for (std::size_t i = 0; !points && i < m.triangles.size(); ++i) {
         for (std::uint32_t v : m.triangles[i]) {
             if (i || v != m.triangles[i][0]) out += ' ';
             out += std::to_string(v);
         }
         out += " -1";
     }
-    out += "'>\n        <Coordinate point='";
+    if (!points) out += "'>\n        <Coordinate point='";
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
         const Vec3f& p = m.positions[i];
         appendTriple(out, i ? ", " : "", p[0], p[1], p[2]);
     }
-    out += "'/>\n        <Normal vector='";
-    for (std::size_t i = 0; i < m.positions.size(); ++i) {
-        const Vec3f n = unitNormal(m, i);
-        appendTriple(out, i ? ", " : "", n[0], n[1], n[2]);
-    }
     out += "'/>\n";
+    if (!points) {
+        out += "        <Normal vector='";
+        for (std::size_t i = 0; i < m.positions.size(); ++i) {
+            const Vec3f n = unitNormal(m, i);
+            appendTriple(out, i ? ", " : "", n[0], n[1], n[2]);
+        }
+        out += "'/>\n";
+    }
     if (colours) {
         out += "        <ColorRGBA color='";
         for (std::size_t i = 0; i < m.colours.size(); ++i) {
@@ -256,7 +277,8 @@ std::string x3d(const Mesh& m) {
         }
         out += "'/>\n";
     }
-    out += "      </IndexedFaceSet>\n    </Shape>\n  </Scene>\n</X3D>\n";
+    out += points ? "      </PointSet>\n" : "      </IndexedFaceSet>\n";
+    out += "    </Shape>\n  </Scene>\n</X3D>\n";
     return out;
 }
 
@@ -311,6 +333,10 @@ bool writeMesh(const Mesh& mesh, const std::filesystem::path& path, std::string&
     if (!format) {
         error = "unknown mesh format '" + path.extension().string() +
                 "': use .stl, .obj, .ply, .glb or .x3d";
+        return false;
+    }
+    if (*format == MeshFormat::Stl && mesh.isPointCloud()) {
+        error = "STL holds triangles only; write a point cloud as .ply, .obj, .glb or .x3d";
         return false;
     }
     const std::string bytes = encodeMesh(mesh, *format);

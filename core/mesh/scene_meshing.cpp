@@ -8,6 +8,7 @@
 #include "formula/tape_builder.h"
 #include "formula/tape_compose.h"
 #include "parametric.h"
+#include "point_cloud.h"
 #include "scene/field_access.h"
 #include "surface_displacement.h"
 
@@ -213,7 +214,18 @@ class Walker {
         if (type != "parametric") field.displacement = displacement;
         MeshOptions o = options_.mesh;
         MeshResult r;
-        if (type == "parametric") {
+        // A point cloud instead of a mesh: asked for by the file or the caller.
+        const std::size_t points =
+            options_.points > 0
+                ? options_.points
+                : std::size_t(std::max(0.0, scene::numberField(*geometry, "points")));
+        PointCloudOptions pc;
+        pc.count = points;
+        pc.threads = o.threads;
+        if (points > 0 && type != "parametric") {
+            // An explicit (FRep) solid shows its inside; an implicit surface, itself.
+            r = type == "explicit" ? pointsInSolid(field, pc) : pointsOnSurface(field, pc);
+        } else if (type == "parametric") {
             ParametricField pf;
             pf.tape = *tape;
             pf.t = field.t;
@@ -233,7 +245,7 @@ class Walker {
                 po.tolerance = options_.targetError * field.box.diagonal();
                 po.resolution = std::max(po.resolution, 64.0); // room to refine into
             }
-            r = meshParametric(pf, po);
+            r = points > 0 ? pointsOverParameters(pf, pc) : meshParametric(pf, po);
             if (options_.targetError > 0 && r.ok()) {
                 sm.measuredError = r.stats.chordError / field.box.diagonal();
                 if (r.stats.chordError > po.tolerance)
@@ -257,7 +269,7 @@ class Walker {
         sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
-        if (type == "parametric" && displacement && !sm.mesh.empty()) {
+        if (type == "parametric" && displacement && !sm.mesh.empty() && !sm.mesh.isPointCloud()) {
             const auto w =
                 displaceAlongNormals(sm.mesh, *displacement, field.box, timeOf(*texture));
             sm.warnings.insert(sm.warnings.end(), w.begin(), w.end());
@@ -535,9 +547,11 @@ SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options
     return out;
 }
 
-Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes) {
+Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive) {
     Mesh all;
+    all.primitive = primitive;
     for (const ShapeMesh& s : shapes) {
+        if (s.mesh.primitive != primitive) continue;
         const auto base = std::uint32_t(all.positions.size());
         all.positions.insert(all.positions.end(), s.mesh.positions.begin(), s.mesh.positions.end());
         all.normals.insert(all.normals.end(), s.mesh.normals.begin(), s.mesh.normals.end());

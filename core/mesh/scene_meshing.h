@@ -16,6 +16,9 @@ struct SceneMeshOptions {
     bool useFileResolution = true; // each FGeometry's `resolution`; false: mesh.resolution
     double targetError = 0;        // > 0: mesh each shape to this error instead
     double sceneSeconds = 0; // the moment, in scene time (wall clocks: the scene started at 0 UTC)
+    // > 0: every function shape as a cloud of about this many points (its
+    // FGeometry's `points` field otherwise; 0 there: a mesh).
+    std::size_t points = 0;
 };
 
 struct ShapeMesh {
@@ -38,7 +41,8 @@ SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options
 // A function node's domain box (domainMin .. domainMax).
 Box3 domainOf(const scene::Node& node);
 
-// All shapes' meshes as one.
-Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes);
+// All shapes' meshes of one kind (triangles, or point clouds) as one.
+Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes,
+                 Primitive primitive = Primitive::Triangles);
 
 } // namespace fl::mesh

@@ -108,6 +108,10 @@ void DefinitionCompiler::checkGeometry(const Node& node) {
     if (stringsField(node, "definition").empty())
         report(node, nullptr, Severity::Error, node.where, "FGeometry has no definition",
                "write definition \"1 - x^2 - y^2 - z^2\" for a unit sphere");
+    if (numberField(node, "points") < 0 || numberField(node, "points") > 10'000'000)
+        report(node, node.field("points"), Severity::Error, fieldPos(node, "points"),
+               "points gives the size of a point cloud: 0 (draw a mesh) up to 10000000",
+               "write points 20000 to draw the object as about 20000 points");
     if (numberField(node, "resolution") <= 0)
         report(node, node.field("resolution"), Severity::Error, fieldPos(node, "resolution"),
                "resolution must be positive");

@@ -47,6 +47,7 @@ constexpr FieldSpec kFGeometryFields[] = {
     {"resolution", SFFloat, InputOutput, "32"},
     {"lod", SFBool, InputOutput, "TRUE"},
     {"lodRange", SFVec2f, InputOutput, "8 256"},
+    {"points", SFInt32, InputOutput, "0"},
     FL_DOMAIN_FIELDS,
     {"setOperations", SFString, InitializeOnly, "\"minmax\""},
     {"rfunctionM", SFFloat, InitializeOnly, "0"},

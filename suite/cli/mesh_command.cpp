@@ -8,6 +8,7 @@
 #include "mesh/error_driven.h"
 #include "mesh/mesh_export.h"
 #include "mesh/mesh_topology.h"
+#include "mesh/point_cloud.h"
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"
 
@@ -19,7 +20,7 @@ namespace fl::cli {
 namespace {
 
 const char* kMeshHelp =
-    R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N]
+    R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N | --points N]
        functionlab mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [options]
 
 Polygonizes the function shapes of the scene FILE — implicit and explicit ones
@@ -28,7 +29,9 @@ their u, v, w ranges — coloured by their FMaterial or Material and placed by
 the Transform/FTransform nodes above them; or one formula (f >= 0 inside) over
 a box. Writes OUT in the format its extension names: .stl (binary), .obj,
 .ply (binary), .glb (glTF 2.0 binary), .x3d (vertex colours where the format
-has them).
+has them). An FGeometry with `points` N > 0, or --points, gives a point cloud
+instead: on an implicit surface, through an explicit solid, over a parametric
+object's parameters (.ply, .obj, .glb or .x3d; STL holds only triangles).
 
 options:
   -o, --output OUT     the file to write
@@ -39,6 +42,9 @@ options:
   --error E            mesh each shape until its measured error (largest distance
                        from the surface, on triangle interiors) is at most E times
                        its box diagonal, e.g. 0.001
+  --points N           about N points per shape instead of a mesh (with --formula:
+                       on the surface; --solid: through the inside)
+  --solid              with --formula and --points: fill the inside (f > 0)
   --open               leave the mesh open where a shape leaves its box
                        (default: the box closes it)
   --threads K          worker threads (default: one per core)
@@ -65,6 +71,12 @@ int usage(const std::string& problem) {
 
 void describe(const std::string& name, const mesh::Mesh& m, const mesh::MeshStats& s,
               double measuredError) {
+    if (m.isPointCloud()) {
+        std::cerr << name << ": " << m.vertexCount() << " points, "
+                  << s.evaluations.points + s.evaluations.gradients << " evaluations, "
+                  << std::lround(s.milliseconds) << " ms\n";
+        return;
+    }
     const mesh::Topology t = mesh::analyseTopology(m);
     std::cerr << name << ": " << m.triangleCount() << " triangles, " << m.vertexCount()
               << " vertices, " << s.evaluations.points + s.evaluations.gradients << " evaluations, "
@@ -78,8 +90,8 @@ void describe(const std::string& name, const mesh::Mesh& m, const mesh::MeshStat
 
 int meshCommand(const Args& args) {
     std::string file, formula, output, boxText;
-    double time = 0, resolution = 0, error = 0, memory = 2048, threads = 0;
-    bool open = false;
+    double time = 0, resolution = 0, error = 0, memory = 2048, threads = 0, points = 0;
+    bool open = false, solid = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&](const char* what) -> const std::string* {
@@ -102,16 +114,19 @@ int meshCommand(const Args& args) {
             if (!(v = value("box"))) return usage("--box needs X0,Y0,Z0,X1,Y1,Z1");
             boxText = *v;
         } else if (a == "--time" || a == "--resolution" || a == "--error" || a == "--memory" ||
-                   a == "--threads") {
+                   a == "--threads" || a == "--points") {
             double d = 0;
             if (!(v = value("number")) || !parseNumber(*v, d)) return usage(a + " needs a number");
             (a == "--time"         ? time
              : a == "--resolution" ? resolution
              : a == "--error"      ? error
              : a == "--memory"     ? memory
+             : a == "--points"     ? points
                                    : threads) = d;
         } else if (a == "--open") {
             open = true;
+        } else if (a == "--solid") {
+            solid = true;
         } else if (a.starts_with("-")) {
             return usage("unknown option '" + a + "'");
         } else if (file.empty()) {
@@ -128,6 +143,14 @@ int meshCommand(const Args& args) {
     if (resolution && error) return usage("give --resolution or --error, not both");
     if (resolution < 0 || error < 0 || memory <= 0 || threads < 0)
         return usage("--resolution, --error, --memory and --threads must be positive");
+    if (points != 0 && !(points >= 1 && points <= 1e7 && points == std::floor(points)))
+        return usage("--points needs a whole number from 1 to 10000000");
+    if (points > 0 && (resolution > 0 || error > 0))
+        return usage("--points draws points, not a mesh: leave out --resolution and --error");
+    if (points > 0 && mesh::meshFormatForPath(output) == mesh::MeshFormat::Stl)
+        return usage("STL holds triangles only; write a point cloud as .ply, .obj, .glb or .x3d");
+    if (solid && (points == 0 || formula.empty()))
+        return usage("--solid goes with --formula and --points");
 
     mesh::MeshOptions options;
     options.threads = int(threads);
@@ -145,7 +168,12 @@ int meshCommand(const Args& args) {
         field.boundary = open ? mesh::BoxBoundary::Open : mesh::BoxBoundary::Closed;
         mesh::MeshResult r;
         double measured = -1;
-        if (error > 0) {
+        if (points > 0) {
+            mesh::PointCloudOptions pc;
+            pc.count = std::size_t(points);
+            pc.threads = options.threads;
+            r = solid ? mesh::pointsInSolid(field, pc) : mesh::pointsOnSurface(field, pc);
+        } else if (error > 0) {
             mesh::ErrorDrivenResult e = mesh::meshForError(field, error, options);
             r = std::move(e.result);
             measured = e.error.max;
@@ -176,6 +204,7 @@ int meshCommand(const Args& args) {
         so.sceneSeconds = time;
         so.targetError = error;
         so.useFileResolution = resolution <= 0;
+        so.points = std::size_t(points);
         if (resolution > 0) so.mesh.resolution = resolution;
         mesh::SceneMeshes meshes = mesh::meshScene(*r.scene, so);
         for (const auto& note : meshes.notes)
@@ -190,7 +219,16 @@ int meshCommand(const Args& args) {
             describe(s.name, s.mesh, s.stats, s.measuredError);
             anything = anything || !s.mesh.empty();
         }
-        result = mesh::mergeMeshes(meshes.shapes);
+        // One file holds one kind: triangles, or points.
+        const mesh::Mesh triangles = mesh::mergeMeshes(meshes.shapes);
+        const mesh::Mesh cloud = mesh::mergeMeshes(meshes.shapes, mesh::Primitive::Points);
+        if (!triangles.empty() && !cloud.empty()) {
+            std::cerr << "functionlab mesh: " << file
+                      << " has both meshes and point clouds (FGeometry points > 0), and one file "
+                         "holds one kind; give --points N to write every shape as points\n";
+            return kExitDiagnostic;
+        }
+        result = cloud.empty() ? triangles : cloud;
         if (meshes.shapes.empty()) {
             std::cerr
                 << "functionlab mesh: " << file
@@ -205,8 +243,11 @@ int meshCommand(const Args& args) {
     }
     if (!anything) std::cerr << "warning: the mesh is empty\n";
     std::cerr << "wrote " << output << " ("
-              << mesh::meshFormatName(*mesh::meshFormatForPath(output)) << ", "
-              << result.triangleCount() << " triangles)\n";
+              << mesh::meshFormatName(*mesh::meshFormatForPath(output)) << ", ";
+    if (result.isPointCloud())
+        std::cerr << result.vertexCount() << " points)\n";
+    else
+        std::cerr << result.triangleCount() << " triangles)\n";
     return kExitOk;
 }
 

@@ -46,6 +46,19 @@ run(1 mesh ${OUT_DIR}/boxes.x3dv -o ${OUT_DIR}/boxes.glb)
 expect_match("${ERR}" "no function shape to mesh")
 run(1 mesh ${OUT_DIR}/missing.x3d -o ${OUT_DIR}/m.stl)
 
+# Point clouds: on the surface, through the solid, from a scene; never to STL.
+run(0 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --points 3000 -o ${OUT_DIR}/cloud.ply)
+expect_match("${ERR}" "formula: 3000 points")
+expect_match("${ERR}" "wrote .*cloud.ply .*3000 points")
+run(0 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --points 3000 --solid -o ${OUT_DIR}/filled.x3d)
+run(0 check ${OUT_DIR}/filled.x3d)
+run(0 mesh ${EXAMPLES}/watermelon.x3d --points 5000 -o ${OUT_DIR}/melon-points.glb)
+expect_match("${ERR}" "FShape .*watermelon.x3d:[0-9]+:[0-9]+.*points")
+run(2 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --points 3000 -o ${OUT_DIR}/cloud.stl)
+expect_match("${ERR}" "STL holds triangles only")
+run(2 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --points 2.5 -o ${OUT_DIR}/cloud.ply)
+run(2 mesh --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --solid -o ${OUT_DIR}/cloud.ply)
+
 # What accuracy costs in time: both methods per resolution, as JSON and a plot.
 run(0 bench accuracy --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --resolutions 8,16 --json
     --plot ${OUT_DIR}/accuracy.svg)

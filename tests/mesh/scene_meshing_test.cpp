@@ -179,3 +179,53 @@ TEST(FTransformOperations, MetamorphosisExample) {
     EXPECT_NEAR(top, 0.15, 0.03);
     EXPECT_TRUE(analyseTopology(at0.shapes[1].mesh).closed());
 }
+
+TEST(ScenePoints, AnExplicitSolidAsPointsShowsItsColouredInside) {
+    // The watermelon drawn as points: they fill the solid, so the red flesh
+    // shows inside the green rind.
+    auto r = fl::scene::readSceneFile(std::string(FUNCTIONLAB_EXAMPLES_DIR) + "/watermelon.x3d");
+    ASSERT_TRUE(r.ok());
+    SceneMeshOptions o;
+    o.points = 20000;
+    const SceneMeshes s = meshScene(*r.scene, o);
+    ASSERT_EQ(s.shapes.size(), 1u);
+    const Mesh& m = s.shapes[0].mesh;
+    ASSERT_TRUE(m.isPointCloud());
+    EXPECT_NEAR(double(m.vertexCount()), 20000, 2000);
+    ASSERT_EQ(m.colours.size(), m.vertexCount());
+    int red = 0, green = 0;
+    for (std::size_t i = 0; i < m.vertexCount(); ++i) {
+        const auto& p = m.positions[i];
+        const double radius = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        const auto& c = m.colours[i];
+        ASSERT_LT(radius, 1.0 + 1e-6); // inside the melon
+        if (radius < 0.8 && c[0] > c[1] + 0.2) ++red;
+        if (radius > 0.97 && c[1] > c[0]) ++green;
+    }
+    EXPECT_GT(red, 5000);
+    EXPECT_GT(green, 100);
+}
+
+TEST(ScenePoints, TheFileAsksForPointsPerGeometryAndTheCheckerGuardsIt) {
+    const SceneMeshes s = meshText(
+        R"x(FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" points 3000 } }
+            FShape { geometry FGeometry { type "parametric" points 400
+                                          definition "x = u; y = v; z = 0.5;" } })x");
+    ASSERT_EQ(s.shapes.size(), 2u);
+    EXPECT_TRUE(s.shapes[0].mesh.isPointCloud());
+    EXPECT_EQ(s.shapes[0].mesh.vertexCount(), 3000u); // on the implicit surface
+    EXPECT_TRUE(s.shapes[1].mesh.isPointCloud());
+    EXPECT_EQ(s.shapes[1].mesh.vertexCount(), 400u); // 20 x 20 over (u, v)
+    // A whole scene of one kind merges; the other kind is left to its own file.
+    EXPECT_EQ(mergeMeshes(s.shapes, Primitive::Points).vertexCount(), 3400u);
+    EXPECT_TRUE(mergeMeshes(s.shapes).empty());
+
+    auto bad = fl::scene::readSceneBytes(
+        "#X3D V3.3 utf8\nPROFILE Full\nFShape { geometry FGeometry { definition \"1\" points -5 } }",
+        "bad.x3dv");
+    bool explained = false;
+    for (const auto& d : bad.diagnostics)
+        explained = explained || (d.message.find("points gives the size") != std::string::npos &&
+                                  d.pos.line == 3);
+    EXPECT_TRUE(explained);
+}
