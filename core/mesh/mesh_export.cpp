@@ -75,7 +75,8 @@ std::string stl(const Mesh& m) {
 
 std::string obj(const Mesh& m) {
     std::string out = "# FunctionLab mesh: " + std::to_string(m.vertexCount()) + " vertices, ";
-    out += m.isPointCloud() ? "a point cloud\n" : std::to_string(m.triangleCount()) + " triangles\n";
+    out +=
+        m.isPointCloud() ? "a point cloud\n" : std::to_string(m.triangleCount()) + " triangles\n";
     const bool colours = m.colours.size() == m.positions.size();
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
         const Vec3f& p = m.positions[i];
@@ -236,16 +237,17 @@ std::string glb(const Mesh& m) {
 
 std::string x3d(const Mesh& m) {
     const bool colours = m.colours.size() == m.positions.size();
-    std::string out =
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        "<X3D profile='Interchange' version='3.3'>\n"
-        "  <head><meta name='generator' content='FunctionLab'/></head>\n"
-        "  <Scene>\n    <Shape>\n"
-        "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n";
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                      "<X3D profile='Interchange' version='3.3'>\n"
+                      "  <head><meta name='generator' content='FunctionLab'/></head>\n"
+                      "  <Scene>\n    <Shape>\n"
+                      "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n";
     const bool points = m.isPointCloud();
     // A point cloud: a PointSet (its points are lit by their own colour).
-    out += points ? "      <PointSet>\n        <Coordinate point='"
-                  : "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
+    out +=
+        points
+            ? "      <PointSet>\n        <Coordinate point='"
+            : "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
     for (std::size_t i = 0; !points && i < m.triangles.size(); ++i) {
         for (std::uint32_t v : m.triangles[i]) {
             if (i || v != m.triangles[i][0]) out += ' ';

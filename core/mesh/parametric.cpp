@@ -38,13 +38,7 @@ Vec3 unit(const Vec3& a, bool& ok) {
 class Builder {
   public:
     Builder(const ParametricField& field, MeshResult& out)
-        : field_(field), out_(out), batch_(field.tape),
-          gradient_(field.tape, {Input::U, Input::V, Input::W}) {
-        for (const auto& [name, v] : field.parameters) {
-            batch_.parameters().set(name, v);
-            gradient_.parameters().set(name, v);
-        }
-    }
+        : field_(field), out_(out), sampler_(field) {}
 
     // A grid of samples over two parameters (a, b) at the parameter lines
     // `la` and `lb`, the third fixed at `fixed`; triangles oriented along
@@ -84,7 +78,7 @@ class Builder {
         // Normals from the partial derivatives along the patch's parameters.
         for (std::size_t i = 0; i < count; ++i) {
             formula::Dual d[3];
-            gradient_.evaluateAll({0, 0, 0, field_.t, in[0][i], in[1][i], in[2][i]}, d);
+            sampler_.partials(in[0][i], in[1][i], in[2][i], d);
             ++out_.stats.evaluations.gradients;
             const Vec3 pa{d[0].d[std::size_t(a)], d[1].d[std::size_t(a)], d[2].d[std::size_t(a)]};
             const Vec3 pb{d[0].d[std::size_t(b)], d[1].d[std::size_t(b)], d[2].d[std::size_t(b)]};
@@ -114,9 +108,8 @@ class Builder {
             centre[std::size_t(i)] = {xyz[0][std::size_t(i)], xyz[1][std::size_t(i)],
                                       xyz[2][std::size_t(i)]};
             formula::Dual d[3];
-            gradient_.evaluateAll({0, 0, 0, field_.t, in[0][std::size_t(i)], in[1][std::size_t(i)],
-                                   in[2][std::size_t(i)]},
-                                  d);
+            sampler_.partials(in[0][std::size_t(i)], in[1][std::size_t(i)], in[2][std::size_t(i)],
+                              d);
             ++out_.stats.evaluations.gradients;
             bool ok = false;
             tangent[std::size_t(i)] =
@@ -299,18 +292,7 @@ class Builder {
   public:
     void evaluate(const std::array<std::vector<double>, 3>& in, std::size_t count,
                   std::array<std::vector<double>, 3>& xyz) {
-        formula::BatchInputs inputs;
-        inputs.set(Input::X, 0.0);
-        inputs.set(Input::Y, 0.0);
-        inputs.set(Input::Z, 0.0);
-        inputs.set(Input::T, field_.t);
-        inputs.set(Input::U, in[0].data());
-        inputs.set(Input::V, in[1].data());
-        inputs.set(Input::W, in[2].data());
-        for (auto& v : xyz)
-            v.assign(count, 0);
-        double* outs[3] = {xyz[0].data(), xyz[1].data(), xyz[2].data()};
-        batch_.evaluate(inputs, count, outs);
+        sampler_.positions(in, count, xyz);
         out_.stats.evaluations.points += count;
     }
 
@@ -327,8 +309,7 @@ class Builder {
 
     const ParametricField& field_;
     MeshResult& out_;
-    formula::BatchEvaluator batch_;
-    formula::GradientEvaluator gradient_;
+    ParametricSampler sampler_;
     std::vector<Vec3> positions_, normals_, params_;
     std::vector<Vec3> welded_; // positions of the welded vertices, in double
     std::vector<Triangle> triangles_;
@@ -340,24 +321,12 @@ class Builder {
 MeshResult meshParametric(const ParametricField& field, const ParametricOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     MeshResult result;
-    if (field.tape.outputs.size() != 3) {
-        result.error = "parametric geometry must assign x, y and z";
-        return result;
-    }
+    const std::vector<int> used = usedParameters(field, result.error);
+    if (!result.error.empty()) return result;
     if (!(options.resolution >= 1) || !std::isfinite(options.resolution) ||
         options.resolution > 4096) {
         result.error = "the resolution of parametric geometry must lie in 1..4096";
         return result;
-    }
-    std::vector<int> used;
-    for (int p = 0; p < 3; ++p)
-        if (field.tape.usesInput[std::size_t(int(Input::U) + p)]) used.push_back(p);
-    for (int p : used) {
-        const auto& r = field.ranges[std::size_t(p)];
-        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || !(r[1] > r[0])) {
-            result.error = std::string("the ") + "uvw"[p] + "Range must go from low to high";
-            return result;
-        }
     }
     const int n = std::max(1, int(std::lround(options.resolution)));
     Builder b(field, result);
@@ -447,6 +416,54 @@ MeshResult meshParametric(const ParametricField& field, const ParametricOptions&
     result.stats.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
+}
+
+std::vector<int> usedParameters(const ParametricField& field, std::string& error) {
+    std::vector<int> used;
+    if (field.tape.outputs.size() != 3) {
+        error = "parametric geometry must assign x, y and z";
+        return used;
+    }
+    for (int p = 0; p < 3; ++p)
+        if (field.tape.usesInput[std::size_t(int(Input::U) + p)]) used.push_back(p);
+    for (int p : used) {
+        const auto& r = field.ranges[std::size_t(p)];
+        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || !(r[1] > r[0])) {
+            error = "the ";
+            error += "uvw"[p];
+            error += "Range must go from low to high";
+            return {};
+        }
+    }
+    return used;
+}
+
+ParametricSampler::ParametricSampler(const ParametricField& field)
+    : t_(field.t), batch_(field.tape), gradient_(field.tape, {Input::U, Input::V, Input::W}) {
+    for (const auto& [name, v] : field.parameters) {
+        batch_.parameters().set(name, v);
+        gradient_.parameters().set(name, v);
+    }
+}
+
+void ParametricSampler::positions(const std::array<std::vector<double>, 3>& uvw, std::size_t count,
+                                  std::array<std::vector<double>, 3>& xyz) {
+    formula::BatchInputs inputs;
+    inputs.set(Input::X, 0.0);
+    inputs.set(Input::Y, 0.0);
+    inputs.set(Input::Z, 0.0);
+    inputs.set(Input::T, t_);
+    inputs.set(Input::U, uvw[0].data());
+    inputs.set(Input::V, uvw[1].data());
+    inputs.set(Input::W, uvw[2].data());
+    for (auto& v : xyz)
+        v.assign(count, 0);
+    double* outs[3] = {xyz[0].data(), xyz[1].data(), xyz[2].data()};
+    batch_.evaluate(inputs, count, outs);
+}
+
+void ParametricSampler::partials(double u, double v, double w, formula::Dual out[3]) {
+    gradient_.evaluateAll({0, 0, 0, t_, u, v, w}, out);
 }
 
 } // namespace fl::mesh

@@ -8,6 +8,8 @@
 // degenerate triangles they leave dropped, and normals there taken from the
 // surrounding triangles, so none is zero or NaN.
 #include "dual_contouring.h" // MeshResult, MeshStats
+#include "formula/eval_batch.h"
+#include "formula/eval_gradient.h"
 #include "formula/tape.h"
 #include "mesh.h"
 
@@ -42,5 +44,27 @@ struct ParametricOptions {
 
 // The mesh carries each vertex's (u, v, w) in Mesh::parameters.
 MeshResult meshParametric(const ParametricField& field, const ParametricOptions& options = {});
+
+// The parameters (0 = u, 1 = v, 2 = w) the definition reads, or an error
+// (empty when none) when the field cannot be sampled: not three outputs, or
+// a used range that does not go from low to high.
+std::vector<int> usedParameters(const ParametricField& field, std::string& error);
+
+// x, y, z and their partial derivatives at parameter points, with the
+// field's named parameters and t applied.
+class ParametricSampler {
+  public:
+    explicit ParametricSampler(const ParametricField& field);
+    // x, y, z at `count` points given as u, v, w arrays (resized to count).
+    void positions(const std::array<std::vector<double>, 3>& uvw, std::size_t count,
+                   std::array<std::vector<double>, 3>& xyz);
+    // x, y, z with their derivatives along u, v, w at one point.
+    void partials(double u, double v, double w, formula::Dual out[3]);
+
+  private:
+    double t_;
+    formula::BatchEvaluator batch_;
+    formula::GradientEvaluator gradient_;
+};
 
 } // namespace fl::mesh

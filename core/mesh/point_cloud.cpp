@@ -1,8 +1,5 @@
 #include "point_cloud.h"
 
-#include "formula/eval_batch.h"
-#include "formula/eval_gradient.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,7 +27,8 @@ double unit(std::mt19937& rng) {
 
 bool tooMany(std::size_t count, MeshResult& result) {
     if (count == 0 || count > kMaxPoints) {
-        result.error = "a point cloud needs between 1 and " + std::to_string(kMaxPoints) + " points";
+        result.error =
+            "a point cloud needs between 1 and " + std::to_string(kMaxPoints) + " points";
         return true;
     }
     return false;
@@ -200,9 +198,12 @@ MeshResult pointsInSolid(const ImplicitField& field, const PointCloudOptions& op
         zs.clear();
         for (long c = first; c < last; ++c) {
             const long i = c % n[0], j = c / n[0] % n[1], k = c / (n[0] * n[1]);
-            xs.push_back(field.box.lo[0] + (double(i) + unit(rng)) / double(n[0]) * field.box.size(0));
-            ys.push_back(field.box.lo[1] + (double(j) + unit(rng)) / double(n[1]) * field.box.size(1));
-            zs.push_back(field.box.lo[2] + (double(k) + unit(rng)) / double(n[2]) * field.box.size(2));
+            xs.push_back(field.box.lo[0] +
+                         (double(i) + unit(rng)) / double(n[0]) * field.box.size(0));
+            ys.push_back(field.box.lo[1] +
+                         (double(j) + unit(rng)) / double(n[1]) * field.box.size(1));
+            zs.push_back(field.box.lo[2] +
+                         (double(k) + unit(rng)) / double(n[2]) * field.box.size(2));
         }
         evaluate();
         for (std::size_t p = 0; p < fs.size(); ++p) {
@@ -225,31 +226,20 @@ MeshResult pointsOverParameters(const ParametricField& field, const PointCloudOp
     MeshResult result;
     result.mesh.primitive = Primitive::Points;
     if (tooMany(options.count, result)) return result;
-    if (field.tape.outputs.size() != 3) {
-        result.error = "parametric geometry must assign x, y and z";
-        return result;
-    }
-    std::vector<std::size_t> used;
-    for (std::size_t p = 0; p < 3; ++p)
-        if (field.tape.usesInput[std::size_t(int(Input::U)) + p]) used.push_back(p);
-    for (std::size_t p : used) {
-        const auto& r = field.ranges[p];
-        if (!std::isfinite(r[0]) || !std::isfinite(r[1]) || !(r[1] > r[0])) {
-            result.error = std::string("the ") + "uvw"[p] + "Range must go from low to high";
-            return result;
-        }
-    }
+    std::vector<int> used = usedParameters(field, result.error);
+    if (!result.error.empty()) return result;
     if (used.empty()) {
         result.warnings.push_back("the parametric definition reads none of u, v, w: it is a "
                                   "single point");
     }
     // Samples per used parameter: about count^(1/k) each.
-    const long per = used.empty() ? 1
-                                  : std::max(2L, std::lround(std::pow(double(options.count),
-                                                                      1.0 / double(used.size()))));
+    const long per =
+        used.empty()
+            ? 1
+            : std::max(2L, std::lround(std::pow(double(options.count), 1.0 / double(used.size()))));
     std::array<long, 3> n{1, 1, 1};
-    for (std::size_t p : used)
-        n[p] = per;
+    for (int p : used)
+        n[std::size_t(p)] = per;
     const long total = n[0] * n[1] * n[2];
     std::array<std::vector<double>, 3> uvw;
     for (auto& v : uvw)
@@ -262,25 +252,9 @@ MeshResult pointsOverParameters(const ParametricField& field, const PointCloudOp
                                        : r[0] + (r[1] - r[0]) * double(idx[a]) / double(n[a] - 1));
         }
     }
-    formula::BatchEvaluator batch(field.tape);
-    formula::GradientEvaluator gradient(field.tape, {Input::U, Input::V, Input::W});
-    for (const auto& [name, v] : field.parameters) {
-        batch.parameters().set(name, v);
-        gradient.parameters().set(name, v);
-    }
+    ParametricSampler sampler(field);
     std::array<std::vector<double>, 3> xyz;
-    for (auto& v : xyz)
-        v.resize(std::size_t(total));
-    formula::BatchInputs in;
-    in.set(Input::X, 0.0);
-    in.set(Input::Y, 0.0);
-    in.set(Input::Z, 0.0);
-    in.set(Input::T, field.t);
-    in.set(Input::U, uvw[0].data());
-    in.set(Input::V, uvw[1].data());
-    in.set(Input::W, uvw[2].data());
-    double* outs[3] = {xyz[0].data(), xyz[1].data(), xyz[2].data()};
-    batch.evaluate(in, std::size_t(total), outs);
+    sampler.positions(uvw, std::size_t(total), xyz);
     result.stats.evaluations.points = std::size_t(total);
     Mesh& out = result.mesh;
     bool sawNaN = false;
@@ -293,14 +267,15 @@ MeshResult pointsOverParameters(const ParametricField& field, const PointCloudOp
         Vec3f normal{0, 0, 0};
         if (used.size() == 2) { // a surface: the cross product of its partial derivatives
             formula::Dual d[3];
-            gradient.evaluateAll({0, 0, 0, field.t, uvw[0][i], uvw[1][i], uvw[2][i]}, d);
+            sampler.partials(uvw[0][i], uvw[1][i], uvw[2][i], d);
             ++result.stats.evaluations.gradients;
-            const std::size_t a = used[0], b = used[1];
+            const auto a = std::size_t(used[0]), b = std::size_t(used[1]);
             const Vec3 pa{d[0].d[a], d[1].d[a], d[2].d[a]}, pb{d[0].d[b], d[1].d[b], d[2].d[b]};
             const Vec3 c{pa[1] * pb[2] - pa[2] * pb[1], pa[2] * pb[0] - pa[0] * pb[2],
                          pa[0] * pb[1] - pa[1] * pb[0]};
             const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-            if (std::isfinite(len) && len > 0) normal = toFloat({c[0] / len, c[1] / len, c[2] / len});
+            if (std::isfinite(len) && len > 0)
+                normal = toFloat({c[0] / len, c[1] / len, c[2] / len});
         }
         out.positions.push_back(toFloat(p));
         out.normals.push_back(normal);

@@ -42,7 +42,6 @@ SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options
 Box3 domainOf(const scene::Node& node);
 
 // All shapes' meshes of one kind (triangles, or point clouds) as one.
-Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes,
-                 Primitive primitive = Primitive::Triangles);
+Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive = Primitive::Triangles);
 
 } // namespace fl::mesh

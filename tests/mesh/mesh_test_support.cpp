@@ -23,6 +23,18 @@ ImplicitField field(const std::string& formula, double half, BoxBoundary boundar
     return field(formula, Box3{{-half, -half, -half}, {half, half, half}}, boundary);
 }
 
+ParametricField parametricField(const std::string& script, std::array<double, 2> u,
+                                std::array<double, 2> v, std::array<double, 2> w) {
+    formula::CompileOptions options;
+    options.kind = formula::DefinitionKind::Parametric;
+    formula::CompileResult r = formula::compile(script, options);
+    if (!r.ok()) throw std::runtime_error("script does not compile: " + script);
+    ParametricField f;
+    f.tape = std::move(*r.tape);
+    f.ranges = {u, v, w};
+    return f;
+}
+
 namespace {
 double surfaceError(const ImplicitField& f, const Mesh& mesh, bool centroids) {
     ImplicitField unclipped = f;

@@ -3,6 +3,7 @@
 // measure how far a mesh is from the true surface.
 #include "mesh/dual_contouring.h"
 #include "mesh/mesh_topology.h"
+#include "mesh/parametric.h"
 
 #include <string>
 
@@ -12,6 +13,10 @@ ImplicitField field(const std::string& formula, double half = 1.0,
                     BoxBoundary boundary = BoxBoundary::Closed);
 ImplicitField field(const std::string& formula, Box3 box,
                     BoxBoundary boundary = BoxBoundary::Closed);
+
+// A parametric definition ("x = ...; y = ...; z = ...;") over u, v, w ranges.
+ParametricField parametricField(const std::string& script, std::array<double, 2> u = {0, 1},
+                                std::array<double, 2> v = {0, 1}, std::array<double, 2> w = {0, 1});
 
 // The largest first-order distance |f| / |grad f| over the vertices and the
 // triangle centroids, as a fraction of the box diagonal.

@@ -3,6 +3,7 @@
 #include "formula/compiler.h"
 #include "mesh/mesh_topology.h"
 #include "mesh/parametric.h"
+#include "mesh_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -14,14 +15,7 @@ namespace {
 
 ParametricField field(const std::string& script, std::array<double, 2> u = {0, 1},
                       std::array<double, 2> v = {0, 1}, std::array<double, 2> w = {0, 1}) {
-    fl::formula::CompileOptions o;
-    o.kind = fl::formula::DefinitionKind::Parametric;
-    auto r = fl::formula::compile(script, o);
-    if (!r.ok()) throw std::runtime_error("does not compile: " + script);
-    ParametricField f;
-    f.tape = *r.tape;
-    f.ranges = {u, v, w};
-    return f;
+    return fl::mesh::support::parametricField(script, u, v, w);
 }
 
 void expectClosedAndUnitNormals(const Mesh& m) {

@@ -37,14 +37,7 @@ double fractionWhere(const Mesh& m, bool (*test)(const Vec3f&)) {
 
 ParametricField parametric(const std::string& script, std::array<double, 2> u,
                            std::array<double, 2> v, std::array<double, 2> w = {0, 1}) {
-    fl::formula::CompileOptions o;
-    o.kind = fl::formula::DefinitionKind::Parametric;
-    auto r = fl::formula::compile(script, o);
-    if (!r.ok()) throw std::runtime_error("does not compile: " + script);
-    ParametricField f;
-    f.tape = *r.tape;
-    f.ranges = {u, v, w};
-    return f;
+    return parametricField(script, u, v, w);
 }
 
 } // namespace
@@ -139,10 +132,10 @@ TEST(PointCloud, ParametricPointsCoverTheParametersAndKeepThem) {
     EXPECT_FLOAT_EQ(m.parameters.back()[0], float(2 * M_PI));
 
     o.count = 8000; // 20^3 through a ball
-    const MeshResult ball = pointsOverParameters(
-        parametric("x = w*sin(v)*cos(u); y = w*sin(v)*sin(u); z = w*cos(v);", {0, 2 * M_PI},
-                   {0, M_PI}, {0, 1}),
-        o);
+    const MeshResult ball =
+        pointsOverParameters(parametric("x = w*sin(v)*cos(u); y = w*sin(v)*sin(u); z = w*cos(v);",
+                                        {0, 2 * M_PI}, {0, M_PI}, {0, 1}),
+                             o);
     ASSERT_TRUE(ball.ok());
     EXPECT_EQ(ball.mesh.vertexCount(), 8000u);
     std::size_t inside = 0;

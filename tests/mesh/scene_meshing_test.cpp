@@ -220,9 +220,9 @@ TEST(ScenePoints, TheFileAsksForPointsPerGeometryAndTheCheckerGuardsIt) {
     EXPECT_EQ(mergeMeshes(s.shapes, Primitive::Points).vertexCount(), 3400u);
     EXPECT_TRUE(mergeMeshes(s.shapes).empty());
 
-    auto bad = fl::scene::readSceneBytes(
-        "#X3D V3.3 utf8\nPROFILE Full\nFShape { geometry FGeometry { definition \"1\" points -5 } }",
-        "bad.x3dv");
+    auto bad = fl::scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\nFShape { geometry "
+                                         "FGeometry { definition \"1\" points -5 } }",
+                                         "bad.x3dv");
     bool explained = false;
     for (const auto& d : bad.diagnostics)
         explained = explained || (d.message.find("points gives the size") != std::string::npos &&
