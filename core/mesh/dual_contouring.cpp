@@ -5,6 +5,7 @@
 #include "qef.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -103,8 +104,15 @@ struct Block {
     BlockCoord coord{};
     std::vector<double> values;       // kCorners corner values of f
     std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
-    // Local vertex id per (cell, piece of surface in it): kCells * kPieces, -1 none.
-    std::vector<std::int32_t> vertexOf;
+    // Per cell: the local id of its first vertex, and which pieces of
+    // surface have one (bit p: piece p); a cell's vertices are consecutive.
+    std::vector<std::int32_t> firstVertex; // kCells
+    std::vector<std::uint8_t> pieceMask;   // kCells
+    std::int32_t vertexOf(int cell, int piece) const {
+        const unsigned mask = pieceMask[std::size_t(cell)];
+        if (!(mask >> piece & 1u)) return -1;
+        return firstVertex[std::size_t(cell)] + std::popcount(mask & ((1u << piece) - 1));
+    }
     std::vector<std::uint8_t> kept;    // the 2x2x2-cell sub-blocks that may hold surface
     std::vector<std::int16_t> configs; // kCells: corner configuration, -1 unknown
     std::vector<Vec3> positions;
@@ -237,7 +245,8 @@ class Contourer {
             crossings_.assign(std::size_t(3 * kCorners), Crossing{});
         ++generation_;
         computeCrossings(block, sampler);
-        block.vertexOf.assign(std::size_t(kCells * kPieces), -1);
+        block.firstVertex.assign(kCells, -1);
+        block.pieceMask.assign(kCells, 0);
         block.positions.clear();
         block.normals.clear();
         block.configs.assign(kCells, -1); // only cells of kept sub-blocks can hold surface
@@ -361,53 +370,61 @@ class Contourer {
     void computeCrossings(const Block& block, FieldSampler& sampler) {
         pending_.clear();
         found_.clear();
-        // Every lattice edge of the block, scanned in memory order: corners
-        // never evaluated are unknown and cross nothing.
+        // The lattice edges of the kept 2x2x2-cell sub-blocks (only their
+        // corners were evaluated; an edge two of them share is seen once).
         static constexpr int kStride[3] = {1, kC, kC * kC};
-        for (int axis = 0; axis < 3; ++axis)
-            for (int ck = 0; ck < (axis == 2 ? kB : kC); ++ck)
-                for (int cj = 0; cj < (axis == 1 ? kB : kC); ++cj)
-                    for (int ci = 0; ci < (axis == 0 ? kB : kC); ++ci) {
-                        const int c = cornerIndex(ci, cj, ck);
-                        const int cb = c + kStride[axis];
-                        const std::uint8_t sa = block.states[std::size_t(c)],
-                                           sb = block.states[std::size_t(cb)];
-                        if (!crosses(sa, sb)) continue;
-                        Crossing& slot = crossings_[std::size_t(axis * kCorners + c)];
-                        slot.generation = generation_;
-                        PendingCrossing p;
-                        p.slot = axis * kCorners + c;
-                        p.axis = axis;
-                        const BlockCoord& b = block.coord;
-                        p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj,
-                                            long(b[2]) * kB + ck);
-                        p.pb = p.pa;
-                        p.pb[std::size_t(axis)] += grid_.h[std::size_t(axis)];
-                        p.fa = block.values[std::size_t(c)];
-                        p.fb = block.values[std::size_t(cb)];
-                        const bool aInBox = cornerInBox(block, c), bInBox = cornerInBox(block, cb);
-                        if (!aInBox || !bInBox) {
-                            // Through a face of the closed box: the solid ends at the
-                            // face, or before it where f turns negative first.
-                            Vec3 face = aInBox ? p.pa : p.pb;
-                            face[std::size_t(axis)] = aInBox ? field_.box.hi[std::size_t(axis)]
-                                                             : field_.box.lo[std::size_t(axis)];
-                            const double ff = sampler.value(face);
-                            Crossing& x = crossings_[std::size_t(p.slot)];
-                            x.generation = generation_;
-                            if (inside(ff) || std::isnan(ff)) {
-                                x.point = face;
-                                x.normal = {0, 0, 0};
-                                x.normal[std::size_t(axis)] = 1;
-                                found_.push_back(p.slot);
-                                continue;
-                            }
-                            (aInBox ? p.pb : p.pa) = face;
-                            (aInBox ? p.fb : p.fa) = ff;
-                        }
-                        p.t = p.fa / (p.fa - p.fb);
-                        pending_.push_back(p);
-                    }
+        auto visit = [&](int axis, int ci, int cj, int ck) {
+            const int c = cornerIndex(ci, cj, ck);
+            const int cb = c + kStride[axis];
+            const std::uint8_t sa = block.states[std::size_t(c)],
+                               sb = block.states[std::size_t(cb)];
+            if (!crosses(sa, sb)) return;
+            Crossing& slot = crossings_[std::size_t(axis * kCorners + c)];
+            if (slot.generation == generation_) return; // seen from a neighbour
+            slot.generation = generation_;
+            PendingCrossing p;
+            p.slot = axis * kCorners + c;
+            p.axis = axis;
+            const BlockCoord& b = block.coord;
+            p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
+            p.pb = p.pa;
+            p.pb[std::size_t(axis)] += grid_.h[std::size_t(axis)];
+            p.fa = block.values[std::size_t(c)];
+            p.fb = block.values[std::size_t(cb)];
+            const bool aInBox = cornerInBox(block, c), bInBox = cornerInBox(block, cb);
+            if (!aInBox || !bInBox) {
+                // Through a face of the closed box: the solid ends at the
+                // face, or before it where f turns negative first.
+                Vec3 face = aInBox ? p.pa : p.pb;
+                face[std::size_t(axis)] =
+                    aInBox ? field_.box.hi[std::size_t(axis)] : field_.box.lo[std::size_t(axis)];
+                const double ff = sampler.value(face);
+                Crossing& x = crossings_[std::size_t(p.slot)];
+                x.generation = generation_;
+                if (inside(ff) || std::isnan(ff)) {
+                    x.point = face;
+                    x.normal = {0, 0, 0};
+                    x.normal[std::size_t(axis)] = 1;
+                    found_.push_back(p.slot);
+                    return;
+                }
+                (aInBox ? p.pb : p.pa) = face;
+                (aInBox ? p.fb : p.fa) = ff;
+            }
+            p.t = p.fa / (p.fa - p.fb);
+            pending_.push_back(p);
+        };
+        for (std::uint8_t sub : block.kept) {
+            const int s0[3] = {(sub % 4) * 2, (sub / 4 % 4) * 2, (sub / 16) * 2};
+            for (int axis = 0; axis < 3; ++axis) {
+                int n[3] = {3, 3, 3}; // corners along each axis of the sub-block ...
+                n[axis] = 2;          // ... and 2 edges along the scanned one
+                for (int dk = 0; dk < n[2]; ++dk)
+                    for (int dj = 0; dj < n[1]; ++dj)
+                        for (int di = 0; di < n[0]; ++di)
+                            visit(axis, s0[0] + di, s0[1] + dj, s0[2] + dk);
+            }
+        }
         auto at = [](const PendingCrossing& p, double t) {
             Vec3 q = p.pa;
             const std::size_t a = std::size_t(p.axis);
@@ -535,7 +552,10 @@ class Contourer {
                                ? Vec3{cq.normalSum[0] / length, cq.normalSum[1] / length,
                                       cq.normalSum[2] / length}
                                : vertexNormal(sampler, p, cq.normalSum);
-            block.vertexOf[std::size_t(index)] = std::int32_t(block.positions.size());
+            // touched_ is sorted, so a cell's pieces come in order, one after another.
+            if (!block.pieceMask[std::size_t(cell)])
+                block.firstVertex[std::size_t(cell)] = std::int32_t(block.positions.size());
+            block.pieceMask[std::size_t(cell)] |= std::uint8_t(1u << (index % kPieces));
             block.positions.push_back(p);
             block.normals.push_back(n);
         }
@@ -604,9 +624,7 @@ class Contourer {
         }
         const int piece =
             pieceOf(owner->configs[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
-        return {
-            owner,
-            owner->vertexOf[std::size_t(cellIndex(cell[0], cell[1], cell[2]) * kPieces + piece)]};
+        return {owner, owner->vertexOf(cellIndex(cell[0], cell[1], cell[2]), piece)};
     }
 
     void quad(Block& block, int a, const int local[3], bool lowerInside,
