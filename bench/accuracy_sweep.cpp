@@ -11,8 +11,17 @@
 
 namespace fl::bench {
 
+namespace {
+std::string num(double v, const char* format = "%.4g") {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+} // namespace
+
 std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
-                                          const std::vector<double>& resolutions, int threads) {
+                                          const std::vector<double>& resolutions, int threads,
+                                          std::vector<std::string>* skipped) {
     std::vector<AccuracyRow> rows;
     // The error of a closed mesh's box faces is zero by construction; the
     // comparison is about the shape, so both methods mesh the open surface.
@@ -28,6 +37,9 @@ std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
             rows.push_back({"adaptive", res, a.mesh.triangleCount(),
                             a.stats.evaluations.points + a.stats.evaluations.gradients,
                             a.stats.evaluations.intervals, a.stats.milliseconds, e.max, e.mean});
+        } else if (skipped) {
+            skipped->push_back("adaptive at resolution " + num(res) + ": " +
+                               (a.cancelled ? std::string("cancelled") : a.error));
         }
         const mesh::DenseResult d = mesh::marchingCubes(open, res, threads);
         const mesh::SurfaceError e = mesh::measureSurfaceError(open, d.mesh);
@@ -36,14 +48,6 @@ std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
     }
     return rows;
 }
-
-namespace {
-std::string num(double v, const char* format = "%.4g") {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-} // namespace
 
 std::string accuracyTableText(const std::vector<AccuracyRow>& rows) {
     std::string out =
@@ -104,6 +108,24 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
                num(fa->ms, "%.1f") + " ms at resolution " + num(fa->resolution) + ", dense " +
                num(fd->ms, "%.1f") + " ms at resolution " + num(fd->resolution) + " (" +
                num(fd->ms / fa->ms, "%.1f") + "x)\n";
+    // The swept resolutions rarely hit that error exactly: the adaptive
+    // mesher's time there, read off the straight line (log-log) between the
+    // two adaptive rows whose errors bracket it.
+    const AccuracyRow *above = nullptr, *below = nullptr;
+    for (const AccuracyRow& r : rows) {
+        if (r.method != "adaptive" || r.ms <= 0 || r.maxError <= 0) continue;
+        if (r.maxError > common && (!above || r.maxError < above->maxError)) above = &r;
+        if (r.maxError <= common && (!below || r.maxError > below->maxError)) below = &r;
+    }
+    if (fd && above && below && above->maxError > below->maxError) {
+        const double s = (std::log(common) - std::log(above->maxError)) /
+                         (std::log(below->maxError) - std::log(above->maxError));
+        const double ms =
+            std::exp(std::log(above->ms) + s * (std::log(below->ms) - std::log(above->ms)));
+        out += "  interpolated between adaptive resolutions " + num(above->resolution) + " and " +
+               num(below->resolution) + ": adaptive " + num(ms, "%.1f") + " ms at that error (" +
+               num(fd->ms / ms, "%.1f") + "x)\n";
+    }
     return out;
 }
 

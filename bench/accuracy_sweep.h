@@ -21,8 +21,11 @@ struct AccuracyRow {
     double meanError = 0;
 };
 
+// `skipped` (when given) gets one line per run that did not produce a row,
+// e.g. a resolution over the memory budget.
 std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
-                                          const std::vector<double>& resolutions, int threads = 0);
+                                          const std::vector<double>& resolutions, int threads = 0,
+                                          std::vector<std::string>* skipped = nullptr);
 
 std::string accuracyTableText(const std::vector<AccuracyRow>& rows);
 std::string accuracyJson(const std::vector<AccuracyRow>& rows);

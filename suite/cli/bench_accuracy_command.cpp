@@ -92,8 +92,11 @@ int benchAccuracyCommand(const Args& args) {
     } else if (!fieldFromScene(file, field, name)) {
         return kExitDiagnostic;
     }
+    std::vector<std::string> skipped;
     const std::vector<bench::AccuracyRow> rows =
-        bench::runAccuracySweep(field, resolutions, threads);
+        bench::runAccuracySweep(field, resolutions, threads, &skipped);
+    for (const std::string& s : skipped)
+        std::cerr << "note: no row for " << s << "\n";
     std::cout << (json ? bench::accuracyJson(rows) : bench::accuracyTableText(rows));
     if (!plot.empty()) {
         std::ofstream out(plot);
