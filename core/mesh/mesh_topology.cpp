@@ -1,6 +1,7 @@
 #include "mesh_topology.h"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -48,6 +49,18 @@ Topology analyseTopology(const Mesh& mesh) {
     }
     t.eulerCharacteristic = long(used.size()) - long(t.edges) + long(faces);
     return t;
+}
+
+Mesh weldedByPosition(const Mesh& mesh) {
+    Mesh out = mesh;
+    std::map<Vec3f, std::uint32_t> first;
+    std::vector<std::uint32_t> to(mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+        to[i] = first.emplace(mesh.positions[i], std::uint32_t(i)).first->second;
+    for (Triangle& t : out.triangles)
+        for (auto& v : t)
+            v = to[v];
+    return out;
 }
 
 } // namespace fl::mesh

@@ -24,4 +24,9 @@ struct Topology {
 
 Topology analyseTopology(const Mesh& mesh);
 
+// The mesh with triangles re-pointed at the first vertex of each exact
+// position: where sharp edges duplicate vertices (a Box's 24 corners), the
+// topology of the surface itself (closed once welded).
+Mesh weldedByPosition(const Mesh& mesh);
+
 } // namespace fl::mesh

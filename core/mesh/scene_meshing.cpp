@@ -10,6 +10,7 @@
 #include "parametric.h"
 #include "point_cloud.h"
 #include "scene/field_access.h"
+#include "scene_standard_geometry.h"
 #include "surface_displacement.h"
 
 #include <cmath>
@@ -104,10 +105,11 @@ class Walker {
         const Node* n = scene::effectiveNode(raw);
         if (!n) return;
         const std::string& type = n->type;
-        if (type == "FShape") {
+        if (type == "FShape" || type == "Shape") {
             shape(*n, m);
             return;
         }
+        if (viewNode(*n, m)) return;
         Affine here = m;
         if (type == "Transform") here = m * transformOf(*n);
         if (type == "FTransform") {
@@ -143,6 +145,98 @@ class Walker {
     }
 
   private:
+    static std::array<double, 3> apply(const Affine& m, const std::vector<double>& p) {
+        std::array<double, 3> out{};
+        for (int k = 0; k < 3; ++k)
+            out[std::size_t(k)] = m.m[k][0] * p[0] + m.m[k][1] * p[1] + m.m[k][2] * p[2] + m.t[k];
+        return out;
+    }
+    static std::array<double, 3> turn(const Affine& m, const std::array<double, 3>& d) {
+        std::array<double, 3> out{};
+        for (int k = 0; k < 3; ++k)
+            out[std::size_t(k)] = m.m[k][0] * d[0] + m.m[k][1] * d[1] + m.m[k][2] * d[2];
+        const double n = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+        if (n > 0)
+            for (double& v : out)
+                v /= n;
+        return out;
+    }
+
+    // Lights, viewpoints, Background and NavigationInfo, in scene
+    // coordinates. Returns whether `n` was one of them.
+    bool viewNode(const Node& n, const Affine& m) {
+        SceneView& view = out_.view;
+        const std::string& type = n.type;
+        auto rgb = [&](const char* field, std::array<float, 3>& out) {
+            const auto v = vec(n, field);
+            if (v.size() >= 3) out = {float(v[0]), float(v[1]), float(v[2])};
+        };
+        if (type == "DirectionalLight" || type == "PointLight" || type == "SpotLight") {
+            if (!scene::boolField(n, "on")) return true;
+            ViewLight l;
+            l.kind = type == "DirectionalLight" ? ViewLight::Kind::Directional
+                     : type == "PointLight"     ? ViewLight::Kind::Point
+                                                : ViewLight::Kind::Spot;
+            rgb("color", l.colour);
+            l.intensity = float(scene::numberField(n, "intensity", 0, 1));
+            l.ambientIntensity = float(scene::numberField(n, "ambientIntensity"));
+            if (l.kind != ViewLight::Kind::Point) {
+                const auto d = vec(n, "direction");
+                if (d.size() == 3) l.direction = turn(m, {d[0], d[1], d[2]});
+            }
+            if (l.kind != ViewLight::Kind::Directional) {
+                const auto p = vec(n, "location");
+                if (p.size() == 3) l.location = apply(m, p);
+                const auto a = vec(n, "attenuation");
+                if (a.size() == 3) l.attenuation = {float(a[0]), float(a[1]), float(a[2])};
+                l.radius = scene::numberField(n, "radius", 0, 100);
+            }
+            if (l.kind == ViewLight::Kind::Spot) {
+                l.beamWidth = scene::numberField(n, "beamWidth", 0, l.beamWidth);
+                l.cutOffAngle = scene::numberField(n, "cutOffAngle", 0, l.cutOffAngle);
+            }
+            view.lights.push_back(l);
+            return true;
+        }
+        if (type == "Viewpoint" || type == "OrthoViewpoint") {
+            ViewPoint v;
+            v.name = scene::stringField(n, "description");
+            if (v.name.empty()) v.name = n.defName;
+            if (v.name.empty()) v.name = "Viewpoint " + std::to_string(view.viewpoints.size() + 1);
+            const auto p = vec(n, "position");
+            if (p.size() == 3) v.position = apply(m, p);
+            const Affine frame = m * Affine::rotate(vec(n, "orientation"));
+            v.direction = turn(frame, {0, 0, -1});
+            v.up = turn(frame, {0, 1, 0});
+            const auto c = vec(n, "centerOfRotation");
+            if (c.size() == 3) v.centerOfRotation = apply(m, c);
+            if (type == "Viewpoint")
+                v.fieldOfView = scene::numberField(n, "fieldOfView", 0, v.fieldOfView);
+            view.viewpoints.push_back(v);
+            return true;
+        }
+        if (type == "Background" || type == "TextureBackground") {
+            if (!view.hasBackground) {
+                rgb("skyColor", view.background);
+                view.hasBackground = true;
+            }
+            return true;
+        }
+        if (type == "NavigationInfo") {
+            if (!view.hasNavigation) {
+                view.navigation.types = scene::stringsField(n, "type");
+                view.navigation.headlight = scene::boolField(n, "headlight");
+                view.navigation.speed = scene::numberField(n, "speed", 0, 1);
+                const auto a = vec(n, "avatarSize");
+                for (std::size_t i = 0; i < 3 && i < a.size(); ++i)
+                    view.navigation.avatarSize[i] = a[i];
+                view.hasNavigation = true;
+            }
+            return true;
+        }
+        return false;
+    }
+
     std::string nameOf(const Node& n) const {
         return n.type + (n.defName.empty() ? "" : " " + n.defName) + " (" + scene_.locationOf(n) +
                ")";
@@ -184,8 +278,7 @@ class Walker {
         const Node* geometry = scene::effectiveNode(scene::nodeField(n, "geometry"));
         if (!geometry) return; // lends its properties to the shapes grouped with it
         if (geometry->type != "FGeometry") {
-            out_.notes.push_back(nameOf(n) + ": standard geometry " + geometry->type +
-                                 " is drawn by the viewer, not meshed here");
+            standardShape(n, *geometry, m);
             return;
         }
         const std::string type = scene::stringField(*geometry, "type");
@@ -275,8 +368,80 @@ class Walker {
             sm.warnings.insert(sm.warnings.end(), w.begin(), w.end());
         }
         colour(appearance, field.box, sm);
+        sm.look = lookOf(appearance, n.type == "FShape");
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
+    }
+
+    // Box, Sphere, IndexedFaceSet ... under a Shape or an FShape.
+    void standardShape(const Node& n, const Node& geometry, const Affine& m) {
+        if (!options_.standardShapes) {
+            out_.notes.push_back(nameOf(n) + ": standard geometry " + geometry.type +
+                                 " is left to the viewer");
+            return;
+        }
+        StandardGeometryResult r = standardGeometryMesh(geometry, options_.segments);
+        if (!r.unsupported.empty()) {
+            out_.notes.push_back(nameOf(n) + ": " + r.unsupported);
+            return;
+        }
+        ShapeMesh sm;
+        sm.shape = &n;
+        sm.name = nameOf(n);
+        sm.functionGeometry = false;
+        sm.mesh = std::move(r.mesh);
+        sm.warnings = std::move(r.warnings);
+        const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
+        sm.look = lookOf(appearance, n.type == "FShape");
+        sm.look.solid = r.solid;
+        if (sm.mesh.colours.empty()) {
+            // FMaterial functions see the shape's own coordinates, its bounds as the box.
+            colour(appearance, boundsOf(sm.mesh), sm);
+        } else if (const Node* material = materialOf(appearance)) {
+            // A Color node replaces the diffuse colour; the material's transparency stays.
+            const float alpha = float(1 - scene::numberField(*material, "transparency"));
+            for (auto& c : sm.mesh.colours)
+                c[3] *= alpha;
+        }
+        place(sm, m);
+        out_.shapes.push_back(std::move(sm));
+    }
+
+    static const Node* materialOf(const Node* appearance) {
+        return appearance ? scene::effectiveNode(scene::nodeField(*appearance, "material"))
+                          : nullptr;
+    }
+
+    static Box3 boundsOf(const Mesh& m) {
+        if (m.positions.empty()) return {};
+        Box3 b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+        for (const Vec3f& p : m.positions)
+            for (std::size_t k = 0; k < 3; ++k) {
+                b.lo[k] = std::min(b.lo[k], double(p[k]));
+                b.hi[k] = std::max(b.hi[k], double(p[k]));
+            }
+        for (std::size_t k = 0; k < 3; ++k) // a flat shape still has a box
+            if (!(b.hi[k] > b.lo[k])) b.lo[k] -= 0.5, b.hi[k] += 0.5;
+        return b;
+    }
+
+    // The constant light terms of the appearance's Material or FMaterial.
+    static SurfaceLook lookOf(const Node* appearance, bool functionShape) {
+        SurfaceLook look;
+        const Node* material = materialOf(appearance);
+        if (!material) {
+            look.lit = functionShape;
+            return look;
+        }
+        auto rgb = [&](const char* field, std::array<float, 3>& out) {
+            const auto v = vec(*material, field);
+            if (v.size() == 3) out = {float(v[0]), float(v[1]), float(v[2])};
+        };
+        rgb("emissiveColor", look.emissive);
+        rgb("specularColor", look.specular);
+        look.shininess = float(scene::numberField(*material, "shininess", 0, 0.2));
+        look.ambientIntensity = float(scene::numberField(*material, "ambientIntensity", 0, 0.2));
+        return look;
     }
 
     // One function for a subtree of an FTransform that combines its children.
@@ -467,12 +632,22 @@ class Walker {
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
         colour(whole.appearance, field.box, sm);
+        sm.look = lookOf(whole.appearance, true);
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
     }
 
     // Moves a mesh from its geometry's coordinates into the scene's.
-    static void place(ShapeMesh& sm, const Affine& m) {
+    void place(ShapeMesh& sm, const Affine& m) const {
+        if (!options_.placeInScene) {
+            sm.placement = {m.m[0][0], m.m[1][0], m.m[2][0], 0, m.m[0][1], m.m[1][1], m.m[2][1], 0,
+                            m.m[0][2], m.m[1][2], m.m[2][2], 0, m.t[0],    m.t[1],    m.t[2],    1};
+            return;
+        }
+        placeMesh(sm, m);
+    }
+
+    static void placeMesh(ShapeMesh& sm, const Affine& m) {
         // Normals by the inverse transpose: the cofactors, with det's sign
         // (the length is normalised away), once per shape.
         const double det = m.determinant();

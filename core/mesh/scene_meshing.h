@@ -1,11 +1,15 @@
 #pragma once
-// Meshes the function shapes of a scene at one moment: every FShape whose
-// FGeometry is implicit or explicit, in its domain box, at the geometry's own
-// t for that moment, placed by the Transform and FTransform nodes above it.
+// Meshes the shapes of a scene at one moment: every FShape's FGeometry
+// (implicit, explicit, parametric) in its domain box at the geometry's own t
+// for that moment, and the standard geometry of Shape and FShape nodes (Box,
+// Sphere, IndexedFaceSet, ...), each coloured by its appearance and placed by
+// the Transform and FTransform nodes above it.
 #include "dual_contouring.h"
 #include "mesh.h"
 #include "scene/scene.h"
+#include "scene_view.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -19,12 +23,38 @@ struct SceneMeshOptions {
     // > 0: every function shape as a cloud of about this many points (its
     // FGeometry's `points` field otherwise; 0 there: a mesh).
     std::size_t points = 0;
+    bool standardShapes = true; // also mesh Box, Sphere, IndexedFaceSet, ... (false: notes only)
+    // true: meshes in scene coordinates; false: in the shape's own, with
+    // ShapeMesh::placement taking them to the scene (a viewer animating
+    // transforms moves the matrix and keeps the mesh).
+    bool placeInScene = true;
+    int segments = 48; // around the axis of standard spheres, cones and cylinders
 };
+
+// How a shape's surface takes light: the constant terms of its Material or
+// FMaterial (the diffuse colour, per vertex, is in Mesh::colours).
+struct SurfaceLook {
+    std::array<float, 3> emissive{0, 0, 0};
+    std::array<float, 3> specular{0, 0, 0};
+    float shininess = 0.2f;
+    float ambientIntensity = 0.2f;
+    // X3D: a Shape without a Material is unlit (its colour, or white, as is).
+    // An FShape without one is lit grey: a formula's first look should show its form.
+    bool lit = true;
+    bool solid = true; // only the front faces are drawn (X3D `solid`)
+};
+
+// Column-major 4x4, as OpenGL and Qt want it.
+using Matrix4 = std::array<double, 16>;
+constexpr Matrix4 kIdentity4{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 struct ShapeMesh {
     const scene::Node* shape = nullptr;
-    std::string name; // "FShape WATERMELON (file:line:col)"
-    Mesh mesh;        // in scene coordinates
+    std::string name;               // "FShape WATERMELON (file:line:col)"
+    Mesh mesh;                      // in scene coordinates, or the shape's own (see placeInScene)
+    Matrix4 placement = kIdentity4; // shape to scene (identity once placed in the scene)
+    SurfaceLook look;
+    bool functionGeometry = true; // FGeometry (false: standard geometry)
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
     std::vector<std::string> warnings;
@@ -34,6 +64,7 @@ struct ShapeMesh {
 struct SceneMeshes {
     std::vector<ShapeMesh> shapes;
     std::vector<std::string> notes; // what was not meshed and why
+    SceneView view;                 // lights, viewpoints, background, navigation
 };
 
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options);

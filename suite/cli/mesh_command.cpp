@@ -230,9 +230,7 @@ int meshCommand(const Args& args) {
         }
         result = cloud.empty() ? triangles : cloud;
         if (meshes.shapes.empty()) {
-            std::cerr
-                << "functionlab mesh: " << file
-                << " has no function shape to mesh (standard geometry is drawn by the viewer)\n";
+            std::cerr << "functionlab mesh: " << file << " has no shape to mesh\n";
             return kExitDiagnostic;
         }
     }

@@ -41,9 +41,13 @@ run(0 mesh ${EXAMPLES}/watermelon.x3d --resolution 24 -o ${OUT_DIR}/melon.glb)
 expect_match("${ERR}" "FShape .*watermelon.x3d:[0-9]+:[0-9]+.*triangles")
 run(0 mesh ${EXAMPLES}/clock.x3d --time 15 -o ${OUT_DIR}/clock.glb)     # parametric surfaces
 expect_match("${ERR}" "FShape CAP .*triangles")
+# Standard geometry is meshed too: a Box is 12 triangles.
 file(WRITE ${OUT_DIR}/boxes.x3dv "#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry Box {} }\n")
-run(1 mesh ${OUT_DIR}/boxes.x3dv -o ${OUT_DIR}/boxes.glb)
-expect_match("${ERR}" "no function shape to mesh")
+run(0 mesh ${OUT_DIR}/boxes.x3dv -o ${OUT_DIR}/boxes.glb)
+expect_match("${ERR}" "Shape .*: 12 triangles")
+file(WRITE ${OUT_DIR}/empty.x3dv "#X3D V3.3 utf8\nPROFILE Immersive\nGroup {}\n")
+run(1 mesh ${OUT_DIR}/empty.x3dv -o ${OUT_DIR}/empty.glb)
+expect_match("${ERR}" "no shape to mesh")
 run(1 mesh ${OUT_DIR}/missing.x3d -o ${OUT_DIR}/m.stl)
 
 # Point clouds: on the surface, through the solid, from a scene; never to STL.

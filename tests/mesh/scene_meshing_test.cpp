@@ -54,21 +54,24 @@ TEST(SceneMeshing, WatermelonIsGreenOutsideAndRedInside) {
 
 TEST(SceneMeshing, BouncingSphereChangesColourWithTime) {
     const SceneMeshes low = meshExample("bouncing_sphere.x3d", 0.0);
-    ASSERT_EQ(low.shapes.size(), 1u);
-    EXPECT_TRUE(analyseTopology(low.shapes[0].mesh).closed()); // seam and poles welded
+    ASSERT_EQ(low.shapes.size(), 2u); // the floor (a standard Box), then the sphere
+    EXPECT_FALSE(low.shapes[0].functionGeometry);
+    EXPECT_EQ(low.shapes[0].mesh.triangleCount(), 12u);
+    ASSERT_TRUE(low.shapes[1].functionGeometry);
+    EXPECT_TRUE(analyseTopology(low.shapes[1].mesh).closed()); // seam and poles welded
     double lowest = 1e9, highest = -1e9;
     const auto zRange = [](const Mesh& m, double& lo, double& hi) {
         lo = 1e9, hi = -1e9;
         for (const auto& p : m.positions)
             lo = std::min(lo, double(p[1])), hi = std::max(hi, double(p[1]));
     };
-    zRange(low.shapes[0].mesh, lowest, highest);
+    zRange(low.shapes[1].mesh, lowest, highest);
     // Half a bounce later it is higher up and redder.
     const SceneMeshes high = meshExample("bouncing_sphere.x3d", 0.5);
     double lowest2 = 0, highest2 = 0;
-    zRange(high.shapes[0].mesh, lowest2, highest2);
+    zRange(high.shapes[1].mesh, lowest2, highest2);
     EXPECT_GT(lowest2, lowest + 0.1);
-    EXPECT_GT(meanChannel(high.shapes[0].mesh, 0), meanChannel(low.shapes[0].mesh, 0) + 0.2);
+    EXPECT_GT(meanChannel(high.shapes[1].mesh, 0), meanChannel(low.shapes[1].mesh, 0) + 0.2);
 }
 
 TEST(SceneMeshing, ClockHandsTurnWithTime) {
@@ -228,4 +231,82 @@ TEST(ScenePoints, TheFileAsksForPointsPerGeometryAndTheCheckerGuardsIt) {
         explained = explained || (d.message.find("points gives the size") != std::string::npos &&
                                   d.pos.line == 3);
     EXPECT_TRUE(explained);
+}
+
+TEST(SceneStandardShapes, StandardGeometryIsMeshedColouredAndPlaced) {
+    const SceneMeshes s = meshText(R"x(
+        Transform { translation 2 0 0 children [
+          Shape { appearance Appearance { material Material { diffuseColor 1 0 0
+                                                               specularColor 0.5 0.5 0.5
+                                                               shininess 0.8 transparency 0.25 } }
+                  geometry Box { size 1 1 1 } } ] }
+        Shape { geometry IndexedFaceSet { coordIndex [0 1 2 -1] solid FALSE
+                  coord Coordinate { point [0 0 0, 1 0 0, 0 1 0] }
+                  color Color { color [0 0 1, 0 1 0, 1 1 1] } } }
+        Shape { geometry Text { string "not yet" } })x");
+    ASSERT_EQ(s.shapes.size(), 2u);
+    const ShapeMesh& box = s.shapes[0];
+    EXPECT_FALSE(box.functionGeometry);
+    ASSERT_EQ(box.mesh.colours.size(), box.mesh.vertexCount());
+    EXPECT_EQ(box.mesh.colours[0], (std::array<float, 4>{1, 0, 0, 0.75f}));
+    EXPECT_FLOAT_EQ(box.look.specular[0], 0.5f);
+    EXPECT_FLOAT_EQ(box.look.shininess, 0.8f);
+    EXPECT_TRUE(box.look.lit && box.look.solid);
+    for (const Vec3f& p : box.mesh.positions)
+        ASSERT_NEAR(p[0], 2, 0.5 + 1e-6); // moved by the Transform
+    const ShapeMesh& triangle = s.shapes[1];
+    EXPECT_FALSE(triangle.look.lit); // X3D: no Material, no lighting
+    EXPECT_FALSE(triangle.look.solid);
+    ASSERT_EQ(triangle.mesh.colours.size(), 3u);
+    EXPECT_EQ(triangle.mesh.colours[0], (std::array<float, 4>{0, 0, 1, 1})); // Color, not Material
+    ASSERT_EQ(s.notes.size(), 1u);
+    EXPECT_NE(s.notes[0].find("Text is not drawn yet"), std::string::npos);
+}
+
+TEST(SceneStandardShapes, MeshesCanStayInTheirOwnCoordinatesWithTheirPlacement) {
+    auto r = fl::scene::readSceneBytes(
+        "#X3D V3.3 utf8\nPROFILE Full\nTransform { translation 1 2 3 scale 2 2 2 children "
+        "Shape { geometry Box { size 1 1 1 } } }",
+        "placed.x3dv");
+    ASSERT_TRUE(r.ok());
+    SceneMeshOptions o;
+    o.placeInScene = false;
+    const SceneMeshes local = meshScene(*r.scene, o);
+    ASSERT_EQ(local.shapes.size(), 1u);
+    const ShapeMesh& box = local.shapes[0];
+    for (const Vec3f& p : box.mesh.positions)
+        ASSERT_NEAR(std::abs(p[0]), 0.5, 1e-6); // unmoved
+    const Matrix4 expected{2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1};
+    for (std::size_t i = 0; i < 16; ++i)
+        EXPECT_NEAR(box.placement[i], expected[i], 1e-12) << i;
+}
+
+TEST(SceneView, LightsViewpointsBackgroundAndNavigationInSceneCoordinates) {
+    const SceneMeshes s = meshText(R"x(
+        Background { skyColor [0.1 0.2 0.3, 1 1 1] }
+        Background { skyColor 1 0 0 }
+        NavigationInfo { type ["WALK" "ANY"] headlight FALSE speed 2 }
+        Transform { translation 0 0 5 rotation 0 1 0 1.5707963 children [
+          Viewpoint { description "Side" position 0 0 10 }
+          PointLight { location 1 0 0 color 1 0 0 intensity 0.5 }
+          DirectionalLight { direction 0 0 -1 on FALSE } ] }
+        DEF TOP Viewpoint { position 0 10 0 orientation 1 0 0 -1.5707963 })x");
+    const SceneView& v = s.view;
+    EXPECT_TRUE(v.hasBackground);
+    EXPECT_EQ(v.background, (std::array<float, 3>{0.1f, 0.2f, 0.3f})); // the first, its zenith
+    EXPECT_TRUE(v.hasNavigation);
+    EXPECT_EQ(v.navigation.types.front(), "WALK");
+    EXPECT_FALSE(v.navigation.headlight);
+    ASSERT_EQ(v.viewpoints.size(), 2u);
+    EXPECT_EQ(v.viewpoints[0].name, "Side");
+    // Turned a quarter about y and moved 5 along z: (0, 0, 10) lands at (10, 0, 5), looking -x.
+    EXPECT_NEAR(v.viewpoints[0].position[0], 10, 1e-6);
+    EXPECT_NEAR(v.viewpoints[0].position[2], 5, 1e-6);
+    EXPECT_NEAR(v.viewpoints[0].direction[0], -1, 1e-6);
+    EXPECT_EQ(v.viewpoints[1].name, "TOP");
+    EXPECT_NEAR(v.viewpoints[1].direction[1], -1, 1e-6); // looking down
+    ASSERT_EQ(v.lights.size(), 1u);                      // the one switched off is not there
+    EXPECT_EQ(v.lights[0].kind, ViewLight::Kind::Point);
+    EXPECT_NEAR(v.lights[0].location[2], 5 - 1, 1e-6);
+    EXPECT_FLOAT_EQ(v.lights[0].intensity, 0.5f);
 }

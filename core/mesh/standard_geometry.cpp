@@ -1,0 +1,314 @@
+#include "standard_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <unordered_map>
+
+namespace fl::mesh {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+Vec3f toFloat(const Vec3& v) {
+    return {float(v[0]), float(v[1]), float(v[2])};
+}
+
+Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
+    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(n > 0) || !std::isfinite(n)) return fallback;
+    return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+struct Builder {
+    Mesh mesh;
+    std::uint32_t vertex(const Vec3& p, const Vec3& n) {
+        mesh.positions.push_back(toFloat(p));
+        mesh.normals.push_back(toFloat(n));
+        return std::uint32_t(mesh.positions.size() - 1);
+    }
+    void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        mesh.triangles.push_back({a, b, c});
+    }
+    void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+        triangle(a, b, c);
+        triangle(a, c, d);
+    }
+    // A flat disc at height y facing up (+y) or down, `segments` around.
+    void disc(double radius, double y, bool up, int segments) {
+        const Vec3 n{0, up ? 1.0 : -1.0, 0};
+        const std::uint32_t centre = vertex({0, y, 0}, n);
+        const std::uint32_t first = std::uint32_t(mesh.positions.size());
+        for (int i = 0; i < segments; ++i) {
+            const double a = 2 * std::numbers::pi * i / segments;
+            vertex({radius * std::sin(a), y, radius * std::cos(a)}, n);
+        }
+        for (int i = 0; i < segments; ++i) {
+            const std::uint32_t p = first + std::uint32_t(i),
+                                q = first + std::uint32_t((i + 1) % segments);
+            // Angles run counter-clockwise seen from +y: (sin a, cos a) turns from +z to +x.
+            if (up)
+                triangle(centre, p, q);
+            else
+                triangle(centre, q, p);
+        }
+    }
+};
+
+} // namespace
+
+Mesh boxMesh(std::array<double, 3> size) {
+    Builder b;
+    const Vec3 h{size[0] / 2, size[1] / 2, size[2] / 2};
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side : {-1, 1}) {
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            Vec3 n{0, 0, 0};
+            n[std::size_t(axis)] = side;
+            std::uint32_t corner[4];
+            static const int uv[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+            for (int c = 0; c < 4; ++c) {
+                Vec3 p{};
+                p[std::size_t(axis)] = side * h[std::size_t(axis)];
+                p[std::size_t(u)] = uv[c][0] * h[std::size_t(u)];
+                p[std::size_t(v)] = uv[c][1] * h[std::size_t(v)];
+                corner[c] = b.vertex(p, n);
+            }
+            // u x v = axis: counter-clockwise from outside on the + side.
+            if (side > 0)
+                b.quad(corner[0], corner[1], corner[2], corner[3]);
+            else
+                b.quad(corner[0], corner[3], corner[2], corner[1]);
+        }
+    return b.mesh;
+}
+
+Mesh sphereMesh(double radius, int segments) {
+    segments = std::max(3, segments);
+    const int rings = std::max(2, segments / 2);
+    Builder b;
+    const std::uint32_t top = b.vertex({0, radius, 0}, {0, 1, 0});
+    for (int r = 1; r < rings; ++r) {
+        const double polar = std::numbers::pi * r / rings;
+        for (int s = 0; s < segments; ++s) {
+            const double a = 2 * std::numbers::pi * s / segments;
+            const Vec3 n{std::sin(polar) * std::sin(a), std::cos(polar),
+                         std::sin(polar) * std::cos(a)};
+            b.vertex({radius * n[0], radius * n[1], radius * n[2]}, n);
+        }
+    }
+    const std::uint32_t bottom = b.vertex({0, -radius, 0}, {0, -1, 0});
+    auto at = [&](int ring, int s) { // ring 1 .. rings-1
+        return std::uint32_t(1 + (ring - 1) * segments + (s % segments));
+    };
+    for (int s = 0; s < segments; ++s) {
+        b.triangle(top, at(1, s), at(1, s + 1));
+        b.triangle(bottom, at(rings - 1, s + 1), at(rings - 1, s));
+        for (int r = 1; r + 1 < rings; ++r)
+            b.quad(at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1));
+    }
+    return b.mesh;
+}
+
+Mesh coneMesh(double bottomRadius, double height, bool side, bool bottom, int segments) {
+    segments = std::max(3, segments);
+    Builder b;
+    const double y0 = -height / 2, y1 = height / 2;
+    if (side) {
+        // One apex vertex per segment, with the normal of the middle of its
+        // face: the apex has no single normal.
+        const std::uint32_t first = std::uint32_t(b.mesh.positions.size());
+        for (int s = 0; s < segments; ++s) {
+            const double a = 2 * std::numbers::pi * s / segments;
+            const Vec3 n =
+                unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)}, {0, 1, 0});
+            b.vertex({bottomRadius * std::sin(a), y0, bottomRadius * std::cos(a)}, n);
+        }
+        for (int s = 0; s < segments; ++s) {
+            const double a = 2 * std::numbers::pi * (s + 0.5) / segments;
+            const Vec3 n =
+                unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)}, {0, 1, 0});
+            const std::uint32_t apex = b.vertex({0, y1, 0}, n);
+            b.triangle(apex, first + std::uint32_t(s), first + std::uint32_t((s + 1) % segments));
+        }
+    }
+    if (bottom) b.disc(bottomRadius, y0, false, segments);
+    return b.mesh;
+}
+
+Mesh cylinderMesh(double radius, double height, bool side, bool top, bool bottom, int segments) {
+    segments = std::max(3, segments);
+    Builder b;
+    const double y0 = -height / 2, y1 = height / 2;
+    if (side) {
+        const std::uint32_t first = std::uint32_t(b.mesh.positions.size());
+        for (int s = 0; s < segments; ++s) {
+            const double a = 2 * std::numbers::pi * s / segments;
+            const Vec3 n{std::sin(a), 0, std::cos(a)};
+            b.vertex({radius * n[0], y0, radius * n[2]}, n);
+            b.vertex({radius * n[0], y1, radius * n[2]}, n);
+        }
+        for (int s = 0; s < segments; ++s) {
+            const std::uint32_t lo0 = first + std::uint32_t(2 * s), hi0 = lo0 + 1;
+            const std::uint32_t lo1 = first + std::uint32_t(2 * ((s + 1) % segments)),
+                                hi1 = lo1 + 1;
+            b.quad(lo0, lo1, hi1, hi0);
+        }
+    }
+    if (top) b.disc(radius, y1, true, segments);
+    if (bottom) b.disc(radius, y0, false, segments);
+    return b.mesh;
+}
+
+FaceSetResult faceSetMesh(const FaceSet& f) {
+    FaceSetResult out;
+    Mesh& m = out.mesh;
+    bool badIndex = false, degenerate = false;
+    // Polygons as runs of coordIndex.
+    struct Polygon {
+        std::size_t first, count; // into coordIndex
+    };
+    std::vector<Polygon> polygons;
+    for (std::size_t i = 0, start = 0; i <= f.coordIndex.size(); ++i) {
+        if (i == f.coordIndex.size() || f.coordIndex[i] < 0) {
+            if (i > start) polygons.push_back({start, i - start});
+            start = i + 1;
+        }
+    }
+    auto point = [&](std::int64_t index) -> const Vec3* {
+        if (index < 0 || std::size_t(index) >= f.points.size()) return nullptr;
+        return &f.points[std::size_t(index)];
+    };
+    // Newell's normal of each polygon (robust for non-planar ones), as
+    // written (before ccw is applied).
+    std::vector<Vec3> faceNormal(polygons.size());
+    std::vector<bool> usable(polygons.size(), true);
+    for (std::size_t p = 0; p < polygons.size(); ++p) {
+        const Polygon& poly = polygons[p];
+        Vec3 n{0, 0, 0};
+        for (std::size_t k = 0; k < poly.count; ++k) {
+            const Vec3* a = point(f.coordIndex[poly.first + k]);
+            const Vec3* c = point(f.coordIndex[poly.first + (k + 1) % poly.count]);
+            if (!a || !c) {
+                usable[p] = false;
+                badIndex = true;
+                break;
+            }
+            n[0] += ((*a)[1] - (*c)[1]) * ((*a)[2] + (*c)[2]);
+            n[1] += ((*a)[2] - (*c)[2]) * ((*a)[0] + (*c)[0]);
+            n[2] += ((*a)[0] - (*c)[0]) * ((*a)[1] + (*c)[1]);
+        }
+        if (usable[p] && poly.count < 3) {
+            usable[p] = false;
+            degenerate = true;
+        }
+        const double sign = f.ccw ? 1.0 : -1.0;
+        faceNormal[p] = unitOr({sign * n[0], sign * n[1], sign * n[2]}, {0, 0, 0});
+    }
+    // Smooth normals: the faces around each point, for the crease test.
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> facesAt;
+    const bool smooth = f.normals.empty() && f.creaseAngle > 0;
+    if (smooth)
+        for (std::size_t p = 0; p < polygons.size(); ++p)
+            if (usable[p])
+                for (std::size_t k = 0; k < polygons[p].count; ++k)
+                    facesAt[f.coordIndex[polygons[p].first + k]].push_back(p);
+    const double cosCrease = std::cos(std::min(f.creaseAngle, std::numbers::pi));
+
+    auto colourAt = [&](std::size_t p, std::size_t corner) -> const std::array<float, 4>* {
+        if (f.colours.empty()) return nullptr;
+        std::int64_t index;
+        if (f.colourPerVertex)
+            index = !f.colourIndex.empty()
+                        ? (corner < f.colourIndex.size() ? f.colourIndex[corner] : -1)
+                        : f.coordIndex[corner];
+        else
+            index = !f.colourIndex.empty() ? (p < f.colourIndex.size() ? f.colourIndex[p] : -1)
+                                           : std::int64_t(p);
+        if (index < 0 || std::size_t(index) >= f.colours.size()) {
+            badIndex = true;
+            return nullptr;
+        }
+        return &f.colours[std::size_t(index)];
+    };
+    auto givenNormal = [&](std::size_t p, std::size_t corner) -> std::optional<Vec3> {
+        if (f.normals.empty()) return std::nullopt;
+        std::int64_t index;
+        if (f.normalPerVertex)
+            index = !f.normalIndex.empty()
+                        ? (corner < f.normalIndex.size() ? f.normalIndex[corner] : -1)
+                        : f.coordIndex[corner];
+        else
+            index = !f.normalIndex.empty() ? (p < f.normalIndex.size() ? f.normalIndex[p] : -1)
+                                           : std::int64_t(p);
+        if (index < 0 || std::size_t(index) >= f.normals.size()) {
+            badIndex = true;
+            return std::nullopt;
+        }
+        const Vec3& n = f.normals[std::size_t(index)];
+        const double sign = f.ccw ? 1.0 : -1.0;
+        return unitOr({sign * n[0], sign * n[1], sign * n[2]}, faceNormal[p]);
+    };
+    const bool anyColour = !f.colours.empty();
+    for (std::size_t p = 0; p < polygons.size(); ++p) {
+        if (!usable[p]) continue;
+        const Polygon& poly = polygons[p];
+        const std::uint32_t base = std::uint32_t(m.positions.size());
+        for (std::size_t k = 0; k < poly.count; ++k) {
+            const std::size_t corner = poly.first + k;
+            const std::int64_t index = f.coordIndex[corner];
+            m.positions.push_back(toFloat(*point(index)));
+            Vec3 n = faceNormal[p];
+            if (auto given = givenNormal(p, corner)) {
+                n = *given;
+            } else if (smooth) {
+                Vec3 sum{0, 0, 0};
+                for (std::size_t q : facesAt[index]) {
+                    const Vec3& fq = faceNormal[q];
+                    const double c = fq[0] * faceNormal[p][0] + fq[1] * faceNormal[p][1] +
+                                     fq[2] * faceNormal[p][2];
+                    if (q == p || c >= cosCrease)
+                        for (std::size_t a = 0; a < 3; ++a)
+                            sum[a] += fq[a];
+                }
+                n = unitOr(sum, faceNormal[p]);
+            }
+            m.normals.push_back(toFloat(n));
+            if (anyColour) {
+                const auto* c = colourAt(p, corner);
+                m.colours.push_back(c ? *c : std::array<float, 4>{0.8f, 0.8f, 0.8f, 1.0f});
+            }
+        }
+        // A fan from the first corner, turned round when the file is clockwise.
+        for (std::size_t k = 1; k + 1 < poly.count; ++k) {
+            const std::uint32_t a = base, b = base + std::uint32_t(k),
+                                c = base + std::uint32_t(k + 1);
+            if (f.ccw)
+                m.triangles.push_back({a, b, c});
+            else
+                m.triangles.push_back({a, c, b});
+        }
+    }
+    if (badIndex)
+        out.warnings.push_back("an index points past the end of its list (coord, color or "
+                               "normal); the polygons that use it are left out or shown grey");
+    if (degenerate)
+        out.warnings.push_back("a polygon has fewer than three vertices and is left out");
+    return out;
+}
+
+Mesh pointSetMesh(const std::vector<std::array<double, 3>>& points,
+                  const std::vector<std::array<float, 4>>& colours) {
+    Mesh m;
+    m.primitive = Primitive::Points;
+    for (const Vec3& p : points) {
+        m.positions.push_back(toFloat(p));
+        m.normals.push_back({0, 0, 0});
+    }
+    if (colours.size() >= points.size())
+        m.colours.assign(colours.begin(), colours.begin() + long(points.size()));
+    return m;
+}
+
+} // namespace fl::mesh
