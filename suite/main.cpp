@@ -29,6 +29,8 @@ commands:
   mesh FILE -o OUT [--time T] [--error E | --resolution N]
   mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT
                             polygonize function shapes; .stl .obj .ply .glb .x3d
+  render FILE -o OUT.png [--time T] [--size WxH] [--viewpoint NAME]
+                            draw one frame of a scene off screen
   bench eval [--json]       evaluator speed: FunctionLab vs hand-written C++ vs muParser
   bench accuracy FILE|--formula "SRC" --box ... [--json] [--plot OUT.svg]
                             what accuracy costs in time: adaptive mesher vs dense marching cubes
@@ -62,6 +64,7 @@ int main(int argc, char** argv) {
         if (cmd == "check") return fl::cli::checkCommand(rest);
         if (cmd == "convert") return fl::cli::convertCommand(rest);
         if (cmd == "mesh") return fl::cli::meshCommand(rest);
+        if (cmd == "render") return fl::cli::renderCommand(rest);
     } catch (const std::exception& e) {
         std::cerr << "functionlab: " << e.what() << "\n";
         return fl::cli::kExitDiagnostic;

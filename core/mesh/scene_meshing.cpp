@@ -369,6 +369,14 @@ class Walker {
         }
         colour(appearance, field.box, sm);
         sm.look = lookOf(appearance, n.type == "FShape");
+        // A parametric surface has two sides and no inside: both are drawn.
+        // (Curves become closed tubes and solids their closed boundary.)
+        if (type == "parametric") {
+            int used = 0;
+            for (formula::Input in : {formula::Input::U, formula::Input::V, formula::Input::W})
+                used += tape->usesInput[std::size_t(in)] ? 1 : 0;
+            sm.look.solid = used != 2;
+        }
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
     }

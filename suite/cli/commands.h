@@ -13,6 +13,7 @@ int benchCommand(const Args& args);
 int checkCommand(const Args& args);
 int convertCommand(const Args& args);
 int meshCommand(const Args& args);
+int renderCommand(const Args& args);
 int benchAccuracyCommand(const Args& args); // `bench accuracy`
 
 } // namespace fl::cli

@@ -1,0 +1,180 @@
+// `functionlab render`: one frame of a scene, drawn off screen into a PNG.
+#include "cli/arguments.h"
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+
+#include "mesh/scene_meshing.h"
+#include "offscreen_render.h"
+#include "scene/scene_reader.h"
+
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QImageWriter>
+#include <QSaveFile>
+#include <QSurfaceFormat>
+
+#include <cstdlib>
+#include <iostream>
+#include <unistd.h>
+
+namespace fl::cli {
+namespace {
+
+const char* kRenderHelp =
+    R"(usage: functionlab render FILE -o OUT.png [--time T] [--size WxH] [--viewpoint NAME]
+                          [--resolution N]
+
+Draws one frame of the scene FILE off screen and writes it as an image
+(.png, or .jpg/.bmp by the extension): function shapes meshed at the moment T,
+standard shapes, the scene's lights, Background and the bound Viewpoint.
+
+options:
+  -o, --output OUT      the image to write
+  --time T              the moment, in scene seconds (default 0)
+  --size WxH            the image size in pixels (default 800x600)
+  --viewpoint NAME      a Viewpoint by description or DEF name (default: the
+                        first; a view of the whole scene when there is none)
+  --resolution N        mesh every function shape at N cells along its box
+                        (default: each FGeometry's resolution)
+
+Drawing needs OpenGL 3.3 and so a display; without one, render runs itself
+under xvfb-run when that is installed (Debian: xvfb), else says so.
+
+exit status: 0 written, 1 the scene could not be read or nothing drawn, 2 usage error
+)";
+
+int usage(const std::string& problem) {
+    std::cerr << "functionlab render: " << problem << "\n\n" << kRenderHelp;
+    return kExitUsage;
+}
+
+bool hasDisplay() {
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+        if (const char* v = std::getenv(name); v && *v) return true;
+    return false;
+}
+
+// Without a display, once: the same command under xvfb-run.
+void runUnderXvfb(const Args& args) {
+    if (std::getenv("FUNCTIONLAB_UNDER_XVFB")) return;
+    ::setenv("FUNCTIONLAB_UNDER_XVFB", "1", 1);
+    std::vector<std::string> all{"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
+    char self[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
+    all.push_back(n > 0 ? std::string(self, std::size_t(n)) : std::string("functionlab"));
+    all.push_back("render");
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : all)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execvp("xvfb-run", argv.data()); // returns only when it could not start
+}
+
+} // namespace
+
+int renderCommand(const Args& args) {
+    std::string file, output, viewpoint;
+    double time = 0, resolution = 0;
+    int width = 800, height = 600;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string* {
+            return i + 1 < args.size() ? &args[++i] : nullptr;
+        };
+        const std::string* v = nullptr;
+        if (a == "--help" || a == "-h") {
+            std::cout << kRenderHelp;
+            return kExitOk;
+        } else if (a == "-o" || a == "--output") {
+            if (!(v = value())) return usage("-o needs a file name");
+            output = *v;
+        } else if (a == "--viewpoint") {
+            if (!(v = value())) return usage("--viewpoint needs a name");
+            viewpoint = *v;
+        } else if (a == "--time" || a == "--resolution") {
+            double d = 0;
+            if (!(v = value()) || !parseNumber(*v, d)) return usage(a + " needs a number");
+            (a == "--time" ? time : resolution) = d;
+        } else if (a == "--size") {
+            if (!(v = value()) || std::sscanf(v->c_str(), "%dx%d", &width, &height) != 2 ||
+                width < 1 || height < 1 || width > 16384 || height > 16384)
+                return usage("--size needs WxH, e.g. 800x600 (at most 16384 each)");
+        } else if (a.starts_with("-")) {
+            return usage("unknown option '" + a + "'");
+        } else if (file.empty()) {
+            file = a;
+        } else {
+            return usage("give one scene FILE");
+        }
+    }
+    if (file.empty()) return usage("give the scene FILE");
+    if (output.empty()) return usage("give the image to write with -o OUT.png");
+    if (resolution < 0) return usage("--resolution must be positive");
+    const QByteArray format =
+        QFileInfo(QString::fromStdString(output)).suffix().toLower().toLatin1();
+    if (!QImageWriter::supportedImageFormats().contains(format))
+        return usage("cannot tell the image format from '" + output + "'; use .png");
+
+    scene::ReadResult r = scene::readSceneFile(file);
+    for (const auto& d : r.diagnostics)
+        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
+    if (!r.ok()) return kExitDiagnostic;
+
+    if (!hasDisplay()) runUnderXvfb(args);
+    if (!hasDisplay()) {
+        std::cerr << "functionlab render: drawing needs a display; install xvfb (apt-get install "
+                     "xvfb) or run: xvfb-run -a functionlab render ...\n";
+        return kExitDiagnostic;
+    }
+    QSurfaceFormat format3d;
+    format3d.setVersion(3, 3);
+    format3d.setProfile(QSurfaceFormat::CoreProfile);
+    format3d.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format3d);
+    int argc = 1;
+    char name[] = "functionlab";
+    char* argv[] = {name, nullptr};
+    QGuiApplication app(argc, argv);
+
+    mesh::SceneMeshOptions so;
+    so.sceneSeconds = time;
+    so.placeInScene = false;
+    so.useFileResolution = resolution <= 0;
+    if (resolution > 0) so.mesh.resolution = resolution;
+    const mesh::SceneMeshes meshes = mesh::meshScene(*r.scene, so);
+    std::size_t triangles = 0, points = 0;
+    for (const auto& s : meshes.shapes) {
+        for (const auto& w : s.warnings)
+            std::cerr << "warning: " << s.name << ": " << w << "\n";
+        if (!s.error.empty()) std::cerr << "error: " << s.name << ": " << s.error << "\n";
+        (s.mesh.isPointCloud() ? points : triangles) +=
+            s.mesh.isPointCloud() ? s.mesh.vertexCount() : s.mesh.triangleCount();
+    }
+    for (const auto& note : meshes.notes)
+        std::cerr << "note: " << note << "\n";
+
+    viewer::OffscreenRequest request;
+    request.size = QSize(width, height);
+    request.viewpoint = QString::fromStdString(viewpoint);
+    QString error;
+    const std::optional<QImage> image = viewer::renderOffscreen(meshes, request, error);
+    if (!image) {
+        std::cerr << "functionlab render: " << error.toStdString() << "\n";
+        return kExitDiagnostic;
+    }
+    QSaveFile out(QString::fromStdString(output));
+    if (!out.open(QIODevice::WriteOnly) || !image->save(&out, format.constData()) ||
+        !out.commit()) {
+        std::cerr << "functionlab render: cannot write " << output
+                  << ": check the folder exists and is writable\n";
+        return kExitDiagnostic;
+    }
+    std::cerr << "wrote " << output << " (" << width << "x" << height << ", "
+              << meshes.shapes.size() << " shapes, " << triangles << " triangles";
+    if (points) std::cerr << ", " << points << " points";
+    std::cerr << ")\n";
+    return kExitOk;
+}
+
+} // namespace fl::cli

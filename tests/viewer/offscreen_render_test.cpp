@@ -1,0 +1,148 @@
+// Real frames, drawn off screen: every example shows something, with the
+// colours its scene fixes; time changes what is drawn; see-through shapes
+// show what is behind them; a bad viewpoint name is explained. Each frame is
+// saved under build/tests/viewer/screenshots/ to be looked at.
+#include "offscreen_render.h"
+
+#include "mesh/scene_meshing.h"
+#include "scene/scene_reader.h"
+
+#include <QDir>
+#include <gtest/gtest.h>
+
+#include <memory>
+
+using namespace fl;
+
+namespace {
+
+struct Frame {
+    QImage image;
+    QString error;
+};
+
+Frame render(const scene::Scene& scene, const std::string& name, double seconds = 0,
+             std::size_t points = 0, const QString& viewpoint = {}) {
+    mesh::SceneMeshOptions o;
+    o.sceneSeconds = seconds;
+    o.placeInScene = false;
+    o.points = points;
+    const mesh::SceneMeshes meshes = mesh::meshScene(scene, o);
+    viewer::OffscreenRequest request;
+    request.size = QSize(320, 240);
+    request.viewpoint = viewpoint;
+    Frame f;
+    if (auto image = viewer::renderOffscreen(meshes, request, f.error)) f.image = *image;
+    if (!f.image.isNull()) {
+        QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
+        f.image.save(QString(FUNCTIONLAB_SCREENSHOT_DIR) + "/" + QString::fromStdString(name) +
+                     ".png");
+    }
+    return f;
+}
+
+std::unique_ptr<scene::Scene> example(const std::string& file) {
+    auto r = scene::readSceneFile(std::string(FUNCTIONLAB_EXAMPLES_DIR) + "/" + file);
+    EXPECT_TRUE(r.ok()) << file;
+    return std::move(r.scene);
+}
+
+std::unique_ptr<scene::Scene> text(const std::string& body) {
+    auto r = scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "test.x3dv");
+    EXPECT_TRUE(r.ok());
+    return std::move(r.scene);
+}
+
+// The share of pixels for which `test` holds.
+template <class Test>
+double share(const QImage& image, Test test) {
+    std::size_t n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            n += test(image.pixelColor(x, y)) ? 1 : 0;
+    return double(n) / double(image.width() * image.height());
+}
+
+double notBackground(const QImage& image) {
+    const QColor corner = image.pixelColor(0, 0);
+    return share(image, [&](const QColor& c) { return c != corner; });
+}
+
+} // namespace
+
+TEST(OffscreenRender, EveryExampleDrawsSomething) {
+    for (const char* file :
+         {"watermelon.x3d", "watermelon.x3dv", "bouncing_sphere.x3d", "clock.x3d", "fan.x3d",
+          "implicit_gallery.x3d", "metamorphosis.x3d", "shark.x3d", "textured_sphere.x3d"}) {
+        auto scene = example(file);
+        ASSERT_TRUE(scene);
+        const Frame f = render(*scene, std::string("example-") + file);
+        ASSERT_FALSE(f.image.isNull()) << file << ": " << f.error.toStdString();
+        EXPECT_EQ(f.image.size(), QSize(320, 240));
+        EXPECT_GT(notBackground(f.image), 0.05) << file << " looks blank";
+    }
+}
+
+TEST(OffscreenRender, TheWatermelonIsGreenOutsideAndRedInside) {
+    auto scene = example("watermelon.x3d");
+    const Frame f = render(*scene, "watermelon");
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    EXPECT_GT(share(f.image, [](const QColor& c) { return c.redF() > 0.5 && c.greenF() < 0.35; }),
+              0.03);
+    EXPECT_GT(
+        share(f.image,
+              [](const QColor& c) { return c.greenF() > c.redF() + 0.15 && c.greenF() > 0.2; }),
+        0.01);
+    // As points, the red flesh fills the inside.
+    const Frame points = render(*scene, "watermelon-points", 0, 40000);
+    ASSERT_FALSE(points.image.isNull()) << points.error.toStdString();
+    EXPECT_GT(
+        share(points.image, [](const QColor& c) { return c.redF() > 0.5 && c.greenF() < 0.35; }),
+        0.02);
+}
+
+TEST(OffscreenRender, TheBouncingSphereMovesBetweenTwoMoments) {
+    auto scene = example("bouncing_sphere.x3d");
+    const Frame a = render(*scene, "bouncing-sphere-0s", 0.0);
+    const Frame b = render(*scene, "bouncing-sphere-0.5s", 0.5);
+    ASSERT_FALSE(a.image.isNull() || b.image.isNull()) << a.error.toStdString();
+    EXPECT_NE(a.image, b.image);
+    EXPECT_GT(share(a.image, [](const QColor& c) { return c.greenF() > 0.5 && c.redF() < 0.3; }),
+              0.02);
+}
+
+TEST(OffscreenRender, TheClockFaceIsCreamAtTenOClock) {
+    auto scene = example("clock.x3d");
+    const Frame f = render(*scene, "clock-10h", 10 * 3600);
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    EXPECT_GT(share(f.image,
+                    [](const QColor& c) {
+                        return c.redF() > 0.75 && c.greenF() > 0.7 && c.blueF() > 0.5;
+                    }),
+              0.2); // the face is drawn from the front, though its normal points away
+}
+
+TEST(OffscreenRender, SeeThroughShapesShowWhatIsBehindThem) {
+    // A red ball behind a blue box that lets 60% through, on white.
+    auto scene = text(R"x(
+        Background { skyColor 1 1 1 }
+        Viewpoint { position 0 0 6 }
+        Transform { translation 0 0 -2 children Shape {
+            appearance Appearance { material Material { diffuseColor 1 0 0 emissiveColor 1 0 0 } }
+            geometry Sphere { radius 1 } } }
+        Shape { appearance Appearance { material Material { diffuseColor 0 0 1
+                                                             emissiveColor 0 0 1 transparency 0.6 } }
+                geometry Box { size 3 3 0.2 } })x");
+    const Frame f = render(*scene, "transparency");
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    const QColor centre = f.image.pixelColor(160, 120);
+    EXPECT_GT(centre.redF(), 0.4) << "the ball does not show through";
+    EXPECT_GT(centre.blueF(), 0.3) << "the box is not there";
+}
+
+TEST(OffscreenRender, AnUnknownViewpointIsExplained) {
+    auto scene = example("bouncing_sphere.x3d");
+    const Frame f = render(*scene, "unused", 0, 0, "Nowhere");
+    EXPECT_TRUE(f.image.isNull());
+    EXPECT_TRUE(f.error.contains("Nowhere") && f.error.contains("Front")) << f.error.toStdString();
+}

@@ -1,0 +1,85 @@
+#include "mesh_geometry.h"
+
+#include <Qt3DCore/QAttribute>
+#include <Qt3DCore/QBuffer>
+#include <Qt3DCore/QGeometry>
+
+#include <cstring>
+
+namespace fl::viewer {
+namespace {
+
+constexpr int kFloatsPerVertex = 10; // position 3, normal 3, colour 4
+
+Qt3DCore::QAttribute* attribute(Qt3DCore::QGeometry* g, Qt3DCore::QBuffer* buffer,
+                                const QString& name, uint size, uint offset, uint count) {
+    auto* a = new Qt3DCore::QAttribute(g);
+    a->setName(name);
+    a->setAttributeType(Qt3DCore::QAttribute::VertexAttribute);
+    a->setVertexBaseType(Qt3DCore::QAttribute::Float);
+    a->setVertexSize(size);
+    a->setBuffer(buffer);
+    a->setByteStride(kFloatsPerVertex * sizeof(float));
+    a->setByteOffset(offset * sizeof(float));
+    a->setCount(count);
+    g->addAttribute(a);
+    return a;
+}
+
+} // namespace
+
+bool hasTransparency(const mesh::Mesh& mesh, std::array<float, 4> colour) {
+    if (mesh.colours.size() != mesh.positions.size()) return colour[3] < 1;
+    for (const auto& c : mesh.colours)
+        if (c[3] < 1) return true;
+    return false;
+}
+
+Qt3DRender::QGeometryRenderer*
+makeGeometryRenderer(const mesh::Mesh& mesh, std::array<float, 4> colour, Qt3DCore::QNode* parent) {
+    auto* renderer = new Qt3DRender::QGeometryRenderer(parent);
+    auto* geometry = new Qt3DCore::QGeometry(renderer);
+    const bool colours = mesh.colours.size() == mesh.positions.size();
+    const uint n = uint(mesh.positions.size());
+    QByteArray vertices(qsizetype(n) * kFloatsPerVertex * qsizetype(sizeof(float)),
+                        Qt::Uninitialized);
+    float* v = reinterpret_cast<float*>(vertices.data());
+    for (uint i = 0; i < n; ++i) {
+        std::memcpy(v, mesh.positions[i].data(), 3 * sizeof(float));
+        if (i < mesh.normals.size())
+            std::memcpy(v + 3, mesh.normals[i].data(), 3 * sizeof(float));
+        else
+            v[3] = v[4] = v[5] = 0;
+        std::memcpy(v + 6, colours ? mesh.colours[i].data() : colour.data(), 4 * sizeof(float));
+        v += kFloatsPerVertex;
+    }
+    auto* vertexBuffer = new Qt3DCore::QBuffer(geometry);
+    vertexBuffer->setData(vertices);
+    auto* position = attribute(geometry, vertexBuffer,
+                               Qt3DCore::QAttribute::defaultPositionAttributeName(), 3, 0, n);
+    attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultNormalAttributeName(), 3, 3, n);
+    attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultColorAttributeName(), 4, 6, n);
+    geometry->setBoundingVolumePositionAttribute(position);
+    if (mesh.isPointCloud()) {
+        renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Points);
+        renderer->setVertexCount(int(n));
+    } else {
+        QByteArray indices(qsizetype(mesh.triangles.size()) * 3 * qsizetype(sizeof(quint32)),
+                           Qt::Uninitialized);
+        std::memcpy(indices.data(), mesh.triangles.data(), std::size_t(indices.size()));
+        auto* indexBuffer = new Qt3DCore::QBuffer(geometry);
+        indexBuffer->setData(indices);
+        auto* index = new Qt3DCore::QAttribute(geometry);
+        index->setAttributeType(Qt3DCore::QAttribute::IndexAttribute);
+        index->setVertexBaseType(Qt3DCore::QAttribute::UnsignedInt);
+        index->setBuffer(indexBuffer);
+        index->setCount(uint(mesh.triangles.size() * 3));
+        geometry->addAttribute(index);
+        renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Triangles);
+        renderer->setVertexCount(int(mesh.triangles.size() * 3));
+    }
+    renderer->setGeometry(geometry);
+    return renderer;
+}
+
+} // namespace fl::viewer

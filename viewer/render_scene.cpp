@@ -1,0 +1,120 @@
+#include "render_scene.h"
+
+#include "mesh_geometry.h"
+#include "surface_material.h"
+
+#include <QMatrix4x4>
+#include <Qt3DCore/QTransform>
+
+#include <cmath>
+
+namespace fl::viewer {
+namespace {
+
+constexpr int kMaxLights = 8; // as in shaders/surface.frag
+
+QMatrix4x4 toMatrix(const mesh::Matrix4& m) {
+    // Column-major in, QMatrix4x4's constructor wants rows.
+    return QMatrix4x4(float(m[0]), float(m[4]), float(m[8]), float(m[12]), float(m[1]), float(m[5]),
+                      float(m[9]), float(m[13]), float(m[2]), float(m[6]), float(m[10]),
+                      float(m[14]), float(m[3]), float(m[7]), float(m[11]), float(m[15]));
+}
+
+} // namespace
+
+void Bounds::add(const QVector3D& p) {
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+    }
+}
+
+RenderScene::RenderScene(Qt3DCore::QEntity* root) : root_(root), shader_(makeSurfaceShader(root)) {
+    setLights({});
+    setHeadlight(true);
+    setClipPlane(std::nullopt);
+}
+
+Qt3DRender::QParameter* RenderScene::parameter(const char* name, const QVariant& value) {
+    const QString key = QString::fromLatin1(name);
+    for (auto* p : frame_)
+        if (p->name() == key) {
+            p->setValue(value);
+            return p;
+        }
+    auto* p = new Qt3DRender::QParameter(key, value, root_);
+    frame_.push_back(p);
+    return p;
+}
+
+void RenderScene::setMeshes(const mesh::SceneMeshes& meshes) {
+    for (auto* e : entities_)
+        delete e;
+    entities_.clear();
+    bounds_ = {};
+    for (const mesh::ShapeMesh& shape : meshes.shapes) {
+        if (shape.mesh.empty() || !shape.error.empty()) continue;
+        auto* entity = new Qt3DCore::QEntity(root_);
+        entity->setObjectName(QString::fromStdString(shape.name));
+        // No Material: X3D draws white unlit; an FShape without one, lit grey.
+        const std::array<float, 4> colour = shape.look.lit
+                                                ? std::array<float, 4>{0.8f, 0.8f, 0.8f, 1}
+                                                : std::array<float, 4>{1, 1, 1, 1};
+        entity->addComponent(makeGeometryRenderer(shape.mesh, colour, entity));
+        SurfaceOptions options;
+        options.transparent = hasTransparency(shape.mesh, colour);
+        options.points = shape.mesh.isPointCloud();
+        entity->addComponent(new SurfaceMaterial(shape.look, options, shader_, entity));
+        auto* transform = new Qt3DCore::QTransform(entity);
+        const QMatrix4x4 placement = toMatrix(shape.placement);
+        transform->setMatrix(placement);
+        entity->addComponent(transform);
+        for (const mesh::Vec3f& p : shape.mesh.positions)
+            bounds_.add(placement.map(QVector3D(p[0], p[1], p[2])));
+        entities_.push_back(entity);
+    }
+    setLights(meshes.view.lights);
+    setHeadlight(!meshes.view.hasNavigation || meshes.view.navigation.headlight);
+}
+
+void RenderScene::setLights(const std::vector<mesh::ViewLight>& lights) {
+    QVariantList position, colour, attenuation, spot;
+    int count = 0;
+    for (const mesh::ViewLight& l : lights) {
+        if (count == kMaxLights) break;
+        ++count;
+        const bool directional = l.kind == mesh::ViewLight::Kind::Directional;
+        const auto& p = directional ? l.direction : l.location;
+        position << QVector4D(float(p[0]), float(p[1]), float(p[2]), directional ? 0.0f : 1.0f);
+        colour << QVector4D(l.colour[0] * l.intensity, l.colour[1] * l.intensity,
+                            l.colour[2] * l.intensity, l.ambientIntensity);
+        attenuation << QVector4D(l.attenuation[0], l.attenuation[1], l.attenuation[2],
+                                 float(l.radius));
+        const bool isSpot = l.kind == mesh::ViewLight::Kind::Spot;
+        spot << QVector4D(float(l.direction[0]), float(l.direction[1]), float(l.direction[2]),
+                          isSpot ? float(std::cos(l.cutOffAngle)) : -2.0f);
+    }
+    // Arrays are always full length: unused entries are never read.
+    while (position.size() < kMaxLights) {
+        position << QVector4D();
+        colour << QVector4D();
+        attenuation << QVector4D();
+        spot << QVector4D(0, 0, -1, -2);
+    }
+    parameter("lightCount", count);
+    parameter("lightPosition[0]", position);
+    parameter("lightColour[0]", colour);
+    parameter("lightAttenuation[0]", attenuation);
+    parameter("lightSpot[0]", spot);
+}
+
+void RenderScene::setHeadlight(bool on) {
+    parameter("headlight", on ? 1 : 0);
+}
+
+void RenderScene::setClipPlane(std::optional<QVector4D> plane) {
+    parameter("clipOn", plane ? 1 : 0);
+    parameter("clipPlane", plane.value_or(QVector4D(0, 0, 0, 1)));
+}
+
+} // namespace fl::viewer

@@ -1,0 +1,53 @@
+#pragma once
+// The Qt3D entities of a meshed scene: one entity per shape (its mesh, its
+// placement as a transform, its material), and the scene-wide shader inputs
+// (lights, headlight, clip plane) as parameters for the frame graph.
+#include "mesh/scene_meshing.h"
+
+#include <QVector3D>
+#include <QVector4D>
+#include <Qt3DCore/QEntity>
+#include <Qt3DRender/QParameter>
+#include <Qt3DRender/QShaderProgram>
+
+#include <vector>
+
+namespace fl::viewer {
+
+struct Bounds {
+    QVector3D lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+    bool empty() const { return !(lo.x() <= hi.x()); }
+    QVector3D centre() const { return (lo + hi) / 2; }
+    float radius() const { return empty() ? 1.0f : (hi - lo).length() / 2; }
+    void add(const QVector3D& p);
+};
+
+class RenderScene {
+  public:
+    // Entities are made under `root`, which the caller owns (or an aspect engine).
+    explicit RenderScene(Qt3DCore::QEntity* root);
+
+    // Replaces every shape with the meshes' (kept in their own coordinates
+    // with their placement, or already placed in the scene: both work).
+    void setMeshes(const mesh::SceneMeshes& meshes);
+    const Bounds& bounds() const { return bounds_; }
+    std::size_t shapeCount() const { return entities_.size(); }
+
+    // Parameters every pass reads: attach them to the frame graph's technique filter.
+    const std::vector<Qt3DRender::QParameter*>& frameParameters() const { return frame_; }
+    void setHeadlight(bool on);
+    // Points where a·x + b·y + c·z + d < 0 are cut away; nullopt: no cut.
+    void setClipPlane(std::optional<QVector4D> plane);
+
+  private:
+    void setLights(const std::vector<mesh::ViewLight>& lights);
+    Qt3DRender::QParameter* parameter(const char* name, const QVariant& value);
+
+    Qt3DCore::QEntity* root_;
+    Qt3DRender::QShaderProgram* shader_;
+    std::vector<Qt3DCore::QEntity*> entities_;
+    std::vector<Qt3DRender::QParameter*> frame_;
+    Bounds bounds_;
+};
+
+} // namespace fl::viewer
