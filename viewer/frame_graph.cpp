@@ -71,19 +71,15 @@ FrameGraph buildFrameGraph(QObject* surface, QSize offscreenSize, QColor backgro
     for (auto* p : parameters)
         techniques->addParameter(p);
 
-    auto* clear = new Qt3DRender::QClearBuffers(techniques);
+    auto* clear = fg.clear = new Qt3DRender::QClearBuffers(techniques);
     clear->setBuffers(Qt3DRender::QClearBuffers::ColorDepthBuffer);
     clear->setClearColor(background);
     new Qt3DRender::QNoDraw(clear);
 
     passFilter(kOpaquePass, techniques);
     // See-through shapes last, farthest first, so what is behind shows through.
-    Qt3DRender::QFrameGraphNode* last = techniques;
-    if (offscreen) {
-        fg.capture = new Qt3DRender::QRenderCapture(techniques);
-        last = fg.capture;
-    }
-    auto* sort = new Qt3DRender::QSortPolicy(last);
+    fg.capture = new Qt3DRender::QRenderCapture(techniques);
+    auto* sort = new Qt3DRender::QSortPolicy(fg.capture);
     sort->setSortTypes(
         QList<Qt3DRender::QSortPolicy::SortType>{Qt3DRender::QSortPolicy::BackToFront});
     passFilter(kTransparentPass, sort);

@@ -8,6 +8,7 @@
 #include <QColor>
 #include <QSize>
 #include <Qt3DRender/QCamera>
+#include <Qt3DRender/QClearBuffers>
 #include <Qt3DRender/QFrameGraphNode>
 #include <Qt3DRender/QParameter>
 #include <Qt3DRender/QRenderCapture>
@@ -21,8 +22,9 @@ namespace fl::viewer {
 
 struct FrameGraph {
     Qt3DRender::QFrameGraphNode* root = nullptr;
-    Qt3DRender::QRenderCapture* capture = nullptr; // off screen only
+    Qt3DRender::QRenderCapture* capture = nullptr; // a frame as an image, on request
     Qt3DRender::QCamera* camera = nullptr;
+    Qt3DRender::QClearBuffers* clear = nullptr; // its colour is the background
 };
 
 // `surface`: the window, or an offscreen surface (then `offscreenSize`
