@@ -52,7 +52,8 @@ CameraPose pan(const CameraPose& pose, float dx, float dy, QSize viewport) {
 CameraPose zoom(const CameraPose& pose, float steps) {
     const QVector3D toCentre = pose.viewCenter - pose.position;
     const float distance = toCentre.length();
-    const float next = std::max(distance * std::pow(0.85f, steps), 1e-6f * std::max(distance, 1.0f));
+    const float next =
+        std::max(distance * std::pow(0.85f, steps), 1e-6f * std::max(distance, 1.0f));
     CameraPose out = pose;
     out.position = pose.viewCenter - toCentre.normalized() * next;
     return out;
@@ -81,9 +82,10 @@ CameraPose look(const CameraPose& pose, float yaw, float pitch) {
     const float limit = kPi / 2 - 0.02f;
     pitch = std::clamp(current + pitch, -limit, limit) - current;
     const QVector3D right = QVector3D::crossProduct(forward, up).normalized();
-    forward = QQuaternion::fromAxisAndAngle(up, -yaw * 180 / kPi)
-                  .rotatedVector(QQuaternion::fromAxisAndAngle(right, pitch * 180 / kPi)
-                                     .rotatedVector(forward));
+    forward =
+        QQuaternion::fromAxisAndAngle(up, -yaw * 180 / kPi)
+            .rotatedVector(
+                QQuaternion::fromAxisAndAngle(right, pitch * 180 / kPi).rotatedVector(forward));
     CameraPose out = pose;
     out.viewCenter = pose.position + forward * distance;
     return out;

@@ -69,9 +69,34 @@ std::string MeshCache::keyOf(const ImplicitField& f, double resolution) {
     return key;
 }
 
+std::string MeshCache::keyOf(const ParametricField& f, const ParametricOptions& o,
+                             std::size_t points) {
+    std::string key = "parametric";
+    appendTape(key, f.tape);
+    append(key, f.ranges);
+    append(key, f.box);
+    append(key, o.resolution);
+    append(key, o.adaptive);
+    append(key, o.tolerance);
+    append(key, o.tubeRadius);
+    append(key, o.tubeSides);
+    append(key, points);
+    const double t = f.tape.usesInput[std::size_t(formula::Input::T)] ? f.t : 0.0;
+    append(key, t);
+    for (const auto& [name, v] : f.parameters) {
+        key += name;
+        append(key, v);
+    }
+    return key;
+}
+
 std::shared_ptr<const MeshResult> MeshCache::get(const ImplicitField& field, double resolution,
                                                  const std::function<MeshResult()>& make) {
-    const std::string key = keyOf(field, resolution);
+    return get(keyOf(field, resolution), make);
+}
+
+std::shared_ptr<const MeshResult> MeshCache::get(const std::string& key,
+                                                 const std::function<MeshResult()>& make) {
     std::shared_ptr<std::mutex> gate;
     {
         std::lock_guard lock(mutex_);

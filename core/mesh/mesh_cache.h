@@ -7,6 +7,7 @@
 // byte budget is exceeded. Thread-safe; a mesh being made is made once even if
 // two threads ask for it together.
 #include "dual_contouring.h"
+#include "parametric.h"
 
 #include <cstddef>
 #include <functional>
@@ -25,6 +26,9 @@ class MeshCache {
     // The cached mesh, or `make()`'s result (stored when it succeeded).
     std::shared_ptr<const MeshResult> get(const ImplicitField& field, double resolution,
                                           const std::function<MeshResult()>& make);
+    // The same for any key (keyOf below).
+    std::shared_ptr<const MeshResult> get(const std::string& key,
+                                          const std::function<MeshResult()>& make);
     // Convenience: meshImplicit with `options` at `resolution`.
     std::shared_ptr<const MeshResult> mesh(const ImplicitField& field, double resolution,
                                            MeshOptions options = {});
@@ -37,6 +41,9 @@ class MeshCache {
 
     // The key's text: exposed for tests.
     static std::string keyOf(const ImplicitField& field, double resolution);
+    // A parametric object's (`points` > 0: as a cloud of that many points).
+    static std::string keyOf(const ParametricField& field, const ParametricOptions& options,
+                             std::size_t points = 0);
 
   private:
     struct Entry {

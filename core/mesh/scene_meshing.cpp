@@ -338,7 +338,9 @@ class Walker {
                 po.tolerance = options_.targetError * field.box.diagonal();
                 po.resolution = std::max(po.resolution, 64.0); // room to refine into
             }
-            r = points > 0 ? pointsOverParameters(pf, pc) : meshParametric(pf, po);
+            r = cached(MeshCache::keyOf(pf, po, points), [&] {
+                return points > 0 ? pointsOverParameters(pf, pc) : meshParametric(pf, po);
+            });
             if (options_.targetError > 0 && r.ok()) {
                 sm.measuredError = r.stats.chordError / field.box.diagonal();
                 if (r.stats.chordError > po.tolerance)
@@ -356,7 +358,8 @@ class Walker {
         } else {
             if (options_.useFileResolution)
                 o.resolution = scene::numberField(*geometry, "resolution", 0, 32);
-            r = meshImplicit(field, o);
+            r = cached(MeshCache::keyOf(field, o.resolution),
+                       [&] { return meshImplicit(field, o); });
         }
         sm.stats = r.stats;
         sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
@@ -379,6 +382,13 @@ class Walker {
         }
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
+    }
+
+    // A mesh from the cache when there is one (a copy: colours and placement
+    // are applied to it afterwards), else made now.
+    MeshResult cached(const std::string& key, const std::function<MeshResult()>& make) const {
+        if (!options_.cache) return make();
+        return *options_.cache->get(key, make);
     }
 
     // Box, Sphere, IndexedFaceSet ... under a Shape or an FShape.
@@ -633,7 +643,8 @@ class Walker {
             sm.measuredError = e.error.max;
         } else {
             if (options_.useFileResolution) o.resolution = whole.resolution;
-            r = meshImplicit(field, o);
+            r = cached(MeshCache::keyOf(field, o.resolution),
+                       [&] { return meshImplicit(field, o); });
         }
         sm.stats = r.stats;
         sm.warnings = r.warnings;

@@ -6,6 +6,7 @@
 // the Transform and FTransform nodes above it.
 #include "dual_contouring.h"
 #include "mesh.h"
+#include "mesh_cache.h"
 #include "scene/scene.h"
 #include "scene_view.h"
 
@@ -29,6 +30,9 @@ struct SceneMeshOptions {
     // transforms moves the matrix and keeps the mesh).
     bool placeInScene = true;
     int segments = 48; // around the axis of standard spheres, cones and cylinders
+    // Meshes reused across calls (a viewer playing time asks again and again):
+    // shapes whose geometry does not read t are meshed once. Optional.
+    MeshCache* cache = nullptr;
 };
 
 // How a shape's surface takes light: the constant terms of its Material or

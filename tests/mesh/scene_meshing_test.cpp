@@ -310,3 +310,45 @@ TEST(SceneView, LightsViewpointsBackgroundAndNavigationInSceneCoordinates) {
     EXPECT_NEAR(v.lights[0].location[2], 5 - 1, 1e-6);
     EXPECT_FLOAT_EQ(v.lights[0].intensity, 0.5f);
 }
+
+TEST(SceneMeshCache, PlayingTheClockMeshesItOnceAndTheBouncingSphereEachMoment) {
+    for (const char* file : {"clock.x3d", "bouncing_sphere.x3d"}) {
+        auto r = fl::scene::readSceneFile(std::string(FUNCTIONLAB_EXAMPLES_DIR) + "/" + file);
+        ASSERT_TRUE(r.ok());
+        MeshCache cache;
+        SceneMeshOptions o;
+        o.cache = &cache;
+        o.sceneSeconds = 10;
+        const SceneMeshes first = meshScene(*r.scene, o);
+        const std::size_t made = cache.misses();
+        EXPECT_GT(made, 0u);
+        for (double s : {10.25, 10.5, 11.0}) {
+            o.sceneSeconds = s;
+            const SceneMeshes later = meshScene(*r.scene, o);
+            ASSERT_EQ(later.shapes.size(), first.shapes.size());
+        }
+        if (std::string(file) == "clock.x3d") {
+            EXPECT_EQ(cache.misses(), made)
+                << "the clock's geometry never changes: only its hands turn";
+        } else {
+            EXPECT_EQ(cache.misses(), made + 3)
+                << "the sphere's geometry reads t: one mesh per moment";
+        }
+    }
+}
+
+TEST(SceneMeshCache, CachedMeshesStillTurnWithTheirTransforms) {
+    auto r = fl::scene::readSceneFile(std::string(FUNCTIONLAB_EXAMPLES_DIR) + "/clock.x3d");
+    ASSERT_TRUE(r.ok());
+    MeshCache cache;
+    SceneMeshOptions o;
+    o.cache = &cache;
+    o.sceneSeconds = 0;
+    const SceneMeshes midnight = meshScene(*r.scene, o);
+    o.sceneSeconds = 15; // the second hand has turned a quarter
+    const SceneMeshes later = meshScene(*r.scene, o);
+    bool moved = false;
+    for (std::size_t i = 0; i < midnight.shapes.size(); ++i)
+        moved = moved || midnight.shapes[i].mesh.positions != later.shapes[i].mesh.positions;
+    EXPECT_TRUE(moved);
+}
