@@ -248,7 +248,12 @@ class Walker {
             scene::numberField(n, "startTime"), scene::numberField(n, "stopTime"),
             scene::numberField(n, "cycleInterval", 0, 1), scene::boolField(n, "loop"));
         const auto span = vec(n, "timeSpan");
-        const std::int64_t now = animation::secondsToNanoseconds(options_.sceneSeconds);
+        const std::int64_t seconds = animation::secondsToNanoseconds(options_.sceneSeconds);
+        const animation::Instant instant =
+            options_.instant.value_or(animation::Instant{seconds, seconds, 0});
+        const std::int64_t now = instant.nanosecondsOn(
+            animation::parseTimeBase(scene::stringField(n, "timeBase"))
+                .value_or(animation::TimeBase::Scene));
         return animation::functionTime(w, span.size() > 0 ? span[0] : 0,
                                        span.size() > 1 ? span[1] : 1, now);
     }

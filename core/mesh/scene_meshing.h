@@ -7,10 +7,12 @@
 #include "dual_contouring.h"
 #include "mesh.h"
 #include "mesh_cache.h"
+#include "animation/clock.h"
 #include "scene/scene.h"
 #include "scene_view.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,9 @@ struct SceneMeshOptions {
     bool useFileResolution = true; // each FGeometry's `resolution`; false: mesh.resolution
     double targetError = 0;        // > 0: mesh each shape to this error instead
     double sceneSeconds = 0; // the moment, in scene time (wall clocks: the scene started at 0 UTC)
+    // The moment on every clock (a running viewer's timeline): overrides
+    // sceneSeconds, so `timeBase "local"` nodes (the clock) show the real time.
+    std::optional<animation::Instant> instant;
     // > 0: every function shape as a cloud of about this many points (its
     // FGeometry's `points` field otherwise; 0 there: a mesh).
     std::size_t points = 0;

@@ -352,3 +352,23 @@ TEST(SceneMeshCache, CachedMeshesStillTurnWithTheirTransforms) {
         moved = moved || midnight.shapes[i].mesh.positions != later.shapes[i].mesh.positions;
     EXPECT_TRUE(moved);
 }
+
+TEST(SceneMeshing, WallClockNodesReadTheInstantsWallTime) {
+    // The clock's hands use timeBase "local": three hours into the day they
+    // stand elsewhere than at scene time 0, whatever the scene time says.
+    auto r = fl::scene::readSceneFile(std::string(FUNCTIONLAB_EXAMPLES_DIR) + "/clock.x3d");
+    ASSERT_TRUE(r.ok());
+    SceneMeshOptions o;
+    const SceneMeshes start = meshScene(*r.scene, o);
+    o.instant = fl::animation::Instant{0, 3 * 3600 * 1'000'000'000LL, 0};
+    const SceneMeshes threeOClock = meshScene(*r.scene, o);
+    o.instant = fl::animation::Instant{0, 0, 3 * 3600}; // midnight UTC is 3 o'clock here
+    const SceneMeshes offset = meshScene(*r.scene, o);
+    ASSERT_EQ(start.shapes.size(), threeOClock.shapes.size());
+    bool moved = false;
+    for (std::size_t i = 0; i < start.shapes.size(); ++i) {
+        moved = moved || start.shapes[i].mesh.positions != threeOClock.shapes[i].mesh.positions;
+        EXPECT_EQ(threeOClock.shapes[i].mesh.positions, offset.shapes[i].mesh.positions);
+    }
+    EXPECT_TRUE(moved);
+}
