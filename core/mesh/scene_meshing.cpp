@@ -251,9 +251,9 @@ class Walker {
         const std::int64_t seconds = animation::secondsToNanoseconds(options_.sceneSeconds);
         const animation::Instant instant =
             options_.instant.value_or(animation::Instant{seconds, seconds, 0});
-        const std::int64_t now = instant.nanosecondsOn(
-            animation::parseTimeBase(scene::stringField(n, "timeBase"))
-                .value_or(animation::TimeBase::Scene));
+        const std::int64_t now =
+            instant.nanosecondsOn(animation::parseTimeBase(scene::stringField(n, "timeBase"))
+                                      .value_or(animation::TimeBase::Scene));
         return animation::functionTime(w, span.size() > 0 ? span[0] : 0,
                                        span.size() > 1 ? span[1] : 1, now);
     }
@@ -300,6 +300,7 @@ class Walker {
         field.tape = *tape;
         field.box = domainOf(*geometry);
         field.t = timeOf(*geometry);
+        field.parameters = parametersFor(*tape);
         // A displacement texture: added to f here, or moves a parametric
         // surface along its normals once meshed.
         const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
@@ -327,6 +328,7 @@ class Walker {
             ParametricField pf;
             pf.tape = *tape;
             pf.t = field.t;
+            pf.parameters = field.parameters;
             pf.box = field.box;
             const char* ranges[3] = {"uRange", "vRange", "wRange"};
             for (std::size_t k = 0; k < 3; ++k) {
@@ -387,6 +389,16 @@ class Walker {
         }
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
+    }
+
+    // The parameter values asked for that this definition has (only those,
+    // so the cache key does not change with unrelated sliders).
+    std::vector<std::pair<std::string, double>> parametersFor(const formula::Tape& tape) const {
+        std::vector<std::pair<std::string, double>> out;
+        for (const auto& [name, value] : options_.parameters)
+            for (const formula::ParameterInfo& p : tape.params)
+                if (p.name == name) out.emplace_back(name, value);
+        return out;
     }
 
     // A mesh from the cache when there is one (a copy: colours and placement
@@ -743,6 +755,17 @@ SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options
     Walker walker(scene, options, out);
     for (const Node* root : scene.roots)
         walker.walk(root, {});
+    return out;
+}
+
+std::vector<formula::ParameterInfo> sceneParameters(const scene::Scene& scene) {
+    std::vector<formula::ParameterInfo> out;
+    for (const scene::Scene* shown : scene::scenesShownBy(scene))
+        for (const scene::CompiledDefinition& d : shown->definitions)
+            for (const formula::ParameterInfo& p : d.tape.params)
+                if (std::none_of(out.begin(), out.end(),
+                                 [&](const formula::ParameterInfo& q) { return q.name == p.name; }))
+                    out.push_back(p);
     return out;
 }
 

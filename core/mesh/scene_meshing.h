@@ -4,10 +4,10 @@
 // for that moment, and the standard geometry of Shape and FShape nodes (Box,
 // Sphere, IndexedFaceSet, ...), each coloured by its appearance and placed by
 // the Transform and FTransform nodes above it.
+#include "animation/clock.h"
 #include "dual_contouring.h"
 #include "mesh.h"
 #include "mesh_cache.h"
-#include "animation/clock.h"
 #include "scene/scene.h"
 #include "scene_view.h"
 
@@ -38,7 +38,14 @@ struct SceneMeshOptions {
     // Meshes reused across calls (a viewer playing time asks again and again):
     // shapes whose geometry does not read t are meshed once. Optional.
     MeshCache* cache = nullptr;
+    // Values for the formulas' named parameters (`param R = 0.8 in [0.2, 1.5];`)
+    // other than their defaults: the suite's sliders set them.
+    std::vector<std::pair<std::string, double>> parameters;
 };
+
+// Every named parameter of the scene's function definitions (each name once,
+// with the first definition's default and range).
+std::vector<formula::ParameterInfo> sceneParameters(const scene::Scene& scene);
 
 // How a shape's surface takes light: the constant terms of its Material or
 // FMaterial (the diffuse colour, per vertex, is in Mesh::colours).

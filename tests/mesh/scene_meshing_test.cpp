@@ -372,3 +372,20 @@ TEST(SceneMeshing, WallClockNodesReadTheInstantsWallTime) {
     }
     EXPECT_TRUE(moved);
 }
+
+TEST(SceneParameters, NamedParametersAreListedAndTheirValuesReshapeTheMesh) {
+    const std::string body = R"x(FShape { geometry FGeometry {
+        definition "param R = 0.5 in [0.2, 0.9]; return R*R - x*x - y*y - z*z;" } })x";
+    auto r = fl::scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "p.x3dv");
+    ASSERT_TRUE(r.ok());
+    const auto params = sceneParameters(*r.scene);
+    ASSERT_EQ(params.size(), 1u);
+    EXPECT_EQ(params[0].name, "R");
+    EXPECT_TRUE(params[0].hasRange);
+    EXPECT_DOUBLE_EQ(params[0].hi, 0.9);
+    SceneMeshOptions o;
+    const double small = analyseTopology(meshScene(*r.scene, o).shapes[0].mesh).signedVolume;
+    o.parameters = {{"R", 0.8}, {"unrelated", 3}};
+    const double large = analyseTopology(meshScene(*r.scene, o).shapes[0].mesh).signedVolume;
+    EXPECT_NEAR(large / small, std::pow(0.8 / 0.5, 3), 0.05);
+}

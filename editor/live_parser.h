@@ -1,0 +1,56 @@
+#pragma once
+// Live preview: the editor's text is read again on a worker thread a short
+// pause (250 ms) after the last keystroke. Only the newest text counts: an
+// older parse finishing late is thrown away. A text with errors leaves the
+// last good scene where it was, so the view never goes blank while typing.
+#include "code_editor.h" // EditorDiagnostic
+#include "scene/scene.h"
+#include "scene/scene_diagnostic.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <memory>
+#include <vector>
+
+namespace fl::editor {
+
+struct ParseOutcome {
+    QList<EditorDiagnostic> inThisFile; // to underline
+    std::vector<scene::SceneDiagnostic> all;
+    std::shared_ptr<const scene::Scene> scene; // null when the text has errors
+};
+
+// Reads `text` as the scene file `path` (its folder resolves Inline urls).
+ParseOutcome parseSceneText(const QString& text, const QString& path);
+
+class LiveParser : public QObject {
+    Q_OBJECT
+  public:
+    explicit LiveParser(QObject* parent = nullptr);
+    ~LiveParser() override;
+
+    void setDelay(int milliseconds) { timer_.setInterval(milliseconds); }
+    // The text changed: parse it after the pause.
+    void setText(const QString& text, const QString& path);
+    // Parse now, without the pause.
+    void parseNow();
+    std::shared_ptr<const scene::Scene> lastGoodScene() const { return lastGood_; }
+    int parsesFinished() const { return finished_; }
+    bool pending() const { return timer_.isActive() || running_ > 0; }
+
+  Q_SIGNALS:
+    void parsed(const fl::editor::ParseOutcome& outcome);
+    // Only when a new good scene replaces the last one.
+    void sceneChanged(std::shared_ptr<const fl::scene::Scene> scene);
+
+  private:
+    void start();
+
+    QTimer timer_;
+    QString text_, path_;
+    std::shared_ptr<const scene::Scene> lastGood_;
+    int generation_ = 0, running_ = 0, finished_ = 0;
+};
+
+} // namespace fl::editor

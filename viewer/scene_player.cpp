@@ -1,0 +1,132 @@
+#include "scene_player.h"
+
+#include <QMetaObject>
+
+namespace fl::viewer {
+
+ScenePlayer::ScenePlayer(const animation::WallClock* clock, QObject* parent)
+    : QObject(parent), ownClock_(clock ? nullptr : std::make_unique<animation::SystemWallClock>()),
+      clock_(clock ? *clock : *ownClock_), timeline_(clock_) {
+    timeline_.pause();
+    timeline_.seek(0);
+    timer_.setInterval(33);
+    connect(&timer_, &QTimer::timeout, this, &ScenePlayer::tick);
+}
+
+ScenePlayer::~ScenePlayer() {
+    cancel_ = true;
+    if (worker_.joinable()) worker_.join();
+}
+
+void ScenePlayer::setScene(std::shared_ptr<const scene::Scene> scene) {
+    scene_ = std::move(scene);
+    plan_ = scene_ ? scene::makeEffectsPlan(*scene_) : scene::EffectsPlan{};
+    cancel_ = true; // the frame in progress is for the old scene
+    cache_.clear();
+    request();
+}
+
+void ScenePlayer::play() {
+    timeline_.play();
+    timer_.start();
+}
+
+void ScenePlayer::pause() {
+    timeline_.pause();
+    timer_.stop();
+    Q_EMIT timeChanged(sceneSeconds());
+}
+
+void ScenePlayer::seek(double seconds) {
+    timeline_.seek(animation::secondsToNanoseconds(seconds));
+    Q_EMIT timeChanged(sceneSeconds());
+    request();
+}
+
+void ScenePlayer::setSpeed(double speed) {
+    if (speed > 0) timeline_.setSpeed(speed);
+}
+
+double ScenePlayer::sceneSeconds() const {
+    return double(timeline_.now().sceneNs) / double(animation::kNanosecondsPerSecond);
+}
+
+void ScenePlayer::setResolution(double resolution) {
+    resolution_ = resolution;
+    request();
+}
+
+void ScenePlayer::refresh() {
+    request();
+}
+
+void ScenePlayer::tick() {
+    Q_EMIT timeChanged(sceneSeconds());
+    // A static scene looks the same at every moment: nothing to redo.
+    if (scene_ && plan_.timeVarying != scene::kStatic) request();
+}
+
+bool ScenePlayer::busy() const {
+    std::lock_guard lock(mutex_);
+    return working_ || pending_.has_value();
+}
+
+void ScenePlayer::request() {
+    if (!scene_) return;
+    Request r{scene_, timeline_.now(), resolution_};
+    std::lock_guard lock(mutex_);
+    if (working_) {
+        pending_ = std::move(r); // replaces any older one: stale frames are dropped
+        return;
+    }
+    working_ = true;
+    if (worker_.joinable()) worker_.join(); // the last worker has finished
+    startWorker(std::move(r));
+}
+
+void ScenePlayer::startWorker(Request r) {
+    cancel_ = false;
+    worker_ = std::thread([this, r = std::move(r)] {
+        mesh::SceneMeshOptions o;
+        o.instant = r.instant;
+        o.sceneSeconds = double(r.instant.sceneNs) / double(animation::kNanosecondsPerSecond);
+        o.placeInScene = false;
+        o.cache = &cache_;
+        o.mesh.cancel = &cancel_;
+        o.mesh.threads = 1; // the interface keeps a core
+        if (r.resolution > 0) {
+            o.useFileResolution = false;
+            o.mesh.resolution = r.resolution;
+        }
+        auto meshes = std::make_shared<const mesh::SceneMeshes>(mesh::meshScene(*r.scene, o));
+        QMetaObject::invokeMethod(
+            this,
+            [this, meshes, seconds = o.sceneSeconds, scene = r.scene] {
+                finished(meshes, seconds, scene);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void ScenePlayer::finished(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds,
+                           std::shared_ptr<const scene::Scene> scene) {
+    std::optional<Request> next;
+    {
+        std::lock_guard lock(mutex_);
+        next = std::move(pending_);
+        pending_.reset();
+        working_ = next.has_value();
+    }
+    if (worker_.joinable()) worker_.join();
+    // A frame of a scene that has since been replaced is not shown.
+    bool cancelled = false;
+    for (const auto& s : meshes->shapes)
+        cancelled = cancelled || s.error == "cancelled";
+    if (scene == scene_ && !cancelled) {
+        ++delivered_;
+        Q_EMIT meshesReady(meshes, seconds);
+    }
+    if (next) startWorker(std::move(*next));
+}
+
+} // namespace fl::viewer

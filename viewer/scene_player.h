@@ -1,0 +1,90 @@
+#pragma once
+// Plays a scene: keeps its timeline (play, pause, seek, speed), and meshes it
+// for the moment shown on a worker thread, so the interface never waits.
+// Only the newest request counts: while one frame is being meshed, later
+// requests replace each other and the stale ones are dropped, never queued.
+// The effects plan decides what a tick costs: a static scene is never asked
+// again, shapes whose geometry does not read t come from the mesh cache.
+#include "animation/clock.h"
+#include "mesh/mesh_cache.h"
+#include "mesh/scene_meshing.h"
+#include "scene/effects_plan.h"
+#include "scene/scene.h"
+
+#include <QObject>
+#include <QTimer>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace fl::viewer {
+
+class ScenePlayer : public QObject {
+    Q_OBJECT
+  public:
+    // `clock`: the wall clock (tests inject a manual one); null: the system's.
+    explicit ScenePlayer(const animation::WallClock* clock = nullptr, QObject* parent = nullptr);
+    ~ScenePlayer() override;
+
+    // A new scene (the editor's latest good parse): meshed at the current moment.
+    void setScene(std::shared_ptr<const scene::Scene> scene);
+    const scene::EffectsPlan& plan() const { return plan_; }
+
+    void play();
+    void pause();
+    bool playing() const { return timeline_.playing(); }
+    void seek(double sceneSeconds);
+    void setSpeed(double speed);
+    double speed() const { return timeline_.speed(); }
+    double sceneSeconds() const;
+    // Meshing for every shape at this resolution instead of each FGeometry's
+    // own (0: the file's); the viewer's level of detail sets it.
+    void setResolution(double resolution);
+    // Mesh the current moment again now (after a seek while paused, say).
+    void refresh();
+    // Advance the timeline and ask for a frame if the scene varies with time;
+    // the timer calls it about 30 times a second while playing.
+    void tick();
+
+    // Meshes made (cache misses) since the scene was set: a clock playing
+    // for a minute makes none after its first frame.
+    std::size_t meshesMade() const { return cache_.misses(); }
+    std::size_t framesDelivered() const { return delivered_; }
+    bool busy() const;
+
+  Q_SIGNALS:
+    void meshesReady(std::shared_ptr<const fl::mesh::SceneMeshes> meshes, double sceneSeconds);
+    void timeChanged(double sceneSeconds);
+
+  private:
+    struct Request {
+        std::shared_ptr<const scene::Scene> scene;
+        animation::Instant instant;
+        double resolution = 0;
+    };
+    void request();
+    void startWorker(Request r);
+    void finished(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds,
+                  std::shared_ptr<const scene::Scene> scene);
+
+    std::unique_ptr<animation::WallClock> ownClock_;
+    const animation::WallClock& clock_;
+    animation::SceneTimeline timeline_;
+    std::shared_ptr<const scene::Scene> scene_;
+    scene::EffectsPlan plan_;
+    double resolution_ = 0;
+    mesh::MeshCache cache_;
+    QTimer timer_;
+
+    mutable std::mutex mutex_;
+    std::thread worker_;
+    bool working_ = false;
+    std::optional<Request> pending_; // the newest request waiting for the worker
+    std::atomic<bool> cancel_{false};
+    std::size_t delivered_ = 0;
+};
+
+} // namespace fl::viewer

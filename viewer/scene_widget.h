@@ -1,0 +1,75 @@
+#pragma once
+// The interactive 3D view: a Qt3D window inside a widget, showing the meshes
+// the ScenePlayer delivers. Examine (orbit: left drag, pan: right or middle
+// drag, zoom: wheel) or walk (arrow keys or WASD to move, drag to look);
+// jump between the scene's Viewpoints, reset the view, grab a frame.
+#include "camera_pose.h"
+#include "frame_graph.h"
+#include "mesh/scene_meshing.h"
+#include "render_scene.h"
+
+#include <QImage>
+#include <QPoint>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+namespace Qt3DExtras {
+class Qt3DWindow;
+}
+
+namespace fl::viewer {
+
+class SceneWidget : public QWidget {
+    Q_OBJECT
+  public:
+    enum class Navigation { Examine, Walk };
+
+    explicit SceneWidget(QWidget* parent = nullptr);
+    ~SceneWidget() override;
+
+    // Shows these meshes. The first time (and after resetView) the camera
+    // goes to the first Viewpoint, or to a view of everything.
+    void setMeshes(std::shared_ptr<const mesh::SceneMeshes> meshes);
+    std::shared_ptr<const mesh::SceneMeshes> meshes() const { return meshes_; }
+    std::size_t triangleCount() const { return triangles_; }
+
+    QStringList viewpointNames() const;
+    void bindViewpoint(int index); // -1: a view of the whole scene
+    void resetView();              // the bound viewpoint again
+    void setNavigation(Navigation n);
+    Navigation navigation() const { return navigation_; }
+    CameraPose pose() const { return pose_; }
+    void setPose(const CameraPose& pose);
+    void setClipPlane(std::optional<QVector4D> plane);
+
+    // The frame on screen now, as an image (empty after `timeoutMs`).
+    QImage grabFrame(int timeoutMs = 5000);
+
+  Q_SIGNALS:
+    void poseChanged();
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    void applyPose();
+    float aspect() const;
+
+    Qt3DExtras::Qt3DWindow* window_;
+    QWidget* container_;
+    Qt3DCore::QEntity* root_;
+    std::unique_ptr<RenderScene> scene_;
+    FrameGraph frameGraph_;
+    std::shared_ptr<const mesh::SceneMeshes> meshes_;
+    std::size_t triangles_ = 0;
+    CameraPose pose_;
+    int boundViewpoint_ = 0;
+    bool cameraPlaced_ = false;
+    Navigation navigation_ = Navigation::Examine;
+    QPoint lastMouse_;
+    Qt::MouseButtons buttons_;
+};
+
+} // namespace fl::viewer
