@@ -3,6 +3,7 @@
 // instructors.
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "window/gui.h"
 
 #include <iostream>
 #include <string>
@@ -36,18 +37,16 @@ commands:
                             what accuracy costs in time: adaptive mesher vs dense marching cubes
 
 Run `functionlab <command> --help` for a command's options.
-With no arguments functionlab will open the suite window; the window is not
-part of this build yet, so it prints this help.
+
+With no arguments functionlab opens its window on the watermelon example (or
+on unsaved work from last time); `functionlab FILE` opens FILE in it.
 )";
 
 } // namespace
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) {
-        std::cout << kHelp;
-        return fl::cli::kExitOk;
-    }
+    if (args.empty()) return fl::suite::runWindow(argc, argv, {});
     const std::string cmd = args[0];
     std::vector<std::string> rest(args.begin() + 1, args.end());
     if (cmd == "--help" || cmd == "-h" || cmd == "help") {
@@ -69,6 +68,8 @@ int main(int argc, char** argv) {
         std::cerr << "functionlab: " << e.what() << "\n";
         return fl::cli::kExitDiagnostic;
     }
+    if (args.size() == 1 && fl::suite::looksLikeSceneFile(cmd))
+        return fl::suite::runWindow(argc, argv, cmd);
     std::cerr << "functionlab: unknown command '" << cmd << "'\n\n" << kHelp;
     return fl::cli::kExitUsage;
 }

@@ -56,6 +56,11 @@ void ScenePlayer::setResolution(double resolution) {
     request();
 }
 
+void ScenePlayer::setParameters(std::vector<std::pair<std::string, double>> values) {
+    parameters_ = std::move(values);
+    request();
+}
+
 void ScenePlayer::refresh() {
     request();
 }
@@ -73,7 +78,7 @@ bool ScenePlayer::busy() const {
 
 void ScenePlayer::request() {
     if (!scene_) return;
-    Request r{scene_, timeline_.now(), resolution_};
+    Request r{scene_, timeline_.now(), resolution_, parameters_};
     std::lock_guard lock(mutex_);
     if (working_) {
         pending_ = std::move(r); // replaces any older one: stale frames are dropped
@@ -94,6 +99,7 @@ void ScenePlayer::startWorker(Request r) {
         o.cache = &cache_;
         o.mesh.cancel = &cancel_;
         o.mesh.threads = 1; // the interface keeps a core
+        o.parameters = r.parameters;
         if (r.resolution > 0) {
             o.useFileResolution = false;
             o.mesh.resolution = r.resolution;

@@ -43,6 +43,8 @@ class ScenePlayer : public QObject {
     // Meshing for every shape at this resolution instead of each FGeometry's
     // own (0: the file's); the viewer's level of detail sets it.
     void setResolution(double resolution);
+    // Values for the formulas' named parameters (the sliders): meshed again at once.
+    void setParameters(std::vector<std::pair<std::string, double>> values);
     // Mesh the current moment again now (after a seek while paused, say).
     void refresh();
     // Advance the timeline and ask for a frame if the scene varies with time;
@@ -64,6 +66,7 @@ class ScenePlayer : public QObject {
         std::shared_ptr<const scene::Scene> scene;
         animation::Instant instant;
         double resolution = 0;
+        std::vector<std::pair<std::string, double>> parameters;
     };
     void request();
     void startWorker(Request r);
@@ -76,6 +79,7 @@ class ScenePlayer : public QObject {
     std::shared_ptr<const scene::Scene> scene_;
     scene::EffectsPlan plan_;
     double resolution_ = 0;
+    std::vector<std::pair<std::string, double>> parameters_;
     mesh::MeshCache cache_;
     QTimer timer_;
 

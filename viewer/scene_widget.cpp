@@ -13,8 +13,17 @@
 
 namespace fl::viewer {
 
+namespace {
+// Qt3DWindow picks Qt3D's RHI renderer unless told otherwise; the surface
+// shader is GLSL 3.30 for the OpenGL renderer (as the off-screen path uses).
+Qt3DExtras::Qt3DWindow* makeOpenGLWindow() {
+    if (qEnvironmentVariableIsEmpty("QT3D_RENDERER")) qputenv("QT3D_RENDERER", "opengl");
+    return new Qt3DExtras::Qt3DWindow(nullptr, Qt3DRender::API::OpenGL);
+}
+} // namespace
+
 SceneWidget::SceneWidget(QWidget* parent)
-    : QWidget(parent), window_(new Qt3DExtras::Qt3DWindow), root_(new Qt3DCore::QEntity) {
+    : QWidget(parent), window_(makeOpenGLWindow()), root_(new Qt3DCore::QEntity) {
     container_ = QWidget::createWindowContainer(window_, this);
     container_->setMinimumSize(160, 120);
     container_->setFocusPolicy(Qt::StrongFocus);

@@ -1,0 +1,548 @@
+#include "main_window.h"
+
+#include "code_editor.h"
+#include "examples.h"
+#include "find_bar.h"
+#include "live_parser.h"
+#include "mesh/mesh_export.h"
+#include "mesh/scene_meshing.h"
+#include "scene/field_access.h"
+#include "scene/gzip.h"
+#include "scene/scene_reader.h"
+#include "scene_player.h"
+#include "scene_widget.h"
+#include "timeline_bar.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QSettings>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace fl::suite {
+namespace {
+
+constexpr int kMaxRecent = 8;
+constexpr qint64 kMaxFileBytes = 64ll << 20;
+
+const char* kNewScene = R"(<?xml version="1.0" encoding="UTF-8"?>
+<X3D profile='Immersive' version='3.3'>
+  <Scene>
+    <Viewpoint description='Front' position='0 0 4'/>
+    <FShape>
+      <FGeometry definition='"1 - x^2 - y^2 - z^2"'/>
+      <FAppearance>
+        <FMaterial type='parametric' definition='"r = 0.5 + 0.5*x;" "g = 0.6;" "b = 0.5 - 0.5*x;"'/>
+      </FAppearance>
+    </FShape>
+  </Scene>
+</X3D>
+)";
+
+// The longest cycle among the scene's timed nodes (TimeSensors and function
+// nodes), within 1 .. 120 s: what the time slider spans.
+double timelineSpan(const scene::Scene& scene) {
+    double span = 0;
+    scene.forEachNode([&](const scene::Node& n) {
+        if (n.inProtoBody || !n.spec || !scene::findFieldSpec(*n.spec, "cycleInterval")) return;
+        span = std::max(span, scene::numberField(n, "cycleInterval", 0, 1));
+    });
+    return span > 0 ? std::clamp(span, 1.0, 120.0) : 10.0;
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), editor_(new editor::CodeEditor), find_(new editor::FindBar(editor_)),
+      parser_(new editor::LiveParser(this)), view_(new viewer::SceneWidget),
+      player_(new viewer::ScenePlayer(nullptr, this)), timeline_(new TimelineBar(player_)),
+      issues_(new QListWidget), tree_(new QTreeWidget), examples_(new QListWidget),
+      parameters_(new QWidget), parameterForm_(new QFormLayout(parameters_)),
+      viewpoints_(new QComboBox), recentMenu_(nullptr), triangles_(new QLabel),
+      meshTime_(new QLabel), frameRate_(new QLabel), timeLabel_(new QLabel) {
+    setWindowTitle(QStringLiteral("FunctionLab"));
+    setCentralWidget(view_);
+    buildDocks();
+    buildMenus();
+
+    auto* timeBar = new QToolBar(tr("Timeline"));
+    timeBar->setObjectName(QStringLiteral("timeline"));
+    timeBar->addWidget(timeline_);
+    addToolBar(Qt::BottomToolBarArea, timeBar);
+
+    for (QLabel* l : {triangles_, meshTime_, frameRate_, timeLabel_})
+        statusBar()->addPermanentWidget(l);
+
+    connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
+        parser_->setText(editor_->toPlainText(), path_);
+        recoveryTimer_.start();
+        setWindowModified(isModified());
+    });
+    connect(parser_, &editor::LiveParser::parsed, this, &MainWindow::parsed);
+    connect(parser_, &editor::LiveParser::sceneChanged, this, &MainWindow::sceneChanged);
+    connect(player_, &viewer::ScenePlayer::meshesReady, this, &MainWindow::meshesReady);
+    connect(player_, &viewer::ScenePlayer::timeChanged, this, [this](double s) {
+        timeline_->showTime(s);
+        timeLabel_->setText(QStringLiteral("t = %1 s").arg(s, 0, 'f', 2));
+    });
+    connect(issues_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        editor_->goTo(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
+    });
+    connect(issues_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
+        editor_->goTo(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
+    });
+    connect(tree_, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
+        editor_->goTo(item->data(0, Qt::UserRole).toInt(), item->data(0, Qt::UserRole + 1).toInt());
+    });
+
+    recoveryTimer_.setSingleShot(true);
+    recoveryTimer_.setInterval(2000);
+    connect(&recoveryTimer_, &QTimer::timeout, this, &MainWindow::writeRecovery);
+    rateTimer_.setInterval(1000);
+    connect(&rateTimer_, &QTimer::timeout, this, [this] {
+        const std::size_t frames = player_->framesDelivered();
+        frameRate_->setText(tr("%1 frames/s").arg(frames - framesAtLastRate_));
+        framesAtLastRate_ = frames;
+    });
+    rateTimer_.start();
+
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    fillRecentMenu();
+    resize(settings.contains(QStringLiteral("window/geometry")) ? size() : QSize(1280, 800));
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildDocks() {
+    auto dock = [this](const QString& title, const char* name, QWidget* w,
+                       Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(QString::fromLatin1(name));
+        d->setWidget(w);
+        addDockWidget(area, d);
+        return d;
+    };
+    auto* editorPanel = new QWidget;
+    auto* column = new QVBoxLayout(editorPanel);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(editor_, 1);
+    column->addWidget(find_);
+    dock(tr("Scene text"), "editor", editorPanel, Qt::LeftDockWidgetArea)->setMinimumWidth(420);
+    auto* issuesDock = dock(tr("Issues"), "issues", issues_, Qt::BottomDockWidgetArea);
+    resizeDocks({issuesDock}, {110}, Qt::Vertical);
+    tree_->setHeaderLabels({tr("Node"), tr("DEF")});
+    auto* treeDock = dock(tr("Scene tree"), "tree", tree_, Qt::RightDockWidgetArea);
+    auto* paramDock = dock(tr("Parameters"), "parameters", parameters_, Qt::RightDockWidgetArea);
+    auto* exampleDock = dock(tr("Examples"), "examples", examples_, Qt::RightDockWidgetArea);
+    tabifyDockWidget(treeDock, exampleDock);
+    tabifyDockWidget(exampleDock, paramDock);
+    exampleDock->raise();
+    parameterForm_->addRow(new QLabel(tr("The scene's formulas have no `param` to adjust.")));
+    for (const Example& e : listExamples()) {
+        auto* item = new QListWidgetItem(e.title, examples_);
+        item->setToolTip(e.description);
+        item->setData(Qt::UserRole, e.path);
+    }
+    connect(examples_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        if (maybeKeepChanges()) openFile(item->data(Qt::UserRole).toString());
+    });
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, [this] {
+        if (maybeKeepChanges()) newScene();
+    });
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    file->addAction(tr("Export &Mesh…"), this, &MainWindow::exportMesh);
+    file->addAction(tr("Export &Image…"), this, &MainWindow::exportImage);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(tr("&Undo"), QKeySequence::Undo, editor_, &QPlainTextEdit::undo);
+    edit->addAction(tr("&Redo"), QKeySequence::Redo, editor_, &QPlainTextEdit::redo);
+    edit->addSeparator();
+    edit->addAction(tr("&Find…"), QKeySequence::Find, this, [this] { find_->open(false); });
+    edit->addAction(tr("&Replace…"), QKeySequence::Replace, this, [this] { find_->open(true); });
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    auto* group = new QActionGroup(this);
+    QAction* examine = view->addAction(tr("&Examine (orbit, pan, zoom)"), this, [this] {
+        view_->setNavigation(viewer::SceneWidget::Navigation::Examine);
+    });
+    QAction* walkMode = view->addAction(tr("&Walk (first person)"), this, [this] {
+        view_->setNavigation(viewer::SceneWidget::Navigation::Walk);
+    });
+    for (QAction* a : {examine, walkMode}) {
+        a->setCheckable(true);
+        group->addAction(a);
+    }
+    examine->setChecked(true);
+    view->addAction(tr("&Reset View"), QKeySequence(Qt::Key_Home), view_,
+                    &viewer::SceneWidget::resetView);
+    view->addAction(tr("&Play / Pause"), QKeySequence(Qt::CTRL | Qt::Key_Space), this,
+                    [this] { timeline_->playButton()->toggle(); });
+
+    auto* viewBar = addToolBar(tr("View"));
+    viewBar->setObjectName(QStringLiteral("view"));
+    viewBar->addWidget(new QLabel(tr(" Viewpoint ")));
+    viewBar->addWidget(viewpoints_);
+    connect(viewpoints_, &QComboBox::activated, this,
+            [this](int index) { view_->bindViewpoint(viewpoints_->itemData(index).toInt()); });
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About FunctionLab"), this, [this] {
+        QMessageBox::about(this, tr("About FunctionLab"),
+                           tr("FunctionLab %1: function-defined 3D objects for teaching.")
+                               .arg(QCoreApplication::applicationVersion()));
+    });
+}
+
+bool MainWindow::isModified() const {
+    return editor_->document()->isModified();
+}
+
+void MainWindow::setPath(const QString& path) {
+    path_ = path;
+    setWindowFilePath(path.isEmpty() ? tr("untitled.x3d") : path);
+    setWindowTitle(QStringLiteral("%1[*] — FunctionLab")
+                       .arg(path.isEmpty() ? tr("untitled.x3d") : QFileInfo(path).fileName()));
+    editor_->setSyntax(
+        editor::syntaxFor(path.isEmpty() ? QStringLiteral("a.x3d") : path, editor_->toPlainText()));
+}
+
+void MainWindow::newScene() {
+    setPath({});
+    editor_->setPlainText(QString::fromUtf8(kNewScene));
+    editor_->document()->setModified(false);
+    parser_->parseNow();
+}
+
+bool MainWindow::openFile(const QString& path, QString* error) {
+    QFile f(path);
+    QString problemText;
+    if (!f.open(QIODevice::ReadOnly))
+        problemText = tr("Cannot open %1: %2").arg(path, f.errorString());
+    else if (f.size() > kMaxFileBytes)
+        problemText =
+            tr("%1 is larger than 64 MiB; FunctionLab does not edit files this big").arg(path);
+    if (!problemText.isEmpty()) {
+        if (error) *error = problemText;
+        problem(problemText);
+        return false;
+    }
+    QByteArray bytes = f.readAll();
+    // Compressed scenes (.x3dz, .wrl.gz) are shown as the text they hold
+    // (saved uncompressed).
+    if (scene::isGzip(std::string_view(bytes.constData(), std::size_t(bytes.size())))) {
+        std::string why;
+        auto text = scene::gunzip(std::string_view(bytes.constData(), std::size_t(bytes.size())),
+                                  std::size_t(kMaxFileBytes), why);
+        if (!text) {
+            problemText = tr("Cannot read %1: %2").arg(path, QString::fromStdString(why));
+            if (error) *error = problemText;
+            problem(problemText);
+            return false;
+        }
+        bytes = QByteArray::fromStdString(*text);
+    }
+    setPath(path);
+    editor_->setPlainText(QString::fromUtf8(bytes));
+    editor_->document()->setModified(false);
+    setWindowModified(false);
+    addRecent(path);
+    parser_->setText(editor_->toPlainText(), path_);
+    parser_->parseNow();
+    QSettings().setValue(QStringLiteral("file/last"), path);
+    return true;
+}
+
+bool MainWindow::saveTo(const QString& path, QString* error) {
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly) || out.write(editor_->toPlainText().toUtf8()) < 0 ||
+        !out.commit()) {
+        const QString text = tr("Cannot save %1: %2").arg(path, out.errorString());
+        if (error) *error = text;
+        problem(text);
+        return false;
+    }
+    setPath(path);
+    editor_->document()->setModified(false);
+    setWindowModified(false);
+    addRecent(path);
+    QFile::remove(recoveryPath());
+    return true;
+}
+
+bool MainWindow::save() {
+    return path_.isEmpty() ? saveAs() : saveTo(path_);
+}
+
+bool MainWindow::saveAs() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save scene"), path_.isEmpty() ? QDir::homePath() : path_,
+        tr("X3D scenes (*.x3d);;ClassicVRML (*.x3dv);;VRML97 (*.wrl)"));
+    return !path.isEmpty() && saveTo(path);
+}
+
+void MainWindow::openDialog() {
+    if (!maybeKeepChanges()) return;
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open scene"), path_.isEmpty() ? examplesFolder() : QFileInfo(path_).path(),
+        tr("Scenes (*.x3d *.x3dv *.wrl);;All files (*)"));
+    if (!path.isEmpty()) openFile(path);
+}
+
+bool MainWindow::maybeKeepChanges() {
+    if (!isModified() || !prompts_) return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved changes"), tr("The scene has changes that are not saved. Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Cancel) return false;
+    if (answer == QMessageBox::Save) return save();
+    return true;
+}
+
+void MainWindow::problem(const QString& text) {
+    lastProblem_ = text;
+    statusBar()->showMessage(text, 10000);
+    if (prompts_) QMessageBox::warning(this, tr("FunctionLab"), text);
+}
+
+void MainWindow::addRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(QStringLiteral("file/recent")).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    settings.setValue(QStringLiteral("file/recent"), recent);
+    fillRecentMenu();
+}
+
+void MainWindow::fillRecentMenu() {
+    if (!recentMenu_) return;
+    recentMenu_->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("file/recent")).toStringList();
+    for (const QString& path : recent)
+        recentMenu_
+            ->addAction(QFileInfo(path).fileName(), this,
+                        [this, path] {
+                            if (maybeKeepChanges()) openFile(path);
+                        })
+            ->setToolTip(path);
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::parsed(const editor::ParseOutcome& outcome) {
+    editor_->setDiagnostics(outcome.inThisFile);
+    issues_->clear();
+    for (const auto& d : outcome.all) {
+        auto* item =
+            new QListWidgetItem(QString::fromStdString(scene::formatSceneDiagnostic(d)), issues_);
+        item->setData(Qt::UserRole, d.pos.line);
+        item->setData(Qt::UserRole + 1, d.pos.column);
+        item->setForeground(d.severity == scene::Severity::Error ? QColor(Qt::red)
+                                                                 : palette().color(QPalette::Text));
+    }
+    if (!outcome.scene)
+        statusBar()->showMessage(tr("The text has errors: the view shows the last good scene"));
+    else
+        statusBar()->clearMessage();
+}
+
+void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
+    scene_ = scene;
+    fillSceneTree(*scene);
+    fillParameters(*scene);
+    timeline_->setSpan(timelineSpan(*scene));
+    player_->setParameters(parameterValues_);
+    player_->setScene(scene);
+}
+
+void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double) {
+    const QStringList before = view_->viewpointNames();
+    view_->setMeshes(meshes);
+    const QStringList names = view_->viewpointNames();
+    if (names != before || viewpoints_->count() == 0) {
+        viewpoints_->clear();
+        for (int i = 0; i < names.size(); ++i)
+            viewpoints_->addItem(names[i], i);
+        viewpoints_->addItem(tr("Whole scene"), -1);
+    }
+    double ms = 0;
+    for (const auto& s : meshes->shapes)
+        ms += s.stats.milliseconds;
+    triangles_->setText(tr("%1 triangles").arg(view_->triangleCount()));
+    meshTime_->setText(tr("meshed in %1 ms").arg(ms, 0, 'f', 0));
+}
+
+void MainWindow::fillSceneTree(const scene::Scene& scene) {
+    tree_->clear();
+    std::function<void(const scene::Node*, QTreeWidgetItem*, int)> add =
+        [&](const scene::Node* n, QTreeWidgetItem* parent, int depth) {
+            if (!n || depth > 64) return;
+            auto* item = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(tree_);
+            item->setText(0, QString::fromStdString(n->type));
+            item->setText(1, QString::fromStdString(n->defName));
+            item->setData(0, Qt::UserRole, n->where.line);
+            item->setData(0, Qt::UserRole + 1, n->where.column);
+            for (const scene::Field& f : n->fields)
+                for (const scene::Node* c : f.value.nodes)
+                    add(c, item, depth + 1);
+        };
+    for (const scene::Node* root : scene.roots)
+        add(root, nullptr, 0);
+    tree_->expandToDepth(1);
+}
+
+void MainWindow::fillParameters(const scene::Scene& scene) {
+    while (parameterForm_->rowCount() > 0)
+        parameterForm_->removeRow(0);
+    const auto params = mesh::sceneParameters(scene);
+    // Values the sliders had for names still there are kept.
+    std::vector<std::pair<std::string, double>> kept;
+    for (const auto& p : params)
+        for (const auto& [name, v] : parameterValues_)
+            if (name == p.name) kept.emplace_back(name, v);
+    parameterValues_ = kept;
+    if (params.empty()) {
+        parameterForm_->addRow(new QLabel(tr("The scene's formulas have no `param` to adjust.")));
+        return;
+    }
+    for (const formula::ParameterInfo& p : params) {
+        const double lo = p.hasRange ? p.lo : std::min(0.0, 2 * p.defaultValue);
+        const double hi = p.hasRange ? p.hi : std::max(1.0, 2 * p.defaultValue);
+        double value = p.defaultValue;
+        for (const auto& [name, v] : parameterValues_)
+            if (name == p.name) value = v;
+        auto* slider = new QSlider(Qt::Horizontal);
+        slider->setObjectName(QString::fromStdString("param-" + p.name));
+        slider->setRange(0, 1000);
+        slider->setValue(hi > lo ? int(std::lround((value - lo) / (hi - lo) * 1000)) : 0);
+        auto* label = new QLabel(QString::number(value, 'g', 4));
+        auto* row = new QWidget;
+        auto* layout = new QHBoxLayout(row);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->addWidget(slider, 1);
+        layout->addWidget(label);
+        parameterForm_->addRow(QString::fromStdString(p.name), row);
+        connect(slider, &QSlider::valueChanged, this, [this, name = p.name, lo, hi, label](int v) {
+            const double value = lo + (hi - lo) * v / 1000.0;
+            label->setText(QString::number(value, 'g', 4));
+            bool found = false;
+            for (auto& [n, x] : parameterValues_)
+                if (n == name) x = value, found = true;
+            if (!found) parameterValues_.emplace_back(name, value);
+            player_->setParameters(parameterValues_);
+        });
+    }
+}
+
+void MainWindow::exportMesh() {
+    if (!scene_) return problem(tr("There is no scene to export yet: fix the errors listed first"));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export mesh"), QDir::homePath(),
+        tr("glTF binary (*.glb);;STL (*.stl);;OBJ (*.obj);;PLY (*.ply);;X3D (*.x3d)"));
+    if (path.isEmpty()) return;
+    mesh::SceneMeshOptions o;
+    o.sceneSeconds = player_->sceneSeconds();
+    o.parameters = parameterValues_;
+    const mesh::SceneMeshes meshes = mesh::meshScene(*scene_, o);
+    std::string error;
+    if (!mesh::writeMesh(mesh::mergeMeshes(meshes.shapes), path.toStdString(), error))
+        problem(QString::fromStdString(error));
+    else
+        statusBar()->showMessage(tr("Wrote %1").arg(path), 5000);
+}
+
+void MainWindow::exportImage() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), QDir::homePath(),
+                                                      tr("PNG image (*.png)"));
+    if (path.isEmpty()) return;
+    const QImage image = view_->grabFrame();
+    if (image.isNull() || !image.save(path))
+        problem(tr("Cannot write the image %1").arg(path));
+    else
+        statusBar()->showMessage(tr("Wrote %1").arg(path), 5000);
+}
+
+QString MainWindow::recoveryPath() const {
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    QDir().mkpath(folder);
+    return folder + QStringLiteral("/recovery.x3d");
+}
+
+// Unsaved text, kept so a crash or a power cut never loses a student's work.
+void MainWindow::writeRecovery() {
+    if (!isModified()) return;
+    QSaveFile out(recoveryPath());
+    if (out.open(QIODevice::WriteOnly)) {
+        out.write(editor_->toPlainText().toUtf8());
+        out.commit();
+        QSettings().setValue(QStringLiteral("file/recoveryOf"), path_);
+    }
+}
+
+bool MainWindow::recoverUnsavedWork() {
+    QFile f(recoveryPath());
+    if (!f.exists() || !f.open(QIODevice::ReadOnly)) return false;
+    const QString of = QSettings().value(QStringLiteral("file/recoveryOf")).toString();
+    if (prompts_ &&
+        QMessageBox::question(
+            this, tr("Unsaved work"),
+            tr("FunctionLab closed last time with unsaved changes%1. Restore them?")
+                .arg(of.isEmpty() ? QString() : tr(" to %1").arg(of))) != QMessageBox::Yes) {
+        f.close();
+        QFile::remove(recoveryPath());
+        return false;
+    }
+    setPath(of);
+    editor_->setPlainText(QString::fromUtf8(f.readAll()));
+    editor_->document()->setModified(true); // still to be saved
+    setWindowModified(true);
+    parser_->parseNow();
+    return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeKeepChanges()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    if (!isModified()) QFile::remove(recoveryPath());
+    event->accept();
+}
+
+} // namespace fl::suite

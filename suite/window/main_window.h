@@ -1,0 +1,117 @@
+#pragma once
+// The FunctionLab window: the 3D view in the middle; the scene's text, its
+// node tree, the issues list, the examples and the parameter sliders in
+// docks; the timeline below; a status bar with triangles, meshing time,
+// frame rate and t. Every file operation reports problems in the window,
+// never by crashing, and unsaved text is kept in a recovery file.
+#include <QMainWindow>
+#include <QTimer>
+
+#include <memory>
+
+class QLabel;
+class QListWidget;
+class QTreeWidget;
+class QComboBox;
+class QMenu;
+class QFormLayout;
+
+namespace fl::scene {
+struct Scene;
+}
+namespace fl::mesh {
+struct SceneMeshes;
+}
+namespace fl::editor {
+class CodeEditor;
+class FindBar;
+class LiveParser;
+struct ParseOutcome;
+} // namespace fl::editor
+namespace fl::viewer {
+class SceneWidget;
+class ScenePlayer;
+} // namespace fl::viewer
+
+namespace fl::suite {
+
+class TimelineBar;
+
+class MainWindow : public QMainWindow {
+  public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens a scene file into the editor (its text even when it has errors:
+    // they are listed to be fixed). False, with `error`, when it cannot be read.
+    bool openFile(const QString& path, QString* error = nullptr);
+    bool saveTo(const QString& path, QString* error = nullptr);
+    void newScene();
+    // Text left unsaved when FunctionLab last stopped (the recovery file):
+    // offered back; true when it was restored.
+    bool recoverUnsavedWork();
+    QString currentPath() const { return path_; }
+    bool isModified() const;
+    // Tests turn off the dialogs (unsaved-changes questions, message boxes).
+    void setPromptsEnabled(bool on) { prompts_ = on; }
+    QString lastProblem() const { return lastProblem_; }
+
+    editor::CodeEditor* editor() const { return editor_; }
+    viewer::SceneWidget* view() const { return view_; }
+    viewer::ScenePlayer* player() const { return player_; }
+    editor::LiveParser* parser() const { return parser_; }
+    QListWidget* issues() const { return issues_; }
+    QTreeWidget* sceneTree() const { return tree_; }
+    TimelineBar* timeline() const { return timeline_; }
+    QWidget* parametersPanel() const { return parameters_; }
+    QListWidget* examples() const { return examples_; }
+
+  protected:
+    void closeEvent(QCloseEvent* event) override;
+
+  private:
+    void buildMenus();
+    void buildDocks();
+    void openDialog();
+    bool save();
+    bool saveAs();
+    void exportMesh();
+    void exportImage();
+    bool maybeKeepChanges(); // false: the user cancelled
+    void problem(const QString& text);
+    void setPath(const QString& path);
+    void addRecent(const QString& path);
+    void fillRecentMenu();
+    void parsed(const editor::ParseOutcome& outcome);
+    void sceneChanged(std::shared_ptr<const scene::Scene> scene);
+    void meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds);
+    void fillSceneTree(const scene::Scene& scene);
+    void fillParameters(const scene::Scene& scene);
+    void writeRecovery();
+
+    QString recoveryPath() const;
+
+    editor::CodeEditor* editor_;
+    editor::FindBar* find_;
+    editor::LiveParser* parser_;
+    viewer::SceneWidget* view_;
+    viewer::ScenePlayer* player_;
+    TimelineBar* timeline_;
+    QListWidget* issues_;
+    QTreeWidget* tree_;
+    QListWidget* examples_;
+    QWidget* parameters_;
+    QFormLayout* parameterForm_;
+    QComboBox* viewpoints_;
+    QMenu* recentMenu_;
+    QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
+    QTimer recoveryTimer_, rateTimer_;
+    QString path_;
+    QString lastProblem_;
+    bool prompts_ = true;
+    std::size_t framesAtLastRate_ = 0;
+    std::shared_ptr<const scene::Scene> scene_;
+    std::vector<std::pair<std::string, double>> parameterValues_;
+};
+
+} // namespace fl::suite

@@ -1,0 +1,263 @@
+#include "code_editor.h"
+#include "live_parser.h"
+#include "main_window.h"
+#include "scene_player.h"
+#include "scene_widget.h"
+#include "timeline_bar.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QListWidget>
+#include <QPainter>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QTextBlock>
+#include <QToolButton>
+#include <QTreeWidget>
+
+using namespace fl;
+
+namespace {
+
+QString examplePath(const char* name) {
+    return QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/") + QLatin1String(name);
+}
+
+// The window as the user sees it: its widgets, with the 3D view's frame
+// painted where the view is (a native window that widget grabs leave blank).
+QImage screenshot(suite::MainWindow& w) {
+    QImage shot = w.grab().toImage();
+    const QImage frame = w.view()->grabFrame();
+    if (!frame.isNull()) {
+        QPainter p(&shot);
+        const QPoint at = w.view()->mapTo(&w, QPoint(0, 0));
+        p.drawImage(QRect(at, w.view()->size()), frame);
+    }
+    return shot;
+}
+
+void save(const QImage& image, const QString& name) {
+    QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
+    image.save(QStringLiteral(FUNCTIONLAB_SCREENSHOT_DIR "/") + name + QStringLiteral(".png"));
+}
+
+double notBackground(const QImage& image) {
+    if (image.isNull()) return 0;
+    const QRgb corner = image.pixel(0, 0);
+    std::size_t n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            n += image.pixel(x, y) != corner;
+    return double(n) / double(image.width() * image.height());
+}
+
+// Waits until the parse and the meshing for the current text are done.
+bool settle(suite::MainWindow& w, int timeoutMs = 30000) {
+    QElapsedTimer clock;
+    clock.start();
+    QTest::qWait(50);
+    while (clock.elapsed() < timeoutMs) {
+        if (!w.parser()->pending() && !w.player()->busy()) {
+            QTest::qWait(100); // the last frame reaches the view
+            if (!w.parser()->pending() && !w.player()->busy()) return true;
+        }
+        QTest::qWait(20);
+    }
+    return false;
+}
+
+} // namespace
+
+class WindowTest : public QObject {
+    Q_OBJECT
+  private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("FunctionLabTests"));
+    }
+
+    void everyExampleOpensAndDraws() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.examples()->count() >= 8);
+        for (int i = 0; i < w.examples()->count(); ++i) {
+            const QString path = w.examples()->item(i)->data(Qt::UserRole).toString();
+            QVERIFY2(w.openFile(path), qPrintable(w.lastProblem()));
+            QVERIFY(settle(w));
+            QVERIFY2(w.issues()->count() == 0 || !w.issues()->item(0)->text().contains("error"),
+                     qPrintable(path));
+            const QImage frame = w.view()->grabFrame();
+            save(frame, "frame-" + QFileInfo(path).completeBaseName());
+            QVERIFY2(notBackground(frame) > 0.02,
+                     qPrintable(path + " looks blank: " + QString::number(frame.width()) + "x" +
+                                QString::number(frame.height())));
+            save(screenshot(w), "window-" + QFileInfo(path).completeBaseName());
+        }
+    }
+
+    void aFormulaErrorIsUnderlinedListedAndFixing_itChangesTheShape() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.newScene();
+        QVERIFY(settle(w));
+        const std::size_t before = w.view()->triangleCount();
+        QVERIFY(before > 0);
+        const auto shownBefore = w.view()->meshes();
+
+        // Type a misspelt function into the definition.
+        QString text = w.editor()->toPlainText();
+        text.replace(QStringLiteral("1 - x^2 - y^2 - z^2"),
+                     QStringLiteral("1 - sine(x)^2 - y^2 - z^2"));
+        w.editor()->setPlainText(text);
+        QVERIFY(settle(w));
+        QVERIFY(w.issues()->count() >= 1);
+        QVERIFY(w.issues()->item(0)->text().contains(QStringLiteral("sine")));
+        QVERIFY(w.issues()->item(0)->text().contains(QStringLiteral("sin")));
+        QCOMPARE(w.editor()->diagnostics().size(), 1);
+        const auto [start, end] = w.editor()->rangeOf(w.editor()->diagnostics()[0]);
+        QTextCursor c(w.editor()->document());
+        c.setPosition(start);
+        c.setPosition(end, QTextCursor::KeepAnchor);
+        QVERIFY2(c.selectedText().contains(QStringLiteral("sine")), qPrintable(c.selectedText()));
+        QCOMPARE(w.view()->meshes(), shownBefore); // the last good scene stays
+        save(screenshot(w), "window-formula-error");
+
+        // Clicking the issue goes to its place.
+        w.issues()->setCurrentRow(0);
+        Q_EMIT w.issues()->itemClicked(w.issues()->item(0));
+        QCOMPARE(w.editor()->textCursor().blockNumber() + 1, w.editor()->diagnostics()[0].line);
+
+        // Fix it: a smaller sphere, so the shape changes.
+        text.replace(QStringLiteral("1 - sine(x)^2 - y^2 - z^2"),
+                     QStringLiteral("0.25 - x^2 - y^2 - z^2"));
+        w.editor()->setPlainText(text);
+        QVERIFY(settle(w));
+        QCOMPARE(w.issues()->count(), 0);
+        QVERIFY(w.editor()->diagnostics().isEmpty());
+        QVERIFY(w.view()->meshes() != shownBefore);
+        save(screenshot(w), "window-formula-fixed");
+    }
+
+    void aParameterSliderReshapesTheObject() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.newScene();
+        QString text = w.editor()->toPlainText();
+        text.replace(
+            QStringLiteral("\"1 - x^2 - y^2 - z^2\""),
+            QStringLiteral("\"param R = 0.5 in [0.2, 1]; return R*R - x^2 - y^2 - z^2;\""));
+        w.editor()->setPlainText(text);
+        QVERIFY(settle(w));
+        auto* slider = w.parametersPanel()->findChild<QSlider*>(QStringLiteral("param-R"));
+        QVERIFY(slider);
+        const auto before = w.view()->meshes();
+        slider->setValue(1000); // R = 1
+        QVERIFY(settle(w));
+        QVERIFY(w.view()->meshes() != before);
+        float reach = 0;
+        for (const auto& s : w.view()->meshes()->shapes)
+            for (const auto& p : s.mesh.positions)
+                reach = std::max(reach, std::abs(p[0]));
+        QVERIFY2(reach > 0.9f, qPrintable(QString::number(reach)));
+    }
+
+    void theBouncingSphereMovesWhenPlayed() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("bouncing_sphere.x3d")));
+        QVERIFY(settle(w));
+        w.player()->seek(0);
+        QVERIFY(settle(w));
+        const QImage first = w.view()->grabFrame();
+        w.player()->seek(0.5);
+        QVERIFY(settle(w));
+        const QImage second = w.view()->grabFrame();
+        QVERIFY(!first.isNull() && !second.isNull());
+        QVERIFY(first != second);
+        save(first, "bouncing-sphere-0s");
+        save(second, "bouncing-sphere-0.5s");
+        // Playing delivers frames.
+        const std::size_t frames = w.player()->framesDelivered();
+        w.timeline()->playButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(w.player()->framesDelivered() > frames + 3, 10000);
+        w.timeline()->playButton()->click();
+        QVERIFY(!w.player()->playing());
+    }
+
+    void playingTheClockMeshesNothingAfterItsFirstFrame() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("clock.x3d")));
+        QVERIFY(settle(w));
+        const std::size_t made = w.player()->meshesMade();
+        QVERIFY(made > 0);
+        const std::size_t frames = w.player()->framesDelivered();
+        w.player()->play();
+        QTest::qWait(1500);
+        w.player()->pause();
+        QVERIFY(settle(w));
+        QVERIFY(w.player()->framesDelivered() > frames); // the hands moved ...
+        QCOMPARE(w.player()->meshesMade(), made);        // ... without a single new mesh
+    }
+
+    void unreadableFilesAreExplainedNotFatal() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        QString error;
+        QVERIFY(!w.openFile(QStringLiteral("/nonexistent/scene.x3d"), &error));
+        QVERIFY(error.contains(QStringLiteral("/nonexistent/scene.x3d")));
+        QVERIFY(!w.lastProblem().isEmpty());
+        // A file that is not a scene opens as text with its errors listed.
+        const QString junk = QDir::temp().filePath(QStringLiteral("functionlab-junk.x3d"));
+        QFile f(junk);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("<X3D><Scene><Shape><Box size='1 1'/></Shape>");
+        f.close();
+        QVERIFY(w.openFile(junk));
+        QVERIFY(settle(w));
+        QVERIFY(w.issues()->count() >= 1);
+        QFile::remove(junk);
+    }
+
+    void savingWritesTheTextAndClearsTheModifiedMark() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.newScene();
+        w.editor()->appendPlainText(QStringLiteral("<!-- a note -->"));
+        QVERIFY(w.isModified());
+        const QString path = QDir::temp().filePath(QStringLiteral("functionlab-saved.x3d"));
+        QVERIFY(w.saveTo(path));
+        QVERIFY(!w.isModified());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(f.readAll().contains("a note"));
+        QFile::remove(path);
+    }
+};
+
+int main(int argc, char** argv) {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    WindowTest test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "window_test.moc"
