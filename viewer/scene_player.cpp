@@ -21,7 +21,8 @@ ScenePlayer::~ScenePlayer() {
 void ScenePlayer::setScene(std::shared_ptr<const scene::Scene> scene) {
     scene_ = std::move(scene);
     plan_ = scene_ ? scene::makeEffectsPlan(*scene_) : scene::EffectsPlan{};
-    cancel_ = true; // the frame in progress is for the old scene
+    resolutions_.clear(); // they name the old scene's nodes
+    cancel_ = true;       // the frame in progress is for the old scene
     cache_.clear();
     request();
 }
@@ -56,6 +57,11 @@ void ScenePlayer::setResolution(double resolution) {
     request();
 }
 
+void ScenePlayer::setResolutions(std::unordered_map<const scene::Node*, double> resolutions) {
+    resolutions_ = std::move(resolutions);
+    request();
+}
+
 void ScenePlayer::setParameters(std::vector<std::pair<std::string, double>> values) {
     parameters_ = std::move(values);
     request();
@@ -78,7 +84,7 @@ bool ScenePlayer::busy() const {
 
 void ScenePlayer::request() {
     if (!scene_) return;
-    Request r{scene_, timeline_.now(), resolution_, parameters_};
+    Request r{scene_, timeline_.now(), resolution_, parameters_, resolutions_};
     std::lock_guard lock(mutex_);
     if (working_) {
         pending_ = std::move(r); // replaces any older one: stale frames are dropped
@@ -100,6 +106,7 @@ void ScenePlayer::startWorker(Request r) {
         o.mesh.cancel = &cancel_;
         o.mesh.threads = 1; // the interface keeps a core
         o.parameters = r.parameters;
+        o.resolutions = r.resolutions;
         if (r.resolution > 0) {
             o.useFileResolution = false;
             o.mesh.resolution = r.resolution;

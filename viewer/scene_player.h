@@ -19,6 +19,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <unordered_map>
 
 namespace fl::viewer {
 
@@ -43,6 +44,8 @@ class ScenePlayer : public QObject {
     // Meshing for every shape at this resolution instead of each FGeometry's
     // own (0: the file's); the viewer's level of detail sets it.
     void setResolution(double resolution);
+    // Per FGeometry: the level of detail's choice (meshed again at once).
+    void setResolutions(std::unordered_map<const scene::Node*, double> resolutions);
     // Values for the formulas' named parameters (the sliders): meshed again at once.
     void setParameters(std::vector<std::pair<std::string, double>> values);
     // Mesh the current moment again now (after a seek while paused, say).
@@ -67,6 +70,7 @@ class ScenePlayer : public QObject {
         animation::Instant instant;
         double resolution = 0;
         std::vector<std::pair<std::string, double>> parameters;
+        std::unordered_map<const scene::Node*, double> resolutions;
     };
     void request();
     void startWorker(Request r);
@@ -80,6 +84,7 @@ class ScenePlayer : public QObject {
     scene::EffectsPlan plan_;
     double resolution_ = 0;
     std::vector<std::pair<std::string, double>> parameters_;
+    std::unordered_map<const scene::Node*, double> resolutions_;
     mesh::MeshCache cache_;
     QTimer timer_;
 

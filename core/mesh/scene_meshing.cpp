@@ -296,6 +296,8 @@ class Walker {
             out_.shapes.push_back(std::move(sm));
             return;
         }
+        sm.geometry = geometry;
+        sm.domain = domainOf(*geometry);
         ImplicitField field;
         field.tape = *tape;
         field.box = domainOf(*geometry);
@@ -339,6 +341,9 @@ class Walker {
             po.resolution = options_.useFileResolution || options_.targetError > 0
                                 ? scene::numberField(*geometry, "resolution", 0, 32)
                                 : o.resolution;
+            if (auto it = options_.resolutions.find(geometry); it != options_.resolutions.end())
+                po.resolution = it->second;
+            sm.resolution = po.resolution;
             // A target error (a fraction of the box diagonal) is the chord
             // tolerance of the adaptive parameter lines.
             if (options_.targetError > 0) {
@@ -365,6 +370,9 @@ class Walker {
         } else {
             if (options_.useFileResolution)
                 o.resolution = scene::numberField(*geometry, "resolution", 0, 32);
+            if (auto it = options_.resolutions.find(geometry); it != options_.resolutions.end())
+                o.resolution = it->second;
+            sm.resolution = o.resolution;
             r = cached(MeshCache::keyOf(field, o.resolution),
                        [&] { return meshImplicit(field, o); });
         }

@@ -14,6 +14,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace fl::mesh {
@@ -41,6 +42,9 @@ struct SceneMeshOptions {
     // Values for the formulas' named parameters (`param R = 0.8 in [0.2, 1.5];`)
     // other than their defaults: the suite's sliders set them.
     std::vector<std::pair<std::string, double>> parameters;
+    // Per FGeometry node: the resolution to mesh it at instead of its own
+    // (the viewer's level of detail). Shapes not listed use the rule above.
+    std::unordered_map<const scene::Node*, double> resolutions;
 };
 
 // Every named parameter of the scene's function definitions (each name once,
@@ -70,7 +74,10 @@ struct ShapeMesh {
     Mesh mesh;                      // in scene coordinates, or the shape's own (see placeInScene)
     Matrix4 placement = kIdentity4; // shape to scene (identity once placed in the scene)
     SurfaceLook look;
-    bool functionGeometry = true; // FGeometry (false: standard geometry)
+    bool functionGeometry = true;          // FGeometry (false: standard geometry)
+    const scene::Node* geometry = nullptr; // the FGeometry (function shapes)
+    Box3 domain;                           // its domain box, in the shape's coordinates
+    double resolution = 0;                 // what it was meshed at
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
     std::vector<std::string> warnings;

@@ -3,6 +3,7 @@
 #include "code_editor.h"
 #include "examples.h"
 #include "find_bar.h"
+#include "level_of_detail_control.h"
 #include "live_parser.h"
 #include "mesh/mesh_export.h"
 #include "mesh/scene_meshing.h"
@@ -127,6 +128,17 @@ MainWindow::MainWindow(QWidget* parent)
     });
     rateTimer_.start();
 
+    // Level of detail: a moment after the camera moves, shapes whose wanted
+    // resolution left its band are meshed again (in the background).
+    lod_ = std::make_unique<viewer::LevelOfDetail>();
+    lodTimer_.setSingleShot(true);
+    lodTimer_.setInterval(150);
+    connect(view_, &viewer::SceneWidget::poseChanged, this, [this] { lodTimer_.start(); });
+    connect(&lodTimer_, &QTimer::timeout, this, [this] {
+        if (view_->meshes() && lod_->update(*view_->meshes(), view_->pose(), view_->size()))
+            player_->setResolutions(lod_->resolutions());
+    });
+
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
@@ -152,7 +164,11 @@ void MainWindow::buildDocks() {
     column->addWidget(find_);
     dock(tr("Scene text"), "editor", editorPanel, Qt::LeftDockWidgetArea)->setMinimumWidth(420);
     auto* issuesDock = dock(tr("Issues"), "issues", issues_, Qt::BottomDockWidgetArea);
-    resizeDocks({issuesDock}, {110}, Qt::Vertical);
+    // A few lines tall: sized once the window has its layout (a saved state wins).
+    QTimer::singleShot(0, this, [this, issuesDock] {
+        if (!QSettings().contains(QStringLiteral("window/state")))
+            resizeDocks({issuesDock}, {110}, Qt::Vertical);
+    });
     tree_->setHeaderLabels({tr("Node"), tr("DEF")});
     auto* treeDock = dock(tr("Scene tree"), "tree", tree_, Qt::RightDockWidgetArea);
     auto* paramDock = dock(tr("Parameters"), "parameters", parameters_, Qt::RightDockWidgetArea);
@@ -224,6 +240,10 @@ void MainWindow::buildMenus() {
                            tr("FunctionLab %1: function-defined 3D objects for teaching.")
                                .arg(QCoreApplication::applicationVersion()));
     });
+}
+
+bool MainWindow::busy() const {
+    return parser_->pending() || player_->busy() || lodTimer_.isActive();
 }
 
 bool MainWindow::isModified() const {
@@ -385,6 +405,7 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     fillParameters(*scene);
     timeline_->setSpan(timelineSpan(*scene));
     player_->setParameters(parameterValues_);
+    lod_->clear();
     player_->setScene(scene);
 }
 
@@ -403,6 +424,7 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
         ms += s.stats.milliseconds;
     triangles_->setText(tr("%1 triangles").arg(view_->triangleCount()));
     meshTime_->setText(tr("meshed in %1 ms").arg(ms, 0, 'f', 0));
+    lodTimer_.start(); // the first frame of a scene is at the file's resolutions
 }
 
 void MainWindow::fillSceneTree(const scene::Scene& scene) {

@@ -29,6 +29,7 @@ class LiveParser;
 struct ParseOutcome;
 } // namespace fl::editor
 namespace fl::viewer {
+class LevelOfDetail;
 class SceneWidget;
 class ScenePlayer;
 } // namespace fl::viewer
@@ -52,6 +53,8 @@ class MainWindow : public QMainWindow {
     bool recoverUnsavedWork();
     QString currentPath() const { return path_; }
     bool isModified() const;
+    // Parsing, meshing or about to re-mesh for the level of detail.
+    bool busy() const;
     // Tests turn off the dialogs (unsaved-changes questions, message boxes).
     void setPromptsEnabled(bool on) { prompts_ = on; }
     QString lastProblem() const { return lastProblem_; }
@@ -65,6 +68,7 @@ class MainWindow : public QMainWindow {
     TimelineBar* timeline() const { return timeline_; }
     QWidget* parametersPanel() const { return parameters_; }
     QListWidget* examples() const { return examples_; }
+    const viewer::LevelOfDetail& levelOfDetail() const { return *lod_; }
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -105,7 +109,8 @@ class MainWindow : public QMainWindow {
     QComboBox* viewpoints_;
     QMenu* recentMenu_;
     QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
-    QTimer recoveryTimer_, rateTimer_;
+    QTimer recoveryTimer_, rateTimer_, lodTimer_;
+    std::unique_ptr<viewer::LevelOfDetail> lod_;
     QString path_;
     QString lastProblem_;
     bool prompts_ = true;

@@ -1,6 +1,7 @@
 #include "code_editor.h"
 #include "live_parser.h"
 #include "main_window.h"
+#include "navigation.h"
 #include "scene_player.h"
 #include "scene_widget.h"
 #include "timeline_bar.h"
@@ -59,9 +60,9 @@ bool settle(suite::MainWindow& w, int timeoutMs = 30000) {
     clock.start();
     QTest::qWait(50);
     while (clock.elapsed() < timeoutMs) {
-        if (!w.parser()->pending() && !w.player()->busy()) {
-            QTest::qWait(100); // the last frame reaches the view
-            if (!w.parser()->pending() && !w.player()->busy()) return true;
+        if (!w.busy()) {
+            QTest::qWait(200); // the last frame reaches the view (and the LOD looks at it)
+            if (!w.busy()) return true;
         }
         QTest::qWait(20);
     }
@@ -212,6 +213,35 @@ class WindowTest : public QObject {
         QVERIFY(settle(w));
         QVERIFY(w.player()->framesDelivered() > frames); // the hands moved ...
         QCOMPARE(w.player()->meshesMade(), made);        // ... without a single new mesh
+    }
+
+    void approachingTheWatermelonRefinesItInAFewRemeshes() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("watermelon.x3d")));
+        QVERIFY(settle(w));
+        auto resolution = [&] {
+            for (const auto& s : w.view()->meshes()->shapes)
+                if (s.functionGeometry) return s.resolution;
+            return 0.0;
+        };
+        const double far = resolution();
+        const std::size_t made = w.player()->meshesMade();
+        // Twenty small steps in, as a wheel would, each shown for a moment.
+        for (int step = 0; step < 20; ++step) {
+            w.view()->setPose(viewer::zoom(w.view()->pose(), 0.25f));
+            QTest::qWait(60);
+        }
+        QVERIFY(settle(w));
+        const std::size_t remeshes = w.player()->meshesMade() - made;
+        qInfo("watermelon level of detail: resolution %.1f -> %.1f in %zu re-meshes", far,
+              resolution(), remeshes);
+        QVERIFY2(resolution() > far, qPrintable(QString("%1 -> %2").arg(far).arg(resolution())));
+        QVERIFY2(remeshes >= 1 && remeshes <= 8, qPrintable(QString::number(remeshes)));
+        save(screenshot(w), "window-watermelon-close");
     }
 
     void unreadableFilesAreExplainedNotFatal() {

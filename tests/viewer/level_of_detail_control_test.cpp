@@ -1,0 +1,65 @@
+// The view's level of detail: approaching refines in a few steps, moving a
+// little never re-meshes, lod FALSE keeps the file's resolution, and the
+// resolution stays within lodRange.
+#include "level_of_detail_control.h"
+
+#include "scene/scene_reader.h"
+
+#include <gtest/gtest.h>
+
+using namespace fl;
+
+namespace {
+
+std::unique_ptr<scene::Scene> read(const std::string& body) {
+    auto r = scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "lod.x3dv");
+    EXPECT_TRUE(r.ok());
+    return std::move(r.scene);
+}
+
+viewer::CameraPose at(float z) {
+    viewer::CameraPose p;
+    p.position = {0, 0, z};
+    p.viewCenter = {0, 0, 0};
+    return p;
+}
+
+} // namespace
+
+TEST(LevelOfDetail, ApproachingRefinesInAFewStepsWithinLodRange) {
+    auto scene = read(R"x(FShape { geometry FGeometry { definition "1 - x*x - y*y - z*z"
+                                                        lodRange 8 200 } })x");
+    mesh::SceneMeshOptions o;
+    o.placeInScene = false;
+    const mesh::SceneMeshes meshes = mesh::meshScene(*scene, o);
+    viewer::LevelOfDetail lod;
+    int changes = 0;
+    double last = 0;
+    for (float z = 60; z >= 2.5f; z *= 0.97f) { // ~100 small steps in
+        if (lod.update(meshes, at(z), QSize(800, 600))) ++changes;
+        ASSERT_EQ(lod.resolutions().size(), 1u);
+        const double r = lod.resolutions().begin()->second;
+        EXPECT_GE(r, last); // never coarser while approaching
+        EXPECT_GE(r, 8);
+        EXPECT_LE(r, 200);
+        last = r;
+    }
+    EXPECT_GT(last, 100);
+    EXPECT_LE(changes, 12) << "the band should keep re-meshing rare";
+    // Shaking the camera by 1% changes nothing.
+    EXPECT_FALSE(lod.update(meshes, at(2.52f), QSize(800, 600)));
+    // Far away: the coarsest.
+    lod.update(meshes, at(1e4f), QSize(800, 600));
+    EXPECT_EQ(lod.resolutions().begin()->second, 8);
+}
+
+TEST(LevelOfDetail, LodFalseKeepsTheFilesResolution) {
+    auto scene = read(R"x(FShape { geometry FGeometry { definition "1 - x*x - y*y - z*z"
+                                                        lod FALSE resolution 20 } })x");
+    mesh::SceneMeshOptions o;
+    const mesh::SceneMeshes meshes = mesh::meshScene(*scene, o);
+    viewer::LevelOfDetail lod;
+    EXPECT_FALSE(lod.update(meshes, at(2), QSize(800, 600)));
+    EXPECT_TRUE(lod.resolutions().empty());
+    EXPECT_EQ(meshes.shapes[0].resolution, 20);
+}

@@ -1,0 +1,70 @@
+#include "level_of_detail_control.h"
+
+#include "mesh/level_of_detail.h"
+#include "scene/field_access.h"
+
+#include <QMatrix4x4>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fl::viewer {
+namespace {
+
+// The shape's domain box in the scene, as the box round its eight corners.
+mesh::Box3 sceneBox(const mesh::ShapeMesh& s) {
+    mesh::Box3 out{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+    const auto& m = s.placement;
+    for (int c = 0; c < 8; ++c) {
+        const double p[3] = {c & 1 ? s.domain.hi[0] : s.domain.lo[0],
+                             c & 2 ? s.domain.hi[1] : s.domain.lo[1],
+                             c & 4 ? s.domain.hi[2] : s.domain.lo[2]};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double q = m[k] * p[0] + m[4 + k] * p[1] + m[8 + k] * p[2] + m[12 + k];
+            out.lo[k] = std::min(out.lo[k], q);
+            out.hi[k] = std::max(out.hi[k], q);
+        }
+    }
+    return out;
+}
+
+double distanceTo(const mesh::Box3& box, const QVector3D& eye) {
+    double d2 = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const double e = eye[int(k)];
+        const double d = e < box.lo[k] ? box.lo[k] - e : e > box.hi[k] ? e - box.hi[k] : 0;
+        d2 += d * d;
+    }
+    return std::sqrt(d2);
+}
+
+} // namespace
+
+bool LevelOfDetail::update(const mesh::SceneMeshes& meshes, const CameraPose& pose,
+                           QSize viewport) {
+    bool changed = false;
+    for (const mesh::ShapeMesh& s : meshes.shapes) {
+        if (!s.geometry || !scene::boolField(*s.geometry, "lod") || !s.error.empty()) continue;
+        const auto range = scene::numbersField(*s.geometry, "lodRange");
+        const double lo = range.size() == 2 ? range[0] : 8, hi = range.size() == 2 ? range[1] : 256;
+        const mesh::Box3 box = sceneBox(s);
+        mesh::ViewForLod view;
+        view.distance = distanceTo(box, pose.position);
+        view.fieldOfViewY = double(pose.verticalFieldOfView) * std::numbers::pi / 180;
+        view.viewportHeight = std::max(viewport.height(), 1);
+        view.pixelError = pixelError;
+        const double wanted = mesh::resolutionForView(box, view, lo, hi);
+        auto it = resolutions_.find(s.geometry);
+        const double current = it != resolutions_.end() ? it->second : s.resolution;
+        // At the ends of lodRange a clamped wish is always taken.
+        const bool atLimit = (wanted == lo || wanted == hi) && wanted != current;
+        if (atLimit || mesh::lodChangeWorthIt(current, wanted, hysteresis)) {
+            resolutions_[s.geometry] = wanted;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
+} // namespace fl::viewer
