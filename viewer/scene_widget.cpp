@@ -124,14 +124,19 @@ bool SceneWidget::eventFilter(QObject* watched, QEvent* event) {
         break;
     case QEvent::MouseButtonPress: {
         auto* e = static_cast<QMouseEvent*>(event);
-        lastMouse_ = e->position().toPoint();
+        lastMouse_ = pressedAt_ = e->position().toPoint();
         buttons_ = e->buttons();
         container_->setFocus();
         return true;
     }
-    case QEvent::MouseButtonRelease:
-        buttons_ = static_cast<QMouseEvent*>(event)->buttons();
+    case QEvent::MouseButtonRelease: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        buttons_ = e->buttons();
+        if (e->button() == Qt::LeftButton &&
+            (e->position().toPoint() - pressedAt_).manhattanLength() < 4)
+            Q_EMIT clicked(e->position());
         return true;
+    }
     case QEvent::MouseMove: {
         auto* e = static_cast<QMouseEvent*>(event);
         const QPoint p = e->position().toPoint();

@@ -10,6 +10,7 @@
 
 #include <QImage>
 #include <QPoint>
+#include <QPointF>
 #include <QWidget>
 
 #include <memory>
@@ -49,6 +50,8 @@ class SceneWidget : public QWidget {
 
   Q_SIGNALS:
     void poseChanged();
+    // A click (press and release without dragging) at this pixel of the view.
+    void clicked(QPointF pixel);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -68,7 +71,7 @@ class SceneWidget : public QWidget {
     int boundViewpoint_ = 0;
     bool cameraPlaced_ = false;
     Navigation navigation_ = Navigation::Examine;
-    QPoint lastMouse_;
+    QPoint lastMouse_, pressedAt_;
     Qt::MouseButtons buttons_;
 };
 

@@ -303,6 +303,8 @@ class Walker {
         field.box = domainOf(*geometry);
         field.t = timeOf(*geometry);
         field.parameters = parametersFor(*tape);
+        sm.t = field.t;
+        sm.parameters = field.parameters;
         // A displacement texture: added to f here, or moves a parametric
         // surface along its normals once meshed.
         const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));

@@ -78,6 +78,8 @@ struct ShapeMesh {
     const scene::Node* geometry = nullptr; // the FGeometry (function shapes)
     Box3 domain;                           // its domain box, in the shape's coordinates
     double resolution = 0;                 // what it was meshed at
+    double t = 0;                          // the geometry's t at the moment meshed
+    std::vector<std::pair<std::string, double>> parameters; // `param` values used
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
     std::vector<std::string> warnings;

@@ -7,6 +7,7 @@
 #include "live_parser.h"
 #include "mesh/mesh_export.h"
 #include "mesh/scene_meshing.h"
+#include "picking.h"
 #include "scene/field_access.h"
 #include "scene/gzip.h"
 #include "scene/scene_reader.h"
@@ -134,6 +135,23 @@ MainWindow::MainWindow(QWidget* parent)
     lodTimer_.setSingleShot(true);
     lodTimer_.setInterval(150);
     connect(view_, &viewer::SceneWidget::poseChanged, this, [this] { lodTimer_.start(); });
+    // A click names the point under the cursor: on the function itself where
+    // the shape is implicit or explicit.
+    connect(view_, &viewer::SceneWidget::clicked, this, [this](QPointF pixel) {
+        if (!scene_ || !view_->meshes()) return;
+        const auto p = viewer::pick(*scene_, *view_->meshes(),
+                                    viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
+        if (!p) {
+            statusBar()->showMessage(tr("Nothing there"), 3000);
+            return;
+        }
+        statusBar()->showMessage(tr("(%1, %2, %3) on %4%5")
+                                     .arg(p->point[0], 0, 'g', 6)
+                                     .arg(p->point[1], 0, 'g', 6)
+                                     .arg(p->point[2], 0, 'g', 6)
+                                     .arg(QString::fromStdString(p->shape))
+                                     .arg(p->onFunction ? tr(", on f = 0") : QString()));
+    });
     connect(&lodTimer_, &QTimer::timeout, this, [this] {
         if (view_->meshes() && lod_->update(*view_->meshes(), view_->pose(), view_->size()))
             player_->setResolutions(lod_->resolutions());

@@ -1,0 +1,67 @@
+// Picking finds the point on the function itself (to rounding, where the
+// mesh's chords are a thousandth off), through transforms, and on standard
+// shapes by their triangles; a ray that misses finds nothing.
+#include "picking.h"
+
+#include "scene/scene_reader.h"
+
+#include <gtest/gtest.h>
+
+using namespace fl;
+
+namespace {
+
+struct Picked {
+    std::unique_ptr<scene::Scene> scene;
+    mesh::SceneMeshes meshes;
+};
+
+Picked load(const std::string& body) {
+    auto r = scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "pick.x3dv");
+    EXPECT_TRUE(r.ok());
+    Picked p;
+    p.scene = std::move(r.scene);
+    mesh::SceneMeshOptions o;
+    o.placeInScene = false;
+    p.meshes = mesh::meshScene(*p.scene, o);
+    return p;
+}
+
+} // namespace
+
+TEST(Picking, TheFunctionItselfIsHitNotItsMesh) {
+    const Picked s = load(R"x(Transform { translation 1 0 0 children
+        FShape { geometry FGeometry { definition "0.64 - x*x - y*y - z*z" resolution 12 } } })x");
+    const viewer::Ray ray{{1.1f, 0.2f, 5}, QVector3D(0, 0, -1)};
+    const auto p = viewer::pick(*s.scene, s.meshes, ray);
+    ASSERT_TRUE(p);
+    EXPECT_TRUE(p->onFunction);
+    const double x = p->point[0] - 1, y = p->point[1], z = p->point[2];
+    EXPECT_NEAR(std::sqrt(x * x + y * y + z * z), 0.8, 1e-6); // a coarse mesh is ~1e-2 off
+    EXPECT_NEAR(p->point[0], 1.1, 1e-6);
+    EXPECT_GT(p->normal[2], 0.9); // outward, towards the eye
+    EXPECT_NEAR(p->distance, 5 - z, 1e-6);
+}
+
+TEST(Picking, StandardShapesByTheirTrianglesAndTheNearestWins) {
+    const Picked s = load(R"x(
+        Transform { translation 0 0 2 children Shape { geometry Box { size 1 1 1 } } }
+        FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" } })x");
+    const auto p = viewer::pick(*s.scene, s.meshes, {{0.1f, 0.1f, 10}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(p);
+    EXPECT_FALSE(p->onFunction);
+    EXPECT_NEAR(p->point[2], 2.5, 1e-6); // the box's front face, before the ball
+    EXPECT_NEAR(p->normal[2], 1, 1e-6);
+    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{5, 5, 10}, QVector3D(0, 0, -1)}));
+}
+
+TEST(Picking, APixelsRayGoesThroughWhatItShows) {
+    viewer::CameraPose pose;
+    pose.position = {0, 0, 10};
+    const viewer::Ray centre = viewer::rayThroughPixel(pose, QSize(800, 600), QPointF(400, 300));
+    EXPECT_NEAR(centre.direction.z(), -1, 1e-5);
+    const viewer::Ray right = viewer::rayThroughPixel(pose, QSize(800, 600), QPointF(800, 300));
+    EXPECT_GT(right.direction.x(), 0.3); // the right edge of a 45 degree, 4:3 view
+    const viewer::Ray top = viewer::rayThroughPixel(pose, QSize(800, 600), QPointF(400, 0));
+    EXPECT_NEAR(top.direction.y() / -top.direction.z(), std::tan(22.5 * M_PI / 180), 1e-4);
+}

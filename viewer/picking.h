@@ -1,0 +1,39 @@
+#pragma once
+// The point of a scene under the cursor. On implicit and explicit shapes it
+// is found on the function itself — the ray is marched through the shape's
+// domain box and the sign change refined by bisection, so the point is on
+// f = 0 to rounding, not on the mesh's chords — and elsewhere on the nearest
+// triangle. Plain math over the scene and its meshes.
+#include "camera_pose.h"
+#include "mesh/scene_meshing.h"
+#include "scene/scene.h"
+
+#include <QPointF>
+#include <QSize>
+#include <QVector3D>
+
+#include <optional>
+#include <string>
+
+namespace fl::viewer {
+
+struct Ray {
+    QVector3D origin;
+    QVector3D direction; // unit
+};
+
+// The ray from the eye through a pixel (0, 0 top left) of a view of `viewport`.
+Ray rayThroughPixel(const CameraPose& pose, QSize viewport, QPointF pixel);
+
+struct Pick {
+    std::array<double, 3> point{};  // in the scene
+    std::array<double, 3> normal{}; // unit, outward
+    double distance = 0;            // along the ray
+    std::string shape;              // the ShapeMesh's name
+    bool onFunction = false;        // found on f = 0 (else on a triangle)
+};
+
+std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& meshes,
+                         const Ray& ray);
+
+} // namespace fl::viewer
