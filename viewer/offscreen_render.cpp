@@ -52,7 +52,7 @@ std::optional<QImage> renderOffscreen(const mesh::SceneMeshes& meshes,
     }
     auto* root = new Qt3DCore::QEntity;
     RenderScene scene(root);
-    scene.setMeshes(meshes);
+    scene.setMeshes(std::make_shared<const mesh::SceneMeshes>(meshes));
     const float aspect = float(request.size.width()) / float(request.size.height());
     std::optional<CameraPose> pose = request.pose;
     if (!pose) pose = poseFor(meshes.view, scene.bounds(), request.viewpoint, aspect, error);

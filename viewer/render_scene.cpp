@@ -47,12 +47,36 @@ Qt3DRender::QParameter* RenderScene::parameter(const char* name, const QVariant&
     return p;
 }
 
-void RenderScene::setMeshes(const mesh::SceneMeshes& meshes) {
+void RenderScene::setDrawAs(DrawAs as) {
+    drawAs_ = as;
+    if (last_) setMeshes(last_);
+}
+
+void RenderScene::setShowDomains(bool on) {
+    showDomains_ = on;
+    if (last_) setMeshes(last_);
+}
+
+void RenderScene::setMeshes(std::shared_ptr<const mesh::SceneMeshes> shared) {
+    last_ = std::move(shared);
+    const mesh::SceneMeshes& meshes = *last_;
     for (auto* e : entities_)
         delete e;
     entities_.clear();
     bounds_ = {};
     for (const mesh::ShapeMesh& shape : meshes.shapes) {
+        if (showDomains_ && shape.geometry && shape.error.empty()) {
+            auto* outline = new Qt3DCore::QEntity(root_);
+            outline->addComponent(
+                makeBoxOutline(shape.domain.lo, shape.domain.hi, {1, 0.85f, 0.2f, 1}, outline));
+            mesh::SurfaceLook plain;
+            plain.lit = false;
+            outline->addComponent(new SurfaceMaterial(plain, {}, shader_, outline));
+            auto* t = new Qt3DCore::QTransform(outline);
+            t->setMatrix(toMatrix(shape.placement));
+            outline->addComponent(t);
+            entities_.push_back(outline);
+        }
         if (shape.mesh.empty() || !shape.error.empty()) continue;
         auto* entity = new Qt3DCore::QEntity(root_);
         entity->setObjectName(QString::fromStdString(shape.name));
@@ -60,10 +84,11 @@ void RenderScene::setMeshes(const mesh::SceneMeshes& meshes) {
         const std::array<float, 4> colour = shape.look.lit
                                                 ? std::array<float, 4>{0.8f, 0.8f, 0.8f, 1}
                                                 : std::array<float, 4>{1, 1, 1, 1};
-        entity->addComponent(makeGeometryRenderer(shape.mesh, colour, entity));
+        entity->addComponent(makeGeometryRenderer(shape.mesh, colour, entity, drawAs_));
         SurfaceOptions options;
         options.transparent = hasTransparency(shape.mesh, colour);
-        options.points = shape.mesh.isPointCloud();
+        options.points = shape.mesh.isPointCloud() || drawAs_ == DrawAs::Vertices;
+        options.bothSides = cutOpen_;
         entity->addComponent(new SurfaceMaterial(shape.look, options, shader_, entity));
         auto* transform = new Qt3DCore::QTransform(entity);
         const QMatrix4x4 placement = toMatrix(shape.placement);
@@ -113,6 +138,11 @@ void RenderScene::setHeadlight(bool on) {
 }
 
 void RenderScene::setClipPlane(std::optional<QVector4D> plane) {
+    // Cut open, a solid shows its inside: its back faces are drawn too.
+    if (plane.has_value() != cutOpen_) {
+        cutOpen_ = plane.has_value();
+        if (last_) setMeshes(last_);
+    }
     parameter("clipOn", plane ? 1 : 0);
     parameter("clipPlane", plane.value_or(QVector4D(0, 0, 0, 1)));
 }

@@ -3,6 +3,7 @@
 // placement as a transform, its material), and the scene-wide shader inputs
 // (lights, headlight, clip plane) as parameters for the frame graph.
 #include "mesh/scene_meshing.h"
+#include "mesh_geometry.h"
 
 #include <QVector3D>
 #include <QVector4D>
@@ -10,6 +11,7 @@
 #include <Qt3DRender/QParameter>
 #include <Qt3DRender/QShaderProgram>
 
+#include <memory>
 #include <vector>
 
 namespace fl::viewer {
@@ -29,13 +31,18 @@ class RenderScene {
 
     // Replaces every shape with the meshes' (kept in their own coordinates
     // with their placement, or already placed in the scene: both work).
-    void setMeshes(const mesh::SceneMeshes& meshes);
+    void setMeshes(std::shared_ptr<const mesh::SceneMeshes> meshes);
     const Bounds& bounds() const { return bounds_; }
     std::size_t shapeCount() const { return entities_.size(); }
 
     // Parameters every pass reads: attach them to the frame graph's technique filter.
     const std::vector<Qt3DRender::QParameter*>& frameParameters() const { return frame_; }
     void setHeadlight(bool on);
+    // Shaded faces, wireframe edges or vertices as points (re-made from the last meshes).
+    void setDrawAs(DrawAs as);
+    DrawAs drawAs() const { return drawAs_; }
+    // The domain boxes of function shapes, drawn as outlines.
+    void setShowDomains(bool on);
     // Points where a·x + b·y + c·z + d < 0 are cut away; nullopt: no cut.
     void setClipPlane(std::optional<QVector4D> plane);
 
@@ -48,6 +55,10 @@ class RenderScene {
     std::vector<Qt3DCore::QEntity*> entities_;
     std::vector<Qt3DRender::QParameter*> frame_;
     Bounds bounds_;
+    DrawAs drawAs_ = DrawAs::Faces;
+    bool showDomains_ = false;
+    bool cutOpen_ = false; // a clip plane is on: inner faces show through the cut
+    std::shared_ptr<const mesh::SceneMeshes> last_; // for re-making in another mode
 };
 
 } // namespace fl::viewer

@@ -42,6 +42,10 @@ SceneWidget::SceneWidget(QWidget* parent)
 
 SceneWidget::~SceneWidget() = default;
 
+QWindow* SceneWidget::renderWindow() const {
+    return window_;
+}
+
 float SceneWidget::aspect() const {
     const QSize s = window_->size();
     return s.height() > 0 ? float(s.width()) / float(s.height()) : 4.0f / 3.0f;
@@ -50,7 +54,7 @@ float SceneWidget::aspect() const {
 void SceneWidget::setMeshes(std::shared_ptr<const mesh::SceneMeshes> meshes) {
     meshes_ = std::move(meshes);
     if (!meshes_) return;
-    scene_->setMeshes(*meshes_);
+    scene_->setMeshes(meshes_);
     triangles_ = 0;
     for (const auto& s : meshes_->shapes)
         triangles_ += s.mesh.triangleCount();

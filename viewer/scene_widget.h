@@ -44,6 +44,10 @@ class SceneWidget : public QWidget {
     CameraPose pose() const { return pose_; }
     void setPose(const CameraPose& pose);
     void setClipPlane(std::optional<QVector4D> plane);
+    void setDrawAs(DrawAs as) { scene_->setDrawAs(as); }
+    void setShowDomains(bool on) { scene_->setShowDomains(on); }
+    const Bounds& bounds() const { return scene_->bounds(); }
+    QWindow* renderWindow() const;
 
     // The frame on screen now, as an image (empty after `timeoutMs`).
     QImage grabFrame(int timeoutMs = 5000);

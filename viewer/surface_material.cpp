@@ -63,7 +63,8 @@ SurfaceMaterial::SurfaceMaterial(const mesh::SurfaceLook& look, const SurfaceOpt
     // X3D `solid`: only the front faces (a see-through solid too: light
     // passes its front once); else both, lit from the side seen.
     auto* cull = new Qt3DRender::QCullFace(pass);
-    cull->setMode(look.solid ? Qt3DRender::QCullFace::Back : Qt3DRender::QCullFace::NoCulling);
+    const bool solid = look.solid && !options.bothSides;
+    cull->setMode(solid ? Qt3DRender::QCullFace::Back : Qt3DRender::QCullFace::NoCulling);
     pass->addRenderState(cull);
     if (options.transparent) {
         auto* blend = new Qt3DRender::QBlendEquationArguments(pass);
@@ -94,7 +95,7 @@ SurfaceMaterial::SurfaceMaterial(const mesh::SurfaceLook& look, const SurfaceOpt
     param("specular", vec(look.specular));
     param("shininess", look.shininess);
     param("ambientIntensity", look.ambientIntensity);
-    param("twoSided", look.solid ? 0 : 1);
+    param("twoSided", solid ? 0 : 1);
     param("pointSize", options.pointSize);
 }
 

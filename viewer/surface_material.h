@@ -22,6 +22,7 @@ struct SurfaceOptions {
     bool transparent = false;
     bool points = false;
     float pointSize = 3;
+    bool bothSides = false; // draw back faces too, whatever the look says (a cut-open scene)
 };
 
 class SurfaceMaterial : public Qt3DRender::QMaterial {

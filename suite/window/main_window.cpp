@@ -7,6 +7,7 @@
 #include "live_parser.h"
 #include "mesh/mesh_export.h"
 #include "mesh/scene_meshing.h"
+#include "mesh_geometry.h"
 #include "picking.h"
 #include "scene/field_access.h"
 #include "scene/gzip.h"
@@ -18,6 +19,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QCheckBox>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
@@ -242,6 +244,20 @@ void MainWindow::buildMenus() {
     examine->setChecked(true);
     view->addAction(tr("&Reset View"), QKeySequence(Qt::Key_Home), view_,
                     &viewer::SceneWidget::resetView);
+    view->addSeparator();
+    auto* drawGroup = new QActionGroup(this);
+    const std::pair<QString, viewer::DrawAs> modes[] = {{tr("&Shaded"), viewer::DrawAs::Faces},
+                                                        {tr("&Wireframe"), viewer::DrawAs::Edges},
+                                                        {tr("&Points"), viewer::DrawAs::Vertices}};
+    for (const auto& [name, mode] : modes) {
+        QAction* a = view->addAction(name, this, [this, mode = mode] { view_->setDrawAs(mode); });
+        a->setCheckable(true);
+        a->setChecked(mode == viewer::DrawAs::Faces);
+        drawGroup->addAction(a);
+    }
+    QAction* domains = view->addAction(tr("Show &Domain Boxes"), this,
+                                       [this](bool on) { view_->setShowDomains(on); });
+    domains->setCheckable(true);
     view->addAction(tr("&Play / Pause"), QKeySequence(Qt::CTRL | Qt::Key_Space), this,
                     [this] { timeline_->playButton()->toggle(); });
 
@@ -249,6 +265,38 @@ void MainWindow::buildMenus() {
     viewBar->setObjectName(QStringLiteral("view"));
     viewBar->addWidget(new QLabel(tr(" Viewpoint ")));
     viewBar->addWidget(viewpoints_);
+    // A cross-section: everything beyond a plane across x, y or z is cut away.
+    viewBar->addSeparator();
+    auto* cut = new QCheckBox(tr("Cut"));
+    cut->setObjectName(QStringLiteral("cut"));
+    auto* cutAxis = new QComboBox;
+    cutAxis->addItems({QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")});
+    cutAxis->setCurrentIndex(2);
+    auto* cutAt = new QSlider(Qt::Horizontal);
+    cutAt->setObjectName(QStringLiteral("cut-position"));
+    cutAt->setRange(0, 1000);
+    cutAt->setValue(500);
+    cutAt->setMaximumWidth(200);
+    cutAt->setToolTip(tr("Where the cut goes, across the scene's bounds"));
+    viewBar->addWidget(cut);
+    viewBar->addWidget(cutAxis);
+    viewBar->addWidget(cutAt);
+    auto applyCut = [this, cut, cutAxis, cutAt] {
+        if (!cut->isChecked()) {
+            view_->setClipPlane(std::nullopt);
+            return;
+        }
+        const int axis = cutAxis->currentIndex();
+        const viewer::Bounds& b = view_->bounds();
+        const float lo = b.empty() ? -1 : b.lo[axis], hi = b.empty() ? 1 : b.hi[axis];
+        const float at = lo + (hi - lo) * float(cutAt->value()) / 1000.0f;
+        QVector4D plane(0, 0, 0, at);
+        plane[axis] = -1; // keep where the coordinate is below `at`
+        view_->setClipPlane(plane);
+    };
+    connect(cut, &QCheckBox::toggled, this, applyCut);
+    connect(cutAxis, &QComboBox::currentIndexChanged, this, applyCut);
+    connect(cutAt, &QSlider::valueChanged, this, applyCut);
     connect(viewpoints_, &QComboBox::activated, this,
             [this](int index) { view_->bindViewpoint(viewpoints_->itemData(index).toInt()); });
 

@@ -1,17 +1,20 @@
 #include "code_editor.h"
 #include "live_parser.h"
 #include "main_window.h"
+#include "mesh_geometry.h"
 #include "navigation.h"
 #include "scene_player.h"
 #include "scene_widget.h"
 #include "timeline_bar.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QListWidget>
 #include <QPainter>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QTest>
 #include <QTextBlock>
@@ -242,6 +245,57 @@ class WindowTest : public QObject {
         QVERIFY2(resolution() > far, qPrintable(QString("%1 -> %2").arg(far).arg(resolution())));
         QVERIFY2(remeshes >= 1 && remeshes <= 8, qPrintable(QString::number(remeshes)));
         save(screenshot(w), "window-watermelon-close");
+    }
+
+    void displayModesDomainBoxesCutsAndPicking() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.newScene(); // a unit ball at the origin, seen from z = 4
+        QVERIFY(settle(w));
+        const QImage shaded = w.view()->grabFrame();
+        w.view()->setDrawAs(viewer::DrawAs::Edges);
+        QTest::qWait(200);
+        const QImage wire = w.view()->grabFrame();
+        w.view()->setDrawAs(viewer::DrawAs::Vertices);
+        QTest::qWait(200);
+        const QImage points = w.view()->grabFrame();
+        w.view()->setDrawAs(viewer::DrawAs::Faces);
+        QVERIFY(notBackground(wire) > 0.02 && notBackground(points) > 0.02);
+        QVERIFY(wire != shaded && points != shaded && wire != points);
+        // Wireframe leaves the background showing between the edges.
+        QVERIFY(notBackground(wire) < notBackground(shaded));
+        save(wire, "mode-wireframe");
+        save(points, "mode-points");
+
+        w.view()->setShowDomains(true);
+        QTest::qWait(200);
+        const QImage boxes = w.view()->grabFrame();
+        w.view()->setShowDomains(false);
+        QVERIFY(boxes != shaded);
+        save(boxes, "domain-boxes");
+
+        auto* cut = w.findChild<QCheckBox*>(QStringLiteral("cut"));
+        QVERIFY(cut);
+        cut->setChecked(true); // z, at the middle: the front half goes
+        QTest::qWait(200);
+        const QImage halved = w.view()->grabFrame();
+        cut->setChecked(false);
+        QVERIFY(halved != shaded);
+        QVERIFY(notBackground(halved) > 0.02); // the inside of the back half shows
+        save(halved, "cut-z");
+
+        // A click at the middle of the view names the ball's front point, on f = 0.
+        QTest::qWait(200);
+        const QPoint middle(w.view()->width() / 2, w.view()->height() / 2);
+        QTest::mouseClick(w.view()->renderWindow(), Qt::LeftButton, {}, middle);
+        QTRY_VERIFY_WITH_TIMEOUT(w.statusBar()->currentMessage().contains(QStringLiteral("f = 0")),
+                                 3000);
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral(", 1)")) ||
+                     w.statusBar()->currentMessage().contains(QStringLiteral(", 0.99")),
+                 qPrintable(w.statusBar()->currentMessage()));
     }
 
     void unreadableFilesAreExplainedNotFatal() {
