@@ -39,6 +39,8 @@ class SceneWidget : public QWidget {
     QStringList viewpointNames() const;
     void bindViewpoint(int index); // -1: a view of the whole scene
     void resetView();              // the bound viewpoint again
+    // The next meshes are a new scene: the camera goes to its first viewpoint.
+    void placeCameraOnNextMeshes() { cameraPlaced_ = false; }
     void setNavigation(Navigation n);
     Navigation navigation() const { return navigation_; }
     CameraPose pose() const { return pose_; }

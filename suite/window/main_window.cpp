@@ -237,6 +237,8 @@ void MainWindow::buildMenus() {
     QAction* walkMode = view->addAction(tr("&Walk (first person)"), this, [this] {
         view_->setNavigation(viewer::SceneWidget::Navigation::Walk);
     });
+    examineAction_ = examine;
+    walkAction_ = walkMode;
     for (QAction* a : {examine, walkMode}) {
         a->setCheckable(true);
         group->addAction(a);
@@ -327,6 +329,7 @@ void MainWindow::setPath(const QString& path) {
 
 void MainWindow::newScene() {
     setPath({});
+    firstFrameOfScene_ = true;
     editor_->setPlainText(QString::fromUtf8(kNewScene));
     editor_->document()->setModified(false);
     parser_->parseNow();
@@ -361,6 +364,7 @@ bool MainWindow::openFile(const QString& path, QString* error) {
         bytes = QByteArray::fromStdString(*text);
     }
     setPath(path);
+    firstFrameOfScene_ = true;
     editor_->setPlainText(QString::fromUtf8(bytes));
     editor_->document()->setModified(false);
     setWindowModified(false);
@@ -476,6 +480,15 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
 }
 
 void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double) {
+    // A scene's NavigationInfo picks how one moves through it, once, when it opens.
+    if (firstFrameOfScene_) {
+        firstFrameOfScene_ = false;
+        view_->placeCameraOnNextMeshes();
+        const auto& types = meshes->view.navigation.types;
+        const bool walk = meshes->view.hasNavigation && !types.empty() &&
+                          (types.front() == "WALK" || types.front() == "FLY");
+        (walk ? walkAction_ : examineAction_)->trigger();
+    }
     const QStringList before = view_->viewpointNames();
     view_->setMeshes(meshes);
     const QStringList names = view_->viewpointNames();

@@ -15,6 +15,7 @@ class QTreeWidget;
 class QComboBox;
 class QMenu;
 class QFormLayout;
+class QAction;
 
 namespace fl::scene {
 struct Scene;
@@ -107,6 +108,8 @@ class MainWindow : public QMainWindow {
     QWidget* parameters_;
     QFormLayout* parameterForm_;
     QComboBox* viewpoints_;
+    QAction *examineAction_ = nullptr, *walkAction_ = nullptr;
+    bool firstFrameOfScene_ = true;
     QMenu* recentMenu_;
     QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
     QTimer recoveryTimer_, rateTimer_, lodTimer_;
