@@ -47,59 +47,113 @@ Qt3DRender::QParameter* RenderScene::parameter(const char* name, const QVariant&
     return p;
 }
 
+std::size_t RenderScene::shapeCount() const {
+    std::size_t n = 0;
+    for (const Drawn& d : drawn_)
+        n += d.entity ? 1 : 0;
+    return n;
+}
+
 void RenderScene::setDrawAs(DrawAs as) {
     drawAs_ = as;
-    if (last_) setMeshes(last_);
+    rebuild();
 }
 
 void RenderScene::setShowDomains(bool on) {
     showDomains_ = on;
-    if (last_) setMeshes(last_);
+    rebuild();
+}
+
+void RenderScene::rebuild() {
+    if (!last_) return;
+    auto meshes = last_;
+    clearShapes();
+    setMeshes(meshes);
+}
+
+void RenderScene::clearShapes() {
+    for (Drawn& d : drawn_) {
+        delete d.entity;
+        delete d.outline;
+    }
+    drawn_.clear();
+}
+
+// Whether two meshes draw the same (then only the placement may differ).
+static bool sameMesh(const mesh::Mesh& a, const mesh::Mesh& b) {
+    return a.primitive == b.primitive && a.positions == b.positions && a.normals == b.normals &&
+           a.colours == b.colours && a.triangles == b.triangles;
 }
 
 void RenderScene::setMeshes(std::shared_ptr<const mesh::SceneMeshes> shared) {
+    const std::shared_ptr<const mesh::SceneMeshes> previous = last_;
     last_ = std::move(shared);
     const mesh::SceneMeshes& meshes = *last_;
-    for (auto* e : entities_)
-        delete e;
-    entities_.clear();
+    // The same shapes as before (a new moment of one scene): each keeps its
+    // entity if its mesh did not change, and only its matrix moves.
+    bool sameShapes = previous && drawn_.size() == meshes.shapes.size();
+    for (std::size_t i = 0; sameShapes && i < drawn_.size(); ++i)
+        sameShapes = drawn_[i].shape == meshes.shapes[i].shape;
+    if (!sameShapes) clearShapes();
+    drawn_.resize(meshes.shapes.size());
     bounds_ = {};
-    for (const mesh::ShapeMesh& shape : meshes.shapes) {
-        if (showDomains_ && shape.geometry && shape.error.empty()) {
-            auto* outline = new Qt3DCore::QEntity(root_);
-            outline->addComponent(
-                makeBoxOutline(shape.domain.lo, shape.domain.hi, {1, 0.85f, 0.2f, 1}, outline));
-            mesh::SurfaceLook plain;
-            plain.lit = false;
-            outline->addComponent(new SurfaceMaterial(plain, {}, shader_, outline));
-            auto* t = new Qt3DCore::QTransform(outline);
-            t->setMatrix(toMatrix(shape.placement));
-            outline->addComponent(t);
-            entities_.push_back(outline);
-        }
-        if (shape.mesh.empty() || !shape.error.empty()) continue;
-        auto* entity = new Qt3DCore::QEntity(root_);
-        entity->setObjectName(QString::fromStdString(shape.name));
-        // No Material: X3D draws white unlit; an FShape without one, lit grey.
-        const std::array<float, 4> colour = shape.look.lit
-                                                ? std::array<float, 4>{0.8f, 0.8f, 0.8f, 1}
-                                                : std::array<float, 4>{1, 1, 1, 1};
-        entity->addComponent(makeGeometryRenderer(shape.mesh, colour, entity, drawAs_));
-        SurfaceOptions options;
-        options.transparent = hasTransparency(shape.mesh, colour);
-        options.points = shape.mesh.isPointCloud() || drawAs_ == DrawAs::Vertices;
-        options.bothSides = cutOpen_;
-        entity->addComponent(new SurfaceMaterial(shape.look, options, shader_, entity));
-        auto* transform = new Qt3DCore::QTransform(entity);
+    for (std::size_t i = 0; i < meshes.shapes.size(); ++i) {
+        const mesh::ShapeMesh& shape = meshes.shapes[i];
+        Drawn& d = drawn_[i];
         const QMatrix4x4 placement = toMatrix(shape.placement);
-        transform->setMatrix(placement);
-        entity->addComponent(transform);
-        for (const mesh::Vec3f& p : shape.mesh.positions)
-            bounds_.add(placement.map(QVector3D(p[0], p[1], p[2])));
-        entities_.push_back(entity);
+        const bool drawable = !shape.mesh.empty() && shape.error.empty();
+        const bool keep = sameShapes && d.entity && drawable &&
+                          sameMesh(previous->shapes[i].mesh, shape.mesh) &&
+                          previous->shapes[i].look.solid == shape.look.solid;
+        if (!keep) {
+            delete d.entity;
+            delete d.outline;
+            d = Drawn{};
+            d.shape = shape.shape;
+            if (drawable) {
+                d.entity = makeEntity(shape);
+                ++rebuilt_;
+            }
+            if (showDomains_ && shape.geometry && shape.error.empty())
+                d.outline = makeOutline(shape);
+        }
+        for (Qt3DCore::QEntity* e : {d.entity, d.outline})
+            if (e)
+                for (auto* t : e->componentsOfType<Qt3DCore::QTransform>())
+                    t->setMatrix(placement);
+        if (drawable)
+            for (const mesh::Vec3f& p : shape.mesh.positions)
+                bounds_.add(placement.map(QVector3D(p[0], p[1], p[2])));
     }
     setLights(meshes.view.lights);
     setHeadlight(!meshes.view.hasNavigation || meshes.view.navigation.headlight);
+}
+
+Qt3DCore::QEntity* RenderScene::makeOutline(const mesh::ShapeMesh& shape) {
+    auto* outline = new Qt3DCore::QEntity(root_);
+    outline->addComponent(
+        makeBoxOutline(shape.domain.lo, shape.domain.hi, {1, 0.85f, 0.2f, 1}, outline));
+    mesh::SurfaceLook plain;
+    plain.lit = false;
+    outline->addComponent(new SurfaceMaterial(plain, {}, shader_, outline));
+    outline->addComponent(new Qt3DCore::QTransform(outline));
+    return outline;
+}
+
+Qt3DCore::QEntity* RenderScene::makeEntity(const mesh::ShapeMesh& shape) {
+    auto* entity = new Qt3DCore::QEntity(root_);
+    entity->setObjectName(QString::fromStdString(shape.name));
+    // No Material: X3D draws white unlit; an FShape without one, lit grey.
+    const std::array<float, 4> colour = shape.look.lit ? std::array<float, 4>{0.8f, 0.8f, 0.8f, 1}
+                                                       : std::array<float, 4>{1, 1, 1, 1};
+    entity->addComponent(makeGeometryRenderer(shape.mesh, colour, entity, drawAs_));
+    SurfaceOptions options;
+    options.transparent = hasTransparency(shape.mesh, colour);
+    options.points = shape.mesh.isPointCloud() || drawAs_ == DrawAs::Vertices;
+    options.bothSides = cutOpen_;
+    entity->addComponent(new SurfaceMaterial(shape.look, options, shader_, entity));
+    entity->addComponent(new Qt3DCore::QTransform(entity));
+    return entity;
 }
 
 void RenderScene::setLights(const std::vector<mesh::ViewLight>& lights) {
@@ -141,7 +195,7 @@ void RenderScene::setClipPlane(std::optional<QVector4D> plane) {
     // Cut open, a solid shows its inside: its back faces are drawn too.
     if (plane.has_value() != cutOpen_) {
         cutOpen_ = plane.has_value();
-        if (last_) setMeshes(last_);
+        rebuild();
     }
     parameter("clipOn", plane ? 1 : 0);
     parameter("clipPlane", plane.value_or(QVector4D(0, 0, 0, 1)));

@@ -33,7 +33,10 @@ class RenderScene {
     // with their placement, or already placed in the scene: both work).
     void setMeshes(std::shared_ptr<const mesh::SceneMeshes> meshes);
     const Bounds& bounds() const { return bounds_; }
-    std::size_t shapeCount() const { return entities_.size(); }
+    std::size_t shapeCount() const;
+    // Entities made since the start: a new moment whose meshes did not
+    // change (a clock turning its hands) makes none, it only moves matrices.
+    std::size_t entitiesMade() const { return rebuilt_; }
 
     // Parameters every pass reads: attach them to the frame graph's technique filter.
     const std::vector<Qt3DRender::QParameter*>& frameParameters() const { return frame_; }
@@ -52,7 +55,17 @@ class RenderScene {
 
     Qt3DCore::QEntity* root_;
     Qt3DRender::QShaderProgram* shader_;
-    std::vector<Qt3DCore::QEntity*> entities_;
+    struct Drawn {
+        const scene::Node* shape = nullptr;
+        Qt3DCore::QEntity* entity = nullptr;  // null when the shape has nothing to draw
+        Qt3DCore::QEntity* outline = nullptr; // its domain box, when shown
+    };
+    void rebuild(); // every entity again (a new drawing mode)
+    void clearShapes();
+    Qt3DCore::QEntity* makeEntity(const mesh::ShapeMesh& shape);
+    Qt3DCore::QEntity* makeOutline(const mesh::ShapeMesh& shape);
+    std::vector<Drawn> drawn_;
+    std::size_t rebuilt_ = 0;
     std::vector<Qt3DRender::QParameter*> frame_;
     Bounds bounds_;
     DrawAs drawAs_ = DrawAs::Faces;
