@@ -216,16 +216,18 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
                     facesAt[f.coordIndex[polygons[p].first + k]].push_back(p);
     const double cosCrease = std::cos(std::min(f.creaseAngle, std::numbers::pi));
 
+    // X3D's rule for colours and normals alike: per vertex through their own
+    // index (parallel to coordIndex) or else coordIndex; per face through
+    // their index or else the face's number. -1 when an index is missing.
+    auto attributeIndex = [&](bool perVertex, const std::vector<std::int64_t>& own,
+                              std::size_t face, std::size_t corner) -> std::int64_t {
+        const std::size_t at = perVertex ? corner : face;
+        if (!own.empty()) return at < own.size() ? own[at] : -1;
+        return perVertex ? f.coordIndex[corner] : std::int64_t(face);
+    };
     auto colourAt = [&](std::size_t p, std::size_t corner) -> const std::array<float, 4>* {
         if (f.colours.empty()) return nullptr;
-        std::int64_t index;
-        if (f.colourPerVertex)
-            index = !f.colourIndex.empty()
-                        ? (corner < f.colourIndex.size() ? f.colourIndex[corner] : -1)
-                        : f.coordIndex[corner];
-        else
-            index = !f.colourIndex.empty() ? (p < f.colourIndex.size() ? f.colourIndex[p] : -1)
-                                           : std::int64_t(p);
+        const std::int64_t index = attributeIndex(f.colourPerVertex, f.colourIndex, p, corner);
         if (index < 0 || std::size_t(index) >= f.colours.size()) {
             badIndex = true;
             return nullptr;
@@ -234,14 +236,7 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
     };
     auto givenNormal = [&](std::size_t p, std::size_t corner) -> std::optional<Vec3> {
         if (f.normals.empty()) return std::nullopt;
-        std::int64_t index;
-        if (f.normalPerVertex)
-            index = !f.normalIndex.empty()
-                        ? (corner < f.normalIndex.size() ? f.normalIndex[corner] : -1)
-                        : f.coordIndex[corner];
-        else
-            index = !f.normalIndex.empty() ? (p < f.normalIndex.size() ? f.normalIndex[p] : -1)
-                                           : std::int64_t(p);
+        const std::int64_t index = attributeIndex(f.normalPerVertex, f.normalIndex, p, corner);
         if (index < 0 || std::size_t(index) >= f.normals.size()) {
             badIndex = true;
             return std::nullopt;
