@@ -153,9 +153,8 @@ void CodeEditor::setDiagnostics(const QList<EditorDiagnostic>& diagnostics) {
 void CodeEditor::goTo(int line, int column) {
     const QTextBlock block = document()->findBlockByNumber(std::max(line, 1) - 1);
     if (!block.isValid()) return;
-    QTextCursor c(block);
-    c.movePosition(QTextCursor::Right, QTextCursor::MoveAnchor,
-                   std::clamp(column - 1, 0, int(block.text().size())));
+    QTextCursor c(document());
+    c.setPosition(block.position() + std::clamp(column - 1, 0, int(block.text().size())));
     setTextCursor(c);
     centerCursor();
     setFocus();

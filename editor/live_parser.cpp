@@ -4,9 +4,6 @@
 
 #include <QFileInfo>
 #include <QMetaObject>
-#include <QPointer>
-
-#include <thread>
 
 namespace fl::editor {
 
@@ -38,7 +35,8 @@ LiveParser::LiveParser(QObject* parent) : QObject(parent) {
 }
 
 LiveParser::~LiveParser() {
-    // Workers hold only copies; their results go nowhere once this is gone.
+    // The worker finishes its parse; what it posts is dropped with this object.
+    if (worker_.joinable()) worker_.join();
 }
 
 void LiveParser::setText(const QString& text, const QString& path) {
@@ -53,25 +51,38 @@ void LiveParser::parseNow() {
     start();
 }
 
+// One worker at a time; a text that arrives meanwhile waits, replacing any
+// older waiting one, so fast typing never piles up parses.
 void LiveParser::start() {
+    if (working_) {
+        waiting_ = true;
+        return;
+    }
+    working_ = true;
+    if (worker_.joinable()) worker_.join();
     const int generation = generation_;
-    ++running_;
-    std::thread([this, generation, text = text_, path = path_, guard = QPointer<LiveParser>(this)] {
+    worker_ = std::thread([this, generation, text = text_, path = path_] {
         auto outcome = std::make_shared<ParseOutcome>(parseSceneText(text, path));
         QMetaObject::invokeMethod(
-            guard.data() ? guard.data() : nullptr,
-            [this, generation, outcome] {
-                --running_;
-                if (generation != generation_) return; // a newer text is on its way
-                ++finished_;
-                if (outcome->scene) {
-                    lastGood_ = outcome->scene;
-                    Q_EMIT sceneChanged(lastGood_);
-                }
-                Q_EMIT parsed(*outcome);
-            },
+            this, [this, generation, outcome] { finished(generation, outcome); },
             Qt::QueuedConnection);
-    }).detach();
+    });
+}
+
+void LiveParser::finished(int generation, std::shared_ptr<ParseOutcome> outcome) {
+    if (worker_.joinable()) worker_.join();
+    working_ = false;
+    if (waiting_) {
+        waiting_ = false;
+        start(); // the newest text
+    }
+    if (generation != generation_) return; // a newer text is on its way
+    ++finished_;
+    if (outcome->scene) {
+        lastGood_ = outcome->scene;
+        Q_EMIT sceneChanged(lastGood_);
+    }
+    Q_EMIT parsed(*outcome);
 }
 
 } // namespace fl::editor

@@ -3,6 +3,7 @@
 // pause (250 ms) after the last keystroke. Only the newest text counts: an
 // older parse finishing late is thrown away. A text with errors leaves the
 // last good scene where it was, so the view never goes blank while typing.
+// One worker thread at a time, joined when the parser goes.
 #include "code_editor.h" // EditorDiagnostic
 #include "scene/scene.h"
 #include "scene/scene_diagnostic.h"
@@ -11,6 +12,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <thread>
 #include <vector>
 
 namespace fl::editor {
@@ -37,7 +39,7 @@ class LiveParser : public QObject {
     void parseNow();
     std::shared_ptr<const scene::Scene> lastGoodScene() const { return lastGood_; }
     int parsesFinished() const { return finished_; }
-    bool pending() const { return timer_.isActive() || running_ > 0; }
+    bool pending() const { return timer_.isActive() || working_ || waiting_; }
 
   Q_SIGNALS:
     void parsed(const fl::editor::ParseOutcome& outcome);
@@ -46,11 +48,16 @@ class LiveParser : public QObject {
 
   private:
     void start();
+    void finished(int generation, std::shared_ptr<ParseOutcome> outcome);
 
     QTimer timer_;
     QString text_, path_;
     std::shared_ptr<const scene::Scene> lastGood_;
-    int generation_ = 0, running_ = 0, finished_ = 0;
+    int generation_ = 0, finished_ = 0;
+    std::thread worker_;
+    bool working_ = false, waiting_ = false;
 };
 
 } // namespace fl::editor
+
+Q_DECLARE_METATYPE(fl::editor::ParseOutcome)

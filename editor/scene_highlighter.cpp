@@ -236,6 +236,10 @@ void SceneHighlighter::highlightClassic(const QString& text) {
         if (c.isLetter() || c == '_') {
             const auto m = word.match(text, i, QRegularExpression::NormalMatch,
                                       QRegularExpression::AnchorAtOffsetMatchOption);
+            if (!m.hasMatch()) { // a letter outside A-Z (é, π): not a name we know
+                ++i;
+                continue;
+            }
             const QString w = m.captured();
             if (kClassicKeywords.contains(w))
                 setFormat(i, int(w.size()), formats_[Keyword]);

@@ -93,8 +93,11 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
     const Vec3 origin = apply(*back, {ray.origin.x(), ray.origin.y(), ray.origin.z()}, true);
     const Vec3 along =
         apply(*back, {ray.direction.x(), ray.direction.y(), ray.direction.z()}, false);
+    for (std::size_t k = 0; k < 3; ++k)
+        if (!std::isfinite(origin[k]) || !std::isfinite(along[k])) return std::nullopt;
     double t0, t1;
-    if (!clip(origin, along, s.domain, t0, t1)) return std::nullopt;
+    if (!clip(origin, along, s.domain, t0, t1) || !std::isfinite(t0) || !std::isfinite(t1))
+        return std::nullopt;
     formula::ScalarEvaluator f(*tape);
     for (const auto& [name, v] : s.parameters)
         f.parameters().set(name, v);
@@ -109,8 +112,13 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
     const double span = t1 - t0;
     const double step =
         std::max(s.domain.diagonal() / 512 / std::max(length(along), 1e-300), span / 100000);
+    if (!std::isfinite(step) || !(step > 0)) return std::nullopt;
     double a = t0, fa = value(a);
+    int steps = 0;
     for (double b = std::min(t0 + step, t1);; b = std::min(b + step, t1)) {
+        // A step lost to rounding (a camera very far away) or a march too
+        // long ends the search rather than the interface.
+        if (!(b > a) || ++steps > 200000) break;
         const double fb = value(b);
         if (std::isfinite(fa) && std::isfinite(fb) && (fa > 0) != (fb > 0)) {
             for (int i = 0; i < 100 && b - a > 1e-15 * std::max(1.0, std::abs(b)); ++i) {
@@ -169,13 +177,13 @@ std::optional<Pick> onTriangles(const mesh::ShapeMesh& s, const Ray& ray) {
         if (std::abs(det) < 1e-300) continue;
         const Vec3 sv{o[0] - a[0], o[1] - a[1], o[2] - a[2]};
         const double u = (sv[0] * h[0] + sv[1] * h[1] + sv[2] * h[2]) / det;
-        if (u < 0 || u > 1) continue;
+        if (!(u >= 0 && u <= 1)) continue; // NaN fails too
         const Vec3 q{sv[1] * e1[2] - sv[2] * e1[1], sv[2] * e1[0] - sv[0] * e1[2],
                      sv[0] * e1[1] - sv[1] * e1[0]};
         const double v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
-        if (v < 0 || u + v > 1) continue;
+        if (!(v >= 0 && u + v <= 1)) continue;
         const double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
-        if (t <= 0 || (best && t >= best->distance)) continue;
+        if (!(t > 0) || !std::isfinite(t) || (best && t >= best->distance)) continue;
         Pick p;
         p.point = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
         p.normal = unit({e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
@@ -206,6 +214,8 @@ Ray rayThroughPixel(const CameraPose& pose, QSize viewport, QPointF pixel) {
 std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& meshes,
                          const Ray& ray) {
     std::optional<Pick> best;
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(ray.origin[k]) || !std::isfinite(ray.direction[k])) return best;
     for (const mesh::ShapeMesh& s : meshes.shapes) {
         if (!s.error.empty()) continue;
         std::optional<Pick> p = onFunction(scene, s, ray);

@@ -79,6 +79,11 @@ void RenderScene::clearShapes() {
     drawn_.clear();
 }
 
+static bool sameLook(const mesh::SurfaceLook& a, const mesh::SurfaceLook& b) {
+    return a.emissive == b.emissive && a.specular == b.specular && a.shininess == b.shininess &&
+           a.ambientIntensity == b.ambientIntensity && a.lit == b.lit && a.solid == b.solid;
+}
+
 // Whether two meshes draw the same (then only the placement may differ).
 static bool sameMesh(const mesh::Mesh& a, const mesh::Mesh& b) {
     return a.primitive == b.primitive && a.positions == b.positions && a.normals == b.normals &&
@@ -104,7 +109,7 @@ void RenderScene::setMeshes(std::shared_ptr<const mesh::SceneMeshes> shared) {
         const bool drawable = !shape.mesh.empty() && shape.error.empty();
         const bool keep = sameShapes && d.entity && drawable &&
                           sameMesh(previous->shapes[i].mesh, shape.mesh) &&
-                          previous->shapes[i].look.solid == shape.look.solid;
+                          sameLook(previous->shapes[i].look, shape.look);
         if (!keep) {
             delete d.entity;
             delete d.outline;

@@ -111,7 +111,9 @@ void ScenePlayer::startWorker(Request r) {
             o.useFileResolution = false;
             o.mesh.resolution = r.resolution;
         }
-        auto meshes = std::make_shared<const mesh::SceneMeshes>(mesh::meshScene(*r.scene, o));
+        mesh::SceneMeshes made = mesh::meshScene(*r.scene, o);
+        made.source = r.scene; // keeps the nodes the meshes point at alive
+        auto meshes = std::make_shared<const mesh::SceneMeshes>(std::move(made));
         QMetaObject::invokeMethod(
             this,
             [this, meshes, seconds = o.sceneSeconds, scene = r.scene] {

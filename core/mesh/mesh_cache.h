@@ -9,6 +9,7 @@
 #include "dual_contouring.h"
 #include "parametric.h"
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <list>
@@ -58,7 +59,8 @@ class MeshCache {
     std::list<Entry> lru_; // most recent first
     std::unordered_map<std::string, std::list<Entry>::iterator> index_;
     std::unordered_map<std::string, std::shared_ptr<std::mutex>> making_;
-    std::size_t bytes_ = 0, hits_ = 0, misses_ = 0;
+    std::size_t bytes_ = 0;
+    std::atomic<std::size_t> hits_{0}, misses_{0}; // read without the lock (viewer counters)
 };
 
 std::size_t meshBytes(const Mesh& mesh);

@@ -104,6 +104,17 @@ class Walker {
     void walk(const Node* raw, const Affine& m) {
         const Node* n = scene::effectiveNode(raw);
         if (!n) return;
+        // USE makes a DAG; a few dozen lines can make it exponentially large
+        // when walked as a tree. Each visit counts; past the budget the rest
+        // is left out, with one note.
+        if (++visits_ > kMaxVisits) {
+            if (!overBudget_)
+                out_.notes.push_back(
+                    "the scene reuses (USE) nodes so often that walking it passes " +
+                    std::to_string(kMaxVisits) + " nodes; the rest is not meshed");
+            overBudget_ = true;
+            return;
+        }
         const std::string& type = n->type;
         if (type == "FShape" || type == "Shape") {
             shape(*n, m);
@@ -749,6 +760,9 @@ class Walker {
     const scene::Scene& scene_;
     const SceneMeshOptions& options_;
     SceneMeshes& out_;
+    static constexpr std::size_t kMaxVisits = 200000;
+    std::size_t visits_ = 0;
+    bool overBudget_ = false;
 };
 
 } // namespace

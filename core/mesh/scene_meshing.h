@@ -12,6 +12,7 @@
 #include "scene_view.h"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -90,6 +91,10 @@ struct SceneMeshes {
     std::vector<ShapeMesh> shapes;
     std::vector<std::string> notes; // what was not meshed and why
     SceneView view;                 // lights, viewpoints, background, navigation
+    // The scene these meshes were made from, when the maker shares it (the
+    // viewer's player does): the shapes' node pointers stay valid as long as
+    // the meshes are kept, even after the editor has replaced the scene.
+    std::shared_ptr<const scene::Scene> source;
 };
 
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options);

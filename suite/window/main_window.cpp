@@ -33,6 +33,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSaveFile>
+#include <QSet>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -140,8 +141,9 @@ MainWindow::MainWindow(QWidget* parent)
     // A click names the point under the cursor: on the function itself where
     // the shape is implicit or explicit.
     connect(view_, &viewer::SceneWidget::clicked, this, [this](QPointF pixel) {
-        if (!scene_ || !view_->meshes()) return;
-        const auto p = viewer::pick(*scene_, *view_->meshes(),
+        const auto meshes = view_->meshes();
+        if (!meshes || !meshes->source) return;
+        const auto p = viewer::pick(*meshes->source, *meshes,
                                     viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
         if (!p) {
             statusBar()->showMessage(tr("Nothing there"), 3000);
@@ -155,7 +157,10 @@ MainWindow::MainWindow(QWidget* parent)
                                      .arg(p->onFunction ? tr(", on f = 0") : QString()));
     });
     connect(&lodTimer_, &QTimer::timeout, this, [this] {
-        if (view_->meshes() && lod_->update(*view_->meshes(), view_->pose(), view_->size()))
+        // Only meshes of the scene being played: their nodes are the player's keys.
+        const auto meshes = view_->meshes();
+        if (meshes && meshes->source == scene_ &&
+            lod_->update(*meshes, view_->pose(), view_->size()))
             player_->setResolutions(lod_->resolutions());
     });
 
@@ -348,7 +353,14 @@ bool MainWindow::openFile(const QString& path, QString* error) {
         problem(problemText);
         return false;
     }
-    QByteArray bytes = f.readAll();
+    QByteArray bytes = f.read(kMaxFileBytes + 1); // a device without a size cannot run on
+    if (bytes.size() > kMaxFileBytes) {
+        problemText =
+            tr("%1 is larger than 64 MiB; FunctionLab does not edit files this big").arg(path);
+        if (error) *error = problemText;
+        problem(problemText);
+        return false;
+    }
     // Compressed scenes (.x3dz, .wrl.gz) are shown as the text they hold
     // (saved uncompressed).
     if (scene::isGzip(std::string_view(bytes.constData(), std::size_t(bytes.size())))) {
@@ -481,6 +493,10 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
 
 void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double) {
     // A scene's NavigationInfo picks how one moves through it, once, when it opens.
+    if (meshes->source == scene_ && meshes->source != lodScene_) { // a new scene's first frame
+        lodScene_ = meshes->source;
+        lodPending_ = true;
+    }
     if (firstFrameOfScene_) {
         firstFrameOfScene_ = false;
         view_->placeCameraOnNextMeshes();
@@ -503,19 +519,32 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
         ms += s.stats.milliseconds;
     triangles_->setText(tr("%1 triangles").arg(view_->triangleCount()));
     meshTime_->setText(tr("meshed in %1 ms").arg(ms, 0, 'f', 0));
-    lodTimer_.start(); // the first frame of a scene is at the file's resolutions
+    if (lodPending_) { // the first frame of a scene is at the file's resolutions
+        lodPending_ = false;
+        lodTimer_.start();
+    }
 }
 
 void MainWindow::fillSceneTree(const scene::Scene& scene) {
     tree_->clear();
+    // A node met again (USE) is a leaf naming it: a DEF/USE graph never
+    // multiplies into an exponential tree. At most kMaxItems items.
+    constexpr int kMaxItems = 20000;
+    int items = 0;
+    QSet<const scene::Node*> shown;
     std::function<void(const scene::Node*, QTreeWidgetItem*, int)> add =
         [&](const scene::Node* n, QTreeWidgetItem* parent, int depth) {
-            if (!n || depth > 64) return;
+            if (!n || depth > 64 || items >= kMaxItems) return;
+            ++items;
             auto* item = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(tree_);
-            item->setText(0, QString::fromStdString(n->type));
+            const bool again = shown.contains(n);
+            item->setText(0, again ? QStringLiteral("USE ") + QString::fromStdString(n->defName)
+                                   : QString::fromStdString(n->type));
             item->setText(1, QString::fromStdString(n->defName));
             item->setData(0, Qt::UserRole, n->where.line);
             item->setData(0, Qt::UserRole + 1, n->where.column);
+            if (again) return;
+            shown.insert(n);
             for (const scene::Field& f : n->fields)
                 for (const scene::Node* c : f.value.nodes)
                     add(c, item, depth + 1);

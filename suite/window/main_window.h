@@ -110,6 +110,8 @@ class MainWindow : public QMainWindow {
     QComboBox* viewpoints_;
     QAction *examineAction_ = nullptr, *walkAction_ = nullptr;
     bool firstFrameOfScene_ = true;
+    bool lodPending_ = false;
+    std::shared_ptr<const scene::Scene> lodScene_; // the scene whose first frame the LOD saw
     QMenu* recentMenu_;
     QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
     QTimer recoveryTimer_, rateTimer_, lodTimer_;

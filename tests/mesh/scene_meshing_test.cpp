@@ -389,3 +389,20 @@ TEST(SceneParameters, NamedParametersAreListedAndTheirValuesReshapeTheMesh) {
     const double large = analyseTopology(meshScene(*r.scene, o).shapes[0].mesh).signedVolume;
     EXPECT_NEAR(large / small, std::pow(0.8 / 0.5, 3), 0.05);
 }
+
+TEST(SceneMeshing, AnExponentialDefUseGraphIsCutShortWithANote) {
+    // Each group holds the previous one twice: 2^30 shapes if walked blindly.
+    std::string body = "DEF G0 Shape { geometry Box {} }\n";
+    for (int i = 1; i <= 30; ++i)
+        body += "DEF G" + std::to_string(i) + " Group { children [ USE G" + std::to_string(i - 1) +
+                " USE G" + std::to_string(i - 1) + " ] }\n";
+    auto r = fl::scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "dag.x3dv");
+    ASSERT_TRUE(r.ok());
+    SceneMeshOptions o;
+    const SceneMeshes s = meshScene(*r.scene, o);
+    bool noted = false;
+    for (const auto& n : s.notes)
+        noted = noted || n.find("reuses (USE) nodes so often") != std::string::npos;
+    EXPECT_TRUE(noted);
+    EXPECT_LT(s.shapes.size(), 250000u);
+}

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 using namespace fl;
 
 namespace {
@@ -64,4 +66,15 @@ TEST(Picking, APixelsRayGoesThroughWhatItShows) {
     EXPECT_GT(right.direction.x(), 0.3); // the right edge of a 45 degree, 4:3 view
     const viewer::Ray top = viewer::rayThroughPixel(pose, QSize(800, 600), QPointF(400, 0));
     EXPECT_NEAR(top.direction.y() / -top.direction.z(), std::tan(22.5 * M_PI / 180), 1e-4);
+}
+
+TEST(Picking, RaysFromInfinityOrNowhereFindNothingAndReturn) {
+    const Picked s =
+        load(R"x(FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" } })x");
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{inf, 0, 0}, QVector3D(-1, 0, 0)}));
+    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{0, 0, 5}, QVector3D(nan, 0, -1)}));
+    // Very far away, the march's steps vanish in rounding: it still ends.
+    viewer::pick(*s.scene, s.meshes, {{1e30f, 0, 0}, QVector3D(-1, 0, 0)});
 }

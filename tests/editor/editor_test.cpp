@@ -1,0 +1,148 @@
+// The scene editor: what gets which colour (including formulas inside
+// strings), where a diagnostic is underlined, what completion offers, find
+// and replace, and the live parse (a text with errors keeps the last good
+// scene; a late parse of older text is dropped).
+#include "code_editor.h"
+#include "find_bar.h"
+#include "live_parser.h"
+
+#include <QApplication>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTextBlock>
+#include <QTextLayout>
+#include <gtest/gtest.h>
+
+using namespace fl::editor;
+
+namespace {
+
+// The format the highlighter gave the character at `column` of `line` (0-based).
+QTextCharFormat formatAt(CodeEditor& e, int line, int column) {
+    const QTextBlock block = e.document()->findBlockByNumber(line);
+    for (const QTextLayout::FormatRange& r : block.layout()->formats())
+        if (column >= r.start && column < r.start + r.length) return r.format;
+    return {};
+}
+
+bool sameColour(const QTextCharFormat& a, const QTextCharFormat& b) {
+    return a.foreground().color() == b.foreground().color();
+}
+
+} // namespace
+
+TEST(Highlighter, XmlNodesFieldsStringsAndTheFormulaInside) {
+    CodeEditor e;
+    e.setSyntax(SceneSyntax::Xml);
+    e.setPlainText("<FGeometry definition='\"sin(x) + 2*t\"'/> <!-- note -->");
+    auto* h = e.highlighter();
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 1), h->format(SceneHighlighter::Node)));   // FGeometry
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 11), h->format(SceneHighlighter::Field))); // definition
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 24), h->format(SceneHighlighter::Function))); // sin
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 28), h->format(SceneHighlighter::Variable))); // x
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 33), h->format(SceneHighlighter::Number)));   // 2
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 43), h->format(SceneHighlighter::Comment)));
+}
+
+TEST(Highlighter, ClassicKeywordsCommentsAndStringsAcrossLines) {
+    CodeEditor e;
+    e.setSyntax(SceneSyntax::Classic);
+    // The string runs over the line break: its second line is still formula.
+    e.setPlainText(
+        "DEF BALL FShape { geometry FGeometry { definition [\"cos(u);\nz = v;\"] } } # c");
+    auto* h = e.highlighter();
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 0), h->format(SceneHighlighter::Keyword)));   // DEF
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 9), h->format(SceneHighlighter::Node)));      // FShape
+    EXPECT_TRUE(sameColour(formatAt(e, 0, 52), h->format(SceneHighlighter::Function))); // cos
+    EXPECT_TRUE(sameColour(formatAt(e, 1, 0), h->format(SceneHighlighter::Variable)));  // z
+    EXPECT_TRUE(sameColour(formatAt(e, 1, 14), h->format(SceneHighlighter::Comment)));
+}
+
+TEST(Highlighter, LettersOutsideAsciiNeverHangOrCrash) {
+    CodeEditor e;
+    e.setSyntax(SceneSyntax::Classic);
+    e.setPlainText(QString::fromUtf8("DEF Würfel Transform { } # π ∞ 😀\nDEF π Group {}"));
+    EXPECT_EQ(e.document()->blockCount(), 2);
+    e.setSyntax(SceneSyntax::Xml);
+    e.setPlainText(QString::fromUtf8("<Transform DEF='Würfel' π='1'/>"));
+    EXPECT_EQ(e.document()->blockCount(), 1);
+}
+
+TEST(CodeEditor, DiagnosticsUnderlineTheWordAtTheirColumn) {
+    CodeEditor e;
+    e.setPlainText("line one\n  x = sine(y);\n");
+    e.setDiagnostics({EditorDiagnostic{2, 7, true, "unknown function 'sine'"}});
+    const auto [start, end] = e.rangeOf(e.diagnostics()[0]);
+    QTextCursor c(e.document());
+    c.setPosition(start);
+    c.setPosition(end, QTextCursor::KeepAnchor);
+    EXPECT_EQ(c.selectedText(), "sine");
+    // Out-of-range places are harmless.
+    EXPECT_EQ(e.rangeOf({99, 3, true, "past the end"}), std::make_pair(0, 0));
+    e.goTo(99, 99);
+    e.goTo(2, 999);
+    EXPECT_EQ(e.textCursor().blockNumber(), 1);
+}
+
+TEST(CodeEditor, CompletionOffersNodesFieldsAndFunctions) {
+    CodeEditor e;
+    const QStringList fshape = e.completionsFor("FSh");
+    EXPECT_TRUE(fshape.contains("FShape"));
+    EXPECT_TRUE(e.completionsFor("smooth").contains("smoothstep"));
+    EXPECT_TRUE(e.completionsFor("cycleI").contains("cycleInterval"));
+    EXPECT_TRUE(e.completionsFor("zzzz").isEmpty());
+}
+
+TEST(FindBar, ReplaceAllIsOneUndoStep) {
+    CodeEditor e;
+    e.setPlainText("x + x + X");
+    FindBar bar(&e);
+    bar.setPattern("x", "y");
+    EXPECT_EQ(bar.replaceAll(), 3); // case-insensitive by default
+    EXPECT_EQ(e.toPlainText(), "y + y + y");
+    e.undo();
+    EXPECT_EQ(e.toPlainText(), "x + x + X");
+    bar.setPattern("nothing");
+    EXPECT_FALSE(bar.findNext());
+}
+
+TEST(LiveParser, ErrorsKeepTheLastGoodSceneAndOnlyTheNewestTextCounts) {
+    LiveParser parser;
+    parser.setDelay(10);
+    QSignalSpy scenes(&parser, &LiveParser::sceneChanged);
+    const QString good =
+        "#X3D V3.3 utf8\nPROFILE Full\nFShape { geometry FGeometry { definition \"1 - x*x\" } }";
+    parser.setText(good, "a.x3dv");
+    QTRY_VERIFY_WITH_TIMEOUT(!parser.pending(), 10000);
+    ASSERT_EQ(scenes.count(), 1);
+    const auto first = parser.lastGoodScene();
+    ASSERT_TRUE(first);
+
+    QSignalSpy outcomes(&parser, &LiveParser::parsed);
+    parser.setText(
+        "#X3D V3.3 utf8\nPROFILE Full\nFShape { geometry FGeometry { definition \"sine(x)\" } }",
+        "a.x3dv");
+    QTRY_VERIFY_WITH_TIMEOUT(!parser.pending(), 10000);
+    ASSERT_EQ(outcomes.count(), 1);
+    const auto outcome = outcomes.takeFirst().at(0).value<ParseOutcome>();
+    EXPECT_FALSE(outcome.scene);
+    ASSERT_FALSE(outcome.inThisFile.isEmpty());
+    EXPECT_EQ(outcome.inThisFile[0].line, 3);
+    EXPECT_EQ(parser.lastGoodScene(), first); // kept
+
+    // Many edits in a row: only the last is delivered.
+    for (int i = 0; i < 20; ++i) {
+        parser.setText(good + QString(" # %1").arg(i), "a.x3dv");
+        parser.parseNow();
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(!parser.pending(), 20000);
+    EXPECT_EQ(outcomes.count(), 1);
+}
+
+int main(int argc, char** argv) {
+    testing::InitGoogleTest(&argc, argv);
+    if (testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
+    QApplication app(argc, argv);
+    qRegisterMetaType<ParseOutcome>("fl::editor::ParseOutcome");
+    return RUN_ALL_TESTS();
+}
