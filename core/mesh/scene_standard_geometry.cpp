@@ -103,6 +103,40 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments) {
             all[i] = std::int64_t(i);
         f.coordIndex = inThrees(all);
         use(faceSetMesh(f));
+    } else if (type == "ElevationGrid") {
+        ElevationGrid eg;
+        eg.xDimension = int(scene::numberField(g, "xDimension"));
+        eg.zDimension = int(scene::numberField(g, "zDimension"));
+        eg.xSpacing = scene::numberField(g, "xSpacing", 0, 1);
+        eg.zSpacing = scene::numberField(g, "zSpacing", 0, 1);
+        eg.height = scene::numbersField(g, "height");
+        eg.colours = coloursOf(g);
+        eg.colourPerVertex = scene::boolField(g, "colorPerVertex");
+        eg.ccw = scene::boolField(g, "ccw");
+        eg.creaseAngle = scene::numberField(g, "creaseAngle");
+        use(elevationGridMesh(eg));
+    } else if (type == "Extrusion") {
+        Extrusion ex;
+        auto pairs = [&](const char* field) {
+            std::vector<std::array<double, 2>> out;
+            const auto v = scene::numbersField(g, field);
+            for (std::size_t i = 0; i + 1 < v.size(); i += 2)
+                out.push_back({v[i], v[i + 1]});
+            return out;
+        };
+        ex.crossSection = pairs("crossSection");
+        ex.spine = triples(scene::numbersField(g, "spine"));
+        ex.scale = pairs("scale");
+        if (ex.scale.empty()) ex.scale = {{1, 1}};
+        ex.orientation.clear();
+        const auto o = scene::numbersField(g, "orientation");
+        for (std::size_t i = 0; i + 3 < o.size(); i += 4)
+            ex.orientation.push_back({o[i], o[i + 1], o[i + 2], o[i + 3]});
+        if (ex.orientation.empty()) ex.orientation = {{0, 0, 1, 0}};
+        ex.beginCap = scene::boolField(g, "beginCap");
+        ex.endCap = scene::boolField(g, "endCap");
+        ex.creaseAngle = scene::numberField(g, "creaseAngle");
+        use(extrusionMesh(ex));
     } else if (type == "PointSet") {
         r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
     } else {

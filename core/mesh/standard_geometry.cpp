@@ -306,4 +306,151 @@ Mesh pointSetMesh(const std::vector<std::array<double, 3>>& points,
     return m;
 }
 
+FaceSetResult elevationGridMesh(const ElevationGrid& g) {
+    FaceSetResult out;
+    const long nx = g.xDimension, nz = g.zDimension;
+    if (nx < 2 || nz < 2) return out; // no face
+    if (long(g.height.size()) < nx * nz) {
+        out.warnings.push_back("ElevationGrid has fewer heights than xDimension x zDimension; "
+                               "the missing ones are 0");
+    }
+    FaceSet f;
+    f.ccw = g.ccw;
+    f.creaseAngle = g.creaseAngle;
+    f.colours = g.colours;
+    f.colourPerVertex = g.colourPerVertex;
+    for (long j = 0; j < nz; ++j)
+        for (long i = 0; i < nx; ++i) {
+            const std::size_t k = std::size_t(i + j * nx);
+            f.points.push_back({double(i) * g.xSpacing, k < g.height.size() ? g.height[k] : 0.0,
+                                double(j) * g.zSpacing});
+        }
+    // Seen from above: (i, j) -> (i, j+1) -> (i+1, j+1) -> (i+1, j) is counter-clockwise.
+    for (long j = 0; j + 1 < nz; ++j)
+        for (long i = 0; i + 1 < nx; ++i)
+            f.coordIndex.insert(f.coordIndex.end(), {i + j * nx, i + (j + 1) * nx,
+                                                     i + 1 + (j + 1) * nx, i + 1 + j * nx, -1});
+    FaceSetResult r = faceSetMesh(f);
+    r.warnings.insert(r.warnings.begin(), out.warnings.begin(), out.warnings.end());
+    return r;
+}
+
+namespace {
+
+Vec3 subtract(const Vec3& a, const Vec3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 crossOf(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Rodrigues: v turned by `angle` about the unit `axis`.
+Vec3 turned(const Vec3& v, const std::array<double, 4>& r) {
+    const Vec3 axis = unitOr({r[0], r[1], r[2]}, {0, 0, 1});
+    const double c = std::cos(r[3]), s = std::sin(r[3]);
+    const Vec3 k = crossOf(axis, v);
+    const double d = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
+    return {v[0] * c + k[0] * s + axis[0] * d * (1 - c),
+            v[1] * c + k[1] * s + axis[1] * d * (1 - c),
+            v[2] * c + k[2] * s + axis[2] * d * (1 - c)};
+}
+
+} // namespace
+
+FaceSetResult extrusionMesh(const Extrusion& e) {
+    FaceSetResult out;
+    const std::size_t ns = e.spine.size(), nc = e.crossSection.size();
+    if (ns < 2 || nc < 2) return out;
+    const bool closedSpine = e.spine.front() == e.spine.back();
+    // The spine-aligned cross-section plane at each spine point: y along the
+    // spine, z across its bend (kept from the last bend where it is straight).
+    std::vector<Vec3> X(ns), Y(ns), Z(ns);
+    for (std::size_t i = 0; i < ns; ++i) {
+        const Vec3 next = i + 1 < ns ? e.spine[i + 1] : closedSpine ? e.spine[1] : e.spine[i];
+        const Vec3 prev = i > 0 ? e.spine[i - 1] : closedSpine ? e.spine[ns - 2] : e.spine[i];
+        Y[i] = unitOr(subtract(next, prev), i ? Y[i - 1] : Vec3{0, 1, 0});
+        Z[i] = unitOr(crossOf(subtract(next, e.spine[i]), subtract(prev, e.spine[i])), {0, 0, 0});
+    }
+    // Straight stretches take the first bend's z (or +z turned onto the spine).
+    Vec3 firstZ{0, 0, 0};
+    for (const Vec3& z : Z)
+        if (z != Vec3{0, 0, 0}) {
+            firstZ = z;
+            break;
+        }
+    if (firstZ == Vec3{0, 0, 0}) {
+        const Vec3 y = Y[0];
+        const Vec3 helper = std::abs(y[1]) < 0.9 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+        firstZ = std::abs(y[1]) > 0.999 ? Vec3{0, 0, y[1] > 0 ? 1.0 : -1.0}
+                                        : unitOr(crossOf(crossOf(y, helper), y), {0, 0, 1});
+    }
+    for (std::size_t i = 0; i < ns; ++i) {
+        if (Z[i] == Vec3{0, 0, 0}) Z[i] = i ? Z[i - 1] : firstZ;
+        if (i && Z[i][0] * Z[i - 1][0] + Z[i][1] * Z[i - 1][1] + Z[i][2] * Z[i - 1][2] < 0)
+            Z[i] = {-Z[i][0], -Z[i][1], -Z[i][2]}; // no sudden flip
+        X[i] = unitOr(crossOf(Y[i], Z[i]), {1, 0, 0});
+    }
+    FaceSet f;
+    f.creaseAngle = e.creaseAngle;
+    for (std::size_t i = 0; i < ns; ++i) {
+        const auto& sc = e.scale[std::min(i, e.scale.size() - 1)];
+        const auto& turn = e.orientation[std::min(i, e.orientation.size() - 1)];
+        for (const auto& c : e.crossSection) {
+            const Vec3 local = turned({sc[0] * c[0], 0, sc[1] * c[1]}, turn);
+            Vec3 p = e.spine[i];
+            for (std::size_t k = 0; k < 3; ++k)
+                p[k] += X[i][k] * local[0] + Y[i][k] * local[1] + Z[i][k] * local[2];
+            f.points.push_back(p);
+        }
+    }
+    auto at = [&](std::size_t spine, std::size_t c) { return std::int64_t(spine * nc + c); };
+    for (std::size_t i = 0; i + 1 < ns; ++i)
+        for (std::size_t c = 0; c + 1 < nc; ++c)
+            f.coordIndex.insert(f.coordIndex.end(),
+                                {at(i, c), at(i, c + 1), at(i + 1, c + 1), at(i + 1, c), -1});
+    const bool closedSection = e.crossSection.front() == e.crossSection.back();
+    const std::size_t capCorners = closedSection ? nc - 1 : nc;
+    // Caps wind against the side quads that share their edges (the first
+    // quads walk (0, c) -> (0, c+1), the last (n, c+1) -> (n, c)), so the
+    // whole surface is oriented one way; the flip below then makes it outward.
+    if (e.beginCap && capCorners >= 3) {
+        for (std::size_t c = capCorners; c-- > 0;)
+            f.coordIndex.push_back(at(0, c));
+        f.coordIndex.push_back(-1);
+    }
+    if (e.endCap && capCorners >= 3) {
+        for (std::size_t c = 0; c < capCorners; ++c)
+            f.coordIndex.push_back(at(ns - 1, c));
+        f.coordIndex.push_back(-1);
+    }
+    out = faceSetMesh(f);
+    // Outward: by the volume when closed, else the sides away from the spine.
+    double volume = 0;
+    for (const Triangle& t : out.mesh.triangles) {
+        const auto& a = out.mesh.positions[t[0]];
+        const auto& b = out.mesh.positions[t[1]];
+        const auto& c = out.mesh.positions[t[2]];
+        volume += (double(a[0]) * (double(b[1]) * c[2] - double(b[2]) * c[1]) -
+                   double(a[1]) * (double(b[0]) * c[2] - double(b[2]) * c[0]) +
+                   double(a[2]) * (double(b[0]) * c[1] - double(b[1]) * c[0])) /
+                  6;
+    }
+    bool inward = volume < 0;
+    const bool closed = closedSection && (closedSpine || (e.beginCap && e.endCap));
+    if (!closed && !out.mesh.triangles.empty()) {
+        const Triangle& t = out.mesh.triangles.front();
+        const auto& n = out.mesh.normals[t[0]];
+        const auto& p = out.mesh.positions[t[0]];
+        const Vec3 away = subtract({p[0], p[1], p[2]}, e.spine[0]);
+        inward = n[0] * away[0] + n[1] * away[1] + n[2] * away[2] < 0;
+    }
+    if (inward) {
+        for (Triangle& t : out.mesh.triangles)
+            std::swap(t[1], t[2]);
+        for (Vec3f& n : out.mesh.normals)
+            n = {-n[0], -n[1], -n[2]};
+    }
+    return out;
+}
+
 } // namespace fl::mesh

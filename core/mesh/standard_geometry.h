@@ -45,6 +45,31 @@ struct FaceSetResult {
 // not shared between faces, so creases and per-face colours stay sharp.
 FaceSetResult faceSetMesh(const FaceSet& faces);
 
+// ElevationGrid: heights over an x-z grid, faces up (+y) with ccw TRUE.
+struct ElevationGrid {
+    int xDimension = 0, zDimension = 0;
+    double xSpacing = 1, zSpacing = 1;
+    std::vector<double> height; // xDimension * zDimension, x fastest
+    std::vector<std::array<float, 4>> colours;
+    bool colourPerVertex = true;
+    bool ccw = true;
+    double creaseAngle = 0;
+};
+FaceSetResult elevationGridMesh(const ElevationGrid& grid);
+
+// Extrusion: a 2D cross-section swept along a spine, scaled and turned at
+// each spine point (X3D 13.3.5: the spine-aligned cross-section planes).
+struct Extrusion {
+    std::vector<std::array<double, 2>> crossSection{{1, 1}, {1, -1}, {-1, -1}, {-1, 1}, {1, 1}};
+    std::vector<std::array<double, 3>> spine{{0, 0, 0}, {0, 1, 0}};
+    std::vector<std::array<double, 2>> scale{{1, 1}};             // one, or one per spine point
+    std::vector<std::array<double, 4>> orientation{{0, 0, 1, 0}}; // axis-angle, likewise
+    bool beginCap = true, endCap = true;
+    double creaseAngle = 0;
+};
+// Faces outward: closed extrusions by their volume, open ones away from the spine.
+FaceSetResult extrusionMesh(const Extrusion& extrusion);
+
 // PointSet: its points with their colours; normals zero (unlit).
 Mesh pointSetMesh(const std::vector<std::array<double, 3>>& points,
                   const std::vector<std::array<float, 4>>& colours);

@@ -117,3 +117,48 @@ TEST(StandardGeometry, PointSetsArePoints) {
     EXPECT_EQ(m.colours.size(), 2u);
     EXPECT_TRUE(pointSetMesh({{0, 0, 0}}, {}).colours.empty());
 }
+
+TEST(StandardGeometry, ElevationGridsFaceUpWithTheirHeights) {
+    ElevationGrid g;
+    g.xDimension = 3;
+    g.zDimension = 2;
+    g.xSpacing = 0.5;
+    g.zSpacing = 2;
+    g.height = {0, 1, 0, 0, 1, 0};
+    const FaceSetResult r = elevationGridMesh(g);
+    EXPECT_EQ(r.mesh.triangleCount(), 4u); // two quads
+    for (const Vec3f& n : r.mesh.normals)
+        EXPECT_GT(n[1], 0.4f); // up (slopes of 2: 1/sqrt 5)
+    float top = 0;
+    for (const Vec3f& p : r.mesh.positions)
+        top = std::max(top, p[1]);
+    EXPECT_FLOAT_EQ(top, 1);
+    g.height.resize(2); // too few heights: a warning, zeros, no crash
+    EXPECT_FALSE(elevationGridMesh(g).warnings.empty());
+    g.xDimension = 1;
+    EXPECT_TRUE(elevationGridMesh(g).mesh.empty());
+}
+
+TEST(StandardGeometry, ExtrusionsSweepTheirCrossSectionAndFaceOutward) {
+    // The default: a unit square swept from y = 0 to 1, capped: a 2 x 1 x 2 box.
+    const FaceSetResult box = extrusionMesh(Extrusion{});
+    expectClosedOutwardSolid(box.mesh, 4, 1e-6);
+    // A circle swept along a bent spine, scaled down: closed, outward, right volume order.
+    Extrusion tube;
+    tube.crossSection.clear();
+    for (int i = 0; i <= 32; ++i)
+        tube.crossSection.push_back({0.2 * std::cos(2 * std::numbers::pi * i / 32),
+                                     -0.2 * std::sin(2 * std::numbers::pi * i / 32)});
+    tube.crossSection.back() = tube.crossSection.front(); // closed: the same point, exactly
+    tube.spine = {{0, 0, 0}, {0, 1, 0}, {1, 2, 0}, {2, 2, 0}};
+    const FaceSetResult bent = extrusionMesh(tube);
+    const Topology t = analyseTopology(weldedByPosition(bent.mesh));
+    EXPECT_TRUE(t.closed());
+    EXPECT_GT(t.signedVolume, 0);
+    // Open at both ends: the sides still face away from the spine.
+    tube.beginCap = tube.endCap = false;
+    const FaceSetResult open = extrusionMesh(tube);
+    const auto& n = open.mesh.normals[0];
+    const auto& p = open.mesh.positions[0];
+    EXPECT_GT(n[0] * p[0] + n[2] * p[2], 0);
+}
