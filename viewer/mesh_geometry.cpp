@@ -63,7 +63,20 @@ Qt3DRender::QGeometryRenderer* makeGeometryRenderer(const mesh::Mesh& mesh,
     attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultNormalAttributeName(), 3, 3, n);
     attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultColorAttributeName(), 4, 6, n);
     geometry->setBoundingVolumePositionAttribute(position);
-    if (mesh.isPointCloud() || as == DrawAs::Vertices) {
+    if (mesh.isLines() && as != DrawAs::Vertices) {
+        QByteArray indices(reinterpret_cast<const char*>(mesh.segments.data()),
+                           qsizetype(mesh.segments.size() * sizeof(mesh::Segment)));
+        auto* indexBuffer = new Qt3DCore::QBuffer(geometry);
+        indexBuffer->setData(indices);
+        auto* index = new Qt3DCore::QAttribute(geometry);
+        index->setAttributeType(Qt3DCore::QAttribute::IndexAttribute);
+        index->setVertexBaseType(Qt3DCore::QAttribute::UnsignedInt);
+        index->setBuffer(indexBuffer);
+        index->setCount(uint(mesh.segments.size() * 2));
+        geometry->addAttribute(index);
+        renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Lines);
+        renderer->setVertexCount(int(mesh.segments.size() * 2));
+    } else if (mesh.isPointCloud() || as == DrawAs::Vertices) {
         renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Points);
         renderer->setVertexCount(int(n));
     } else if (as == DrawAs::Edges) {

@@ -12,8 +12,10 @@ namespace fl::mesh {
 using Vec3f = std::array<float, 3>;
 using Triangle = std::array<std::uint32_t, 3>; // counter-clockwise seen from outside
 
-// What the positions make: triangles, or a cloud of points (no triangles).
-enum class Primitive : std::uint8_t { Triangles, Points };
+// What the positions make: triangles, a cloud of points, or line segments
+// (IndexedLineSet, LineSet: in `segments`, drawn unlit).
+enum class Primitive : std::uint8_t { Triangles, Points, Lines };
+using Segment = std::array<std::uint32_t, 2>;
 
 struct Mesh {
     Primitive primitive = Primitive::Triangles;
@@ -26,11 +28,17 @@ struct Mesh {
     // formulas read; empty for implicit and explicit geometry.
     std::vector<std::array<float, 3>> parameters;
     std::vector<Triangle> triangles;
+    std::vector<Segment> segments; // Primitive::Lines only
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return triangles.size(); }
     bool isPointCloud() const { return primitive == Primitive::Points; }
-    bool empty() const { return isPointCloud() ? positions.empty() : triangles.empty(); }
+    bool isLines() const { return primitive == Primitive::Lines; }
+    bool empty() const {
+        return isPointCloud() ? positions.empty()
+               : isLines()    ? segments.empty()
+                              : triangles.empty();
+    }
 };
 
 } // namespace fl::mesh

@@ -90,6 +90,14 @@ std::string obj(const Mesh& m) {
         appendTriple(out, "vn ", n[0], n[1], n[2]);
         out += '\n';
     }
+    for (const Segment& g : m.segments) {
+        out += 'l';
+        for (std::uint32_t i : g) {
+            out += ' ';
+            out += std::to_string(i + 1);
+        }
+        out += '\n';
+    }
     for (const Triangle& t : m.triangles) {
         out += 'f';
         for (std::uint32_t i : t) {
@@ -114,7 +122,12 @@ std::string ply(const Mesh& m) {
         out +=
             "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
     out += "element face " + std::to_string(m.triangleCount()) + "\n";
-    out += "property list uchar uint vertex_indices\nend_header\n";
+    out += "property list uchar uint vertex_indices\n";
+    if (!m.segments.empty()) {
+        out += "element edge " + std::to_string(m.segments.size()) + "\n";
+        out += "property int vertex1\nproperty int vertex2\n";
+    }
+    out += "end_header\n";
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
         putBytes(out, m.positions[i].data(), 12);
         const Vec3f n = unitNormal(m, i);
@@ -127,6 +140,8 @@ std::string ply(const Mesh& m) {
         put<std::uint8_t>(out, 3);
         putBytes(out, t.data(), 12);
     }
+    for (const Segment& g : m.segments)
+        putBytes(out, g.data(), 8);
     return out;
 }
 
@@ -158,7 +173,10 @@ std::string glb(const Mesh& m) {
                 putBytes(bin, c.data(), 16);
         const std::size_t indicesAt = bin.size();
         const bool points = m.isPointCloud(); // mode POINTS, no indices
-        if (!points)
+        if (m.isLines())
+            for (const Segment& g : m.segments)
+                putBytes(bin, g.data(), 8);
+        else if (!points)
             for (const Triangle& t : m.triangles)
                 putBytes(bin, t.data(), 12);
         auto view = [](std::size_t offset, std::size_t length, int target) {
@@ -170,10 +188,12 @@ std::string glb(const Mesh& m) {
         json += R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1)";
         if (colours) json += R"(,"COLOR_0":2)";
         json += '}';
-        if (points)
+        if (points) {
             json += R"(,"mode":0}]}],)";
-        else
-            json += colours ? R"(,"indices":3,"mode":4}]}],)" : R"(,"indices":2,"mode":4}]}],)";
+        } else {
+            json += colours ? R"(,"indices":3,"mode":)" : R"(,"indices":2,"mode":)";
+            json += m.isLines() ? "1}]}]," : "4}]}],"; // LINES or TRIANGLES
+        }
         json += "\"bufferViews\":[" + view(positionsAt, normalsAt - positionsAt, 34962) + "," +
                 view(normalsAt, coloursAt - normalsAt, 34962);
         if (colours) {
@@ -210,7 +230,9 @@ std::string glb(const Mesh& m) {
         }
         if (!points) {
             json += ',';
-            json += accessor("SCALAR", 5125, std::to_string(3 * m.triangleCount()), "");
+            json += accessor(
+                "SCALAR", 5125,
+                std::to_string(m.isLines() ? 2 * m.segments.size() : 3 * m.triangleCount()), "");
         }
         json += "],";
         json += "\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + "}]}";
@@ -242,12 +264,24 @@ std::string x3d(const Mesh& m) {
                       "  <head><meta name='generator' content='FunctionLab'/></head>\n"
                       "  <Scene>\n    <Shape>\n"
                       "      <Appearance><Material diffuseColor='0.8 0.8 0.8'/></Appearance>\n";
-    const bool points = m.isPointCloud();
-    // A point cloud: a PointSet (its points are lit by their own colour).
-    out +=
-        points
-            ? "      <PointSet>\n        <Coordinate point='"
-            : "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' coordIndex='";
+    const bool lines = m.isLines();
+    const bool points = m.isPointCloud() || lines; // no normals, no faces
+    // A point cloud: a PointSet; lines: an IndexedLineSet (both unlit).
+    if (lines) {
+        out += "      <IndexedLineSet coordIndex='";
+        for (std::size_t i = 0; i < m.segments.size(); ++i) {
+            if (i) out += ' ';
+            out += std::to_string(m.segments[i][0]);
+            out += ' ';
+            out += std::to_string(m.segments[i][1]);
+            out += " -1";
+        }
+        out += "'>\n        <Coordinate point='";
+    } else {
+        out += points ? "      <PointSet>\n        <Coordinate point='"
+                      : "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' "
+                        "coordIndex='";
+    }
     for (std::size_t i = 0; !points && i < m.triangles.size(); ++i) {
         for (std::uint32_t v : m.triangles[i]) {
             if (i || v != m.triangles[i][0]) out += ' ';
@@ -279,7 +313,9 @@ std::string x3d(const Mesh& m) {
         }
         out += "'/>\n";
     }
-    out += points ? "      </PointSet>\n" : "      </IndexedFaceSet>\n";
+    out += lines    ? "      </IndexedLineSet>\n"
+           : points ? "      </PointSet>\n"
+                    : "      </IndexedFaceSet>\n";
     out += "    </Shape>\n  </Scene>\n</X3D>\n";
     return out;
 }
@@ -335,6 +371,10 @@ bool writeMesh(const Mesh& mesh, const std::filesystem::path& path, std::string&
     if (!format) {
         error = "unknown mesh format '" + path.extension().string() +
                 "': use .stl, .obj, .ply, .glb or .x3d";
+        return false;
+    }
+    if (*format == MeshFormat::Stl && mesh.isLines()) {
+        error = "STL holds triangles only; write lines as .ply, .obj, .glb or .x3d";
         return false;
     }
     if (*format == MeshFormat::Stl && mesh.isPointCloud()) {

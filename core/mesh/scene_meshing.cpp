@@ -450,7 +450,15 @@ class Walker {
         const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
         sm.look = lookOf(appearance, n.type == "FShape");
         sm.look.solid = r.solid;
-        if (sm.mesh.colours.empty()) {
+        if (sm.mesh.isLines() && sm.mesh.colours.empty()) {
+            // X3D lines take the Material's emissive colour (white without one).
+            const Node* material = materialOf(appearance);
+            const auto e = material ? vec(*material, "emissiveColor") : std::vector<double>{};
+            const std::array<float, 4> c =
+                e.size() == 3 ? std::array<float, 4>{float(e[0]), float(e[1]), float(e[2]), 1}
+                              : std::array<float, 4>{1, 1, 1, 1};
+            sm.mesh.colours.assign(sm.mesh.vertexCount(), c);
+        } else if (sm.mesh.colours.empty()) {
             // FMaterial functions see the shape's own coordinates, its bounds as the box.
             colour(appearance, boundsOf(sm.mesh), sm);
         } else if (const Node* material = materialOf(appearance)) {
@@ -813,6 +821,11 @@ Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive) {
             for (auto& i : t)
                 i += base;
             all.triangles.push_back(t);
+        }
+        for (Segment g : s.mesh.segments) {
+            for (auto& i : g)
+                i += base;
+            all.segments.push_back(g);
         }
     }
     return all;

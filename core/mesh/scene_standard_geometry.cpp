@@ -137,6 +137,21 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments) {
         ex.endCap = scene::boolField(g, "endCap");
         ex.creaseAngle = scene::numberField(g, "creaseAngle");
         use(extrusionMesh(ex));
+    } else if (type == "IndexedLineSet") {
+        FaceSet f = commonFaceSet(g);
+        f.coordIndex = indices(g, "coordIndex");
+        f.colourIndex = indices(g, "colorIndex");
+        use(lineSetMesh(f));
+    } else if (type == "LineSet") {
+        FaceSet f = commonFaceSet(g);
+        f.colourPerVertex = true;
+        std::int64_t next = 0;
+        for (double count : scene::numbersField(g, "vertexCount")) {
+            for (std::int64_t k = 0; k < std::int64_t(count); ++k)
+                f.coordIndex.push_back(next++);
+            f.coordIndex.push_back(-1);
+        }
+        use(lineSetMesh(f));
     } else if (type == "PointSet") {
         r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
     } else {

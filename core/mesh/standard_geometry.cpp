@@ -293,6 +293,53 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
     return out;
 }
 
+FaceSetResult lineSetMesh(const FaceSet& f) {
+    FaceSetResult out;
+    Mesh& m = out.mesh;
+    m.primitive = Primitive::Lines;
+    bool bad = false;
+    std::size_t polyline = 0;
+    std::int64_t previous = -1;
+    std::uint32_t previousVertex = 0;
+    for (std::size_t corner = 0; corner < f.coordIndex.size(); ++corner) {
+        const std::int64_t index = f.coordIndex[corner];
+        if (index < 0) { // the end of a polyline
+            ++polyline;
+            previous = -1;
+            continue;
+        }
+        if (std::size_t(index) >= f.points.size()) {
+            bad = true;
+            previous = -1;
+            continue;
+        }
+        const auto& p = f.points[std::size_t(index)];
+        m.positions.push_back({float(p[0]), float(p[1]), float(p[2])});
+        m.normals.push_back({0, 0, 0});
+        if (!f.colours.empty()) {
+            const std::size_t at = f.colourPerVertex ? corner : polyline;
+            std::int64_t c = f.colourIndex.empty()
+                                 ? (f.colourPerVertex ? index : std::int64_t(polyline))
+                             : at < f.colourIndex.size() ? f.colourIndex[at]
+                                                         : -1;
+            if (c < 0 || std::size_t(c) >= f.colours.size()) {
+                bad = true;
+                m.colours.push_back({1, 1, 1, 1});
+            } else {
+                m.colours.push_back(f.colours[std::size_t(c)]);
+            }
+        }
+        const auto vertex = std::uint32_t(m.positions.size() - 1);
+        if (previous >= 0) m.segments.push_back({previousVertex, vertex});
+        previous = index;
+        previousVertex = vertex;
+    }
+    if (bad)
+        out.warnings.push_back("an index points past the end of its list (coord or color); "
+                               "those points are left out or shown white");
+    return out;
+}
+
 Mesh pointSetMesh(const std::vector<std::array<double, 3>>& points,
                   const std::vector<std::array<float, 4>>& colours) {
     Mesh m;

@@ -70,6 +70,11 @@ struct Extrusion {
 // Faces outward: closed extrusions by their volume, open ones away from the spine.
 FaceSetResult extrusionMesh(const Extrusion& extrusion);
 
+// IndexedLineSet (polylines in `coordIndex`, -1 between) and LineSet (given
+// as a coordIndex by the adapter): segments, colours per vertex or per
+// polyline; normals zero (lines are unlit).
+FaceSetResult lineSetMesh(const FaceSet& lines);
+
 // PointSet: its points with their colours; normals zero (unlit).
 Mesh pointSetMesh(const std::vector<std::array<double, 3>>& points,
                   const std::vector<std::array<float, 4>>& colours);

@@ -228,7 +228,11 @@ int meshCommand(const Args& args) {
                          "holds one kind; give --points N to write every shape as points\n";
             return kExitDiagnostic;
         }
-        result = cloud.empty() ? triangles : cloud;
+        const mesh::Mesh lines = mesh::mergeMeshes(meshes.shapes, mesh::Primitive::Lines);
+        if (!lines.empty() && (!triangles.empty() || !cloud.empty()))
+            std::cerr << "note: the scene's line sets are left out of " << output
+                      << " (one file holds one kind)\n";
+        result = !cloud.empty() ? cloud : !triangles.empty() ? triangles : lines;
         if (meshes.shapes.empty()) {
             std::cerr << "functionlab mesh: " << file << " has no shape to mesh\n";
             return kExitDiagnostic;

@@ -1,7 +1,9 @@
 // Meshing the paper's scenes: every kind of function geometry, placed by its
 // transforms, coloured by its material at the moment asked for.
+#include "mesh/mesh_export.h"
 #include "mesh/mesh_topology.h"
 #include "mesh/scene_meshing.h"
+#include "scene/field_access.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
@@ -405,4 +407,26 @@ TEST(SceneMeshing, AnExponentialDefUseGraphIsCutShortWithANote) {
         noted = noted || n.find("reuses (USE) nodes so often") != std::string::npos;
     EXPECT_TRUE(noted);
     EXPECT_LT(s.shapes.size(), 250000u);
+}
+
+TEST(SceneStandardShapes, LineSetsTakeTheEmissiveColourAndExportAsLines) {
+    const SceneMeshes s = meshText(R"x(
+        Shape { appearance Appearance { material Material { emissiveColor 0 1 0 } }
+                geometry LineSet { vertexCount [3 2]
+                                   coord Coordinate { point [0 0 0, 1 0 0, 1 1 0, 2 2 2, 3 3 3] } } })x");
+    ASSERT_EQ(s.shapes.size(), 1u);
+    const Mesh& m = s.shapes[0].mesh;
+    ASSERT_TRUE(m.isLines());
+    EXPECT_EQ(m.segments.size(), 3u);
+    ASSERT_EQ(m.colours.size(), m.vertexCount());
+    EXPECT_EQ(m.colours[0], (std::array<float, 4>{0, 1, 0, 1}));
+    const Mesh merged = mergeMeshes(s.shapes, Primitive::Lines);
+    EXPECT_NE(encodeMesh(merged, MeshFormat::Obj).find("\nl 1 2\n"), std::string::npos);
+    EXPECT_NE(encodeMesh(merged, MeshFormat::Ply).find("element edge 3\n"), std::string::npos);
+    EXPECT_NE(encodeMesh(merged, MeshFormat::Glb).find(R"("mode":1)"), std::string::npos);
+    auto back = fl::scene::readSceneBytes(encodeMesh(merged, MeshFormat::X3d), "lines.x3d");
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(fl::scene::nodeField(*back.scene->roots.at(0), "geometry")->type, "IndexedLineSet");
+    std::string error;
+    EXPECT_FALSE(writeMesh(merged, testing::TempDir() + "lines.stl", error));
 }

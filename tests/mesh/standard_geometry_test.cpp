@@ -162,3 +162,19 @@ TEST(StandardGeometry, ExtrusionsSweepTheirCrossSectionAndFaceOutward) {
     const auto& p = open.mesh.positions[0];
     EXPECT_GT(n[0] * p[0] + n[2] * p[2], 0);
 }
+
+TEST(StandardGeometry, LineSetsAreSegmentsOfTheirPolylines) {
+    FaceSet f;
+    f.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    f.coordIndex = {0, 1, 2, -1, 2, 3, 9, 0}; // a bad index breaks the second polyline
+    f.colours = {{1, 0, 0, 1}, {0, 0, 1, 1}};
+    f.colourPerVertex = false; // one colour per polyline
+    const FaceSetResult r = lineSetMesh(f);
+    EXPECT_TRUE(r.mesh.isLines());
+    EXPECT_EQ(r.mesh.segments.size(), 3u); // 0-1, 1-2, then 2-3 (3-9 and 9-0 are lost)
+    EXPECT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.mesh.colours.front(), (std::array<float, 4>{1, 0, 0, 1}));
+    EXPECT_EQ(r.mesh.colours.back(), (std::array<float, 4>{0, 0, 1, 1}));
+    for (const Vec3f& n : r.mesh.normals)
+        EXPECT_EQ(n, (Vec3f{0, 0, 0})); // unlit
+}

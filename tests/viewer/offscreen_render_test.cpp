@@ -140,6 +140,21 @@ TEST(OffscreenRender, SeeThroughShapesShowWhatIsBehindThem) {
     EXPECT_GT(centre.blueF(), 0.3) << "the box is not there";
 }
 
+TEST(OffscreenRender, LineSetsAreDrawnInTheirColour) {
+    auto scene = text(R"x(
+        Viewpoint { position 0 0 4 }
+        Shape { appearance Appearance { material Material { emissiveColor 1 1 0 } }
+                geometry IndexedLineSet { coordIndex [0 1 2 3 0 -1 0 2 -1 1 3]
+                    coord Coordinate { point [-1 -1 0, 1 -1 0, 1 1 0, -1 1 0] } } })x");
+    const Frame f = render(*scene, "lines");
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    EXPECT_GT(share(f.image,
+                    [](const QColor& c) {
+                        return c.redF() > 0.8 && c.greenF() > 0.8 && c.blueF() < 0.3;
+                    }),
+              0.002);
+}
+
 TEST(OffscreenRender, AnUnknownViewpointIsExplained) {
     auto scene = example("bouncing_sphere.x3d");
     const Frame f = render(*scene, "unused", 0, 0, "Nowhere");
