@@ -63,63 +63,42 @@ Qt3DRender::QGeometryRenderer* makeGeometryRenderer(const mesh::Mesh& mesh,
     attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultNormalAttributeName(), 3, 3, n);
     attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultColorAttributeName(), 4, 6, n);
     geometry->setBoundingVolumePositionAttribute(position);
-    if (mesh.isLines() && as != DrawAs::Vertices) {
-        QByteArray indices(reinterpret_cast<const char*>(mesh.segments.data()),
-                           qsizetype(mesh.segments.size() * sizeof(mesh::Segment)));
+    // 32-bit indices of `count` vertices drawn as `type`.
+    auto indexed = [&](const void* data, std::size_t count,
+                       Qt3DRender::QGeometryRenderer::PrimitiveType type) {
         auto* indexBuffer = new Qt3DCore::QBuffer(geometry);
-        indexBuffer->setData(indices);
+        indexBuffer->setData(
+            QByteArray(static_cast<const char*>(data), qsizetype(count * sizeof(quint32))));
         auto* index = new Qt3DCore::QAttribute(geometry);
         index->setAttributeType(Qt3DCore::QAttribute::IndexAttribute);
         index->setVertexBaseType(Qt3DCore::QAttribute::UnsignedInt);
         index->setBuffer(indexBuffer);
-        index->setCount(uint(mesh.segments.size() * 2));
+        index->setCount(uint(count));
         geometry->addAttribute(index);
-        renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Lines);
-        renderer->setVertexCount(int(mesh.segments.size() * 2));
+        renderer->setPrimitiveType(type);
+        renderer->setVertexCount(int(count));
+    };
+    if (mesh.isLines() && as != DrawAs::Vertices) {
+        indexed(mesh.segments.data(), mesh.segments.size() * 2,
+                Qt3DRender::QGeometryRenderer::Lines);
     } else if (mesh.isPointCloud() || as == DrawAs::Vertices) {
         renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Points);
         renderer->setVertexCount(int(n));
     } else if (as == DrawAs::Edges) {
         // Each edge once, though two triangles share it.
-        std::vector<std::pair<quint32, quint32>> edges;
+        std::vector<mesh::Segment> edges;
         edges.reserve(mesh.triangles.size() * 3);
         for (const mesh::Triangle& t : mesh.triangles)
             for (std::size_t k = 0; k < 3; ++k)
                 if (t[k] != t[(k + 1) % 3])
-                    edges.emplace_back(std::min(t[k], t[(k + 1) % 3]),
-                                       std::max(t[k], t[(k + 1) % 3]));
+                    edges.push_back(
+                        {std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
         std::sort(edges.begin(), edges.end());
         edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-        std::vector<quint32> flat;
-        flat.reserve(edges.size() * 2);
-        for (const auto& [a, b] : edges)
-            flat.insert(flat.end(), {a, b});
-        QByteArray indices(reinterpret_cast<const char*>(flat.data()),
-                           qsizetype(flat.size() * sizeof(quint32)));
-        auto* indexBuffer = new Qt3DCore::QBuffer(geometry);
-        indexBuffer->setData(indices);
-        auto* index = new Qt3DCore::QAttribute(geometry);
-        index->setAttributeType(Qt3DCore::QAttribute::IndexAttribute);
-        index->setVertexBaseType(Qt3DCore::QAttribute::UnsignedInt);
-        index->setBuffer(indexBuffer);
-        index->setCount(uint(flat.size()));
-        geometry->addAttribute(index);
-        renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Lines);
-        renderer->setVertexCount(int(flat.size()));
+        indexed(edges.data(), edges.size() * 2, Qt3DRender::QGeometryRenderer::Lines);
     } else {
-        QByteArray indices(qsizetype(mesh.triangles.size()) * 3 * qsizetype(sizeof(quint32)),
-                           Qt::Uninitialized);
-        std::memcpy(indices.data(), mesh.triangles.data(), std::size_t(indices.size()));
-        auto* indexBuffer = new Qt3DCore::QBuffer(geometry);
-        indexBuffer->setData(indices);
-        auto* index = new Qt3DCore::QAttribute(geometry);
-        index->setAttributeType(Qt3DCore::QAttribute::IndexAttribute);
-        index->setVertexBaseType(Qt3DCore::QAttribute::UnsignedInt);
-        index->setBuffer(indexBuffer);
-        index->setCount(uint(mesh.triangles.size() * 3));
-        geometry->addAttribute(index);
-        renderer->setPrimitiveType(Qt3DRender::QGeometryRenderer::Triangles);
-        renderer->setVertexCount(int(mesh.triangles.size() * 3));
+        indexed(mesh.triangles.data(), mesh.triangles.size() * 3,
+                Qt3DRender::QGeometryRenderer::Triangles);
     }
     renderer->setGeometry(geometry);
     return renderer;
@@ -129,10 +108,10 @@ Qt3DRender::QGeometryRenderer* makeBoxOutline(const std::array<double, 3>& lo,
                                               const std::array<double, 3>& hi,
                                               std::array<float, 4> colour,
                                               Qt3DCore::QNode* parent) {
-    // Corner c has x from bit 0, y from bit 1, z from bit 2; as degenerate
-    // triangles (a, b, b) each gives its edge a-b, and only the box's twelve
-    // edges are listed.
+    // Corner c has x from bit 0, y from bit 1, z from bit 2; an edge joins
+    // corners that differ in one bit.
     mesh::Mesh box;
+    box.primitive = mesh::Primitive::Lines;
     for (int c = 0; c < 8; ++c) {
         box.positions.push_back({float(c & 1 ? hi[0] : lo[0]), float(c & 2 ? hi[1] : lo[1]),
                                  float(c & 4 ? hi[2] : lo[2])});
@@ -140,8 +119,8 @@ Qt3DRender::QGeometryRenderer* makeBoxOutline(const std::array<double, 3>& lo,
     }
     for (std::uint32_t a = 0; a < 8; ++a)
         for (std::uint32_t bit : {1u, 2u, 4u})
-            if (!(a & bit)) box.triangles.push_back({a, a | bit, a | bit});
-    return makeGeometryRenderer(box, colour, parent, DrawAs::Edges);
+            if (!(a & bit)) box.segments.push_back({a, a | bit});
+    return makeGeometryRenderer(box, colour, parent);
 }
 
 } // namespace fl::viewer
