@@ -1,8 +1,11 @@
 #include "scene_standard_geometry.h"
 
+#include "nurbs.h"
 #include "scene/field_access.h"
 #include "standard_geometry.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace fl::mesh {
@@ -60,6 +63,252 @@ std::vector<std::int64_t> inThrees(const std::vector<std::int64_t>& corners) {
     for (std::size_t i = 0; i + 2 < corners.size(); i += 3)
         out.insert(out.end(), {corners[i], corners[i + 1], corners[i + 2], -1});
     return out;
+}
+
+// Groups of consecutive vertices: `counts` for TriangleFanSet/StripSet, or
+// an index list split at -1 for the indexed ones.
+std::vector<std::vector<std::int64_t>> groupsByCount(const std::vector<double>& counts,
+                                                     std::size_t vertices) {
+    std::vector<std::vector<std::int64_t>> out;
+    std::int64_t next = 0;
+    for (double c : counts) {
+        std::vector<std::int64_t> g;
+        for (std::int64_t k = 0; k < std::int64_t(c) && std::size_t(next) < vertices; ++k)
+            g.push_back(next++);
+        out.push_back(std::move(g));
+    }
+    return out;
+}
+
+std::vector<std::vector<std::int64_t>> groupsByIndex(const std::vector<std::int64_t>& index) {
+    std::vector<std::vector<std::int64_t>> out(1);
+    for (std::int64_t i : index) {
+        if (i < 0)
+            out.emplace_back();
+        else
+            out.back().push_back(i);
+    }
+    return out;
+}
+
+// Fans (v0, vk, vk+1) and strips (every other triangle turned round so all
+// keep the strip's winding) as triangles in coordIndex form. For colours per
+// face, X3D gives one per fan or strip: the returned colour index says which.
+struct Triangulated {
+    std::vector<std::int64_t> coordIndex;
+    std::vector<std::int64_t> groupOfTriangle;
+};
+
+Triangulated fans(const std::vector<std::vector<std::int64_t>>& groups) {
+    Triangulated t;
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        for (std::size_t k = 1; k + 1 < groups[g].size(); ++k) {
+            t.coordIndex.insert(t.coordIndex.end(),
+                                {groups[g][0], groups[g][k], groups[g][k + 1], -1});
+            t.groupOfTriangle.push_back(std::int64_t(g));
+        }
+    return t;
+}
+
+Triangulated strips(const std::vector<std::vector<std::int64_t>>& groups) {
+    Triangulated t;
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        for (std::size_t k = 0; k + 2 < groups[g].size(); ++k) {
+            const auto& v = groups[g];
+            if (k % 2 == 0)
+                t.coordIndex.insert(t.coordIndex.end(), {v[k], v[k + 1], v[k + 2], -1});
+            else
+                t.coordIndex.insert(t.coordIndex.end(), {v[k + 1], v[k], v[k + 2], -1});
+            t.groupOfTriangle.push_back(std::int64_t(g));
+        }
+    return t;
+}
+
+FaceSetResult triangulatedMesh(FaceSet f, Triangulated&& t) {
+    f.coordIndex = std::move(t.coordIndex);
+    if (!f.colourPerVertex) f.colourIndex = std::move(t.groupOfTriangle);
+    return faceSetMesh(f);
+}
+
+// Points of a 2D node (z = 0) and the circle helpers of Geometry2D.
+std::vector<std::array<double, 3>> planePoints(const std::vector<double>& xy) {
+    std::vector<std::array<double, 3>> out;
+    for (std::size_t i = 0; i + 1 < xy.size(); i += 2)
+        out.push_back({xy[i], xy[i + 1], 0});
+    return out;
+}
+
+std::vector<std::array<double, 3>> arcPoints(double radius, double start, double end,
+                                             int segments) {
+    // X3D: an arc from startAngle counter-clockwise to endAngle; equal angles
+    // make a full circle.
+    double sweep = end - start;
+    const double turn = 2 * 3.14159265358979323846;
+    if (sweep <= 0) sweep += turn * std::ceil(-sweep / turn + 1e-12);
+    if (std::abs(end - start) < 1e-12) sweep = turn;
+    const int n = std::max(1, int(std::ceil(segments * sweep / turn)));
+    std::vector<std::array<double, 3>> out;
+    for (int k = 0; k <= n; ++k) {
+        const double a = start + sweep * k / n;
+        out.push_back({radius * std::cos(a), radius * std::sin(a), 0});
+    }
+    return out;
+}
+
+FaceSet polyline(std::vector<std::array<double, 3>> points) {
+    FaceSet f;
+    f.points = std::move(points);
+    for (std::size_t i = 0; i < f.points.size(); ++i)
+        f.coordIndex.push_back(std::int64_t(i));
+    return f;
+}
+
+FaceSetResult geometry2DMesh(const Node& g, int segments) {
+    const std::string& type = g.type;
+    if (type == "Rectangle2D") {
+        const double w = scene::numberField(g, "size", 0, 2) / 2;
+        const double h = scene::numberField(g, "size", 1, 2) / 2;
+        FaceSet f;
+        f.points = {{-w, -h, 0}, {w, -h, 0}, {w, h, 0}, {-w, h, 0}};
+        f.coordIndex = {0, 1, 2, 3};
+        return faceSetMesh(f);
+    }
+    if (type == "TriangleSet2D") {
+        FaceSet f;
+        f.points = planePoints(scene::numbersField(g, "vertices"));
+        std::vector<std::int64_t> all(f.points.size());
+        for (std::size_t i = 0; i < all.size(); ++i)
+            all[i] = std::int64_t(i);
+        f.coordIndex = inThrees(all);
+        return faceSetMesh(f);
+    }
+    if (type == "Disk2D") {
+        const double inner = scene::numberField(g, "innerRadius", 0, 0);
+        const double outer = scene::numberField(g, "outerRadius", 0, 1);
+        const auto o = arcPoints(outer, 0, 0, segments);
+        if (inner == outer) return lineSetMesh(polyline(o)); // X3D: a circle
+        FaceSet f;
+        f.points = o;
+        const std::int64_t n = std::int64_t(o.size()) - 1; // last repeats the first
+        if (inner <= 0) {
+            for (std::int64_t k = 0; k < n; ++k)
+                f.coordIndex.push_back(k);
+        } else {
+            const auto in = arcPoints(inner, 0, 0, segments);
+            f.points.insert(f.points.end(), in.begin(), in.end());
+            const std::int64_t base = n + 1;
+            for (std::int64_t k = 0; k < n; ++k)
+                f.coordIndex.insert(f.coordIndex.end(), {k, k + 1, base + k + 1, base + k, -1});
+        }
+        return faceSetMesh(f);
+    }
+    if (type == "ArcClose2D") {
+        auto arc =
+            arcPoints(scene::numberField(g, "radius", 0, 1), scene::numberField(g, "startAngle"),
+                      scene::numberField(g, "endAngle", 0, 1.570796), segments);
+        FaceSet f;
+        const bool pie = scene::stringField(g, "closureType") != "CHORD";
+        if (pie) f.points.push_back({0, 0, 0});
+        f.points.insert(f.points.end(), arc.begin(), arc.end());
+        for (std::size_t i = 0; i < f.points.size(); ++i)
+            f.coordIndex.push_back(std::int64_t(i));
+        return faceSetMesh(f);
+    }
+    if (type == "Arc2D")
+        return lineSetMesh(polyline(
+            arcPoints(scene::numberField(g, "radius", 0, 1), scene::numberField(g, "startAngle"),
+                      scene::numberField(g, "endAngle", 0, 1.570796), segments)));
+    if (type == "Circle2D")
+        return lineSetMesh(
+            polyline(arcPoints(scene::numberField(g, "radius", 0, 1), 0, 0, segments)));
+    // Polyline2D
+    return lineSetMesh(polyline(planePoints(scene::numbersField(g, "lineSegments"))));
+}
+
+// NURBS: control points from a Coordinate or CoordinateDouble node.
+std::vector<Point2> pairsOf(const std::vector<double>& v) {
+    std::vector<Point2> out;
+    for (std::size_t i = 0; i + 1 < v.size(); i += 2)
+        out.push_back({v[i], v[i + 1]});
+    return out;
+}
+
+NurbsSurface nurbsSurfaceOf(const Node& g, std::vector<std::string>& warnings) {
+    NurbsSurface s;
+    s.points = pointsOf(g, "controlPoint", "point");
+    const int uDim = int(scene::numberField(g, "uDimension"));
+    const int vDim = int(scene::numberField(g, "vDimension"));
+    if (uDim < 2 || vDim < 2 || std::size_t(uDim) * std::size_t(vDim) != s.points.size()) {
+        warnings.push_back("uDimension " + std::to_string(uDim) + " x vDimension " +
+                           std::to_string(vDim) + " does not match the " +
+                           std::to_string(s.points.size()) +
+                           " control points (each dimension needs at least 2); nothing drawn");
+        return {};
+    }
+    s.u = makeNurbsBasis(int(scene::numberField(g, "uOrder", 0, 3)), uDim,
+                         scene::numbersField(g, "uKnot"), "u", warnings);
+    s.v = makeNurbsBasis(int(scene::numberField(g, "vOrder", 0, 3)), vDim,
+                         scene::numbersField(g, "vKnot"), "v", warnings);
+    s.weights = nurbsWeights(scene::numbersField(g, "weight"), s.points.size(), warnings);
+    return s;
+}
+
+// The trimming contours of a NurbsTrimmedSurface: each Contour2D's pieces
+// (ContourPolyline2D, NurbsCurve2D) joined end to end into one closed loop.
+std::vector<Contour2> trimmingContours(const Node& g, std::vector<std::string>& warnings) {
+    std::vector<Contour2> out;
+    for (const Node* raw : scene::nodesField(g, "trimmingContour")) {
+        const Node* contour = scene::effectiveNode(raw);
+        if (!contour) continue;
+        Contour2 loop;
+        for (const Node* rawPiece : scene::nodesField(*contour, "children")) {
+            const Node* piece = scene::effectiveNode(rawPiece);
+            if (!piece) continue;
+            const auto points = pairsOf(scene::numbersField(*piece, "controlPoint"));
+            std::vector<Point2> along;
+            if (piece->type == "NurbsCurve2D")
+                along = nurbsCurve2DPoints(
+                    int(scene::numberField(*piece, "order", 0, 3)), points,
+                    scene::numbersField(*piece, "weight"), scene::numbersField(*piece, "knot"),
+                    nurbsSegments(int(scene::numberField(*piece, "tessellation")),
+                                  int(points.size())),
+                    warnings);
+            else
+                along = points;
+            for (const Point2& p : along)
+                if (loop.empty() || loop.back() != p) loop.push_back(p);
+        }
+        if (loop.size() >= 3) out.push_back(std::move(loop));
+    }
+    return out;
+}
+
+FaceSetResult nurbsMesh(const Node& g) {
+    FaceSetResult r;
+    if (g.type == "NurbsCurve") {
+        NurbsCurve c;
+        c.points = pointsOf(g, "controlPoint", "point");
+        c.basis = makeNurbsBasis(int(scene::numberField(g, "order", 0, 3)), int(c.points.size()),
+                                 scene::numbersField(g, "knot"), "", r.warnings);
+        if (c.basis.count < 2) return r;
+        c.weights = nurbsWeights(scene::numbersField(g, "weight"), c.points.size(), r.warnings);
+        r.mesh = nurbsCurveMesh(
+            c, nurbsSegments(int(scene::numberField(g, "tessellation")), int(c.points.size())));
+        return r;
+    }
+    const NurbsSurface s = nurbsSurfaceOf(g, r.warnings);
+    if (s.points.empty()) return r;
+    const std::vector<Contour2> trim =
+        g.type == "NurbsTrimmedSurface" ? trimmingContours(g, r.warnings) : std::vector<Contour2>{};
+    r.mesh = nurbsSurfaceMesh(
+        s, nurbsSegments(int(scene::numberField(g, "uTessellation")), s.u.count),
+        nurbsSegments(int(scene::numberField(g, "vTessellation")), s.v.count), trim);
+    return r;
+}
+
+bool isGeometry2D(const std::string& type) {
+    return type == "Rectangle2D" || type == "TriangleSet2D" || type == "Disk2D" ||
+           type == "ArcClose2D" || type == "Arc2D" || type == "Circle2D" || type == "Polyline2D";
 }
 
 } // namespace
@@ -152,6 +401,38 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments) {
             f.coordIndex.push_back(-1);
         }
         use(lineSetMesh(f));
+    } else if (type == "TriangleFanSet" || type == "TriangleStripSet") {
+        FaceSet f = commonFaceSet(g);
+        const auto groups =
+            type == "TriangleFanSet"
+                ? groupsByCount(scene::numbersField(g, "fanCount"), f.points.size())
+                : groupsByCount(scene::numbersField(g, "stripCount"), f.points.size());
+        use(triangulatedMesh(std::move(f),
+                             type == "TriangleFanSet" ? fans(groups) : strips(groups)));
+    } else if (type == "IndexedTriangleFanSet" || type == "IndexedTriangleStripSet") {
+        FaceSet f = commonFaceSet(g);
+        const auto groups = groupsByIndex(indices(g, "index"));
+        use(triangulatedMesh(std::move(f),
+                             type == "IndexedTriangleFanSet" ? fans(groups) : strips(groups)));
+    } else if (type == "QuadSet" || type == "IndexedQuadSet") {
+        FaceSet f = commonFaceSet(g);
+        std::vector<std::int64_t> corners = indices(g, "index");
+        if (type == "QuadSet") {
+            corners.resize(f.points.size());
+            for (std::size_t i = 0; i < corners.size(); ++i)
+                corners[i] = std::int64_t(i);
+        }
+        for (std::size_t i = 0; i + 3 < corners.size(); i += 4)
+            f.coordIndex.insert(f.coordIndex.end(),
+                                {corners[i], corners[i + 1], corners[i + 2], corners[i + 3], -1});
+        use(faceSetMesh(f));
+    } else if (isGeometry2D(type)) {
+        use(geometry2DMesh(g, segments));
+    } else if (type == "Polypoint2D") {
+        r.mesh = pointSetMesh(planePoints(scene::numbersField(g, "point")), {});
+    } else if (type == "NurbsCurve" || type == "NurbsPatchSurface" ||
+               type == "NurbsTrimmedSurface") {
+        use(nurbsMesh(g));
     } else if (type == "PointSet") {
         r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
     } else {

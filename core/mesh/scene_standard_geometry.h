@@ -1,7 +1,9 @@
 #pragma once
-// The standard geometry nodes of a scene (Box, Sphere, Cone, Cylinder,
-// IndexedFaceSet, IndexedTriangleSet, TriangleSet, PointSet) read from their
-// fields into meshes (standard_geometry.h). Other geometry is named in a note.
+// The standard geometry nodes of a scene read from their fields into meshes
+// (standard_geometry.h): Geometry3D (Box, Sphere, Cone, Cylinder,
+// IndexedFaceSet, ElevationGrid, Extrusion), Rendering (triangle, fan, strip
+// and quad sets, indexed or not, line and point sets), Geometry2D (in the
+// z = 0 plane). Other geometry is named in a note.
 #include "mesh.h"
 #include "scene/scene.h"
 

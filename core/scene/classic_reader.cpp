@@ -127,9 +127,10 @@ void ClassicReader::headerStatements() {
     while (peekWord("UNIT")) {
         ClassicTokenInfo u = next();
         std::string text = "UNIT";
-        for (int i = 0; i < 3; ++i)
-            text +=
-                " " + std::string(expect(i == 2 ? T::Number : T::Identifier, "a UNIT part").text);
+        for (int i = 0; i < 3; ++i) {
+            text += ' '; // appended piecewise: GCC 12 warns (-Wrestrict) on " " + string
+            text += expect(i == 2 ? T::Number : T::Identifier, "a UNIT part").text;
+        }
         (void)u;
         s.units.push_back(text);
     }
@@ -454,6 +455,12 @@ void ClassicReader::element(FieldValue& v, FieldType single) {
             next();
             return;
         }
+        if (peek().kind == T::LeftBracket)
+            b_.fail(peek().pos,
+                    "expected a node, USE or NULL, found '[': this field holds one node",
+                    "write the node without brackets; numbers go inside a node, e.g. "
+                    "Coordinate { point [ ... ] } (NURBS files from before X3D 3.0 gave "
+                    "control points directly)");
         if (peek().kind != T::Identifier)
             b_.fail(peek().pos, "expected a node, USE or NULL, found " + describe(peek()));
         v.nodes.push_back(nodeStatement(peek().pos));

@@ -456,6 +456,95 @@ constexpr FieldSpec kTriangleSet2DFields[] = {
 };
 
 // ---------------------------------------------------------------------------
+// NURBS
+// ---------------------------------------------------------------------------
+
+constexpr FieldSpec kContour2DFields[] = {
+    {"addChildren", MFNode, InputOnly, ""},
+    {"removeChildren", MFNode, InputOnly, ""},
+    {"children", MFNode, InputOutput, ""},
+};
+
+constexpr FieldSpec kContourPolyline2DFields[] = {
+    {"controlPoint", MFVec2d, InputOutput, ""},
+};
+
+constexpr FieldSpec kNurbsCurveFields[] = {
+    {"controlPoint", SFNode, InputOutput, "NULL"},
+    {"tessellation", SFInt32, InputOutput, "0"},
+    {"weight", MFDouble, InputOutput, ""},
+    {"closed", SFBool, InitializeOnly, "FALSE"},
+    {"knot", MFDouble, InitializeOnly, ""},
+    {"order", SFInt32, InitializeOnly, "3"},
+};
+
+constexpr FieldSpec kNurbsCurve2DFields[] = {
+    {"controlPoint", MFVec2d, InputOutput, ""},
+    {"tessellation", SFInt32, InputOutput, "0"},
+    {"weight", MFDouble, InputOutput, ""},
+    {"closed", SFBool, InitializeOnly, "FALSE"},
+    {"knot", MFDouble, InitializeOnly, ""},
+    {"order", SFInt32, InitializeOnly, "3"},
+};
+
+constexpr FieldSpec kNurbsPatchSurfaceFields[] = {
+    {"controlPoint", SFNode, InputOutput, "NULL"},
+    {"texCoord", SFNode, InputOutput, "NULL"},
+    {"uTessellation", SFInt32, InputOutput, "0"},
+    {"vTessellation", SFInt32, InputOutput, "0"},
+    {"weight", MFDouble, InputOutput, ""},
+    {"solid", SFBool, InitializeOnly, "TRUE"},
+    {"uClosed", SFBool, InitializeOnly, "FALSE"},
+    {"uDimension", SFInt32, InitializeOnly, "0"},
+    {"uKnot", MFDouble, InitializeOnly, ""},
+    {"uOrder", SFInt32, InitializeOnly, "3"},
+    {"vClosed", SFBool, InitializeOnly, "FALSE"},
+    {"vDimension", SFInt32, InitializeOnly, "0"},
+    {"vKnot", MFDouble, InitializeOnly, ""},
+    {"vOrder", SFInt32, InitializeOnly, "3"},
+};
+
+constexpr FieldSpec kNurbsSetFields[] = {
+    {"addGeometry", MFNode, InputOnly, ""},
+    {"removeGeometry", MFNode, InputOnly, ""},
+    {"geometry", MFNode, InputOutput, ""},
+    {"tessellationScale", SFFloat, InputOutput, "1"},
+    {"bboxCenter", SFVec3f, InitializeOnly, "0 0 0"},
+    {"bboxSize", SFVec3f, InitializeOnly, "-1 -1 -1"},
+};
+
+constexpr FieldSpec kNurbsTextureCoordinateFields[] = {
+    {"controlPoint", MFVec2f, InputOutput, ""},
+    {"weight", MFFloat, InputOutput, ""},
+    {"uDimension", SFInt32, InitializeOnly, "0"},
+    {"uKnot", MFDouble, InitializeOnly, ""},
+    {"uOrder", SFInt32, InitializeOnly, "3"},
+    {"vDimension", SFInt32, InitializeOnly, "0"},
+    {"vKnot", MFDouble, InitializeOnly, ""},
+    {"vOrder", SFInt32, InitializeOnly, "3"},
+};
+
+constexpr FieldSpec kNurbsTrimmedSurfaceFields[] = {
+    {"addTrimmingContour", MFNode, InputOnly, ""},
+    {"removeTrimmingContour", MFNode, InputOnly, ""},
+    {"controlPoint", SFNode, InputOutput, "NULL"},
+    {"texCoord", SFNode, InputOutput, "NULL"},
+    {"trimmingContour", MFNode, InputOutput, ""},
+    {"uTessellation", SFInt32, InputOutput, "0"},
+    {"vTessellation", SFInt32, InputOutput, "0"},
+    {"weight", MFDouble, InputOutput, ""},
+    {"solid", SFBool, InitializeOnly, "TRUE"},
+    {"uClosed", SFBool, InitializeOnly, "FALSE"},
+    {"uDimension", SFInt32, InitializeOnly, "0"},
+    {"uKnot", MFDouble, InitializeOnly, ""},
+    {"uOrder", SFInt32, InitializeOnly, "3"},
+    {"vClosed", SFBool, InitializeOnly, "FALSE"},
+    {"vDimension", SFInt32, InitializeOnly, "0"},
+    {"vKnot", MFDouble, InitializeOnly, ""},
+    {"vOrder", SFInt32, InitializeOnly, "3"},
+};
+
+// ---------------------------------------------------------------------------
 // Text
 // ---------------------------------------------------------------------------
 
@@ -1173,6 +1262,8 @@ constexpr std::array kStandardNodes = {
     vrml("ColorInterpolator", "Interpolation", 1, "children", kColorInterpolatorFields),
     x3d("ColorRGBA", "Rendering", 1, "color", kColorRGBAFields),
     vrml("Cone", "Geometry3D", 1, "geometry", kConeFields),
+    x3d("Contour2D", "NURBS", 4, "trimmingContour", kContour2DFields),
+    x3d("ContourPolyline2D", "NURBS", 3, "children", kContourPolyline2DFields),
     vrml("Coordinate", "Rendering", 1, "coord", kCoordinateFields),
     x3d("CoordinateDouble", "NURBS", 1, "coord", kCoordinateDoubleFields),
     vrml("CoordinateInterpolator", "Interpolation", 1, "children", kCoordinateInterpolatorFields),
@@ -1220,6 +1311,12 @@ constexpr std::array kStandardNodes = {
     vrml("NavigationInfo", "Navigation", 1, "children", kNavigationInfoFields),
     vrml("Normal", "Rendering", 1, "normal", kNormalFields),
     vrml("NormalInterpolator", "Interpolation", 2, "children", kNormalInterpolatorFields),
+    x3d("NurbsCurve", "NURBS", 1, "geometry", kNurbsCurveFields),
+    x3d("NurbsCurve2D", "NURBS", 3, "children", kNurbsCurve2DFields),
+    x3d("NurbsPatchSurface", "NURBS", 1, "geometry", kNurbsPatchSurfaceFields),
+    x3d("NurbsSet", "NURBS", 2, "children", kNurbsSetFields),
+    x3d("NurbsTextureCoordinate", "NURBS", 1, "texCoord", kNurbsTextureCoordinateFields),
+    x3d("NurbsTrimmedSurface", "NURBS", 4, "geometry", kNurbsTrimmedSurfaceFields),
     vrml("OrientationInterpolator", "Interpolation", 1, "children", kOrientationInterpolatorFields),
     x3d("OrthoViewpoint", "Navigation", 3, "children", kOrthoViewpointFields),
     vrml("PixelTexture", "Texturing", 1, "texture", kPixelTextureFields),
