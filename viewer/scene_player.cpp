@@ -1,4 +1,5 @@
 #include "scene_player.h"
+#include "text_outliner.h"
 
 #include <QMetaObject>
 
@@ -103,6 +104,7 @@ void ScenePlayer::startWorker(Request r) {
         o.sceneSeconds = double(r.instant.sceneNs) / double(animation::kNanosecondsPerSecond);
         o.placeInScene = false;
         o.cache = &cache_;
+        o.text = qtTextOutliner();
         o.mesh.cancel = &cancel_;
         o.mesh.threads = 1; // the interface keeps a core
         o.parameters = r.parameters;

@@ -436,7 +436,7 @@ class Walker {
                                  " is left to the viewer");
             return;
         }
-        StandardGeometryResult r = standardGeometryMesh(geometry, options_.segments);
+        StandardGeometryResult r = standardGeometryMesh(geometry, options_.segments, options_.text);
         if (!r.unsupported.empty()) {
             out_.notes.push_back(nameOf(n) + ": " + r.unsupported);
             return;

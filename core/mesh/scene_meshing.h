@@ -10,6 +10,7 @@
 #include "mesh_cache.h"
 #include "scene/scene.h"
 #include "scene_view.h"
+#include "text_layout.h"
 
 #include <array>
 #include <memory>
@@ -46,6 +47,9 @@ struct SceneMeshOptions {
     // Per FGeometry node: the resolution to mesh it at instead of its own
     // (the viewer's level of detail). Shapes not listed use the rule above.
     std::unordered_map<const scene::Node*, double> resolutions;
+    // Outlines glyphs for Text nodes (the suite's, from Qt: viewer/text_outliner.h);
+    // without one, Text is named in a note.
+    TextOutliner text;
 };
 
 // Every named parameter of the scene's function definitions (each name once,

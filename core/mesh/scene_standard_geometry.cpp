@@ -306,6 +306,28 @@ FaceSetResult nurbsMesh(const Node& g) {
     return r;
 }
 
+// Text and its FontStyle (defaults from the catalogue when there is none).
+TextLayout textLayoutOf(const Node& g) {
+    TextLayout t;
+    t.lines = scene::stringsField(g, "string");
+    t.length = scene::numbersField(g, "length");
+    t.maxExtent = scene::numberField(g, "maxExtent");
+    const Node* style = scene::effectiveNode(scene::nodeField(g, "fontStyle"));
+    if (!style) return t;
+    const auto family = scene::stringsField(*style, "family");
+    if (!family.empty()) t.font.family = family;
+    t.font.style = scene::stringField(*style, "style");
+    t.font.size = scene::numberField(*style, "size", 0, 1);
+    t.spacing = scene::numberField(*style, "spacing", 0, 1);
+    const auto justify = scene::stringsField(*style, "justify");
+    if (!justify.empty()) t.justifyMajor = justify[0];
+    if (justify.size() > 1) t.justifyMinor = justify[1];
+    t.horizontal = scene::boolField(*style, "horizontal");
+    t.leftToRight = scene::boolField(*style, "leftToRight");
+    t.topToBottom = scene::boolField(*style, "topToBottom");
+    return t;
+}
+
 bool isGeometry2D(const std::string& type) {
     return type == "Rectangle2D" || type == "TriangleSet2D" || type == "Disk2D" ||
            type == "ArcClose2D" || type == "Arc2D" || type == "Circle2D" || type == "Polyline2D";
@@ -313,7 +335,7 @@ bool isGeometry2D(const std::string& type) {
 
 } // namespace
 
-StandardGeometryResult standardGeometryMesh(const Node& g, int segments) {
+StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const TextOutliner& text) {
     StandardGeometryResult r;
     const std::string& type = g.type;
     r.solid = !g.spec || !scene::findFieldSpec(*g.spec, "solid") || scene::boolField(g, "solid");
@@ -433,6 +455,13 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments) {
     } else if (type == "NurbsCurve" || type == "NurbsPatchSurface" ||
                type == "NurbsTrimmedSurface") {
         use(nurbsMesh(g));
+    } else if (type == "Text") {
+        if (!text) {
+            r.unsupported = "Text is not drawn without a font source (the window, `functionlab "
+                            "render` and `functionlab mesh` have one)";
+            return r;
+        }
+        r.mesh = textMesh(textLayoutOf(g), text);
     } else if (type == "PointSet") {
         r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
     } else {

@@ -6,6 +6,7 @@
 // z = 0 plane). Other geometry is named in a note.
 #include "mesh.h"
 #include "scene/scene.h"
+#include "text_layout.h"
 
 #include <string>
 #include <vector>
@@ -19,7 +20,9 @@ struct StandardGeometryResult {
     std::string unsupported;           // set (a note) when the node type is not drawn yet
 };
 
-// `segments`: around the axis of spheres, cones and cylinders.
-StandardGeometryResult standardGeometryMesh(const scene::Node& geometry, int segments = 48);
+// `segments`: around the axis of spheres, cones and cylinders (and of
+// Geometry2D circles). `text`: the font source for Text (none: a note).
+StandardGeometryResult standardGeometryMesh(const scene::Node& geometry, int segments = 48,
+                                            const TextOutliner& text = {});
 
 } // namespace fl::mesh

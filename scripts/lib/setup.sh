@@ -12,7 +12,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev libmuparser-dev
   libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
   qt6-base-dev qt6-3d-dev qt6-websockets-dev zlib1g-dev
-  xvfb xauth libgl1-mesa-dri
+  xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 # Only for scripts/fuzz (libFuzzer); skipped with a warning where the
 # distribution names them differently.

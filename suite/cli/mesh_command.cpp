@@ -11,13 +11,29 @@
 #include "mesh/point_cloud.h"
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"
+#include "text_outliner.h"
+
+#include <QGuiApplication>
 
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace fl::cli {
 namespace {
+
+// Text needs Qt's font database, which lives in a QGuiApplication; the
+// offscreen platform needs no display. Made only for scenes with Text.
+std::unique_ptr<QGuiApplication> fontsFor(const scene::Scene& scene) {
+    bool text = false;
+    scene.forEachNode([&](const scene::Node& n) { text = text || n.type == "Text"; });
+    if (!text || QCoreApplication::instance()) return nullptr;
+    static int argc = 3;
+    static char arg0[] = "functionlab", arg1[] = "-platform", arg2[] = "offscreen";
+    static char* argv[] = {arg0, arg1, arg2, nullptr};
+    return std::make_unique<QGuiApplication>(argc, argv);
+}
 
 const char* kMeshHelp =
     R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N | --points N]
@@ -206,6 +222,8 @@ int meshCommand(const Args& args) {
         so.useFileResolution = resolution <= 0;
         so.points = std::size_t(points);
         if (resolution > 0) so.mesh.resolution = resolution;
+        const auto fonts = fontsFor(*r.scene);
+        so.text = viewer::qtTextOutliner();
         mesh::SceneMeshes meshes = mesh::meshScene(*r.scene, so);
         for (const auto& note : meshes.notes)
             std::cerr << "note: " << note << "\n";

@@ -6,6 +6,7 @@
 #include "mesh/scene_meshing.h"
 #include "offscreen_render.h"
 #include "scene/scene_reader.h"
+#include "text_outliner.h"
 
 #include <QFileInfo>
 #include <QGuiApplication>
@@ -140,6 +141,7 @@ int renderCommand(const Args& args) {
     mesh::SceneMeshOptions so;
     so.sceneSeconds = time;
     so.placeInScene = false;
+    so.text = viewer::qtTextOutliner();
     so.useFileResolution = resolution <= 0;
     if (resolution > 0) so.mesh.resolution = resolution;
     const mesh::SceneMeshes meshes = mesh::meshScene(*r.scene, so);

@@ -15,6 +15,7 @@
 #include "scene_player.h"
 #include "scene_widget.h"
 #include "timeline_bar.h"
+#include "text_outliner.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -606,6 +607,7 @@ void MainWindow::exportMesh() {
     mesh::SceneMeshOptions o;
     o.sceneSeconds = player_->sceneSeconds();
     o.parameters = parameterValues_;
+    o.text = viewer::qtTextOutliner();
     const mesh::SceneMeshes meshes = mesh::meshScene(*scene_, o);
     std::string error;
     if (!mesh::writeMesh(mesh::mergeMeshes(meshes.shapes), path.toStdString(), error))

@@ -245,7 +245,7 @@ TEST(SceneStandardShapes, StandardGeometryIsMeshedColouredAndPlaced) {
         Shape { geometry IndexedFaceSet { coordIndex [0 1 2 -1] solid FALSE
                   coord Coordinate { point [0 0 0, 1 0 0, 0 1 0] }
                   color Color { color [0 0 1, 0 1 0, 1 1 1] } } }
-        Shape { geometry Text { string "not yet" } })x");
+        Shape { geometry Text { string "no font given" } })x");
     ASSERT_EQ(s.shapes.size(), 2u);
     const ShapeMesh& box = s.shapes[0];
     EXPECT_FALSE(box.functionGeometry);
@@ -262,7 +262,7 @@ TEST(SceneStandardShapes, StandardGeometryIsMeshedColouredAndPlaced) {
     ASSERT_EQ(triangle.mesh.colours.size(), 3u);
     EXPECT_EQ(triangle.mesh.colours[0], (std::array<float, 4>{0, 0, 1, 1})); // Color, not Material
     ASSERT_EQ(s.notes.size(), 1u);
-    EXPECT_NE(s.notes[0].find("Text is not drawn yet"), std::string::npos);
+    EXPECT_NE(s.notes[0].find("Text is not drawn without a font source"), std::string::npos);
 }
 
 TEST(SceneStandardShapes, MeshesCanStayInTheirOwnCoordinatesWithTheirPlacement) {

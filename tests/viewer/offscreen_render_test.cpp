@@ -3,6 +3,7 @@
 // show what is behind them; a bad viewpoint name is explained. Each frame is
 // saved under build/tests/viewer/screenshots/ to be looked at.
 #include "offscreen_render.h"
+#include "text_outliner.h"
 
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"
@@ -27,6 +28,7 @@ Frame render(const scene::Scene& scene, const std::string& name, double seconds 
     o.sceneSeconds = seconds;
     o.placeInScene = false;
     o.points = points;
+    o.text = viewer::qtTextOutliner();
     const mesh::SceneMeshes meshes = mesh::meshScene(scene, o);
     viewer::OffscreenRequest request;
     request.size = QSize(320, 240);
@@ -153,6 +155,21 @@ TEST(OffscreenRender, LineSetsAreDrawnInTheirColour) {
                         return c.redF() > 0.8 && c.greenF() > 0.8 && c.blueF() < 0.3;
                     }),
               0.002);
+}
+
+TEST(OffscreenRender, TextIsDrawnWithItsHoles) {
+    // A white "O" filling the middle of the frame: white ring, black hole.
+    const auto scene = text(R"(Viewpoint { position 0 0 3 }
+        Background { skyColor 0 0 0 }
+        Shape { appearance Appearance { material Material { emissiveColor 1 1 1 diffuseColor 0 0 0 } }
+                geometry Text { string "O" fontStyle FontStyle { family "SANS" size 2
+                                                                justify ["MIDDLE" "MIDDLE"] } } })");
+    const Frame f = render(*scene, "text_O");
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    const double white = share(f.image, [](QColor c) { return c.lightnessF() > 0.8; });
+    EXPECT_GT(white, 0.05);
+    const QColor centre = f.image.pixelColor(f.image.width() / 2, f.image.height() / 2);
+    EXPECT_LT(centre.lightnessF(), 0.2) << "the hole of the O is filled";
 }
 
 TEST(OffscreenRender, AnUnknownViewpointIsExplained) {
