@@ -1,5 +1,6 @@
 #include "render_scene.h"
 
+#include "mesh/standard_geometry.h"
 #include "mesh_geometry.h"
 #include "surface_material.h"
 
@@ -132,6 +133,26 @@ void RenderScene::setMeshes(std::shared_ptr<const mesh::SceneMeshes> shared) {
     }
     setLights(meshes.view.lights);
     setHeadlight(!meshes.view.hasNavigation || meshes.view.navigation.headlight);
+}
+
+void RenderScene::setMarker(std::optional<QVector3D> at) {
+    delete marker_;
+    marker_ = nullptr;
+    markerAt_ = at;
+    if (!at) return;
+    // Magenta, unlit, about 1.5% of the scene across: seen on any surface
+    // colour, half sunk into the surface it marks.
+    const float radius = 0.015f * bounds_.radius();
+    marker_ = new Qt3DCore::QEntity(root_);
+    marker_->setObjectName(QStringLiteral("picked point"));
+    marker_->addComponent(makeGeometryRenderer(mesh::sphereMesh(radius, 16), {1, 0.1f, 0.8f, 1},
+                                               marker_, DrawAs::Faces));
+    mesh::SurfaceLook plain;
+    plain.lit = false;
+    marker_->addComponent(new SurfaceMaterial(plain, {}, shader_, marker_));
+    auto* transform = new Qt3DCore::QTransform(marker_);
+    transform->setTranslation(*at);
+    marker_->addComponent(transform);
 }
 
 Qt3DCore::QEntity* RenderScene::makeOutline(const mesh::ShapeMesh& shape) {

@@ -48,6 +48,9 @@ class RenderScene {
     void setShowDomains(bool on);
     // Points where a·x + b·y + c·z + d < 0 are cut away; nullopt: no cut.
     void setClipPlane(std::optional<QVector4D> plane);
+    // A small bright ball at a picked point (sized to the scene); nullopt removes it.
+    void setMarker(std::optional<QVector3D> at);
+    std::optional<QVector3D> marker() const { return markerAt_; }
 
   private:
     void setLights(const std::vector<mesh::ViewLight>& lights);
@@ -72,6 +75,8 @@ class RenderScene {
     bool showDomains_ = false;
     bool cutOpen_ = false; // a clip plane is on: inner faces show through the cut
     std::shared_ptr<const mesh::SceneMeshes> last_; // for re-making in another mode
+    Qt3DCore::QEntity* marker_ = nullptr;
+    std::optional<QVector3D> markerAt_;
 };
 
 } // namespace fl::viewer

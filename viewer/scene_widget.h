@@ -48,6 +48,7 @@ class SceneWidget : public QWidget {
     void setClipPlane(std::optional<QVector4D> plane);
     void setDrawAs(DrawAs as) { scene_->setDrawAs(as); }
     void setShowDomains(bool on) { scene_->setShowDomains(on); }
+    void setMarker(std::optional<QVector3D> at) { scene_->setMarker(at); }
     const Bounds& bounds() const { return scene_->bounds(); }
     QWindow* renderWindow() const;
 

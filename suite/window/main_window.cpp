@@ -14,8 +14,8 @@
 #include "scene/scene_reader.h"
 #include "scene_player.h"
 #include "scene_widget.h"
-#include "timeline_bar.h"
 #include "text_outliner.h"
+#include "timeline_bar.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -147,9 +147,11 @@ MainWindow::MainWindow(QWidget* parent)
         const auto p = viewer::pick(*meshes->source, *meshes,
                                     viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
         if (!p) {
+            view_->setMarker(std::nullopt);
             statusBar()->showMessage(tr("Nothing there"), 3000);
             return;
         }
+        view_->setMarker(QVector3D(float(p->point[0]), float(p->point[1]), float(p->point[2])));
         statusBar()->showMessage(tr("(%1, %2, %3) on %4%5")
                                      .arg(p->point[0], 0, 'g', 6)
                                      .arg(p->point[1], 0, 'g', 6)
@@ -489,6 +491,7 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     timeline_->setSpan(timelineSpan(*scene));
     player_->setParameters(parameterValues_);
     lod_->clear();
+    view_->setMarker(std::nullopt); // it marked a point of the old shapes
     player_->setScene(scene);
 }
 

@@ -296,6 +296,22 @@ class WindowTest : public QObject {
         QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral(", 1)")) ||
                      w.statusBar()->currentMessage().contains(QStringLiteral(", 0.99")),
                  qPrintable(w.statusBar()->currentMessage()));
+        // A magenta ball marks the picked point, in the middle of the view.
+        QTest::qWait(200);
+        const QImage marked = w.view()->grabFrame();
+        save(marked, "picked-point");
+        const QColor centre = marked.pixelColor(marked.width() / 2, marked.height() / 2);
+        QVERIFY2(centre.red() > 200 && centre.green() < 90 && centre.blue() > 150,
+                 qPrintable(centre.name()));
+        // Clicking beside the scene removes it.
+        QTest::mouseClick(w.view()->renderWindow(), Qt::LeftButton, {}, QPoint(5, 5));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            w.statusBar()->currentMessage().contains(QStringLiteral("Nothing")), 3000);
+        QTest::qWait(200);
+        const QColor after =
+            w.view()->grabFrame().pixelColor(marked.width() / 2, marked.height() / 2);
+        QVERIFY2(!(after.red() > 200 && after.green() < 90 && after.blue() > 150),
+                 qPrintable(after.name()));
     }
 
     void unreadableFilesAreExplainedNotFatal() {
