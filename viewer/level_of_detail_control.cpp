@@ -14,19 +14,7 @@ namespace {
 
 // The shape's domain box in the scene, as the box round its eight corners.
 mesh::Box3 sceneBox(const mesh::ShapeMesh& s) {
-    mesh::Box3 out{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-    const auto& m = s.placement;
-    for (int c = 0; c < 8; ++c) {
-        const double p[3] = {c & 1 ? s.domain.hi[0] : s.domain.lo[0],
-                             c & 2 ? s.domain.hi[1] : s.domain.lo[1],
-                             c & 4 ? s.domain.hi[2] : s.domain.lo[2]};
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double q = m[k] * p[0] + m[4 + k] * p[1] + m[8 + k] * p[2] + m[12 + k];
-            out.lo[k] = std::min(out.lo[k], q);
-            out.hi[k] = std::max(out.hi[k], q);
-        }
-    }
-    return out;
+    return mesh::boundsOf(s.domain, mesh::Affine::fromMatrix(s.placement));
 }
 
 double distanceTo(const mesh::Box3& box, const QVector3D& eye) {

@@ -14,46 +14,7 @@ namespace {
 
 using Vec3 = std::array<double, 3>;
 
-struct Affine { // x' = m x + t, from a column-major 4x4
-    double m[3][3];
-    double t[3];
-};
-
-Affine affineOf(const mesh::Matrix4& p) {
-    Affine a{};
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c)
-            a.m[r][c] = p[std::size_t(c * 4 + r)];
-        a.t[r] = p[std::size_t(12 + r)];
-    }
-    return a;
-}
-
-Vec3 apply(const Affine& a, const Vec3& v, bool point) {
-    Vec3 out{};
-    for (int r = 0; r < 3; ++r)
-        out[std::size_t(r)] =
-            a.m[r][0] * v[0] + a.m[r][1] * v[1] + a.m[r][2] * v[2] + (point ? a.t[r] : 0);
-    return out;
-}
-
-std::optional<Affine> inverse(const Affine& a) {
-    const double(&m)[3][3] = a.m;
-    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    if (!(std::abs(det) > 1e-300)) return std::nullopt;
-    Affine r{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-            r.m[i][j] = (m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1]) / det;
-        }
-    const Vec3 t = apply(r, {a.t[0], a.t[1], a.t[2]}, false);
-    for (int k = 0; k < 3; ++k)
-        r.t[k] = -t[std::size_t(k)];
-    return r;
-}
+using mesh::Affine;
 
 Vec3 unit(const Vec3& v) {
     const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -87,12 +48,11 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
     if (!s.geometry || scene::stringField(*s.geometry, "type") == "parametric") return std::nullopt;
     const formula::Tape* tape = scene.definition(*s.geometry, "definition");
     if (!tape) return std::nullopt;
-    const Affine place = affineOf(s.placement);
-    const auto back = inverse(place);
+    const Affine place = Affine::fromMatrix(s.placement);
+    const auto back = place.inverse();
     if (!back) return std::nullopt;
-    const Vec3 origin = apply(*back, {ray.origin.x(), ray.origin.y(), ray.origin.z()}, true);
-    const Vec3 along =
-        apply(*back, {ray.direction.x(), ray.direction.y(), ray.direction.z()}, false);
+    const Vec3 origin = back->point({ray.origin.x(), ray.origin.y(), ray.origin.z()});
+    const Vec3 along = back->vector({ray.direction.x(), ray.direction.y(), ray.direction.z()});
     for (std::size_t k = 0; k < 3; ++k)
         if (!std::isfinite(origin[k]) || !std::isfinite(along[k])) return std::nullopt;
     double t0, t1;
@@ -141,7 +101,7 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
                 world[std::size_t(r)] =
                     back->m[0][r] * n[0] + back->m[1][r] * n[1] + back->m[2][r] * n[2];
             Pick p;
-            p.point = apply(place, local, true);
+            p.point = place.point(local);
             p.normal = unit(world);
             p.distance = length({p.point[0] - ray.origin.x(), p.point[1] - ray.origin.y(),
                                  p.point[2] - ray.origin.z()});
@@ -159,13 +119,13 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
 // On the nearest triangle of a mesh (Möller–Trumbore).
 std::optional<Pick> onTriangles(const mesh::ShapeMesh& s, const Ray& ray) {
     if (s.mesh.isPointCloud()) return std::nullopt;
-    const Affine place = affineOf(s.placement);
+    const Affine place = Affine::fromMatrix(s.placement);
     const Vec3 o{ray.origin.x(), ray.origin.y(), ray.origin.z()};
     const Vec3 d{ray.direction.x(), ray.direction.y(), ray.direction.z()};
     std::optional<Pick> best;
     auto P = [&](std::uint32_t i) {
         const auto& v = s.mesh.positions[i];
-        return apply(place, {v[0], v[1], v[2]}, true);
+        return place.point({v[0], v[1], v[2]});
     };
     for (const mesh::Triangle& tri : s.mesh.triangles) {
         const Vec3 a = P(tri[0]), b = P(tri[1]), c = P(tri[2]);

@@ -22,65 +22,6 @@ namespace {
 
 using scene::Node;
 
-// x' = m x + t
-struct Affine {
-    double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    double t[3] = {0, 0, 0};
-
-    Affine operator*(const Affine& o) const {
-        Affine r;
-        for (int i = 0; i < 3; ++i) {
-            for (int j = 0; j < 3; ++j)
-                r.m[i][j] = m[i][0] * o.m[0][j] + m[i][1] * o.m[1][j] + m[i][2] * o.m[2][j];
-            r.t[i] = m[i][0] * o.t[0] + m[i][1] * o.t[1] + m[i][2] * o.t[2] + t[i];
-        }
-        return r;
-    }
-    static Affine translate(double x, double y, double z) {
-        Affine a;
-        a.t[0] = x, a.t[1] = y, a.t[2] = z;
-        return a;
-    }
-    static Affine scale(double x, double y, double z) {
-        Affine a;
-        a.m[0][0] = x, a.m[1][1] = y, a.m[2][2] = z;
-        return a;
-    }
-    static Affine rotate(double ax, double ay, double az, double angle) {
-        Affine a;
-        const double n = std::sqrt(ax * ax + ay * ay + az * az);
-        if (!(n > 0) || !std::isfinite(angle)) return a;
-        ax /= n, ay /= n, az /= n;
-        const double c = std::cos(angle), s = std::sin(angle), k = 1 - c;
-        a.m[0][0] = c + ax * ax * k, a.m[0][1] = ax * ay * k - az * s,
-        a.m[0][2] = ax * az * k + ay * s;
-        a.m[1][0] = ay * ax * k + az * s, a.m[1][1] = c + ay * ay * k,
-        a.m[1][2] = ay * az * k - ax * s;
-        a.m[2][0] = az * ax * k - ay * s, a.m[2][1] = az * ay * k + ax * s,
-        a.m[2][2] = c + az * az * k;
-        return a;
-    }
-    static Affine rotate(const std::vector<double>& r) {
-        return r.size() == 4 ? rotate(r[0], r[1], r[2], r[3]) : Affine{};
-    }
-    double determinant() const {
-        return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-               m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    }
-    // The cofactor matrix C of the linear part: its inverse is C^T / det and
-    // its inverse transpose, which carries normals, C / det.
-    std::array<std::array<double, 3>, 3> cofactors() const {
-        std::array<std::array<double, 3>, 3> c{};
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) {
-                const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-                c[std::size_t(i)][std::size_t(j)] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
-            }
-        return c;
-    }
-};
-
 std::vector<double> vec(const Node& n, const char* field) {
     return scene::numbersField(n, field);
 }
@@ -516,33 +457,6 @@ class Walker {
         double resolution = 0;
     };
 
-    // The inverse of an affine map (children's coordinates from local ones).
-    static Affine inverse(const Affine& a) {
-        Affine r;
-        const double det = a.determinant();
-        const auto c = a.cofactors();
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                r.m[i][j] = c[std::size_t(j)][std::size_t(i)] / det;
-        for (int i = 0; i < 3; ++i)
-            r.t[i] = -(r.m[i][0] * a.t[0] + r.m[i][1] * a.t[1] + r.m[i][2] * a.t[2]);
-        return r;
-    }
-
-    static Box3 boundsOf(const Box3& b, const Affine& a) {
-        Box3 out{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-        for (int c = 0; c < 8; ++c) {
-            const double p[3] = {c & 1 ? b.hi[0] : b.lo[0], c & 2 ? b.hi[1] : b.lo[1],
-                                 c & 4 ? b.hi[2] : b.lo[2]};
-            for (std::size_t k = 0; k < 3; ++k) {
-                const double q = a.m[k][0] * p[0] + a.m[k][1] * p[1] + a.m[k][2] * p[2] + a.t[k];
-                out.lo[k] = std::min(out.lo[k], q);
-                out.hi[k] = std::max(out.hi[k], q);
-            }
-        }
-        return out;
-    }
-
     // The pieces under `raw`, whose coordinates are `toLocal` of the
     // combining FTransform's.
     void collect(const Node* raw, const Affine& toLocal, formula::TapeBuilder& b,
@@ -562,7 +476,10 @@ class Walker {
             const formula::Tape* tape = scene_.definition(*geometry, "definition");
             if (!tape) return;
             // The child's own coordinates, from the local ones.
-            const Affine back = inverse(toLocal);
+            // A singular map (a zero scale) flattens the child to nothing.
+            const std::optional<Affine> inverse = toLocal.inverse();
+            if (!inverse) return;
+            const Affine& back = *inverse;
             std::array<formula::Val, formula::kInputCount> in = local;
             for (int k = 0; k < 3; ++k) {
                 formula::Val v = formula::Val::constant(back.t[k]);
@@ -579,7 +496,7 @@ class Walker {
                 f = b.min(f, b.sub(in[k], formula::Val::constant(box.lo[k])));
                 f = b.min(f, b.sub(formula::Val::constant(box.hi[k]), in[k]));
             }
-            out.push_back({f, boundsOf(box, toLocal),
+            out.push_back({f, mesh::boundsOf(box, toLocal),
                            scene::effectiveNode(scene::nodeField(*n, "appearance")),
                            scene::numberField(*geometry, "resolution", 0, 32)});
             return;
@@ -705,8 +622,7 @@ class Walker {
     // Moves a mesh from its geometry's coordinates into the scene's.
     void place(ShapeMesh& sm, const Affine& m) const {
         if (!options_.placeInScene) {
-            sm.placement = {m.m[0][0], m.m[1][0], m.m[2][0], 0, m.m[0][1], m.m[1][1], m.m[2][1], 0,
-                            m.m[0][2], m.m[1][2], m.m[2][2], 0, m.t[0],    m.t[1],    m.t[2],    1};
+            sm.placement = m.matrix();
             return;
         }
         placeMesh(sm, m);

@@ -4,6 +4,7 @@
 // for that moment, and the standard geometry of Shape and FShape nodes (Box,
 // Sphere, IndexedFaceSet, ...), each coloured by its appearance and placed by
 // the Transform and FTransform nodes above it.
+#include "affine.h"
 #include "animation/clock.h"
 #include "dual_contouring.h"
 #include "mesh.h"
@@ -69,8 +70,6 @@ struct SurfaceLook {
     bool solid = true; // only the front faces are drawn (X3D `solid`)
 };
 
-// Column-major 4x4, as OpenGL and Qt want it.
-using Matrix4 = std::array<double, 16>;
 constexpr Matrix4 kIdentity4{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 struct ShapeMesh {
