@@ -11,7 +11,7 @@
 namespace fl::viewer {
 namespace {
 
-constexpr int kFloatsPerVertex = 10; // position 3, normal 3, colour 4
+constexpr int kFloatsPerVertex = 12; // position 3, normal 3, colour 4, texture coordinate 2
 
 Qt3DCore::QAttribute* attribute(Qt3DCore::QGeometry* g, Qt3DCore::QBuffer* buffer,
                                 const QString& name, uint size, uint offset, uint count) {
@@ -43,6 +43,7 @@ Qt3DRender::QGeometryRenderer* makeGeometryRenderer(const mesh::Mesh& mesh,
     auto* renderer = new Qt3DRender::QGeometryRenderer(parent);
     auto* geometry = new Qt3DCore::QGeometry(renderer);
     const bool colours = mesh.colours.size() == mesh.positions.size();
+    const bool textured = mesh.texCoords.size() == mesh.positions.size();
     const uint n = uint(mesh.positions.size());
     QByteArray vertices(qsizetype(n) * kFloatsPerVertex * qsizetype(sizeof(float)),
                         Qt::Uninitialized);
@@ -54,6 +55,10 @@ Qt3DRender::QGeometryRenderer* makeGeometryRenderer(const mesh::Mesh& mesh,
         else
             v[3] = v[4] = v[5] = 0;
         std::memcpy(v + 6, colours ? mesh.colours[i].data() : colour.data(), 4 * sizeof(float));
+        if (textured)
+            std::memcpy(v + 10, mesh.texCoords[i].data(), 2 * sizeof(float));
+        else
+            v[10] = v[11] = 0;
         v += kFloatsPerVertex;
     }
     auto* vertexBuffer = new Qt3DCore::QBuffer(geometry);
@@ -62,6 +67,8 @@ Qt3DRender::QGeometryRenderer* makeGeometryRenderer(const mesh::Mesh& mesh,
                                Qt3DCore::QAttribute::defaultPositionAttributeName(), 3, 0, n);
     attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultNormalAttributeName(), 3, 3, n);
     attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultColorAttributeName(), 4, 6, n);
+    attribute(geometry, vertexBuffer, Qt3DCore::QAttribute::defaultTextureCoordinateAttributeName(),
+              2, 10, n);
     geometry->setBoundingVolumePositionAttribute(position);
     // 32-bit indices of `count` vertices drawn as `type`.
     auto indexed = [&](const void* data, std::size_t count,

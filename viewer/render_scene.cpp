@@ -80,15 +80,10 @@ void RenderScene::clearShapes() {
     drawn_.clear();
 }
 
-static bool sameLook(const mesh::SurfaceLook& a, const mesh::SurfaceLook& b) {
-    return a.emissive == b.emissive && a.specular == b.specular && a.shininess == b.shininess &&
-           a.ambientIntensity == b.ambientIntensity && a.lit == b.lit && a.solid == b.solid;
-}
-
 // Whether two meshes draw the same (then only the placement may differ).
 static bool sameMesh(const mesh::Mesh& a, const mesh::Mesh& b) {
     return a.primitive == b.primitive && a.positions == b.positions && a.normals == b.normals &&
-           a.colours == b.colours && a.triangles == b.triangles;
+           a.colours == b.colours && a.triangles == b.triangles && a.texCoords == b.texCoords;
 }
 
 void RenderScene::setMeshes(std::shared_ptr<const mesh::SceneMeshes> shared) {
@@ -110,7 +105,7 @@ void RenderScene::setMeshes(std::shared_ptr<const mesh::SceneMeshes> shared) {
         const bool drawable = !shape.mesh.empty() && shape.error.empty();
         const bool keep = sameShapes && d.entity && drawable &&
                           sameMesh(previous->shapes[i].mesh, shape.mesh) &&
-                          sameLook(previous->shapes[i].look, shape.look);
+                          previous->shapes[i].look == shape.look;
         if (!keep) {
             delete d.entity;
             delete d.outline;
@@ -174,7 +169,9 @@ Qt3DCore::QEntity* RenderScene::makeEntity(const mesh::ShapeMesh& shape) {
                                                        : std::array<float, 4>{1, 1, 1, 1};
     entity->addComponent(makeGeometryRenderer(shape.mesh, colour, entity, drawAs_));
     SurfaceOptions options;
-    options.transparent = hasTransparency(shape.mesh, colour);
+    if (shape.look.texture) options.texture = images_.get(*shape.look.texture);
+    options.transparent =
+        hasTransparency(shape.mesh, colour) || (options.texture && options.texture->seeThrough);
     options.points = shape.mesh.isPointCloud() || drawAs_ == DrawAs::Vertices;
     options.bothSides = cutOpen_;
     entity->addComponent(new SurfaceMaterial(shape.look, options, shader_, entity));

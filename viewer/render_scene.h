@@ -4,6 +4,7 @@
 // (lights, headlight, clip plane) as parameters for the frame graph.
 #include "mesh/scene_meshing.h"
 #include "mesh_geometry.h"
+#include "texture_image.h"
 
 #include <QVector3D>
 #include <QVector4D>
@@ -76,6 +77,7 @@ class RenderScene {
     bool cutOpen_ = false; // a clip plane is on: inner faces show through the cut
     std::shared_ptr<const mesh::SceneMeshes> last_; // for re-making in another mode
     Qt3DCore::QEntity* marker_ = nullptr;
+    TextureImages images_;
     std::optional<QVector3D> markerAt_;
 };
 

@@ -8,12 +8,16 @@
 #include <Qt3DRender/QFilterKey>
 #include <Qt3DRender/QGraphicsApiFilter>
 #include <Qt3DRender/QNoDepthMask>
+#include <Qt3DRender/QPaintedTextureImage>
 #include <Qt3DRender/QParameter>
 #include <Qt3DRender/QPointSize>
 #include <Qt3DRender/QRenderPass>
 #include <Qt3DRender/QTechnique>
+#include <Qt3DRender/QTexture>
+#include <Qt3DRender/QTextureWrapMode>
 
 #include <QColor>
+#include <QPainter>
 #include <QUrl>
 #include <QVector3D>
 
@@ -27,6 +31,25 @@ namespace {
 QVector3D vec(const std::array<float, 3>& v) {
     return {v[0], v[1], v[2]};
 }
+
+// A decoded image handed to Qt3D. Painted upside down: OpenGL's texture rows
+// start at the bottom (t = 0), a QImage's at the top.
+class PaintedImage : public Qt3DRender::QPaintedTextureImage {
+  public:
+    PaintedImage(QImage image, Qt3DCore::QNode* parent)
+        : QPaintedTextureImage(parent), image_(std::move(image)) {
+        setSize(image_.size());
+    }
+
+  protected:
+    void paint(QPainter* painter) override {
+        painter->setCompositionMode(QPainter::CompositionMode_Source);
+        painter->drawImage(0, 0, image_.mirrored(false, true));
+    }
+
+  private:
+    QImage image_;
+};
 
 } // namespace
 
@@ -97,6 +120,25 @@ SurfaceMaterial::SurfaceMaterial(const mesh::SurfaceLook& look, const SurfaceOpt
     param("ambientIntensity", look.ambientIntensity);
     param("twoSided", solid ? 0 : 1);
     param("pointSize", options.pointSize);
+    // X3D 17.2.2.4: an intensity image (1 or 2 components) brightens the
+    // diffuse colour; a colour image replaces it.
+    int textured = 0;
+    if (options.texture && look.texture) {
+        textured = options.texture->components <= 2 ? 1 : 3;
+        auto* texture = new Qt3DRender::QTexture2D(this);
+        texture->addTextureImage(new PaintedImage(options.texture->image, texture));
+        texture->setGenerateMipMaps(true);
+        texture->setMinificationFilter(Qt3DRender::QAbstractTexture::LinearMipMapLinear);
+        texture->setMagnificationFilter(Qt3DRender::QAbstractTexture::Linear);
+        const auto wrap = [](bool repeat) {
+            return repeat ? Qt3DRender::QTextureWrapMode::Repeat
+                          : Qt3DRender::QTextureWrapMode::ClampToEdge;
+        };
+        texture->wrapMode()->setX(wrap(look.texture->repeatS));
+        texture->wrapMode()->setY(wrap(look.texture->repeatT));
+        param("diffuseTexture", QVariant::fromValue(texture));
+    }
+    param("textured", textured);
 }
 
 } // namespace fl::viewer

@@ -4,6 +4,7 @@
 // A pass is "opaque" or "transparent" (blended, depth kept but not written),
 // so the frame graph can draw all opaque shapes before the see-through ones.
 #include "mesh/scene_meshing.h" // SurfaceLook
+#include "texture_image.h"
 
 #include <Qt3DRender/QMaterial>
 #include <Qt3DRender/QShaderProgram>
@@ -23,6 +24,8 @@ struct SurfaceOptions {
     bool points = false;
     float pointSize = 3;
     bool bothSides = false; // draw back faces too, whatever the look says (a cut-open scene)
+    // The look's texture decoded (texture_image.h); none draws without it.
+    std::optional<TextureImage> texture;
 };
 
 class SurfaceMaterial : public Qt3DRender::QMaterial {

@@ -27,6 +27,9 @@ struct Mesh {
     // Parametric geometry: each vertex's (u, v, w), which colour and texture
     // formulas read; empty for implicit and explicit geometry.
     std::vector<std::array<float, 3>> parameters;
+    // Image texture coordinates (s, t) per position, or empty: standard
+    // geometry by X3D's default mappings or its TextureCoordinate, NURBS by (u, v).
+    std::vector<std::array<float, 2>> texCoords;
     std::vector<Triangle> triangles;
     std::vector<Segment> segments; // Primitive::Lines only
 

@@ -45,6 +45,7 @@ bool readsTime(const ImplicitField& f) {
 std::size_t meshBytes(const Mesh& m) {
     return m.positions.size() * sizeof(Vec3f) + m.normals.size() * sizeof(Vec3f) +
            m.colours.size() * sizeof(m.colours[0]) + m.parameters.size() * sizeof(m.parameters[0]) +
+           m.texCoords.size() * sizeof(m.texCoords[0]) + m.segments.size() * sizeof(Segment) +
            m.triangles.size() * sizeof(Triangle) + sizeof(MeshResult);
 }
 

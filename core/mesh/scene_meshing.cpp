@@ -391,6 +391,12 @@ class Walker {
         const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
         sm.look = lookOf(appearance, n.type == "FShape");
         sm.look.solid = r.solid;
+        sm.look.texture =
+            sm.mesh.texCoords.empty() ? std::nullopt : textureOf(scene_, appearance, sm.warnings);
+        if (sm.look.texture)
+            applyTextureTransform(appearance, sm.mesh);
+        else
+            sm.mesh.texCoords.clear(); // nothing reads them
         if (sm.mesh.isLines() && sm.mesh.colours.empty()) {
             // X3D lines take the Material's emissive colour (white without one).
             const Node* material = materialOf(appearance);

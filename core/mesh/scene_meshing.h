@@ -10,6 +10,7 @@
 #include "mesh.h"
 #include "mesh_cache.h"
 #include "scene/scene.h"
+#include "scene_texture.h"
 #include "scene_view.h"
 #include "text_layout.h"
 
@@ -68,6 +69,11 @@ struct SurfaceLook {
     // An FShape without one is lit grey: a formula's first look should show its form.
     bool lit = true;
     bool solid = true; // only the front faces are drawn (X3D `solid`)
+    // An image texture on standard geometry (the mesh then has texCoords):
+    // its colour replaces the diffuse colour (intensity images modulate it).
+    std::optional<SurfaceTexture> texture;
+
+    bool operator==(const SurfaceLook&) const = default;
 };
 
 constexpr Matrix4 kIdentity4{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};

@@ -46,8 +46,21 @@ std::vector<std::array<float, 4>> coloursOf(const Node& n) {
     return out;
 }
 
+// TextureCoordinate points; other texCoord nodes (generators, multi-texture)
+// leave X3D's default mapping.
+std::vector<std::array<double, 2>> texCoordsOf(const Node& n) {
+    std::vector<std::array<double, 2>> out;
+    const Node* holder = scene::effectiveNode(scene::nodeField(n, "texCoord"));
+    if (!holder || holder->type != "TextureCoordinate") return out;
+    const auto v = scene::numbersField(*holder, "point");
+    for (std::size_t i = 0; i + 1 < v.size(); i += 2)
+        out.push_back({v[i], v[i + 1]});
+    return out;
+}
+
 FaceSet commonFaceSet(const Node& n) {
     FaceSet f;
+    f.texCoords = texCoordsOf(n);
     f.points = pointsOf(n, "coord", "point");
     f.colours = coloursOf(n);
     f.colourPerVertex = scene::boolField(n, "colorPerVertex");
@@ -361,6 +374,7 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         f.coordIndex = indices(g, "coordIndex");
         f.colourIndex = indices(g, "colorIndex");
         f.normalIndex = indices(g, "normalIndex");
+        f.texCoordIndex = indices(g, "texCoordIndex");
         f.creaseAngle = scene::numberField(g, "creaseAngle");
         use(faceSetMesh(f));
     } else if (type == "IndexedTriangleSet") {
@@ -385,6 +399,7 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         eg.colourPerVertex = scene::boolField(g, "colorPerVertex");
         eg.ccw = scene::boolField(g, "ccw");
         eg.creaseAngle = scene::numberField(g, "creaseAngle");
+        eg.texCoords = texCoordsOf(g);
         use(elevationGridMesh(eg));
     } else if (type == "Extrusion") {
         Extrusion ex;

@@ -21,11 +21,20 @@ Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
     return {v[0] / n, v[1] / n, v[2] / n};
 }
 
+// X3D 13.3.6 (Sphere), 13.3.2/3 (Cone, Cylinder sides): the image wraps
+// counter-clockwise seen from above, starting (s = 0) at the back (-z); one
+// more column of vertices than segments carries the seam's s = 1.
+double wrapAngle(int column, int segments) {
+    // The seam column repeats column 0 exactly, so welding by position closes it.
+    return std::numbers::pi + 2 * std::numbers::pi * (column % segments) / segments;
+}
+
 struct Builder {
     Mesh mesh;
-    std::uint32_t vertex(const Vec3& p, const Vec3& n) {
+    std::uint32_t vertex(const Vec3& p, const Vec3& n, std::array<double, 2> st) {
         mesh.positions.push_back(toFloat(p));
         mesh.normals.push_back(toFloat(n));
+        mesh.texCoords.push_back({float(st[0]), float(st[1])});
         return std::uint32_t(mesh.positions.size() - 1);
     }
     void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -36,13 +45,16 @@ struct Builder {
         triangle(a, c, d);
     }
     // A flat disc at height y facing up (+y) or down, `segments` around.
+    // X3D textures a top cap as seen from above with -z up, a bottom cap as
+    // seen from below with +z up.
     void disc(double radius, double y, bool up, int segments) {
         const Vec3 n{0, up ? 1.0 : -1.0, 0};
-        const std::uint32_t centre = vertex({0, y, 0}, n);
+        const std::uint32_t centre = vertex({0, y, 0}, n, {0.5, 0.5});
         const std::uint32_t first = std::uint32_t(mesh.positions.size());
         for (int i = 0; i < segments; ++i) {
-            const double a = 2 * std::numbers::pi * i / segments;
-            vertex({radius * std::sin(a), y, radius * std::cos(a)}, n);
+            const double a = wrapAngle(i, segments); // the sides' angles: rims weld exactly
+            const double x = std::sin(a), z = std::cos(a);
+            vertex({radius * x, y, radius * z}, n, {0.5 + x / 2, 0.5 + (up ? -z : z) / 2});
         }
         for (int i = 0; i < segments; ++i) {
             const std::uint32_t p = first + std::uint32_t(i),
@@ -55,6 +67,24 @@ struct Builder {
         }
     }
 };
+
+// X3D 13.3.1: each face shows the image upright as seen from outside with
+// +y up; the top with -z up, the bottom with +z up.
+std::array<double, 2> boxTexCoord(const Vec3& p, int axis, int side, const Vec3& half) {
+    // The face's right and up directions as (axis, sign).
+    int right = 0, rightSign = 1, up = 1, upSign = 1;
+    if (axis == 2)
+        right = 0, rightSign = side; // front +x, back -x
+    else if (axis == 0)
+        right = 2, rightSign = -side; // right face -z, left face +z
+    else
+        right = 0, rightSign = 1, up = 2, upSign = -side; // top -z up, bottom +z up
+    auto along = [&](int k, int sign) {
+        const double h = half[std::size_t(k)];
+        return h > 0 ? 0.5 + sign * p[std::size_t(k)] / (2 * h) : 0.5;
+    };
+    return {along(right, rightSign), along(up, upSign)};
+}
 
 } // namespace
 
@@ -73,7 +103,7 @@ Mesh boxMesh(std::array<double, 3> size) {
                 p[std::size_t(axis)] = side * h[std::size_t(axis)];
                 p[std::size_t(u)] = uv[c][0] * h[std::size_t(u)];
                 p[std::size_t(v)] = uv[c][1] * h[std::size_t(v)];
-                corner[c] = b.vertex(p, n);
+                corner[c] = b.vertex(p, n, boxTexCoord(p, axis, side, h));
             }
             // u x v = axis: counter-clockwise from outside on the + side.
             if (side > 0)
@@ -88,23 +118,28 @@ Mesh sphereMesh(double radius, int segments) {
     segments = std::max(3, segments);
     const int rings = std::max(2, segments / 2);
     Builder b;
-    const std::uint32_t top = b.vertex({0, radius, 0}, {0, 1, 0});
+    // A pole vertex per column, at the middle of its s range.
+    for (int s = 0; s < segments; ++s)
+        b.vertex({0, radius, 0}, {0, 1, 0}, {(s + 0.5) / segments, 1});
     for (int r = 1; r < rings; ++r) {
         const double polar = std::numbers::pi * r / rings;
-        for (int s = 0; s < segments; ++s) {
-            const double a = 2 * std::numbers::pi * s / segments;
+        for (int s = 0; s <= segments; ++s) {
+            const double a = wrapAngle(s, segments);
             const Vec3 n{std::sin(polar) * std::sin(a), std::cos(polar),
                          std::sin(polar) * std::cos(a)};
-            b.vertex({radius * n[0], radius * n[1], radius * n[2]}, n);
+            b.vertex({radius * n[0], radius * n[1], radius * n[2]}, n,
+                     {double(s) / segments, 1 - double(r) / rings});
         }
     }
-    const std::uint32_t bottom = b.vertex({0, -radius, 0}, {0, -1, 0});
-    auto at = [&](int ring, int s) { // ring 1 .. rings-1
-        return std::uint32_t(1 + (ring - 1) * segments + (s % segments));
+    const std::uint32_t bottom = std::uint32_t(b.mesh.positions.size());
+    for (int s = 0; s < segments; ++s)
+        b.vertex({0, -radius, 0}, {0, -1, 0}, {(s + 0.5) / segments, 0});
+    auto at = [&](int ring, int s) { // ring 1 .. rings-1, s 0 .. segments
+        return std::uint32_t(segments + (ring - 1) * (segments + 1) + s);
     };
     for (int s = 0; s < segments; ++s) {
-        b.triangle(top, at(1, s), at(1, s + 1));
-        b.triangle(bottom, at(rings - 1, s + 1), at(rings - 1, s));
+        b.triangle(std::uint32_t(s), at(1, s), at(1, s + 1));
+        b.triangle(bottom + std::uint32_t(s), at(rings - 1, s + 1), at(rings - 1, s));
         for (int r = 1; r + 1 < rings; ++r)
             b.quad(at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1));
     }
@@ -119,18 +154,19 @@ Mesh coneMesh(double bottomRadius, double height, bool side, bool bottom, int se
         // One apex vertex per segment, with the normal of the middle of its
         // face: the apex has no single normal.
         const std::uint32_t first = std::uint32_t(b.mesh.positions.size());
-        for (int s = 0; s < segments; ++s) {
-            const double a = 2 * std::numbers::pi * s / segments;
+        for (int s = 0; s <= segments; ++s) {
+            const double a = wrapAngle(s, segments);
             const Vec3 n =
                 unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)}, {0, 1, 0});
-            b.vertex({bottomRadius * std::sin(a), y0, bottomRadius * std::cos(a)}, n);
+            b.vertex({bottomRadius * std::sin(a), y0, bottomRadius * std::cos(a)}, n,
+                     {double(s) / segments, 0});
         }
         for (int s = 0; s < segments; ++s) {
-            const double a = 2 * std::numbers::pi * (s + 0.5) / segments;
+            const double a = wrapAngle(s, segments) + std::numbers::pi / segments;
             const Vec3 n =
                 unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)}, {0, 1, 0});
-            const std::uint32_t apex = b.vertex({0, y1, 0}, n);
-            b.triangle(apex, first + std::uint32_t(s), first + std::uint32_t((s + 1) % segments));
+            const std::uint32_t apex = b.vertex({0, y1, 0}, n, {(s + 0.5) / segments, 1});
+            b.triangle(apex, first + std::uint32_t(s), first + std::uint32_t(s + 1));
         }
     }
     if (bottom) b.disc(bottomRadius, y0, false, segments);
@@ -143,16 +179,15 @@ Mesh cylinderMesh(double radius, double height, bool side, bool top, bool bottom
     const double y0 = -height / 2, y1 = height / 2;
     if (side) {
         const std::uint32_t first = std::uint32_t(b.mesh.positions.size());
-        for (int s = 0; s < segments; ++s) {
-            const double a = 2 * std::numbers::pi * s / segments;
+        for (int s = 0; s <= segments; ++s) {
+            const double a = wrapAngle(s, segments);
             const Vec3 n{std::sin(a), 0, std::cos(a)};
-            b.vertex({radius * n[0], y0, radius * n[2]}, n);
-            b.vertex({radius * n[0], y1, radius * n[2]}, n);
+            b.vertex({radius * n[0], y0, radius * n[2]}, n, {double(s) / segments, 0});
+            b.vertex({radius * n[0], y1, radius * n[2]}, n, {double(s) / segments, 1});
         }
         for (int s = 0; s < segments; ++s) {
             const std::uint32_t lo0 = first + std::uint32_t(2 * s), hi0 = lo0 + 1;
-            const std::uint32_t lo1 = first + std::uint32_t(2 * ((s + 1) % segments)),
-                                hi1 = lo1 + 1;
+            const std::uint32_t lo1 = first + std::uint32_t(2 * (s + 1)), hi1 = lo1 + 1;
             b.quad(lo0, lo1, hi1, hi0);
         }
     }
@@ -245,6 +280,43 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
         const double sign = f.ccw ? 1.0 : -1.0;
         return unitOr({sign * n[0], sign * n[1], sign * n[2]}, faceNormal[p]);
     };
+    // Texture coordinates: given, or X3D's default from the bounding box.
+    std::size_t sAxis = 0, tAxis = 1;
+    Vec3 lo{0, 0, 0};
+    double side = 1;
+    if (f.texCoords.empty() && !f.points.empty()) {
+        Vec3 hi = f.points[0];
+        lo = hi;
+        for (const Vec3& p : f.points)
+            for (std::size_t k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], p[k]);
+                hi[k] = std::max(hi[k], p[k]);
+            }
+        std::array<std::size_t, 3> order{0, 1, 2}; // longest first; x before y before z on ties
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return hi[a] - lo[a] > hi[b] - lo[b];
+        });
+        sAxis = order[0];
+        tAxis = order[1];
+        side = hi[sAxis] - lo[sAxis];
+        if (!(side > 0) || !std::isfinite(side)) side = 1;
+    }
+    auto texCoordAt = [&](std::size_t corner) -> std::array<float, 2> {
+        if (f.texCoords.empty()) {
+            const Vec3& p = *point(f.coordIndex[corner]);
+            return {float((p[sAxis] - lo[sAxis]) / side), float((p[tAxis] - lo[tAxis]) / side)};
+        }
+        const std::int64_t index =
+            f.texCoordIndex.empty()
+                ? f.coordIndex[corner]
+                : (corner < f.texCoordIndex.size() ? f.texCoordIndex[corner] : -1);
+        if (index < 0 || std::size_t(index) >= f.texCoords.size()) {
+            badIndex = true;
+            return {0, 0};
+        }
+        const auto& st = f.texCoords[std::size_t(index)];
+        return {float(st[0]), float(st[1])};
+    };
     const bool anyColour = !f.colours.empty();
     for (std::size_t p = 0; p < polygons.size(); ++p) {
         if (!usable[p]) continue;
@@ -270,6 +342,7 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
                 n = unitOr(sum, faceNormal[p]);
             }
             m.normals.push_back(toFloat(n));
+            m.texCoords.push_back(texCoordAt(corner));
             if (anyColour) {
                 const auto* c = colourAt(p, corner);
                 m.colours.push_back(c ? *c : std::array<float, 4>{0.8f, 0.8f, 0.8f, 1.0f});
@@ -286,8 +359,8 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
         }
     }
     if (badIndex)
-        out.warnings.push_back("an index points past the end of its list (coord, color or "
-                               "normal); the polygons that use it are left out or shown grey");
+        out.warnings.push_back("an index points past the end of its list (coord, color, normal "
+                               "or texCoord); the polygons that use it are left out or shown grey");
     if (degenerate)
         out.warnings.push_back("a polygon has fewer than three vertices and is left out");
     return out;
@@ -366,11 +439,16 @@ FaceSetResult elevationGridMesh(const ElevationGrid& g) {
     f.creaseAngle = g.creaseAngle;
     f.colours = g.colours;
     f.colourPerVertex = g.colourPerVertex;
+    // X3D 13.3.4: s from 0 to 1 along x, t along z, unless given.
+    const bool given = g.texCoords.size() >= std::size_t(nx * nz);
     for (long j = 0; j < nz; ++j)
         for (long i = 0; i < nx; ++i) {
             const std::size_t k = std::size_t(i + j * nx);
             f.points.push_back({double(i) * g.xSpacing, k < g.height.size() ? g.height[k] : 0.0,
                                 double(j) * g.zSpacing});
+            f.texCoords.push_back(given ? g.texCoords[k]
+                                        : std::array<double, 2>{double(i) / double(nx - 1),
+                                                                double(j) / double(nz - 1)});
         }
     // Seen from above: (i, j) -> (i, j+1) -> (i+1, j+1) -> (i+1, j) is counter-clockwise.
     for (long j = 0; j + 1 < nz; ++j)
@@ -455,20 +533,61 @@ FaceSetResult extrusionMesh(const Extrusion& e) {
         for (std::size_t c = 0; c + 1 < nc; ++c)
             f.coordIndex.insert(f.coordIndex.end(),
                                 {at(i, c), at(i, c + 1), at(i + 1, c + 1), at(i + 1, c), -1});
+    // X3D 13.3.5 texture: s along the cross-section, t along the spine, each
+    // by its length; the caps show the cross-section's box, longer side = 1.
+    auto cumulative = [](auto distance, std::size_t n) {
+        std::vector<double> out(n, 0);
+        for (std::size_t k = 1; k < n; ++k)
+            out[k] = out[k - 1] + distance(k);
+        for (double& v : out)
+            v = out.back() > 0 ? v / out.back() : 0;
+        return out;
+    };
+    const auto sAlong = cumulative(
+        [&](std::size_t k) {
+            return std::hypot(e.crossSection[k][0] - e.crossSection[k - 1][0],
+                              e.crossSection[k][1] - e.crossSection[k - 1][1]);
+        },
+        nc);
+    const auto tAlong = cumulative(
+        [&](std::size_t k) {
+            const Vec3 d = subtract(e.spine[k], e.spine[k - 1]);
+            return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        },
+        ns);
+    for (std::size_t i = 0; i < ns; ++i)
+        for (std::size_t c = 0; c < nc; ++c)
+            f.texCoords.push_back({sAlong[c], tAlong[i]});
+    f.texCoordIndex = f.coordIndex;
+    double x0 = INFINITY, x1 = -INFINITY, z0 = INFINITY, z1 = -INFINITY;
+    for (const auto& c : e.crossSection) {
+        x0 = std::min(x0, c[0]), x1 = std::max(x1, c[0]);
+        z0 = std::min(z0, c[1]), z1 = std::max(z1, c[1]);
+    }
+    const double capSide = std::max({x1 - x0, z1 - z0, 1e-300});
+    const std::int64_t capBase = std::int64_t(f.texCoords.size());
+    for (const auto& c : e.crossSection)
+        f.texCoords.push_back({(c[0] - x0) / capSide, (c[1] - z0) / capSide});
     const bool closedSection = e.crossSection.front() == e.crossSection.back();
     const std::size_t capCorners = closedSection ? nc - 1 : nc;
     // Caps wind against the side quads that share their edges (the first
     // quads walk (0, c) -> (0, c+1), the last (n, c+1) -> (n, c)), so the
     // whole surface is oriented one way; the flip below then makes it outward.
     if (e.beginCap && capCorners >= 3) {
-        for (std::size_t c = capCorners; c-- > 0;)
+        for (std::size_t c = capCorners; c-- > 0;) {
             f.coordIndex.push_back(at(0, c));
+            f.texCoordIndex.push_back(capBase + std::int64_t(c));
+        }
         f.coordIndex.push_back(-1);
+        f.texCoordIndex.push_back(-1);
     }
     if (e.endCap && capCorners >= 3) {
-        for (std::size_t c = 0; c < capCorners; ++c)
+        for (std::size_t c = 0; c < capCorners; ++c) {
             f.coordIndex.push_back(at(ns - 1, c));
+            f.texCoordIndex.push_back(capBase + std::int64_t(c));
+        }
         f.coordIndex.push_back(-1);
+        f.texCoordIndex.push_back(-1);
     }
     out = faceSetMesh(f);
     // Outward: by the volume when closed, else the sides away from the spine.

@@ -34,6 +34,11 @@ struct FaceSet {
     bool normalPerVertex = true;
     bool ccw = true;
     double creaseAngle = 0; // radians: neighbouring faces closer than this share a smooth normal
+    // TextureCoordinate points, per vertex through texCoordIndex (or else
+    // coordIndex); none: X3D's default, the bounding box's longest side
+    // along s and the next along t, at the same scale.
+    std::vector<std::array<double, 2>> texCoords;
+    std::vector<std::int64_t> texCoordIndex;
 };
 
 struct FaceSetResult {
@@ -54,6 +59,7 @@ struct ElevationGrid {
     bool colourPerVertex = true;
     bool ccw = true;
     double creaseAngle = 0;
+    std::vector<std::array<double, 2>> texCoords; // one per height; none: s along x, t along z
 };
 FaceSetResult elevationGridMesh(const ElevationGrid& grid);
 

@@ -11,6 +11,7 @@
 #include <QDir>
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <memory>
 
 using namespace fl;
@@ -170,6 +171,48 @@ TEST(OffscreenRender, TextIsDrawnWithItsHoles) {
     EXPECT_GT(white, 0.05);
     const QColor centre = f.image.pixelColor(f.image.width() / 2, f.image.height() / 2);
     EXPECT_LT(centre.lightnessF(), 0.2) << "the hole of the O is filled";
+}
+
+TEST(OffscreenRender, ImageTexturesAreReadNextToTheSceneAndDrawnUpright) {
+    // A picture red above, blue below, on the front of a box filling the view.
+    const QString dir = QDir::temp().filePath(QStringLiteral("functionlab_texture_test"));
+    QDir().mkpath(dir + "/pictures");
+    QImage picture(8, 8, QImage::Format_RGB32);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            picture.setPixelColor(x, y, y < 4 ? QColor(255, 0, 0) : QColor(0, 0, 255));
+    ASSERT_TRUE(picture.save(dir + "/pictures/halves.png"));
+    const std::string path = (dir + "/scene.x3dv").toStdString();
+    {
+        std::ofstream file(path);
+        file << R"(#X3D V3.3 utf8
+PROFILE Full
+Viewpoint { position 0 0 2.2 }
+Shape { appearance Appearance { texture ImageTexture { url "pictures/halves.png" } }
+        geometry Box { size 2 2 0.2 } })";
+    }
+    auto r = scene::readSceneFile(path);
+    ASSERT_TRUE(r.ok());
+    const Frame f = render(*r.scene, "texture_halves");
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    const QColor top = f.image.pixelColor(f.image.width() / 2, f.image.height() / 4);
+    const QColor bottom = f.image.pixelColor(f.image.width() / 2, 3 * f.image.height() / 4);
+    EXPECT_TRUE(top.red() > 200 && top.blue() < 60) << top.name().toStdString();
+    EXPECT_TRUE(bottom.blue() > 200 && bottom.red() < 60) << bottom.name().toStdString();
+}
+
+TEST(OffscreenRender, PixelTextureAlphaLetsTheBackgroundThrough) {
+    // Left pixel clear, right pixel opaque white: only the right half shows.
+    const auto scene = text(R"(Viewpoint { position 0 0 2.2 }
+        Background { skyColor 0 0 0 }
+        Shape { appearance Appearance { texture PixelTexture { image 2 1 4 0xFFFFFF00 0xFFFFFFFF } }
+                geometry Box { size 2 2 0.2 } })");
+    const Frame f = render(*scene, "texture_alpha");
+    ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+    const QColor left = f.image.pixelColor(f.image.width() / 2 - 40, f.image.height() / 2);
+    const QColor right = f.image.pixelColor(f.image.width() / 2 + 40, f.image.height() / 2);
+    EXPECT_LT(left.lightnessF(), 0.3) << left.name().toStdString();
+    EXPECT_GT(right.lightnessF(), 0.7) << right.name().toStdString();
 }
 
 TEST(OffscreenRender, AnUnknownViewpointIsExplained) {

@@ -7,6 +7,7 @@
 in vec3 worldPosition;
 in vec3 worldNormal;
 in vec4 colour;
+in vec2 texCoord;
 
 out vec4 fragColor;
 
@@ -18,6 +19,11 @@ uniform vec3 specular;
 uniform float shininess;
 uniform float ambientIntensity;
 uniform int twoSided;
+
+// 0: no texture; 1: an intensity image scales the colour; 3: a colour image
+// replaces it. Its alpha multiplies the colour's (transparency) either way.
+uniform int textured;
+uniform sampler2D diffuseTexture;
 
 const int kMaxLights = 8;
 uniform int headlight;
@@ -47,8 +53,14 @@ void main()
     if (clipOn == 1 && dot(vec4(worldPosition, 1.0), clipPlane) < 0.0)
         discard;
     vec3 base = colour.rgb;
+    float alpha = colour.a;
+    if (textured != 0) {
+        vec4 image = texture(diffuseTexture, texCoord);
+        base = textured == 1 ? base * image.r : image.rgb;
+        alpha *= image.a;
+    }
     if (lit == 0 || dot(worldNormal, worldNormal) < 1e-12) {
-        fragColor = vec4(base, colour.a);
+        fragColor = vec4(base, alpha);
         return;
     }
     vec3 n = normalize(worldNormal);
@@ -76,5 +88,5 @@ void main()
         }
         c += fade * shade(base, n, v, toLight, lightColour[i].rgb, lightColour[i].a);
     }
-    fragColor = vec4(min(c, vec3(1.0)), colour.a);
+    fragColor = vec4(min(c, vec3(1.0)), alpha);
 }

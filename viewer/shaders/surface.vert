@@ -4,10 +4,12 @@
 in vec3 vertexPosition;
 in vec3 vertexNormal;
 in vec4 vertexColor;
+in vec2 vertexTexCoord;
 
 out vec3 worldPosition;
 out vec3 worldNormal;
 out vec4 colour;
+out vec2 texCoord;
 
 uniform mat4 modelMatrix;
 uniform mat3 modelNormalMatrix;
@@ -19,6 +21,7 @@ void main()
     worldPosition = (modelMatrix * vec4(vertexPosition, 1.0)).xyz;
     worldNormal = modelNormalMatrix * vertexNormal;
     colour = vertexColor;
+    texCoord = vertexTexCoord;
     gl_PointSize = pointSize;
     gl_Position = mvp * vec4(vertexPosition, 1.0);
 }
