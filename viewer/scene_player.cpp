@@ -3,6 +3,9 @@
 
 #include <QMetaObject>
 
+#include <exception>
+#include <string>
+
 namespace fl::viewer {
 
 ScenePlayer::ScenePlayer(const animation::WallClock* clock, QObject* parent)
@@ -113,7 +116,15 @@ void ScenePlayer::startWorker(Request r) {
             o.useFileResolution = false;
             o.mesh.resolution = r.resolution;
         }
-        mesh::SceneMeshes made = mesh::meshScene(*r.scene, o);
+        mesh::SceneMeshes made;
+        try {
+            made = mesh::meshScene(*r.scene, o);
+        } catch (const std::exception& e) {
+            // Out of memory on a hostile scene, say: the interface stays up
+            // and says so; an empty frame replaces the scene.
+            made = mesh::SceneMeshes{};
+            made.notes.push_back(std::string("meshing stopped: ") + e.what());
+        }
         made.source = r.scene; // keeps the nodes the meshes point at alive
         auto meshes = std::make_shared<const mesh::SceneMeshes>(std::move(made));
         QMetaObject::invokeMethod(

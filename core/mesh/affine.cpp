@@ -29,7 +29,7 @@ Affine Affine::scale(double x, double y, double z) {
 
 Affine Affine::rotate(double ax, double ay, double az, double angle) {
     Affine a;
-    const double n = std::sqrt(ax * ax + ay * ay + az * az);
+    const double n = std::hypot(ax, ay, az); // no overflow for huge or tiny axes
     if (!(n > 0) || !std::isfinite(angle)) return a;
     ax /= n, ay /= n, az /= n;
     const double c = std::cos(angle), s = std::sin(angle), k = 1 - c;
@@ -103,7 +103,7 @@ std::optional<Affine> Affine::inverse() const {
 }
 
 Box3 boundsOf(const Box3& b, const Affine& a) {
-    Box3 out{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+    Box3 out{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
     for (int c = 0; c < 8; ++c) {
         const Vec3d q = a.point(
             {c & 1 ? b.hi[0] : b.lo[0], c & 2 ? b.hi[1] : b.lo[1], c & 4 ? b.hi[2] : b.lo[2]});

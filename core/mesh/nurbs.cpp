@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
+#include <unordered_map>
 
 namespace fl::mesh {
 namespace {
@@ -12,6 +12,7 @@ namespace {
 // clamped to the valid range so t at the end uses the last span.
 int findSpan(const NurbsBasis& b, double t) {
     const int p = b.order - 1;
+    if (std::isnan(t)) t = b.first();
     if (t >= b.last()) {
         int i = b.count - 1;
         while (i > p && b.knots[std::size_t(i)] == b.knots[std::size_t(i + 1)])
@@ -26,7 +27,7 @@ int findSpan(const NurbsBasis& b, double t) {
     }
     const auto begin = b.knots.begin() + p;
     const auto end = b.knots.begin() + b.count + 1;
-    return int(std::upper_bound(begin, end, t) - b.knots.begin()) - 1;
+    return std::clamp(int(std::upper_bound(begin, end, t) - b.knots.begin()) - 1, p, b.count - 1);
 }
 
 // The order non-zero basis functions at t in `span` and their derivatives
@@ -91,11 +92,14 @@ NurbsBasis makeNurbsBasis(int order, int count, const std::vector<double>& knots
     NurbsBasis b;
     const std::string name = what.empty() ? "" : what + " ";
     if (count < 2) return b;
-    if (order < 2 || order > count) {
-        const int fixed = std::clamp(order, 2, count);
+    // Orders beyond kMaxNurbsOrder cost (order^2) per evaluation for no
+    // visible gain: CAD data stays below 10.
+    const int highest = std::min(count, kMaxNurbsOrder);
+    if (order < 2 || order > highest) {
+        const int fixed = std::clamp(order, 2, highest);
         warnings.push_back(name + "order " + std::to_string(order) + " needs 2 to " +
-                           std::to_string(count) + " (the control points); using " +
-                           std::to_string(fixed));
+                           std::to_string(highest) + " (at most the control points and " +
+                           std::to_string(kMaxNurbsOrder) + "); using " + std::to_string(fixed));
         order = fixed;
     }
     b.order = order;
@@ -104,9 +108,10 @@ NurbsBasis makeNurbsBasis(int order, int count, const std::vector<double>& knots
     bool valid = knots.size() == wanted;
     for (std::size_t i = 1; valid && i < knots.size(); ++i)
         valid = std::isfinite(knots[i]) && knots[i] >= knots[i - 1];
-    if (valid)
-        valid =
-            std::isfinite(knots[0]) && knots[std::size_t(order - 1)] < knots[std::size_t(count)];
+    if (valid) {
+        const double range = knots[std::size_t(count)] - knots[std::size_t(order - 1)];
+        valid = std::isfinite(knots[0]) && range > 0 && std::isfinite(range);
+    }
     if (valid) {
         b.knots = knots;
         return b;
@@ -203,7 +208,7 @@ Mesh nurbsCurveMesh(const NurbsCurve& c, int segments) {
     m.primitive = Primitive::Lines;
     if (c.basis.count < 2 || segments < 1) return m;
     for (int k = 0; k <= segments; ++k) {
-        const double t = c.basis.first() + (c.basis.last() - c.basis.first()) * k / segments;
+        const double t = std::lerp(c.basis.first(), c.basis.last(), double(k) / segments);
         m.positions.push_back(toFloat(evaluate(c, t)));
         m.normals.push_back({0, 0, 0});
         if (k > 0) m.segments.push_back({std::uint32_t(k - 1), std::uint32_t(k)});
@@ -223,15 +228,74 @@ std::vector<Point2> nurbsCurve2DPoints(int order, const std::vector<Point2>& poi
     c.weights = nurbsWeights(weights, points.size(), warnings);
     std::vector<Point2> out;
     for (int k = 0; k <= segments; ++k) {
-        const double t = c.basis.first() + (c.basis.last() - c.basis.first()) * k / segments;
+        const double t = std::lerp(c.basis.first(), c.basis.last(), double(k) / segments);
         const Point3 p = evaluate(c, t);
         out.push_back({p[0], p[1]});
     }
     return out;
 }
 
+void limitNurbsCells(int& uSegments, int& vSegments, std::vector<std::string>& warnings) {
+    const long long cells = (long long)uSegments * (long long)vSegments;
+    if (cells <= kMaxNurbsCells) return;
+    const double shrink = std::sqrt(double(kMaxNurbsCells) / double(cells));
+    const int u = std::max(1, int(uSegments * shrink)), v = std::max(1, int(vSegments * shrink));
+    warnings.push_back("tessellation " + std::to_string(uSegments) + " x " +
+                       std::to_string(vSegments) + " is more than " +
+                       std::to_string(kMaxNurbsCells) + " cells; using " + std::to_string(u) +
+                       " x " + std::to_string(v));
+    uSegments = u;
+    vSegments = v;
+}
+
+namespace {
+
+// Sutherland-Hodgman against the parameter rectangle: for points inside
+// it, a contour's winding number is unchanged, so the even-odd region is
+// the trimmed region cut to the surface's range.
+Contour2 clipToRange(const Contour2& c, double u0, double v0, double u1, double v1) {
+    Contour2 out = c;
+    for (int side = 0; side < 4 && !out.empty(); ++side) {
+        const std::size_t axis = side % 2 == 0 ? 0 : 1;
+        const double limit = side == 0 ? u0 : side == 1 ? v0 : side == 2 ? u1 : v1;
+        const bool keepAbove = side < 2;
+        auto inside = [&](const Point2& p) {
+            return keepAbove ? p[axis] >= limit : p[axis] <= limit;
+        };
+        Contour2 in = std::move(out);
+        out.clear();
+        for (std::size_t k = 0; k < in.size(); ++k) {
+            const Point2& a = in[k];
+            const Point2& b = in[(k + 1) % in.size()];
+            if (inside(a)) out.push_back(a);
+            if (inside(a) != inside(b)) {
+                const double f = (limit - a[axis]) / (b[axis] - a[axis]);
+                Point2 x{a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])};
+                x[axis] = limit;
+                out.push_back(x);
+            }
+        }
+    }
+    return out;
+}
+
+struct PlaceKey {
+    std::array<long long, 3> k;
+    bool operator==(const PlaceKey&) const = default;
+};
+struct PlaceHash {
+    std::size_t operator()(const PlaceKey& p) const {
+        std::size_t h = 1469598103934665603ULL;
+        for (long long v : p.k)
+            h = (h ^ std::size_t(v)) * 1099511628211ULL;
+        return h;
+    }
+};
+
+} // namespace
+
 Mesh nurbsSurfaceMesh(const NurbsSurface& s, int uSegments, int vSegments,
-                      const std::vector<Contour2>& trim) {
+                      const std::vector<Contour2>& trim, std::vector<std::string>* warnings) {
     Mesh m;
     if (s.u.count < 2 || s.v.count < 2) return m;
     uSegments = std::max(1, uSegments);
@@ -242,40 +306,59 @@ Mesh nurbsSurfaceMesh(const NurbsSurface& s, int uSegments, int vSegments,
     // a contour when nothing trims it, so both cases share the same fill.
     FillGrid grid;
     for (int i = 0; i <= uSegments; ++i)
-        grid.xs.push_back(u0 + (u1 - u0) * i / uSegments);
+        grid.xs.push_back(std::lerp(u0, u1, double(i) / uSegments));
     for (int j = 0; j <= vSegments; ++j)
-        grid.ys.push_back(v0 + (v1 - v0) * j / vSegments);
-    const std::vector<Contour2> region =
-        trim.empty() ? std::vector<Contour2>{{{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}}} : trim;
+        grid.ys.push_back(std::lerp(v0, v1, double(j) / vSegments));
+    std::vector<Contour2> region;
+    if (trim.empty()) region.push_back({{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}});
+    for (const Contour2& c : trim) {
+        Contour2 clipped = clipToRange(c, u0, v0, u1, v1);
+        if (clipped.size() >= 3) region.push_back(std::move(clipped));
+    }
     const PlanarFill fill = fillContours(region, FillRule::EvenOdd, grid);
+    if (!fill.problem.empty() && warnings)
+        warnings->push_back("trimming contours: " + fill.problem + "; nothing drawn");
 
-    // Where the surface closes on itself (a revolved profile's seam, a
-    // sphere's poles), evaluations meet in one place: share those vertices
-    // and their normals so the mesh is closed and smooth across them.
+    // Where the range's edges meet in space (a revolved profile's seam, a
+    // sphere's poles), evaluations coincide: share those vertices and their
+    // normals so the mesh is closed and smooth across them. Only points on
+    // the range's edges are matched: inside, distinct sheets may touch.
     double extent = 0;
     for (const Point3& p : s.points)
         extent = std::max({extent, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
     const double snap = std::max(extent, 1e-300) * 1e-9;
-    std::map<std::array<long long, 3>, std::uint32_t> byPlace;
+    // Derivatives this small (relative to the patch and its range) vanish:
+    // what is left is rounding, whose direction means nothing.
+    const double duFloor = 1e-7 * extent / (u1 - u0), dvFloor = 1e-7 * extent / (v1 - v0);
+    std::unordered_map<PlaceKey, std::uint32_t, PlaceHash> byPlace;
     std::vector<std::uint32_t> vertexOf(fill.points.size());
     std::vector<Point3> normalSum;
     for (std::size_t k = 0; k < fill.points.size(); ++k) {
-        const SurfacePoint sp = evaluate(s, fill.points[k][0], fill.points[k][1]);
-        const std::array<long long, 3> key = {std::llround(sp.position[0] / snap),
-                                              std::llround(sp.position[1] / snap),
-                                              std::llround(sp.position[2] / snap)};
-        auto [it, fresh] = byPlace.try_emplace(key, std::uint32_t(m.positions.size()));
+        const double u = fill.points[k][0], v = fill.points[k][1];
+        const SurfacePoint sp = evaluate(s, u, v);
+        const bool onEdge = u == u0 || u == u1 || v == v0 || v == v1;
+        std::uint32_t index = std::uint32_t(m.positions.size());
+        bool fresh = true;
+        if (onEdge) {
+            const PlaceKey key{{std::llround(sp.position[0] / snap),
+                                std::llround(sp.position[1] / snap),
+                                std::llround(sp.position[2] / snap)}};
+            auto [it, added] = byPlace.try_emplace(key, index);
+            index = it->second;
+            fresh = added;
+        }
         if (fresh) {
             m.positions.push_back(toFloat(sp.position));
-            m.parameters.push_back({float(fill.points[k][0]), float(fill.points[k][1]), 0});
+            m.parameters.push_back({float(u), float(v), 0});
             normalSum.push_back({0, 0, 0});
         }
-        vertexOf[k] = it->second;
-        Point3 n = cross(sp.du, sp.dv);
+        vertexOf[k] = index;
+        if (length(sp.du) < duFloor || length(sp.dv) < dvFloor) continue;
+        const Point3 n = cross(sp.du, sp.dv);
         const double len = length(n);
         if (len > 0 && std::isfinite(len))
             for (std::size_t c = 0; c < 3; ++c)
-                normalSum[it->second][c] += n[c] / len;
+                normalSum[index][c] += n[c] / len;
     }
     for (const Triangle& t : fill.triangles) {
         const Triangle mapped = {vertexOf[t[0]], vertexOf[t[1]], vertexOf[t[2]]};

@@ -19,6 +19,12 @@ namespace fl::mesh {
 
 using Point3 = std::array<double, 3>;
 
+// Orders above this are lowered (with a warning): evaluation costs order^2.
+inline constexpr int kMaxNurbsOrder = 32;
+// Tessellations above this many cells are coarsened (with a warning): a
+// 200-byte file must not ask for 16 million triangles.
+inline constexpr long long kMaxNurbsCells = 1LL << 20;
+
 // One B-spline direction: order (degree + 1), knots, its control count.
 struct NurbsBasis {
     int order = 3;
@@ -37,6 +43,8 @@ NurbsBasis makeNurbsBasis(int order, int count, const std::vector<double>& knots
 // X3D tessellation hints: > 0 that many segments, < 0 that many per
 // control point, 0 twice the control points; kept within [1, 4096].
 int nurbsSegments(int tessellation, int controlPoints);
+// Both directions scaled down together when their product exceeds kMaxNurbsCells.
+void limitNurbsCells(int& uSegments, int& vSegments, std::vector<std::string>& warnings);
 
 struct NurbsCurve {
     NurbsBasis basis;
@@ -72,9 +80,11 @@ std::vector<Point2> nurbsCurve2DPoints(int order, const std::vector<Point2>& poi
 
 // The surface over its parameter range as uSegments x vSegments cells, front
 // faces along du x dv. `trim`: contours in (u, v) whose inside (even-odd)
-// is kept; none keeps the whole patch. Where a direction is closed (its
-// first and last rows of points meet) the seam's vertices are shared.
+// is kept, clipped to the parameter range; none keeps the whole patch.
+// Where the range's edges meet (a closed direction's seam, a pole) their
+// vertices are shared.
 Mesh nurbsSurfaceMesh(const NurbsSurface& surface, int uSegments, int vSegments,
-                      const std::vector<Contour2>& trim = {});
+                      const std::vector<Contour2>& trim = {},
+                      std::vector<std::string>* warnings = nullptr);
 
 } // namespace fl::mesh

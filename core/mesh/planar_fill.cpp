@@ -27,7 +27,7 @@ std::vector<Edge> edgesOf(const std::vector<Contour2>& contours) {
     for (const Contour2& raw : contours) {
         Contour2 c;
         for (const Point2& p : raw)
-            if (std::isfinite(p[0]) && std::isfinite(p[1])) c.push_back(p);
+            if (std::abs(p[0]) <= 1e150 && std::abs(p[1]) <= 1e150) c.push_back(p); // NaN fails too
         if (c.size() < 3) continue;
         for (std::size_t i = 0; i < c.size(); ++i) {
             const Point2& a = c[i];
@@ -45,7 +45,8 @@ std::vector<Edge> edgesOf(const std::vector<Contour2>& contours) {
 
 // Every height where the inside can change: vertices, crossings of two
 // edges, and the grid's rows within the contours' extent.
-std::vector<double> slabLines(const std::vector<Edge>& edges, const FillGrid& grid) {
+std::vector<double> slabLines(const std::vector<Edge>& edges, const FillGrid& grid,
+                              std::string& problem) {
     std::vector<double> ys;
     double lo = INFINITY, hi = -INFINITY;
     for (const Edge& e : edges) {
@@ -56,9 +57,15 @@ std::vector<double> slabLines(const std::vector<Edge>& edges, const FillGrid& gr
     }
     for (double y : grid.ys)
         if (y > lo && y < hi) ys.push_back(y);
+    long long tests = 0;
     for (std::size_t i = 0; i < edges.size(); ++i) {
         const Edge& a = edges[i];
         for (std::size_t j = i + 1; j < edges.size() && edges[j].y0 < a.y1; ++j) {
+            if (++tests > kMaxFillPairTests) {
+                problem = "an outline of " + std::to_string(edges.size()) +
+                          " edges is too complex to fill";
+                return {};
+            }
             const Edge& b = edges[j];
             const double yLo = std::max(a.y0, b.y0), yHi = std::min(a.y1, b.y1);
             if (yHi <= yLo) continue;
@@ -95,8 +102,9 @@ class Filler {
             lo = std::min(lo, x);
             hi = std::max(hi, x);
         }
-        for (double x : gridXs_)
-            if (x > lo && x < hi) l.xs.push_back(x);
+        const auto first = std::upper_bound(gridXs_.begin(), gridXs_.end(), lo);
+        const auto last = std::lower_bound(first, gridXs_.end(), hi);
+        l.xs.insert(l.xs.end(), first, last);
         std::sort(l.xs.begin(), l.xs.end());
         l.xs.erase(std::unique(l.xs.begin(), l.xs.end()), l.xs.end());
         l.index.assign(l.xs.size(), -1);
@@ -163,7 +171,8 @@ PlanarFill fillContours(const std::vector<Contour2>& contours, FillRule rule,
     PlanarFill out;
     const std::vector<Edge> edges = edgesOf(contours);
     if (edges.empty()) return out;
-    const std::vector<double> ys = slabLines(edges, grid);
+    const std::vector<double> ys = slabLines(edges, grid, out.problem);
+    if (ys.empty()) return out;
     std::vector<double> gridXs = grid.xs;
     std::sort(gridXs.begin(), gridXs.end());
     Filler filler(out, gridXs);
@@ -200,6 +209,12 @@ PlanarFill fillContours(const std::vector<Contour2>& contours, FillRule rule,
             if (!inside(winding, rule)) continue;
             const Crossing& l = crossings[i];
             const Crossing& r = crossings[i + 1];
+            if (out.points.size() > kMaxFillPoints) {
+                out = PlanarFill{};
+                out.problem = "filling these outlines would take more than " +
+                              std::to_string(kMaxFillPoints) + " points";
+                return out;
+            }
             // At a crossing the two edges' xs may come out a rounding error
             // the wrong way round: the span is then a point wide there.
             filler.zip(

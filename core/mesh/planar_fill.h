@@ -13,6 +13,7 @@
 #include "mesh.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace fl::mesh {
@@ -33,9 +34,17 @@ struct FillGrid {
 struct PlanarFill {
     std::vector<Point2> points;
     std::vector<Triangle> triangles; // counter-clockwise with y up
+    // Set when the contours would take more than the limits below (nothing
+    // is filled then): hostile input must not hang or exhaust memory.
+    std::string problem;
 };
 
-// Contours with fewer than three points, and non-finite points, are ignored.
+// Limits of one fill: edge pairs tested for crossings, and points made.
+inline constexpr long long kMaxFillPairTests = 20'000'000;
+inline constexpr std::size_t kMaxFillPoints = 8'000'000;
+
+// Contours with fewer than three points are ignored, and so are points that
+// are not finite or beyond 1e150 (where slopes would overflow).
 PlanarFill fillContours(const std::vector<Contour2>& contours, FillRule rule,
                         const FillGrid& grid = {});
 

@@ -105,41 +105,39 @@ std::vector<std::vector<std::int64_t>> groupsByIndex(const std::vector<std::int6
 }
 
 // Fans (v0, vk, vk+1) and strips (every other triangle turned round so all
-// keep the strip's winding) as triangles in coordIndex form. For colours per
-// face, X3D gives one per fan or strip: the returned colour index says which.
-struct Triangulated {
-    std::vector<std::int64_t> coordIndex;
-    std::vector<std::int64_t> groupOfTriangle;
-};
-
-Triangulated fans(const std::vector<std::vector<std::int64_t>>& groups) {
-    Triangulated t;
-    for (std::size_t g = 0; g < groups.size(); ++g)
-        for (std::size_t k = 1; k + 1 < groups[g].size(); ++k) {
-            t.coordIndex.insert(t.coordIndex.end(),
-                                {groups[g][0], groups[g][k], groups[g][k + 1], -1});
-            t.groupOfTriangle.push_back(std::int64_t(g));
-        }
-    return t;
+// keep the strip's winding) as triangles in coordIndex form.
+std::vector<std::int64_t> fans(const std::vector<std::vector<std::int64_t>>& groups) {
+    std::vector<std::int64_t> out;
+    for (const auto& v : groups)
+        for (std::size_t k = 1; k + 1 < v.size(); ++k)
+            out.insert(out.end(), {v[0], v[k], v[k + 1], -1});
+    return out;
 }
 
-Triangulated strips(const std::vector<std::vector<std::int64_t>>& groups) {
-    Triangulated t;
-    for (std::size_t g = 0; g < groups.size(); ++g)
-        for (std::size_t k = 0; k + 2 < groups[g].size(); ++k) {
-            const auto& v = groups[g];
+std::vector<std::int64_t> strips(const std::vector<std::vector<std::int64_t>>& groups) {
+    std::vector<std::int64_t> out;
+    for (const auto& v : groups)
+        for (std::size_t k = 0; k + 2 < v.size(); ++k) {
             if (k % 2 == 0)
-                t.coordIndex.insert(t.coordIndex.end(), {v[k], v[k + 1], v[k + 2], -1});
+                out.insert(out.end(), {v[k], v[k + 1], v[k + 2], -1});
             else
-                t.coordIndex.insert(t.coordIndex.end(), {v[k + 1], v[k], v[k + 2], -1});
-            t.groupOfTriangle.push_back(std::int64_t(g));
+                out.insert(out.end(), {v[k + 1], v[k], v[k + 2], -1});
         }
-    return t;
+    return out;
 }
 
-FaceSetResult triangulatedMesh(FaceSet f, Triangulated&& t) {
-    f.coordIndex = std::move(t.coordIndex);
-    if (!f.colourPerVertex) f.colourIndex = std::move(t.groupOfTriangle);
+// X3D 11.4 (triangle, fan, strip and quad sets): without a Normal node and
+// with normalPerVertex, a vertex's normal is the mean of the faces sharing
+// it; else each face's own.
+void smoothUnlessNormalsGiven(FaceSet& f, const Node& g) {
+    if (f.normals.empty() && scene::boolField(g, "normalPerVertex")) f.creaseAngle = 4;
+}
+
+// Fan and strip sets also ignore colorPerVertex: colours are per vertex.
+FaceSetResult triangulatedMesh(FaceSet f, std::vector<std::int64_t>&& coordIndex, const Node& g) {
+    f.coordIndex = std::move(coordIndex);
+    f.colourPerVertex = true;
+    smoothUnlessNormalsGiven(f, g);
     return faceSetMesh(f);
 }
 
@@ -155,12 +153,15 @@ std::vector<std::array<double, 3>> arcPoints(double radius, double start, double
                                              int segments) {
     // X3D: an arc from startAngle counter-clockwise to endAngle; equal angles
     // make a full circle.
-    double sweep = end - start;
+    // X3D keeps the angles within [-2 pi, 2 pi]; any others are reduced.
     const double turn = 2 * 3.14159265358979323846;
-    if (sweep <= 0) sweep += turn * std::ceil(-sweep / turn + 1e-12);
-    if (std::abs(end - start) < 1e-12) sweep = turn;
-    const int n = std::max(1, int(std::ceil(segments * sweep / turn)));
     std::vector<std::array<double, 3>> out;
+    if (!std::isfinite(radius) || !std::isfinite(start) || !std::isfinite(end)) return out;
+    double sweep = std::fmod(end - start, turn);
+    if (sweep <= 0) sweep += turn;
+    if (std::abs(end - start) < 1e-12) sweep = turn;
+    start = std::fmod(start, turn);
+    const int n = std::clamp(int(std::ceil(segments * sweep / turn)), 1, std::max(1, segments));
     for (int k = 0; k <= n; ++k) {
         const double a = start + sweep * k / n;
         out.push_back({radius * std::cos(a), radius * std::sin(a), 0});
@@ -313,9 +314,10 @@ FaceSetResult nurbsMesh(const Node& g) {
     if (s.points.empty()) return r;
     const std::vector<Contour2> trim =
         g.type == "NurbsTrimmedSurface" ? trimmingContours(g, r.warnings) : std::vector<Contour2>{};
-    r.mesh = nurbsSurfaceMesh(
-        s, nurbsSegments(int(scene::numberField(g, "uTessellation")), s.u.count),
-        nurbsSegments(int(scene::numberField(g, "vTessellation")), s.v.count), trim);
+    int uSegments = nurbsSegments(int(scene::numberField(g, "uTessellation")), s.u.count);
+    int vSegments = nurbsSegments(int(scene::numberField(g, "vTessellation")), s.v.count);
+    limitNurbsCells(uSegments, vSegments, r.warnings);
+    r.mesh = nurbsSurfaceMesh(s, uSegments, vSegments, trim, &r.warnings);
     return r;
 }
 
@@ -380,6 +382,7 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
     } else if (type == "IndexedTriangleSet") {
         FaceSet f = commonFaceSet(g);
         f.coordIndex = inThrees(indices(g, "index"));
+        smoothUnlessNormalsGiven(f, g);
         use(faceSetMesh(f));
     } else if (type == "TriangleSet") {
         FaceSet f = commonFaceSet(g);
@@ -432,10 +435,12 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         FaceSet f = commonFaceSet(g);
         f.colourPerVertex = true;
         std::int64_t next = 0;
+        const auto points = std::int64_t(f.points.size());
         for (double count : scene::numbersField(g, "vertexCount")) {
-            for (std::int64_t k = 0; k < std::int64_t(count); ++k)
+            for (std::int64_t k = 0; k < std::int64_t(count) && next < points; ++k)
                 f.coordIndex.push_back(next++);
             f.coordIndex.push_back(-1);
+            if (next >= points) break;
         }
         use(lineSetMesh(f));
     } else if (type == "TriangleFanSet" || type == "TriangleStripSet") {
@@ -444,13 +449,13 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
             type == "TriangleFanSet"
                 ? groupsByCount(scene::numbersField(g, "fanCount"), f.points.size())
                 : groupsByCount(scene::numbersField(g, "stripCount"), f.points.size());
-        use(triangulatedMesh(std::move(f),
-                             type == "TriangleFanSet" ? fans(groups) : strips(groups)));
+        use(triangulatedMesh(std::move(f), type == "TriangleFanSet" ? fans(groups) : strips(groups),
+                             g));
     } else if (type == "IndexedTriangleFanSet" || type == "IndexedTriangleStripSet") {
         FaceSet f = commonFaceSet(g);
         const auto groups = groupsByIndex(indices(g, "index"));
         use(triangulatedMesh(std::move(f),
-                             type == "IndexedTriangleFanSet" ? fans(groups) : strips(groups)));
+                             type == "IndexedTriangleFanSet" ? fans(groups) : strips(groups), g));
     } else if (type == "QuadSet" || type == "IndexedQuadSet") {
         FaceSet f = commonFaceSet(g);
         std::vector<std::int64_t> corners = indices(g, "index");
@@ -462,6 +467,7 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         for (std::size_t i = 0; i + 3 < corners.size(); i += 4)
             f.coordIndex.insert(f.coordIndex.end(),
                                 {corners[i], corners[i + 1], corners[i + 2], corners[i + 3], -1});
+        smoothUnlessNormalsGiven(f, g);
         use(faceSetMesh(f));
     } else if (isGeometry2D(type)) {
         use(geometry2DMesh(g, segments));
@@ -476,12 +482,21 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
                             "render` and `functionlab mesh` have one)";
             return r;
         }
-        r.mesh = textMesh(textLayoutOf(g), text);
+        r.mesh = textMesh(textLayoutOf(g), text, &r.warnings);
     } else if (type == "PointSet") {
         r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
     } else {
         r.unsupported = type + " is not drawn yet";
     }
+    // Coordinates beyond float's range (about 3.4e38) become infinite on the
+    // way to the GPU and the exports: such a shape is not drawn.
+    for (const Vec3f& p : r.mesh.positions)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+            r.warnings.push_back("coordinates too large or not numbers (beyond about 3.4e38); "
+                                 "not drawn");
+            r.mesh = Mesh{};
+            break;
+        }
     return r;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 
 namespace fl::mesh {
 namespace {
@@ -32,36 +33,19 @@ std::string reversedCodePoints(const std::string& s) {
     return out;
 }
 
-struct Bounds {
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-};
-
-Bounds boundsOf(const Contour2& c) {
-    Bounds b;
-    for (const Point2& p : c) {
-        b.x0 = std::min(b.x0, p[0]);
-        b.x1 = std::max(b.x1, p[0]);
-        b.y0 = std::min(b.y0, p[1]);
-        b.y1 = std::max(b.y1, p[1]);
-    }
-    return b;
-}
-
-// Fills the contours and appends the triangles at z = 0. Contours are
-// filled in groups whose x ranges overlap (in practice a glyph each), which
-// keeps the fill's edge-crossing search small on long lines.
-void appendFilled(std::vector<Contour2> contours, Mesh& m) {
-    std::sort(contours.begin(), contours.end(),
-              [](const Contour2& a, const Contour2& b) { return boundsOf(a).x0 < boundsOf(b).x0; });
-    std::size_t start = 0;
-    while (start < contours.size()) {
-        double reach = boundsOf(contours[start]).x1;
-        std::size_t end = start + 1;
-        while (end < contours.size() && boundsOf(contours[end]).x0 <= reach)
-            reach = std::max(reach, boundsOf(contours[end++]).x1);
-        const std::vector<Contour2> group(contours.begin() + std::ptrdiff_t(start),
-                                          contours.begin() + std::ptrdiff_t(end));
-        const PlanarFill f = fillContours(group, FillRule::NonZero);
+// Fills each glyph's contours and appends the triangles at z = 0.
+void appendFilled(const OutlinedLine& line, Mesh& m, std::string& problem) {
+    std::vector<std::size_t> starts = line.glyphStarts;
+    if (starts.empty() || starts.front() != 0) starts.insert(starts.begin(), 0);
+    starts.push_back(line.contours.size());
+    for (std::size_t g = 0; g + 1 < starts.size(); ++g) {
+        const std::size_t begin = std::min(starts[g], line.contours.size());
+        const std::size_t end = std::clamp(starts[g + 1], begin, line.contours.size());
+        if (begin == end) continue;
+        const std::vector<Contour2> glyph(line.contours.begin() + std::ptrdiff_t(begin),
+                                          line.contours.begin() + std::ptrdiff_t(end));
+        const PlanarFill f = fillContours(glyph, FillRule::NonZero);
+        if (!f.problem.empty()) problem = f.problem;
         const auto base = std::uint32_t(m.positions.size());
         for (const Point2& p : f.points) {
             m.positions.push_back({float(p[0]), float(p[1]), 0});
@@ -69,7 +53,6 @@ void appendFilled(std::vector<Contour2> contours, Mesh& m) {
         }
         for (const Triangle& t : f.triangles)
             m.triangles.push_back({base + t[0], base + t[1], base + t[2]});
-        start = end;
     }
 }
 
@@ -82,44 +65,85 @@ void place(std::vector<Contour2>& contours, double sx, double dx, double dy) {
         }
 }
 
+// The strings, cut to kMaxTextCharacters characters in all.
+std::vector<std::string> limitedLines(const std::vector<std::string>& lines, bool& cut) {
+    std::vector<std::string> out;
+    std::size_t left = kMaxTextCharacters;
+    cut = false;
+    for (const std::string& line : lines) {
+        auto chars = codePoints(line);
+        if (chars.size() > left) {
+            chars.resize(left);
+            cut = true;
+        }
+        left -= chars.size();
+        std::string kept;
+        for (const std::string& c : chars)
+            kept += c;
+        out.push_back(std::move(kept));
+        if (cut) break;
+    }
+    return out;
+}
+
 } // namespace
 
-Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner) {
+Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner,
+              std::vector<std::string>* warnings) {
     Mesh m;
-    if (!outliner || layout.font.size <= 0 || !std::isfinite(layout.font.size)) return m;
+    if (!outliner || !(layout.font.size > 0) || !std::isfinite(layout.font.size)) return m;
     const double size = layout.font.size;
     const double lineStep = size * layout.spacing;
     const auto& major = layout.justifyMajor;
     const auto& minor = layout.justifyMinor;
+    bool cut = false;
+    const std::vector<std::string> lines = limitedLines(layout.lines, cut);
+    std::string problem;
+    auto report = [&] {
+        if (!warnings) return;
+        if (cut)
+            warnings->push_back("Text: only the first " + std::to_string(kMaxTextCharacters) +
+                                " characters are drawn");
+        if (!problem.empty()) warnings->push_back("Text: " + problem);
+    };
 
     if (!layout.horizontal) {
         // Columns of characters, one per string, read downwards (or
-        // upwards), the columns going right (or left).
-        for (std::size_t i = 0; i < layout.lines.size(); ++i) {
+        // upwards), the columns going right (or left). Each character is
+        // outlined once.
+        std::map<std::string, OutlinedLine> glyphs;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
             const double x = (layout.leftToRight ? 1.0 : -1.0) * double(i) * lineStep;
-            const auto chars = codePoints(layout.lines[i]);
+            const auto chars = codePoints(lines[i]);
             const double columnLength = double(chars.size()) * size;
-            double top = 0; // major BEGIN/FIRST: the column starts at y = 0
+            // Where the column's top is: major BEGIN/FIRST start it at y = 0
+            // (downwards) or end it there (upwards), MIDDLE centres it.
+            double top = 0;
             if (major == "MIDDLE") top = columnLength / 2;
             if (major == "END") top = columnLength;
-            if (!layout.topToBottom) top -= columnLength;
+            if (!layout.topToBottom) top = columnLength - top;
             for (std::size_t k = 0; k < chars.size(); ++k) {
-                OutlinedLine glyph = outliner(chars[k], layout.font);
+                auto found = glyphs.find(chars[k]);
+                if (found == glyphs.end())
+                    found = glyphs.emplace(chars[k], outliner(chars[k], layout.font)).first;
+                OutlinedLine glyph = found->second;
+                if (!glyph.problem.empty()) problem = glyph.problem;
                 const double row = layout.topToBottom ? double(k) : double(chars.size() - 1 - k);
                 place(glyph.contours, 1, x - glyph.advance / 2,
                       top - (row + 1) * size + glyph.descent);
-                appendFilled(std::move(glyph.contours), m);
+                appendFilled(glyph, m, problem);
             }
         }
+        report();
         return m;
     }
 
-    std::vector<OutlinedLine> lines;
+    std::vector<OutlinedLine> outlined;
     double ascent = 0, descent = 0, widest = 0;
-    for (std::size_t i = 0; i < layout.lines.size(); ++i) {
-        const std::string text =
-            layout.leftToRight ? layout.lines[i] : reversedCodePoints(layout.lines[i]);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string text = layout.leftToRight ? lines[i] : reversedCodePoints(lines[i]);
         OutlinedLine l = outliner(text, layout.font);
+        if (!l.problem.empty()) problem = l.problem;
         if (i < layout.length.size() && layout.length[i] > 0 && l.advance > 0) {
             place(l.contours, layout.length[i] / l.advance, 0, 0);
             l.advance = layout.length[i];
@@ -127,13 +151,13 @@ Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner) {
         ascent = std::max(ascent, l.ascent);
         descent = std::max(descent, l.descent);
         widest = std::max(widest, l.advance);
-        lines.push_back(std::move(l));
+        outlined.push_back(std::move(l));
     }
     const double squeeze =
         layout.maxExtent > 0 && widest > layout.maxExtent ? layout.maxExtent / widest : 1.0;
 
     // Minor justification: where the block sits across the lines.
-    const double block = double(lines.empty() ? 0 : lines.size() - 1) * lineStep;
+    const double block = double(outlined.empty() ? 0 : outlined.size() - 1) * lineStep;
     const double direction = layout.topToBottom ? -1.0 : 1.0; // from one baseline to the next
     double firstBaseline = 0;                                 // FIRST
     const double top = layout.topToBottom ? ascent : ascent + block;
@@ -142,8 +166,8 @@ Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner) {
     if (minor == "END") firstBaseline = layout.topToBottom ? block + descent : -(block + ascent);
     if (minor == "MIDDLE") firstBaseline = -(top + bottom) / 2;
 
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-        OutlinedLine& l = lines[i];
+    for (std::size_t i = 0; i < outlined.size(); ++i) {
+        OutlinedLine& l = outlined[i];
         const double width = l.advance * squeeze;
         // Major justification: BEGIN (and FIRST) start at x = 0 in the
         // reading direction; END ends there; MIDDLE centres on it.
@@ -155,8 +179,9 @@ Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner) {
         else
             x = layout.leftToRight ? 0 : -width;
         place(l.contours, squeeze, x, firstBaseline + direction * double(i) * lineStep);
-        appendFilled(std::move(l.contours), m);
+        appendFilled(l, m, problem);
     }
+    report();
     return m;
 }
 

@@ -26,8 +26,13 @@ struct FontRequest {
 // in scene units (already scaled to the requested size).
 struct OutlinedLine {
     std::vector<Contour2> contours; // filled by the non-zero rule (TrueType, CFF)
+    // Where each glyph's contours start in `contours`: glyphs are filled one
+    // by one (kerned and italic neighbours overlap; filling a whole line as
+    // one would cost its edge count squared). Empty: one glyph.
+    std::vector<std::size_t> glyphStarts;
     double advance = 0;             // where the next character would start
     double ascent = 0, descent = 0; // of the font, both positive
+    std::string problem;            // set when no font could be used
 };
 
 // A font source. An empty function: Text is not drawn (a note says so).
@@ -40,10 +45,18 @@ struct TextLayout {
     FontRequest font;
     double spacing = 1; // between lines, in multiples of size
     std::string justifyMajor = "BEGIN", justifyMinor = "FIRST";
+    // Vertical text (horizontal FALSE) stacks each string's characters in a
+    // column; `length`, `maxExtent` and minor justification apply to
+    // horizontal text only.
     bool horizontal = true, leftToRight = true, topToBottom = true;
 };
 
-// The filled text, facing +z, normals (0, 0, 1).
-Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner);
+// At most this many characters of one Text node are drawn (a warning says so).
+inline constexpr std::size_t kMaxTextCharacters = 20000;
+
+// The filled text, facing +z, normals (0, 0, 1). What could not be drawn
+// (no fonts, too much text) is said in `warnings`.
+Mesh textMesh(const TextLayout& layout, const TextOutliner& outliner,
+              std::vector<std::string>* warnings = nullptr);
 
 } // namespace fl::mesh

@@ -25,10 +25,17 @@ namespace {
 
 // Text needs Qt's font database, which lives in a QGuiApplication; the
 // offscreen platform needs no display. Made only for scenes with Text.
-std::unique_ptr<QGuiApplication> fontsFor(const scene::Scene& scene) {
+bool hasText(const scene::Scene& scene, int depth = 0) {
     bool text = false;
-    scene.forEachNode([&](const scene::Node& n) { text = text || n.type == "Text"; });
-    if (!text || QCoreApplication::instance()) return nullptr;
+    scene.forEachNode([&](const scene::Node& n) {
+        text =
+            text || n.type == "Text" || (n.inlined && depth < 32 && hasText(*n.inlined, depth + 1));
+    });
+    return text;
+}
+
+std::unique_ptr<QGuiApplication> fontsFor(const scene::Scene& scene) {
+    if (!hasText(scene) || QCoreApplication::instance()) return nullptr;
     static int argc = 3;
     static char arg0[] = "functionlab", arg1[] = "-platform", arg2[] = "offscreen";
     static char* argv[] = {arg0, arg1, arg2, nullptr};

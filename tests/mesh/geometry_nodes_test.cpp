@@ -92,7 +92,7 @@ TEST(GeometryNodes, FansStripsAndQuadsKeepTheirWinding) {
         Shape { geometry IndexedQuadSet { index [0 1 2 3]
             coord Coordinate { point [0 0 0, 1 0 0, 1 1 0, 0 1 0] } } }
         Shape { geometry TriangleFanSet { fanCount [3 3] colorPerVertex FALSE
-            color Color { color [1 0 0, 0 0 1] }
+            color Color { color [1 0 0, 1 0 0, 1 0 0, 0 0 1, 0 0 1, 0 0 1] }
             coord Coordinate { point [0 0 0, 1 0 0, 1 1 0, 0 0 0, 1 1 0, 0 1 0] } } })",
                                   keep);
     ASSERT_EQ(s.shapes.size(), 7u);
@@ -102,7 +102,7 @@ TEST(GeometryNodes, FansStripsAndQuadsKeepTheirWinding) {
         for (const Vec3f& n : s.shapes[k].mesh.normals)
             EXPECT_NEAR(n[2], 1.0, 1e-6) << "shape " << k;
     }
-    // One colour per fan.
+    // X3D: fan sets ignore colorPerVertex FALSE; the colours stay per vertex.
     const Mesh& coloured = s.shapes[6].mesh;
     ASSERT_EQ(coloured.colours.size(), coloured.vertexCount());
     EXPECT_EQ(coloured.colours[coloured.triangles[0][0]][0], 1.0f);
@@ -139,4 +139,57 @@ TEST(GeometryNodes, Geometry2DLiesInTheXYPlane) {
     for (const auto& shape : s.shapes)
         for (const Vec3f& p : shape.mesh.positions)
             EXPECT_EQ(p[2], 0.0f);
+}
+
+TEST(GeometryNodes, StripsWithoutNormalsAreSmoothWhereTrianglesMeet) {
+    std::unique_ptr<fl::scene::Scene> keep;
+    // A strip folded along x = 1: the shared vertices average both faces.
+    const SceneMeshes s = meshX3d(R"(
+        Shape { geometry TriangleStripSet { stripCount 4
+            coord Coordinate { point [0 0 0, 0 1 0, 1 0 0, 1 1 0] } } }
+        Shape { geometry TriangleStripSet { stripCount 6 normalPerVertex FALSE
+            coord Coordinate { point [0 0 0, 0 1 0, 1 0 0, 1 1 0, 1 0 -1, 1 1 -1] } } }
+        Shape { geometry TriangleStripSet { stripCount 6
+            coord Coordinate { point [0 0 0, 0 1 0, 1 0 0, 1 1 0, 1 0 -1, 1 1 -1] } } })",
+                                  keep);
+    ASSERT_EQ(s.shapes.size(), 3u);
+    auto normalAt = [](const Mesh& m, float x, float z) {
+        for (std::size_t i = 0; i < m.positions.size(); ++i)
+            if (m.positions[i][0] == x && m.positions[i][2] == z && m.positions[i][1] == 0)
+                return m.normals[i];
+        return Vec3f{0, 0, 0};
+    };
+    const Vec3f flat = normalAt(s.shapes[1].mesh, 1, 0);
+    const Vec3f smooth = normalAt(s.shapes[2].mesh, 1, 0);
+    EXPECT_NEAR(std::abs(flat[0]) + std::abs(flat[2]), 1.0, 1e-5); // one face's own
+    // The mean of the three triangles there: two facing z, one facing x.
+    EXPECT_NEAR(std::abs(smooth[0]), 1 / std::sqrt(5.0), 1e-5);
+    EXPECT_NEAR(std::abs(smooth[2]), 2 / std::sqrt(5.0), 1e-5);
+}
+
+TEST(GeometryNodes, HostileSizesAreBoundedOrRefusedWithAWarning) {
+    std::unique_ptr<fl::scene::Scene> keep;
+    const SceneMeshes s = meshX3d(R"(
+        Shape { geometry Arc2D { endAngle 1e8 } }
+        Shape { geometry LineSet { vertexCount [2147483647] coord Coordinate { point [0 0 0, 1 1 1] } } }
+        Shape { geometry Box { size 1e39 1 1 } }
+        Shape { geometry NurbsPatchSurface { uDimension 2 vDimension 2 uOrder 2 vOrder 2
+            uTessellation 4096 vTessellation 4096
+            controlPoint Coordinate { point [0 0 0, 1 0 0, 0 1 0, 1 1 0] } } }
+        Shape { geometry NurbsCurve { knot [-1e308 -1e308 -1e308 1e308 1e308 1e308]
+            controlPoint Coordinate { point [0 0 0, 1 0 0, 2 0 0] } } })",
+                                  keep);
+    ASSERT_EQ(s.shapes.size(), 5u);
+    EXPECT_LE(s.shapes[0].mesh.vertexCount(), 49u);
+    EXPECT_EQ(s.shapes[1].mesh.segments.size(), 1u);
+    EXPECT_TRUE(s.shapes[2].mesh.empty());
+    ASSERT_FALSE(s.shapes[2].warnings.empty());
+    EXPECT_NE(s.shapes[2].warnings[0].find("too large"), std::string::npos);
+    EXPECT_LE(s.shapes[3].mesh.triangleCount(), 2u * 1048576u);
+    ASSERT_FALSE(s.shapes[3].warnings.empty());
+    EXPECT_NE(s.shapes[3].warnings[0].find("more than 1048576 cells"), std::string::npos);
+    // An overflowing knot range falls back to uniform knots: a finite curve.
+    ASSERT_FALSE(s.shapes[4].mesh.empty());
+    for (const Vec3f& p : s.shapes[4].mesh.positions)
+        EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
 }

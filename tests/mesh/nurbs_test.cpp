@@ -164,3 +164,47 @@ TEST(Nurbs, BadKnotsWeightsAndOrdersFallBackWithWarnings) {
     EXPECT_EQ(nurbsSegments(-3, 5), 15);
     EXPECT_EQ(nurbsSegments(-2000000000, 5), 4096);
 }
+
+TEST(Nurbs, PoleNormalsPointOutOnAnyScaleAndPlace) {
+    // The derivatives vanish at the poles only up to rounding, which grows
+    // with the coordinates: a sphere of radius 3 around (5, -2, 1).
+    NurbsSurface s = unitSphere();
+    for (Point3& p : s.points)
+        p = {5 + 3 * p[0], -2 + 3 * p[1], 1 + 3 * p[2]};
+    const Mesh m = nurbsSurfaceMesh(s, 32, 16);
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        const Vec3f& p = m.positions[i];
+        const Vec3f& n = m.normals[i];
+        const double out = ((p[0] - 5) * n[0] + (p[1] + 2) * n[1] + (p[2] - 1) * n[2]) / 3;
+        EXPECT_GT(out, 0.98) << "vertex " << i << " at z " << p[2];
+    }
+}
+
+TEST(Nurbs, TrimmingOutsideTheRangeIsCutToIt) {
+    NurbsSurface plane;
+    std::vector<std::string> warnings;
+    plane.u = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "u", warnings);
+    plane.v = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "v", warnings);
+    plane.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    plane.weights = {1, 1, 1, 1};
+    const Mesh m =
+        nurbsSurfaceMesh(plane, 4, 4, {{{-0.5, -0.5}, {1.5, -0.5}, {1.5, 1.5}, {-0.5, 1.5}}});
+    for (const Vec3f& p : m.positions) {
+        EXPECT_GE(p[0], -1e-6);
+        EXPECT_LE(p[0], 1 + 1e-6);
+        EXPECT_GE(p[1], -1e-6);
+        EXPECT_LE(p[1], 1 + 1e-6);
+    }
+    EXPECT_EQ(m.triangleCount(), 32u);
+}
+
+TEST(Nurbs, HighOrdersAreLowered) {
+    std::vector<std::string> warnings;
+    const NurbsBasis b = makeNurbsBasis(20000, 20000, {}, "", warnings);
+    EXPECT_EQ(b.order, kMaxNurbsOrder);
+    ASSERT_EQ(warnings.size(), 1u);
+    int u = 4096, v = 4096;
+    limitNurbsCells(u, v, warnings);
+    EXPECT_LE((long long)u * v, kMaxNurbsCells);
+    EXPECT_EQ(u, v);
+}

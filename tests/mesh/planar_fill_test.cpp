@@ -223,3 +223,19 @@ TEST(PlanarFill, BadInputGivesNothingOrIsSkipped) {
         fillContours({{{0, 0}, {1, 0}, {nan, 5}, {1, 1}, {0, 1}}}, FillRule::NonZero);
     EXPECT_NEAR(filledArea(f), 1.0, 1e-12);
 }
+
+TEST(PlanarFill, HugeCoordinatesAreIgnoredAndComplexOutlinesRefused) {
+    // Beyond 1e150 a slope overflows: such points are left out.
+    const PlanarFill huge =
+        fillContours({{{-1e308, -1e308}, {1e308, 1e308}, {-1e308, 1e308}, {0, 0}, {1, 0}, {1, 1}}},
+                     FillRule::EvenOdd);
+    for (const Point2& p : huge.points)
+        EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
+    // A zig-zag crossing itself millions of times: refused, quickly.
+    Contour2 zigzag;
+    for (int k = 0; k < 30000; ++k)
+        zigzag.push_back({k % 2 ? 1.0 : 0.0, k * 1e-4 + (k % 2 ? 0.5 : 0)});
+    const PlanarFill refused = fillContours({zigzag}, FillRule::EvenOdd);
+    EXPECT_FALSE(refused.problem.empty());
+    EXPECT_TRUE(refused.triangles.empty());
+}

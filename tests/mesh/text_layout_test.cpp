@@ -20,8 +20,10 @@ OutlinedLine blockFont(const std::string& text, const FontRequest& font) {
     const double s = font.size;
     double x = 0;
     for (char c : text) {
-        if (c != ' ')
+        if (c != ' ') {
+            l.glyphStarts.push_back(l.contours.size());
             l.contours.push_back({{x, 0}, {x + 0.5 * s, 0}, {x + 0.5 * s, 0.7 * s}, {x, 0.7 * s}});
+        }
         x += 0.6 * s;
     }
     l.advance = x;
@@ -134,7 +136,37 @@ TEST(TextLayout, RightToLeftAndVerticalText) {
     b = boundsOf(m);
     EXPECT_NEAR(area(m), 6 * 1.0 * 1.4, 1e-6);
     EXPECT_LT(b.y1, 0.1);
-    EXPECT_GT(b.x1, 1.5); // the second column one size * spacing to the right
+    EXPECT_GT(b.y0, -8.1); // "ABCD": four characters of size 2 below y = 0
+    EXPECT_GT(b.x1, 1.5);  // the second column one size * spacing to the right
+    t.topToBottom = false; // upwards: BEGIN starts the column at y = 0
+    b = boundsOf(textMesh(t, blockFont));
+    EXPECT_GT(b.y0, -0.1);
+    EXPECT_LT(b.y1, 8.1);
+}
+
+TEST(TextLayout, VeryLongTextIsCutWithAWarning) {
+    TextLayout t;
+    t.lines = {std::string(kMaxTextCharacters + 5, 'A')};
+    std::vector<std::string> warnings;
+    const Mesh m = textMesh(t, blockFont, &warnings);
+    EXPECT_EQ(m.triangleCount(), 2 * kMaxTextCharacters);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("only the first"), std::string::npos);
+}
+
+TEST(TextLayout, AFontSourceWithoutFontsIsReported) {
+    std::vector<std::string> warnings;
+    const Mesh m = textMesh(
+        twoLines(),
+        [](const std::string&, const FontRequest&) {
+            OutlinedLine none;
+            none.problem = "no fonts";
+            return none;
+        },
+        &warnings);
+    EXPECT_TRUE(m.empty());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], "Text: no fonts");
 }
 
 TEST(TextLayout, NoFontSourceOrBadSizeDrawsNothing) {
