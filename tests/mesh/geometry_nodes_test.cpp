@@ -2,6 +2,7 @@
 // strip and quad sets, Geometry2D — each drawn from its fields, bad fields
 // warned about and never fatal.
 #include "mesh/scene_meshing.h"
+#include "mesh_test_support.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
@@ -45,14 +46,7 @@ TEST(GeometryNodes, NurbsNodesAreDrawn) {
     EXPECT_EQ(s.shapes[0].mesh.triangleCount(), 8u * 6u * 2u);
     EXPECT_TRUE(s.shapes[1].mesh.isLines());
     EXPECT_EQ(s.shapes[1].mesh.segments.size(), 20u);
-    double trimmedArea = 0;
-    for (const Triangle& t : s.shapes[2].mesh.triangles) {
-        const auto& p = s.shapes[2].mesh.positions[t[0]];
-        const auto& q = s.shapes[2].mesh.positions[t[1]];
-        const auto& r = s.shapes[2].mesh.positions[t[2]];
-        trimmedArea += ((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1])) / 2;
-    }
-    EXPECT_NEAR(trimmedArea, 0.36, 1e-6); // the 0.6 x 0.6 square kept
+    EXPECT_NEAR(support::areaInXY(s.shapes[2].mesh), 0.36, 1e-6); // the 0.6 x 0.6 square kept
     EXPECT_TRUE(s.shapes[3].mesh.empty());
     ASSERT_FALSE(s.shapes[3].warnings.empty());
     EXPECT_NE(s.shapes[3].warnings[0].find("does not match the 2 control points"),
@@ -60,21 +54,6 @@ TEST(GeometryNodes, NurbsNodesAreDrawn) {
     for (const std::string& note : s.notes)
         EXPECT_EQ(note.find("not drawn"), std::string::npos) << note;
 }
-
-namespace {
-
-double planeArea(const Mesh& m) {
-    double a = 0;
-    for (const Triangle& t : m.triangles) {
-        const auto& p = m.positions[t[0]];
-        const auto& q = m.positions[t[1]];
-        const auto& r = m.positions[t[2]];
-        a += ((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1])) / 2;
-    }
-    return a;
-}
-
-} // namespace
 
 TEST(GeometryNodes, FansStripsAndQuadsKeepTheirWinding) {
     std::unique_ptr<fl::scene::Scene> keep;
@@ -98,7 +77,7 @@ TEST(GeometryNodes, FansStripsAndQuadsKeepTheirWinding) {
     ASSERT_EQ(s.shapes.size(), 7u);
     for (std::size_t k = 0; k < s.shapes.size(); ++k) {
         EXPECT_EQ(s.shapes[k].mesh.triangleCount(), 2u) << "shape " << k;
-        EXPECT_NEAR(planeArea(s.shapes[k].mesh), 1.0, 1e-6) << "shape " << k;
+        EXPECT_NEAR(support::areaInXY(s.shapes[k].mesh), 1.0, 1e-6) << "shape " << k;
         for (const Vec3f& n : s.shapes[k].mesh.normals)
             EXPECT_NEAR(n[2], 1.0, 1e-6) << "shape " << k;
     }
@@ -123,11 +102,11 @@ TEST(GeometryNodes, Geometry2DLiesInTheXYPlane) {
         Shape { geometry Polypoint2D { point [0 0, 1 1, 2 2] } })",
                                   keep);
     ASSERT_EQ(s.shapes.size(), 9u);
-    EXPECT_NEAR(planeArea(s.shapes[0].mesh), 6.0, 1e-6);
-    EXPECT_NEAR(planeArea(s.shapes[1].mesh), std::numbers::pi, 0.01);
-    EXPECT_NEAR(planeArea(s.shapes[2].mesh), 0.75 * std::numbers::pi, 0.01);
-    EXPECT_NEAR(planeArea(s.shapes[3].mesh), std::numbers::pi / 4, 0.01);
-    EXPECT_NEAR(planeArea(s.shapes[4].mesh), 0.5, 1e-6);
+    EXPECT_NEAR(support::areaInXY(s.shapes[0].mesh), 6.0, 1e-6);
+    EXPECT_NEAR(support::areaInXY(s.shapes[1].mesh), std::numbers::pi, 0.01);
+    EXPECT_NEAR(support::areaInXY(s.shapes[2].mesh), 0.75 * std::numbers::pi, 0.01);
+    EXPECT_NEAR(support::areaInXY(s.shapes[3].mesh), std::numbers::pi / 4, 0.01);
+    EXPECT_NEAR(support::areaInXY(s.shapes[4].mesh), 0.5, 1e-6);
     for (std::size_t k : {5u, 6u, 7u})
         EXPECT_TRUE(s.shapes[k].mesh.isLines()) << "shape " << k;
     EXPECT_EQ(s.shapes[7].mesh.segments.size(), 2u);

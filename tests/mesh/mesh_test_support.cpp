@@ -66,4 +66,15 @@ double maxVertexError(const ImplicitField& f, const Mesh& mesh) {
     return surfaceError(f, mesh, false);
 }
 
+double areaInXY(const Mesh& m) {
+    double a = 0;
+    for (const Triangle& t : m.triangles) {
+        const auto& p = m.positions[t[0]];
+        const auto& q = m.positions[t[1]];
+        const auto& r = m.positions[t[2]];
+        a += (double(q[0] - p[0]) * (r[1] - p[1]) - double(r[0] - p[0]) * (q[1] - p[1])) / 2;
+    }
+    return a;
+}
+
 } // namespace fl::mesh::support

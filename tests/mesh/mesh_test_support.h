@@ -24,4 +24,8 @@ double maxSurfaceError(const ImplicitField& field, const Mesh& mesh);
 // The same over the vertices only.
 double maxVertexError(const ImplicitField& field, const Mesh& mesh);
 
+// The signed area of the triangles seen from +z (x-y plane): flat shapes,
+// text, trimmed patches; counter-clockwise counts positive.
+double areaInXY(const Mesh& mesh);
+
 } // namespace fl::mesh::support

@@ -3,6 +3,7 @@
 // weights and orders. The scene nodes: geometry_nodes_test.cpp.
 #include "mesh/mesh_topology.h"
 #include "mesh/nurbs.h"
+#include "mesh_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -46,6 +47,17 @@ NurbsSurface unitSphere() {
             s.weights.push_back(circle.weights[i] * profileWeights[j]);
         }
     return s;
+}
+
+// A flat bilinear patch over [0, 1]^2: the surface is its (u, v) plane.
+NurbsSurface unitPlane() {
+    NurbsSurface plane;
+    std::vector<std::string> warnings;
+    plane.u = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "u", warnings);
+    plane.v = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "v", warnings);
+    plane.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    plane.weights = {1, 1, 1, 1};
+    return plane;
 }
 
 double distance(const Point3& a, const Point3& b) {
@@ -110,23 +122,8 @@ TEST(Nurbs, RevolvedSphereIsClosedOnTheSphereAndFacesOutward) {
 }
 
 TEST(Nurbs, TrimmingKeepsTheInsideOfTheContours) {
-    // A flat bilinear patch over [0, 1]^2: the surface is its (u, v) plane.
-    NurbsSurface plane;
-    std::vector<std::string> warnings;
-    plane.u = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "u", warnings);
-    plane.v = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "v", warnings);
-    plane.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-    plane.weights = {1, 1, 1, 1};
-    auto area = [](const Mesh& m) {
-        double a = 0;
-        for (const Triangle& t : m.triangles) {
-            const auto& p = m.positions[t[0]];
-            const auto& q = m.positions[t[1]];
-            const auto& r = m.positions[t[2]];
-            a += ((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1])) / 2;
-        }
-        return a;
-    };
+    const NurbsSurface plane = unitPlane();
+    const auto area = support::areaInXY;
     EXPECT_NEAR(area(nurbsSurfaceMesh(plane, 10, 10)), 1.0, 1e-6);
     Contour2 disc;
     for (int k = 0; k < 256; ++k) {
@@ -181,12 +178,7 @@ TEST(Nurbs, PoleNormalsPointOutOnAnyScaleAndPlace) {
 }
 
 TEST(Nurbs, TrimmingOutsideTheRangeIsCutToIt) {
-    NurbsSurface plane;
-    std::vector<std::string> warnings;
-    plane.u = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "u", warnings);
-    plane.v = makeNurbsBasis(2, 2, {0, 0, 1, 1}, "v", warnings);
-    plane.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-    plane.weights = {1, 1, 1, 1};
+    const NurbsSurface plane = unitPlane();
     const Mesh m =
         nurbsSurfaceMesh(plane, 4, 4, {{{-0.5, -0.5}, {1.5, -0.5}, {1.5, 1.5}, {-0.5, 1.5}}});
     for (const Vec3f& p : m.positions) {

@@ -4,6 +4,7 @@
 // place is computable; the real glyphs from Qt are tested in viewer_tests.
 #include "mesh/scene_meshing.h"
 #include "mesh/text_layout.h"
+#include "mesh_test_support.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
@@ -47,16 +48,7 @@ Box boundsOf(const Mesh& m) {
     return b;
 }
 
-double area(const Mesh& m) {
-    double a = 0;
-    for (const Triangle& t : m.triangles) {
-        const auto& p = m.positions[t[0]];
-        const auto& q = m.positions[t[1]];
-        const auto& r = m.positions[t[2]];
-        a += ((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1])) / 2;
-    }
-    return a;
-}
+const auto area = support::areaInXY;
 
 TextLayout twoLines() {
     TextLayout t;
