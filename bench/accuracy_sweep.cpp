@@ -76,6 +76,21 @@ std::string accuracyJson(const std::vector<AccuracyRow>& rows) {
     return out + "]\n";
 }
 
+std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
+                                  double error) {
+    const AccuracyRow *above = nullptr, *below = nullptr;
+    for (const AccuracyRow& r : rows) {
+        if (r.method != method || r.ms <= 0 || r.maxError <= 0) continue;
+        if (r.maxError > error && (!above || r.maxError < above->maxError)) above = &r;
+        if (r.maxError <= error && (!below || r.maxError > below->maxError)) below = &r;
+    }
+    if (!below) return std::nullopt;
+    if (!above || below->maxError == error) return below->ms;
+    const double s = (std::log(error) - std::log(above->maxError)) /
+                     (std::log(below->maxError) - std::log(above->maxError));
+    return std::exp(std::log(above->ms) + s * (std::log(below->ms) - std::log(above->ms)));
+}
+
 std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
     std::string out;
     // Same resolution, side by side: the largest resolution swept.
@@ -108,24 +123,14 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
                num(fa->ms, "%.1f") + " ms at resolution " + num(fa->resolution) + ", dense " +
                num(fd->ms, "%.1f") + " ms at resolution " + num(fd->resolution) + " (" +
                num(fd->ms / fa->ms, "%.1f") + "x)\n";
-    // The swept resolutions rarely hit that error exactly: the adaptive
-    // mesher's time there, read off the straight line (log-log) between the
-    // two adaptive rows whose errors bracket it.
-    const AccuracyRow *above = nullptr, *below = nullptr;
-    for (const AccuracyRow& r : rows) {
-        if (r.method != "adaptive" || r.ms <= 0 || r.maxError <= 0) continue;
-        if (r.maxError > common && (!above || r.maxError < above->maxError)) above = &r;
-        if (r.maxError <= common && (!below || r.maxError > below->maxError)) below = &r;
-    }
-    if (fd && above && below && above->maxError > below->maxError) {
-        const double s = (std::log(common) - std::log(above->maxError)) /
-                         (std::log(below->maxError) - std::log(above->maxError));
-        const double ms =
-            std::exp(std::log(above->ms) + s * (std::log(below->ms) - std::log(above->ms)));
-        out += "  interpolated between adaptive resolutions " + num(above->resolution) + " and " +
-               num(below->resolution) + ": adaptive " + num(ms, "%.1f") + " ms at that error (" +
-               num(fd->ms / ms, "%.1f") + "x)\n";
-    }
+    // The swept resolutions rarely hit that error exactly: each method's
+    // time there, read off the straight line (log-log) between its two rows
+    // whose errors bracket it (the method whose finest row sets the error
+    // takes that row's time).
+    const auto a2 = timeAtError(rows, "adaptive", common), d2 = timeAtError(rows, "dense", common);
+    if (a2 && d2 && *a2 > 0)
+        out += "  interpolated at that error: adaptive " + num(*a2, "%.1f") + " ms, dense " +
+               num(*d2, "%.1f") + " ms (" + num(*d2 / *a2, "%.1f") + "x)\n";
     return out;
 }
 

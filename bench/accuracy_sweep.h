@@ -5,6 +5,7 @@
 // measured independently of either mesher (core/mesh/mesh_error.h).
 #include "mesh/implicit_field.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,9 @@ std::string accuracyJson(const std::vector<AccuracyRow>& rows);
 std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::string& title);
 // "at 256: adaptive 12.3x faster, 15.1x fewer evaluations; finest error both reach ..."
 std::string accuracySummary(const std::vector<AccuracyRow>& rows);
+// A method's time at a given max error, read off the log-log line between
+// its two rows whose errors bracket it; none when no row reaches the error.
+std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
+                                  double error);
 
 } // namespace fl::bench

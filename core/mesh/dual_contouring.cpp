@@ -99,26 +99,47 @@ struct PendingCrossing {
     bool done = false;
 };
 
+// What a vertex costs from sampling to the finished mesh: its place in the
+// block and in the mesh (position and normal twice), its cell's share, and
+// about two triangles in each.
+constexpr std::size_t kBytesPerVertex = 4 * sizeof(Vec3f) + 8 + 4 * sizeof(Triangle);
+
+// A cell with vertices: its corner configuration (which piece of surface
+// an edge is on), its first vertex (block-local; a cell's vertices are
+// consecutive) and which pieces have one (bit p: piece p). Most of a block's
+// 512 cells hold no surface, so only these are kept: a block costs about
+// its vertices, not its volume, which is what lets fine resolutions fit.
+struct SurfaceCell {
+    std::uint16_t cell = 0;
+    std::int16_t config = -1; // -1: unknown
+    std::uint16_t firstVertex = 0;
+    std::uint8_t pieceMask = 0;
+};
+
 // What phase 1 leaves for each active block.
 struct Block {
     BlockCoord coord{};
-    std::vector<double> values;       // kCorners corner values of f
+    std::vector<double> values;       // kCorners corner values of f, while sampling only
     std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
-    // Per cell: the local id of its first vertex, and which pieces of
-    // surface have one (bit p: piece p); a cell's vertices are consecutive.
-    std::vector<std::int32_t> firstVertex; // kCells
-    std::vector<std::uint8_t> pieceMask;   // kCells
-    std::int32_t vertexOf(int cell, int piece) const {
-        const unsigned mask = pieceMask[std::size_t(cell)];
-        if (!(mask >> piece & 1u)) return -1;
-        return firstVertex[std::size_t(cell)] + std::popcount(mask & ((1u << piece) - 1));
-    }
-    std::vector<std::uint8_t> kept;    // the 2x2x2-cell sub-blocks that may hold surface
-    std::vector<std::int16_t> configs; // kCells: corner configuration, -1 unknown
-    std::vector<Vec3> positions;
-    std::vector<Vec3> normals;
+    std::vector<SurfaceCell> cells;   // sorted by cell
+    std::vector<std::uint8_t> kept;   // the 2x2x2-cell sub-blocks that may hold surface
+    std::vector<Vec3f> positions;     // single precision, as the mesh keeps them
+    std::vector<Vec3f> normals;
     std::uint32_t offset = 0; // first global vertex id
     std::vector<Triangle> triangles;
+
+    const SurfaceCell* surfaceCell(int cell) const {
+        const auto it =
+            std::lower_bound(cells.begin(), cells.end(), cell,
+                             [](const SurfaceCell& c, int wanted) { return int(c.cell) < wanted; });
+        return it != cells.end() && it->cell == cell ? &*it : nullptr;
+    }
+    // What the block holds in memory (its share of the mesh included).
+    std::size_t bytes() const {
+        return states.capacity() + kept.capacity() + cells.capacity() * sizeof(SurfaceCell) +
+               (positions.capacity() + normals.capacity()) * sizeof(Vec3f) +
+               triangles.capacity() * sizeof(Triangle);
+    }
 };
 
 // Facts gathered while sampling, for the warnings.
@@ -189,6 +210,18 @@ int pieceOf(int config, int edge) {
     return piece >= 0 && piece < kPieces ? piece : 0;
 }
 
+// The block-local vertex of a cell's piece of surface that `edge` is on, or
+// -1 when the cell has none there.
+std::int32_t vertexOf(const Block& block, int cell, int edge) {
+    const SurfaceCell* c = block.surfaceCell(cell);
+    if (!c) return -1;
+    const int piece = pieceOf(c->config, edge);
+    const unsigned mask = c->pieceMask;
+    if (!(mask >> piece & 1u)) return -1;
+    static constexpr std::uint8_t kOnes[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+    return std::int32_t(c->firstVertex) + kOnes[mask & ((1u << piece) - 1)];
+}
+
 class Contourer {
   public:
     Contourer(const ImplicitField& field, const MeshOptions& options, const Grid& grid)
@@ -245,13 +278,12 @@ class Contourer {
             crossings_.assign(std::size_t(3 * kCorners), Crossing{});
         ++generation_;
         computeCrossings(block, sampler);
-        block.firstVertex.assign(kCells, -1);
-        block.pieceMask.assign(kCells, 0);
+        block.cells.clear();
         block.positions.clear();
         block.normals.clear();
-        block.configs.assign(kCells, -1); // only cells of kept sub-blocks can hold surface
+        configs_.fill(-1); // only cells of kept sub-blocks can hold surface
         forEachKeptCell(block, [&](int ci, int cj, int ck) {
-            block.configs[std::size_t(cellIndex(ci, cj, ck))] =
+            configs_[std::size_t(cellIndex(ci, cj, ck))] =
                 std::int16_t(cellConfig(block.states, ci, cj, ck));
         });
         buildVertices(block, sampler);
@@ -516,7 +548,7 @@ class Contourer {
                 const int edge = cubeEdge(axis, corner[u] - cell[u], corner[v] - cell[v]);
                 const int index =
                     cellIndex(cell[0], cell[1], cell[2]) * kPieces +
-                    pieceOf(block.configs[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
+                    pieceOf(configs_[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
                 CellQef& cq = cellQefs_[std::size_t(index)];
                 if (cq.generation != generation_) {
                     cq = CellQef{};
@@ -553,11 +585,12 @@ class Contourer {
                                       cq.normalSum[2] / length}
                                : vertexNormal(sampler, p, cq.normalSum);
             // touched_ is sorted, so a cell's pieces come in order, one after another.
-            if (!block.pieceMask[std::size_t(cell)])
-                block.firstVertex[std::size_t(cell)] = std::int32_t(block.positions.size());
-            block.pieceMask[std::size_t(cell)] |= std::uint8_t(1u << (index % kPieces));
-            block.positions.push_back(p);
-            block.normals.push_back(n);
+            if (block.cells.empty() || block.cells.back().cell != cell)
+                block.cells.push_back({std::uint16_t(cell), configs_[std::size_t(cell)],
+                                       std::uint16_t(block.positions.size()), 0});
+            block.cells.back().pieceMask |= std::uint8_t(1u << (index % kPieces));
+            block.positions.push_back({float(p[0]), float(p[1]), float(p[2])});
+            block.normals.push_back({float(n[0]), float(n[1]), float(n[2])});
         }
     }
 
@@ -622,9 +655,7 @@ class Contourer {
             missing.push_back(neighbourCoords_[std::size_t(n)]);
             return {};
         }
-        const int piece =
-            pieceOf(owner->configs[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
-        return {owner, owner->vertexOf(cellIndex(cell[0], cell[1], cell[2]), piece)};
+        return {owner, vertexOf(*owner, cellIndex(cell[0], cell[1], cell[2]), edge)};
     }
 
     void quad(Block& block, int a, const int local[3], bool lowerInside,
@@ -649,12 +680,14 @@ class Contourer {
         // Inside below, outside above: the surface faces +a; else the other way.
         if (!lowerInside) std::swap(refs[1], refs[3]);
         auto id = [&](int q) { return refs[q].block->offset + std::uint32_t(refs[q].local); };
-        auto pos = [&](int q) -> const Vec3& {
+        auto pos = [&](int q) -> const Vec3f& {
             return refs[q].block->positions[std::size_t(refs[q].local)];
         };
-        auto dist2 = [](const Vec3& x, const Vec3& y) {
-            return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
-                   (x[2] - y[2]) * (x[2] - y[2]);
+        auto dist2 = [](const Vec3f& x, const Vec3f& y) {
+            double d = 0;
+            for (std::size_t k = 0; k < 3; ++k)
+                d += (double(x[k]) - y[k]) * (double(x[k]) - y[k]);
+            return d;
         };
         if (dist2(pos(0), pos(2)) <= dist2(pos(1), pos(3))) {
             block.triangles.push_back({id(0), id(1), id(2)});
@@ -682,7 +715,8 @@ class Contourer {
         Qef qef;
         Vec3 normalSum{};
     };
-    std::vector<CellQef> cellQefs_; // per cell of the block, valid by generation
+    std::vector<CellQef> cellQefs_;              // per cell of the block, valid by generation
+    std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
     std::vector<int> touched_;
     std::unordered_map<std::uint64_t, Block*> lookup_;
     std::array<const Block*, 27> neighbours_{};
@@ -802,11 +836,11 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     result.stats.cellSize = grid.h;
     result.stats.blocks = std::size_t(grid.blocks[0]) * grid.blocks[1] * grid.blocks[2];
 
-    // What one active block costs while meshing, and its share of the mesh
-    // (a surface through a block makes about 2 kB^2 vertices at most).
-    const std::size_t bytesPerBlock =
-        kCorners * sizeof(double) + kCells * sizeof(std::int32_t) +
-        2 * kB * kB * (2 * sizeof(Vec3) + 2 * sizeof(Vec3f) + 2 * sizeof(Triangle));
+    // What one active block typically costs while meshing, its share of the
+    // mesh included (a smooth surface through a block makes about kB^2
+    // vertices): the first check, before any work. Sampling then counts what
+    // the blocks really hold and stops at the budget.
+    const std::size_t bytesPerBlock = kCorners + kB * kB * kBytesPerVertex;
     const std::size_t blockLimit =
         std::max<std::size_t>(1, options.memoryBudgetBytes / bytesPerBlock);
 
@@ -814,12 +848,13 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     Pruner pruner{grid, pruneSampler, blockLimit, {}, {}, {}, false};
     pruner.run({0, 0, 0}, grid.blocks);
     EvaluationCounts counts = pruneSampler.counts();
+    const std::string overBudget =
+        "resolution " + std::to_string(int(options.resolution)) + " would need more than " +
+        std::to_string(options.memoryBudgetBytes >> 20) +
+        " MiB for this shape; lower the resolution (or the target accuracy) or raise "
+        "the memory budget";
     if (pruner.overLimit) {
-        result.error =
-            "resolution " + std::to_string(int(options.resolution)) + " would need more than " +
-            std::to_string(options.memoryBudgetBytes >> 20) +
-            " MiB for this shape; lower the resolution (or the target accuracy) or raise "
-            "the memory budget";
+        result.error = overBudget;
         result.stats.evaluations = counts;
         return result;
     }
@@ -850,6 +885,10 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     contourers.reserve(std::size_t(threads));
     for (int w = 0; w < threads; ++w)
         contourers.emplace_back(field, options, grid);
+    // The memory the blocks hold plus what their vertices will still cost
+    // (triangles, the mesh's copy), counted as they are sampled.
+    std::atomic<std::size_t> bytesHeld{0};
+    std::atomic<bool> overBudgetNow{false};
     auto sample = [&](std::vector<Block>& list) {
         parallelFor(list.size(), threads, field, perThread,
                     [&](std::size_t i, FieldSampler& s, int w) {
@@ -857,7 +896,13 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                             stopped = true;
                             return;
                         }
-                        contourers[std::size_t(w)].sampleBlock(list[i], s, seen[std::size_t(w)]);
+                        Block& b = list[i];
+                        contourers[std::size_t(w)].sampleBlock(b, s, seen[std::size_t(w)]);
+                        const std::size_t bytes = b.bytes() + b.positions.size() * kBytesPerVertex;
+                        if (bytesHeld += bytes; bytesHeld > options.memoryBudgetBytes) {
+                            overBudgetNow = true;
+                            stopped = true;
+                        }
                         report();
                     });
     };
@@ -903,6 +948,10 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         counts += c;
     result.stats.evaluations = counts;
     result.stats.activeBlocks = blocks.size();
+    if (overBudgetNow) {
+        result.error = overBudget;
+        return result;
+    }
     if (stopped) {
         result.cancelled = true;
         return result;
@@ -917,17 +966,15 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     mesh.positions.reserve(vertexCount);
     mesh.normals.reserve(vertexCount);
     mesh.triangles.reserve(triangleCount);
-    for (const Block& b : blocks) {
+    // Each block's share is moved into the mesh and freed at once, so the
+    // blocks and the mesh are never both whole in memory.
+    for (Block& b : blocks) {
         result.stats.surfaceCells += b.positions.size();
-        for (std::size_t i = 0; i < b.positions.size(); ++i) {
-            mesh.positions.push_back(
-                {float(b.positions[i][0]), float(b.positions[i][1]), float(b.positions[i][2])});
-            mesh.normals.push_back(
-                {float(b.normals[i][0]), float(b.normals[i][1]), float(b.normals[i][2])});
-        }
-    }
-    for (const Block& b : blocks)
+        mesh.positions.insert(mesh.positions.end(), b.positions.begin(), b.positions.end());
+        mesh.normals.insert(mesh.normals.end(), b.normals.begin(), b.normals.end());
         mesh.triangles.insert(mesh.triangles.end(), b.triangles.begin(), b.triangles.end());
+        b = Block{};
+    }
 
     // Warnings: undefined regions, and a function that touches zero without
     // ever changing sign (no inside, so no surface).

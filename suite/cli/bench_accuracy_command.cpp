@@ -70,7 +70,7 @@ int benchAccuracyCommand(const Args& args) {
             if (!parseNumberList(args[++i], resolutions))
                 return usage("--resolutions needs numbers like 16,32,64");
             for (double r : resolutions)
-                if (r < 1 || r > 1024) return usage("resolutions must lie in 1..1024");
+                if (r < 1 || r > 2048) return usage("resolutions must lie in 1..2048");
         } else if (!a.starts_with("-") && file.empty())
             file = a;
         else

@@ -1,0 +1,40 @@
+// The accuracy sweep's summary (bench/accuracy_sweep.h): each method's time
+// at the finest error both reach is read off its own log-log line, whichever
+// method sets that error.
+#include "accuracy_sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using fl::bench::AccuracyRow;
+
+namespace {
+
+AccuracyRow row(const char* method, double resolution, double ms, double error) {
+    AccuracyRow r;
+    r.method = method;
+    r.resolution = resolution;
+    r.ms = ms;
+    r.maxError = error;
+    r.evaluations = 1;
+    return r;
+}
+
+} // namespace
+
+TEST(AccuracySummary, TheLimitedMethodKeepsItsRowTheOtherIsInterpolated) {
+    // The adaptive mesher stops at 2.5e-6 (its budget); dense goes finer.
+    const std::vector<AccuracyRow> rows = {
+        row("adaptive", 100, 10, 1e-5), row("dense", 100, 100, 4e-6),
+        row("adaptive", 200, 40, 2.5e-6), row("dense", 200, 800, 1e-6)};
+    EXPECT_DOUBLE_EQ(*fl::bench::timeAtError(rows, "adaptive", 2.5e-6), 40);
+    const double dense = *fl::bench::timeAtError(rows, "dense", 2.5e-6);
+    // log-log between (4e-6, 100 ms) and (1e-6, 800 ms) at 2.5e-6.
+    const double s = std::log(4e-6 / 2.5e-6) / std::log(4.0);
+    EXPECT_NEAR(dense, 100 * std::pow(8.0, s), 1e-9);
+    const std::string summary = fl::bench::accuracySummary(rows);
+    EXPECT_NE(summary.find("interpolated at that error: adaptive 40.0 ms"), std::string::npos)
+        << summary;
+    EXPECT_FALSE(fl::bench::timeAtError(rows, "dense", 1e-7)); // never reached
+}
