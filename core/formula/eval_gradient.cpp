@@ -3,8 +3,11 @@
 #include "noise.h"
 #include "scalar_ops.h"
 #include "tape_walk.h"
+#include "vector_math.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace fl::formula {
@@ -102,10 +105,12 @@ Dual unary(Op op, const Dual& a, double imm0) {
         return chain(v, 1.0 / (x * std::numbers::ln2), a);
     case Op::Log10:
         return chain(v, 1.0 / (x * std::numbers::ln10), a);
+    // The derivatives through the same SLEEF functions as the values, so
+    // evaluateMany's array calls give these bits exactly.
     case Op::Sin:
-        return chain(v, std::cos(x), a);
+        return chain(v, vmath::eval(vmath::Unary::Cos, x), a);
     case Op::Cos:
-        return chain(v, -std::sin(x), a);
+        return chain(v, -vmath::eval(vmath::Unary::Sin, x), a);
     case Op::Tan:
         return chain(v, 1.0 + v * v, a);
     case Op::Asin:
@@ -262,6 +267,48 @@ template <Op kOp>
     for (std::size_t j = 0; j < m; ++j)
         dst[j] = ad::unary(kOp, a[j], 0.0);
 }
+
+// sin and cos of a row at once, each through SLEEF's array form (4 lanes
+// with AVX2): a dual number needs both, and the gyroid-like formulas that
+// use them spend most of a gradient there. Same bits as ad::unary: only
+// arguments below kSmallTrig go through the arrays, because SLEEF takes a
+// slower, differently rounded argument reduction for a whole vector when
+// one lane is large or NaN, where the scalar form decides per value.
+void trigLoop(bool sine, Dual* dst, const Dual* a, std::size_t m) {
+    constexpr std::size_t kMax = 64;
+    constexpr double kSmallTrig = 12; // SLEEF's fast reduction covers |x| < 15
+    double x[kMax], s[kMax], c[kMax];
+    std::uint8_t lane[kMax];
+    const auto& vm = vmath::implementation();
+    for (std::size_t start = 0; start < m; start += kMax) {
+        const std::size_t n = std::min(kMax, m - start);
+        std::size_t small = 0;
+        for (std::size_t j = 0; j < n; ++j)
+            if (std::abs(a[start + j].v) < kSmallTrig) {
+                lane[small] = std::uint8_t(j);
+                x[small++] = a[start + j].v;
+            }
+        vm.unaryArray[int(vmath::Unary::Sin)](x, s, small);
+        vm.unaryArray[int(vmath::Unary::Cos)](x, c, small);
+        std::size_t next = 0;
+        for (std::size_t j = 0; j < n; ++j) {
+            const Dual& in = a[start + j];
+            Dual& out = dst[start + j];
+            double sj, cj;
+            if (next < small && lane[next] == j) {
+                sj = s[next];
+                cj = c[next++];
+            } else {
+                sj = vmath::eval(vmath::Unary::Sin, in.v);
+                cj = vmath::eval(vmath::Unary::Cos, in.v);
+            }
+            const double value = sine ? sj : cj, slope = sine ? cj : -sj;
+            out.v = value;
+            for (int i = 0; i < 3; ++i)
+                out.d[i] = (in.d[i] == 0.0 || slope == 0.0) ? 0.0 : slope * in.d[i];
+        }
+    }
+}
 } // namespace
 
 void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* out) {
@@ -324,10 +371,10 @@ void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* o
                 unaryLoop<Op::Square>(dst, row(ins.a, sa), m);
                 break;
             case Op::Sin:
-                unaryLoop<Op::Sin>(dst, row(ins.a, sa), m);
+                trigLoop(true, dst, row(ins.a, sa), m);
                 break;
             case Op::Cos:
-                unaryLoop<Op::Cos>(dst, row(ins.a, sa), m);
+                trigLoop(false, dst, row(ins.a, sa), m);
                 break;
             case Op::Sqrt:
                 unaryLoop<Op::Sqrt>(dst, row(ins.a, sa), m);
