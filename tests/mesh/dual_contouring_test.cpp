@@ -155,3 +155,20 @@ TEST(DualContouring, BudgetCancelProgressAndBadInput) {
     o.resolution = std::nan("");
     EXPECT_NE(meshImplicit(f, o).error.find("resolution"), std::string::npos);
 }
+
+TEST(DualContouring, TheBudgetCountsWhatTheBlocksReallyHold) {
+    // A dense gyroid passes the first, typical estimate (about kB^2 vertices
+    // a block) but holds several times that: sampling counts the real bytes
+    // and stops with the budget's message instead of running out of memory.
+    const ImplicitField f =
+        field("sin(30*x)*cos(30*y) + sin(30*y)*cos(30*z) + sin(30*z)*cos(30*x)");
+    MeshOptions o;
+    o.resolution = 96;
+    const MeshResult whole = meshImplicit(f, o);
+    ASSERT_TRUE(whole.ok()) << whole.error;
+    o.memoryBudgetBytes = std::size_t(whole.stats.activeBlocks) * 9000;
+    const MeshResult r = meshImplicit(f, o);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(r.error.find("lower the resolution"), std::string::npos) << r.error;
+    EXPECT_GT(r.stats.activeBlocks, 0u); // refused while sampling, not by the first estimate
+}
