@@ -12,7 +12,6 @@
 #include <mutex>
 #include <optional>
 #include <thread>
-#include <unordered_map>
 
 namespace fl::mesh {
 namespace {
@@ -99,10 +98,12 @@ struct PendingCrossing {
     bool done = false;
 };
 
-// What a vertex costs from sampling to the finished mesh: its place in the
-// block and in the mesh (position and normal twice), its cell's share, and
-// about two triangles in each.
-constexpr std::size_t kBytesPerVertex = 4 * sizeof(Vec3f) + 8 + 4 * sizeof(Triangle);
+// What a vertex costs from sampling to the finished mesh: in its block (its
+// position, normal and cell's share) and later (about two triangles in the
+// block, then its position, normal and triangles again in the mesh).
+constexpr std::size_t kBlockBytesPerVertex = 2 * sizeof(Vec3f) + 8;
+constexpr std::size_t kLaterBytesPerVertex = 2 * sizeof(Vec3f) + 4 * sizeof(Triangle);
+constexpr std::size_t kBytesPerVertex = kBlockBytesPerVertex + kLaterBytesPerVertex;
 
 // A cell with vertices: its corner configuration (which piece of surface
 // an edge is on), its first vertex (block-local; a cell's vertices are
@@ -311,8 +312,8 @@ class Contourer {
         // The 27 blocks around (and including) this one, looked up once.
         for (int n = 0; n < 27; ++n) {
             const BlockCoord nb{b[0] + n % 3 - 1, b[1] + n / 3 % 3 - 1, b[2] + n / 9 - 1};
-            auto it = nb[0] < 0 || nb[1] < 0 || nb[2] < 0 ? lookup_.end() : lookup_.find(keyOf(nb));
-            neighbours_[std::size_t(n)] = it == lookup_.end() ? nullptr : it->second;
+            neighbours_[std::size_t(n)] =
+                nb[0] < 0 || nb[1] < 0 || nb[2] < 0 ? nullptr : blockAt(keyOf(nb));
             neighbourCoords_[std::size_t(n)] = nb;
         }
         const long base[3] = {long(b[0]) * kB, long(b[1]) * kB, long(b[2]) * kB};
@@ -334,12 +335,9 @@ class Contourer {
         });
     }
 
-    // Global vertex lookup, valid after every block's offset is set.
-    void index(std::vector<Block>& blocks) {
-        lookup_.clear();
-        for (std::size_t i = 0; i < blocks.size(); ++i)
-            lookup_[keyOf(blocks[i].coord)] = &blocks[i];
-    }
+    // The blocks, sorted by key, shared by every thread's contourer (read
+    // only while connecting): a binary search finds a neighbour.
+    void index(const std::vector<Block>& blocks) { blocks_ = &blocks; }
 
   private:
     // The box of cells [c0, c1) of this block (clamped to the grid), or false
@@ -561,6 +559,8 @@ class Contourer {
             }
         }
         std::sort(touched_.begin(), touched_.end());
+        block.positions.reserve(touched_.size()); // one vertex per entry: no growth slack
+        block.normals.reserve(touched_.size());
         for (int index : touched_) {
             const CellQef& cq = cellQefs_[std::size_t(index)];
             const int cell = index / kPieces;
@@ -718,7 +718,13 @@ class Contourer {
     std::vector<CellQef> cellQefs_;              // per cell of the block, valid by generation
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
     std::vector<int> touched_;
-    std::unordered_map<std::uint64_t, Block*> lookup_;
+    const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
+    const Block* blockAt(std::uint64_t key) const {
+        const auto it =
+            std::lower_bound(blocks_->begin(), blocks_->end(), key,
+                             [](const Block& b, std::uint64_t k) { return keyOf(b.coord) < k; });
+        return it != blocks_->end() && keyOf(it->coord) == key ? &*it : nullptr;
+    }
     std::array<const Block*, 27> neighbours_{};
     std::array<BlockCoord, 27> neighbourCoords_{};
 };
@@ -873,7 +879,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     std::atomic<std::size_t> done{0};
     const std::size_t totalWork = 2 * blocks.size();
     auto report = [&] {
-        const std::size_t d = ++done;
+        const std::size_t d = std::min<std::size_t>(++done, totalWork); // extra blocks too
         if (options.progress && (d % 64 == 0 || d == totalWork)) {
             std::lock_guard lock(progressMutex);
             options.progress(double(d) / double(std::max<std::size_t>(totalWork, 1)));
@@ -890,27 +896,29 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     std::atomic<std::size_t> bytesHeld{0};
     std::atomic<bool> overBudgetNow{false};
     auto sample = [&](std::vector<Block>& list) {
-        parallelFor(list.size(), threads, field, perThread,
-                    [&](std::size_t i, FieldSampler& s, int w) {
-                        if (stopped || cancelled()) {
-                            stopped = true;
-                            return;
-                        }
-                        Block& b = list[i];
-                        contourers[std::size_t(w)].sampleBlock(b, s, seen[std::size_t(w)]);
-                        const std::size_t bytes = b.bytes() + b.positions.size() * kBytesPerVertex;
-                        if (bytesHeld += bytes; bytesHeld > options.memoryBudgetBytes) {
-                            overBudgetNow = true;
-                            stopped = true;
-                        }
-                        report();
-                    });
+        parallelFor(
+            list.size(), threads, field, perThread, [&](std::size_t i, FieldSampler& s, int w) {
+                if (stopped || cancelled()) {
+                    stopped = true;
+                    return;
+                }
+                Block& b = list[i];
+                contourers[std::size_t(w)].sampleBlock(b, s, seen[std::size_t(w)]);
+                const std::size_t bytes = b.bytes() + b.positions.size() * kLaterBytesPerVertex;
+                if (bytesHeld += bytes; bytesHeld > options.memoryBudgetBytes) {
+                    overBudgetNow = true;
+                    stopped = true;
+                }
+                report();
+            });
     };
     sample(blocks);
 
     // Phase 2, repeated in the rare case a neighbouring cell's block was not
-    // sampled (an interval that should have held a zero did not).
-    for (int round = 0; round < 3 && !stopped; ++round) {
+    // sampled (an interval that should have held a zero did not); the last
+    // round only connects what the one before it sampled.
+    constexpr int kRounds = 4;
+    for (int round = 0; round < kRounds && !stopped; ++round) {
         std::sort(blocks.begin(), blocks.end(),
                   [](const Block& a, const Block& b) { return keyOf(a.coord) < keyOf(b.coord); });
         std::uint32_t offset = 0;
@@ -936,7 +944,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         std::sort(extra.begin(), extra.end(),
                   [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
         extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
-        if (extra.empty()) break;
+        if (extra.empty() || round == kRounds - 1) break;
         std::vector<Block> added(extra.size());
         for (std::size_t i = 0; i < extra.size(); ++i)
             added[i].coord = extra[i];
@@ -966,8 +974,8 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     mesh.positions.reserve(vertexCount);
     mesh.normals.reserve(vertexCount);
     mesh.triangles.reserve(triangleCount);
-    // Each block's share is moved into the mesh and freed at once, so the
-    // blocks and the mesh are never both whole in memory.
+    // Each block's share is copied into the (reserved) mesh and freed at
+    // once; the budget counts both, as the allocator may keep freed pieces.
     for (Block& b : blocks) {
         result.stats.surfaceCells += b.positions.size();
         mesh.positions.insert(mesh.positions.end(), b.positions.begin(), b.positions.end());
