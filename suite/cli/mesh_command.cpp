@@ -46,11 +46,12 @@ const char* kMeshHelp =
     R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N | --points N]
        functionlab mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [options]
 
-Polygonizes the function shapes of the scene FILE — implicit and explicit ones
-in their domain boxes, parametric curves (as tubes), surfaces and solids over
-their u, v, w ranges — coloured by their FMaterial or Material and placed by
-the Transform/FTransform nodes above them; or one formula (f >= 0 inside) over
-a box. Writes OUT in the format its extension names: .stl (binary), .obj,
+Polygonizes the shapes of the scene FILE — implicit and explicit function
+shapes in their domain boxes, parametric curves (as tubes), surfaces and solids
+over their u, v, w ranges, and the standard geometry (Box ... IndexedFaceSet,
+triangle/fan/strip/quad sets, Geometry2D, NURBS, Text in the system's fonts) —
+coloured by their FMaterial or Material and placed by the Transform/FTransform
+nodes above them; or one formula (f >= 0 inside) over a box. Writes OUT in the format its extension names: .stl (binary), .obj,
 .ply (binary), .glb (glTF 2.0 binary), .x3d (vertex colours where the format
 has them). An FGeometry with `points` N > 0, or --points, gives a point cloud
 instead: on an implicit surface, through an explicit solid, over a parametric
