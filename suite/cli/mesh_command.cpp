@@ -51,11 +51,12 @@ shapes in their domain boxes, parametric curves (as tubes), surfaces and solids
 over their u, v, w ranges, and the standard geometry (Box ... IndexedFaceSet,
 triangle/fan/strip/quad sets, Geometry2D, NURBS, Text in the system's fonts) —
 coloured by their FMaterial or Material and placed by the Transform/FTransform
-nodes above them; or one formula (f >= 0 inside) over a box. Writes OUT in the format its extension names: .stl (binary), .obj,
-.ply (binary), .glb (glTF 2.0 binary), .x3d (vertex colours where the format
-has them). An FGeometry with `points` N > 0, or --points, gives a point cloud
-instead: on an implicit surface, through an explicit solid, over a parametric
-object's parameters (.ply, .obj, .glb or .x3d; STL holds only triangles).
+nodes above them; or one formula (f >= 0 inside) over a box. Writes OUT in
+the format its extension names: .stl (binary), .obj, .ply (binary), .glb
+(glTF 2.0 binary), .x3d (vertex colours where the format has them). An
+FGeometry with `points` N > 0, or --points, gives a point cloud instead: on an
+implicit surface, through an explicit solid, over a parametric object's
+parameters (.ply, .obj, .glb or .x3d; STL holds only triangles).
 
 options:
   -o, --output OUT     the file to write
