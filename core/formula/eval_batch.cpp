@@ -5,11 +5,9 @@
 #include "vector_math.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <new>
-#include <vector>
 
 namespace fl::formula {
 
@@ -170,36 +168,6 @@ FL_BATCH_LOOP void chainDispatch(const Step& s, double* const* base, double* o, 
                 : chainLoop<4, IsMin, false>(s, base, o, n);
 }
 
-// sin, cos and tan through SLEEF's arrays, bit for bit as the scalar path:
-// SLEEF reduces a whole vector the slow way when one lane is large or NaN,
-// rounding its small lanes differently from the scalar form, which decides
-// per value. So only arguments below kSmallTrig (its fast range is |x| < 15)
-// go through the arrays; the rest, rare, take the scalar form.
-void trigArray(const vmath::Implementation& vm, vmath::Unary f, const double* a, double* o,
-               std::size_t n) {
-    constexpr double kSmallTrig = 12;
-    std::size_t large = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        large += !(std::abs(a[i]) < kSmallTrig);
-    if (large == 0) {
-        vm.unaryArray[int(f)](a, o, n);
-        return;
-    }
-    std::vector<double> in, out;
-    std::vector<std::size_t> at;
-    for (std::size_t i = 0; i < n; ++i)
-        if (std::abs(a[i]) < kSmallTrig) {
-            at.push_back(i);
-            in.push_back(a[i]);
-        } else {
-            o[i] = vm.unary[int(f)](a[i]);
-        }
-    out.resize(in.size());
-    vm.unaryArray[int(f)](in.data(), out.data(), in.size());
-    for (std::size_t k = 0; k < at.size(); ++k)
-        o[at[k]] = out[k];
-}
-
 } // namespace
 
 BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape) {
@@ -352,13 +320,13 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
             vm.unaryArray[int(vmath::Unary::Log10)](base[s.a], o, n);
             break;
         case Op::Sin:
-            trigArray(vm, vmath::Unary::Sin, base[s.a], o, n);
+            vm.unaryArray[int(vmath::Unary::Sin)](base[s.a], o, n);
             break;
         case Op::Cos:
-            trigArray(vm, vmath::Unary::Cos, base[s.a], o, n);
+            vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n);
             break;
         case Op::Tan:
-            trigArray(vm, vmath::Unary::Tan, base[s.a], o, n);
+            vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n);
             break;
         case Op::Asin:
             vm.unaryArray[int(vmath::Unary::Asin)](base[s.a], o, n);

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 
 namespace fl::formula {
@@ -270,40 +269,23 @@ template <Op kOp>
 
 // sin and cos of a row at once, each through SLEEF's array form (4 lanes
 // with AVX2): a dual number needs both, and the gyroid-like formulas that
-// use them spend most of a gradient there. Same bits as ad::unary: only
-// arguments below kSmallTrig go through the arrays, because SLEEF takes a
-// slower, differently rounded argument reduction for a whole vector when
-// one lane is large or NaN, where the scalar form decides per value.
+// use them spend most of a gradient there. The arrays give the scalar bits
+// (vector_math_variant.inc), so this matches ad::unary exactly.
 void trigLoop(bool sine, Dual* dst, const Dual* a, std::size_t m) {
     constexpr std::size_t kMax = 64;
-    constexpr double kSmallTrig = 12; // SLEEF's fast reduction covers |x| < 15
     double x[kMax], s[kMax], c[kMax];
-    std::uint8_t lane[kMax];
     const auto& vm = vmath::implementation();
     for (std::size_t start = 0; start < m; start += kMax) {
         const std::size_t n = std::min(kMax, m - start);
-        std::size_t small = 0;
         for (std::size_t j = 0; j < n; ++j)
-            if (std::abs(a[start + j].v) < kSmallTrig) {
-                lane[small] = std::uint8_t(j);
-                x[small++] = a[start + j].v;
-            }
-        vm.unaryArray[int(vmath::Unary::Sin)](x, s, small);
-        vm.unaryArray[int(vmath::Unary::Cos)](x, c, small);
-        std::size_t next = 0;
+            x[j] = a[start + j].v;
+        vm.unaryArray[int(vmath::Unary::Sin)](x, s, n);
+        vm.unaryArray[int(vmath::Unary::Cos)](x, c, n);
         for (std::size_t j = 0; j < n; ++j) {
             const Dual& in = a[start + j];
             Dual& out = dst[start + j];
-            double sj, cj;
-            if (next < small && lane[next] == j) {
-                sj = s[next];
-                cj = c[next++];
-            } else {
-                sj = vmath::eval(vmath::Unary::Sin, in.v);
-                cj = vmath::eval(vmath::Unary::Cos, in.v);
-            }
-            const double value = sine ? sj : cj, slope = sine ? cj : -sj;
-            out.v = value;
+            const double slope = sine ? c[j] : -s[j];
+            out.v = sine ? s[j] : c[j];
             for (int i = 0; i < 3; ++i)
                 out.d[i] = (in.d[i] == 0.0 || slope == 0.0) ? 0.0 : slope * in.d[i];
         }
