@@ -179,7 +179,7 @@ PlanarFill fillContours(const std::vector<Contour2>& contours, FillRule rule,
 
     std::size_t nextEdge = 0;
     std::vector<const Edge*> open; // edges with y0 <= y <= y1 at the current line
-    auto touching = [&](double y) {
+    auto touching = [&](double y) -> const std::vector<const Edge*>& {
         while (nextEdge < edges.size() && edges[nextEdge].y0 <= y)
             open.push_back(&edges[nextEdge++]);
         std::erase_if(open, [&](const Edge* e) { return e->y1 < y; });

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 namespace fl::mesh {
 namespace {
@@ -46,16 +47,20 @@ std::vector<std::array<float, 4>> coloursOf(const Node& n) {
     return out;
 }
 
-// TextureCoordinate points; other texCoord nodes (generators, multi-texture)
-// leave X3D's default mapping.
-std::vector<std::array<double, 2>> texCoordsOf(const Node& n) {
-    std::vector<std::array<double, 2>> out;
-    const Node* holder = scene::effectiveNode(scene::nodeField(n, "texCoord"));
-    if (!holder || holder->type != "TextureCoordinate") return out;
-    const auto v = scene::numbersField(*holder, "point");
+// An MFVec2f/MFVec2d as pairs.
+std::vector<Point2> pairsOf(const std::vector<double>& v) {
+    std::vector<Point2> out;
     for (std::size_t i = 0; i + 1 < v.size(); i += 2)
         out.push_back({v[i], v[i + 1]});
     return out;
+}
+
+// TextureCoordinate points; other texCoord nodes (generators, multi-texture)
+// leave X3D's default mapping.
+std::vector<Point2> texCoordsOf(const Node& n) {
+    const Node* holder = scene::effectiveNode(scene::nodeField(n, "texCoord"));
+    if (!holder || holder->type != "TextureCoordinate") return {};
+    return pairsOf(scene::numbersField(*holder, "point"));
 }
 
 FaceSet commonFaceSet(const Node& n) {
@@ -71,6 +76,14 @@ FaceSet commonFaceSet(const Node& n) {
 }
 
 // Triangles written as a flat list of corners: -1 after every third.
+// 0, 1, ..., n - 1: every point in order (the non-indexed sets).
+std::vector<std::int64_t> sequence(std::size_t n) {
+    std::vector<std::int64_t> out(n);
+    for (std::size_t i = 0; i < n; ++i)
+        out[i] = std::int64_t(i);
+    return out;
+}
+
 std::vector<std::int64_t> inThrees(const std::vector<std::int64_t>& corners) {
     std::vector<std::int64_t> out;
     for (std::size_t i = 0; i + 2 < corners.size(); i += 3)
@@ -130,7 +143,8 @@ std::vector<std::int64_t> strips(const std::vector<std::vector<std::int64_t>>& g
 // with normalPerVertex, a vertex's normal is the mean of the faces sharing
 // it; else each face's own.
 void smoothUnlessNormalsGiven(FaceSet& f, const Node& g) {
-    if (f.normals.empty() && scene::boolField(g, "normalPerVertex")) f.creaseAngle = 4;
+    if (f.normals.empty() && scene::boolField(g, "normalPerVertex"))
+        f.creaseAngle = std::numbers::pi;
 }
 
 // Fan and strip sets also ignore colorPerVertex: colours are per vertex.
@@ -172,8 +186,7 @@ std::vector<std::array<double, 3>> arcPoints(double radius, double start, double
 FaceSet polyline(std::vector<std::array<double, 3>> points) {
     FaceSet f;
     f.points = std::move(points);
-    for (std::size_t i = 0; i < f.points.size(); ++i)
-        f.coordIndex.push_back(std::int64_t(i));
+    f.coordIndex = sequence(f.points.size());
     return f;
 }
 
@@ -190,10 +203,7 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
     if (type == "TriangleSet2D") {
         FaceSet f;
         f.points = planePoints(scene::numbersField(g, "vertices"));
-        std::vector<std::int64_t> all(f.points.size());
-        for (std::size_t i = 0; i < all.size(); ++i)
-            all[i] = std::int64_t(i);
-        f.coordIndex = inThrees(all);
+        f.coordIndex = inThrees(sequence(f.points.size()));
         return faceSetMesh(f);
     }
     if (type == "Disk2D") {
@@ -205,8 +215,7 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
         f.points = o;
         const std::int64_t n = std::int64_t(o.size()) - 1; // last repeats the first
         if (inner <= 0) {
-            for (std::int64_t k = 0; k < n; ++k)
-                f.coordIndex.push_back(k);
+            f.coordIndex = sequence(std::size_t(n));
         } else {
             const auto in = arcPoints(inner, 0, 0, segments);
             f.points.insert(f.points.end(), in.begin(), in.end());
@@ -224,8 +233,7 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
         const bool pie = scene::stringField(g, "closureType") != "CHORD";
         if (pie) f.points.push_back({0, 0, 0});
         f.points.insert(f.points.end(), arc.begin(), arc.end());
-        for (std::size_t i = 0; i < f.points.size(); ++i)
-            f.coordIndex.push_back(std::int64_t(i));
+        f.coordIndex = sequence(f.points.size());
         return faceSetMesh(f);
     }
     if (type == "Arc2D")
@@ -237,14 +245,6 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
             polyline(arcPoints(scene::numberField(g, "radius", 0, 1), 0, 0, segments)));
     // Polyline2D
     return lineSetMesh(polyline(planePoints(scene::numbersField(g, "lineSegments"))));
-}
-
-// NURBS: control points from a Coordinate or CoordinateDouble node.
-std::vector<Point2> pairsOf(const std::vector<double>& v) {
-    std::vector<Point2> out;
-    for (std::size_t i = 0; i + 1 < v.size(); i += 2)
-        out.push_back({v[i], v[i + 1]});
-    return out;
 }
 
 NurbsSurface nurbsSurfaceOf(const Node& g, std::vector<std::string>& warnings) {
@@ -386,10 +386,7 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         use(faceSetMesh(f));
     } else if (type == "TriangleSet") {
         FaceSet f = commonFaceSet(g);
-        std::vector<std::int64_t> all(f.points.size());
-        for (std::size_t i = 0; i < all.size(); ++i)
-            all[i] = std::int64_t(i);
-        f.coordIndex = inThrees(all);
+        f.coordIndex = inThrees(sequence(f.points.size()));
         use(faceSetMesh(f));
     } else if (type == "ElevationGrid") {
         ElevationGrid eg;
@@ -406,16 +403,9 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         use(elevationGridMesh(eg));
     } else if (type == "Extrusion") {
         Extrusion ex;
-        auto pairs = [&](const char* field) {
-            std::vector<std::array<double, 2>> out;
-            const auto v = scene::numbersField(g, field);
-            for (std::size_t i = 0; i + 1 < v.size(); i += 2)
-                out.push_back({v[i], v[i + 1]});
-            return out;
-        };
-        ex.crossSection = pairs("crossSection");
+        ex.crossSection = pairsOf(scene::numbersField(g, "crossSection"));
         ex.spine = triples(scene::numbersField(g, "spine"));
-        ex.scale = pairs("scale");
+        ex.scale = pairsOf(scene::numbersField(g, "scale"));
         if (ex.scale.empty()) ex.scale = {{1, 1}};
         ex.orientation.clear();
         const auto o = scene::numbersField(g, "orientation");
@@ -458,12 +448,8 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
                              type == "IndexedTriangleFanSet" ? fans(groups) : strips(groups), g));
     } else if (type == "QuadSet" || type == "IndexedQuadSet") {
         FaceSet f = commonFaceSet(g);
-        std::vector<std::int64_t> corners = indices(g, "index");
-        if (type == "QuadSet") {
-            corners.resize(f.points.size());
-            for (std::size_t i = 0; i < corners.size(); ++i)
-                corners[i] = std::int64_t(i);
-        }
+        const std::vector<std::int64_t> corners =
+            type == "QuadSet" ? sequence(f.points.size()) : indices(g, "index");
         for (std::size_t i = 0; i + 3 < corners.size(); i += 4)
             f.coordIndex.insert(f.coordIndex.end(),
                                 {corners[i], corners[i + 1], corners[i + 2], corners[i + 3], -1});
