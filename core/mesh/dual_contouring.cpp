@@ -127,6 +127,11 @@ struct Block {
     std::vector<Vec3f> positions;     // single precision, as the mesh keeps them
     std::vector<Vec3f> normals;
     std::uint32_t offset = 0; // first global vertex id
+    // Quads around edges whose four cells are all in this block, made while
+    // sampling (block-local vertex ids: the offset is known only later).
+    std::vector<Triangle> interior;
+    // Quads around the edges on the block's lower faces, which need the
+    // neighbouring blocks' vertices (global ids, made by the connect phase).
     std::vector<Triangle> triangles;
 
     const SurfaceCell* surfaceCell(int cell) const {
@@ -139,7 +144,7 @@ struct Block {
     std::size_t bytes() const {
         return states.capacity() + kept.capacity() + cells.capacity() * sizeof(SurfaceCell) +
                (positions.capacity() + normals.capacity()) * sizeof(Vec3f) +
-               triangles.capacity() * sizeof(Triangle);
+               (interior.capacity() + triangles.capacity()) * sizeof(Triangle);
     }
 };
 
@@ -221,6 +226,25 @@ std::int32_t vertexOf(const Block& block, int cell, int edge) {
     if (!(mask >> piece & 1u)) return -1;
     static constexpr std::uint8_t kOnes[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
     return std::int32_t(c->firstVertex) + kOnes[mask & ((1u << piece) - 1)];
+}
+
+// Two triangles for the quad q0 q1 q2 q3 (in order around its edge, facing
+// out), split along the shorter diagonal.
+void appendQuad(std::vector<Triangle>& out, const std::array<std::uint32_t, 4>& id,
+                const std::array<const Vec3f*, 4>& pos) {
+    auto dist2 = [](const Vec3f& x, const Vec3f& y) {
+        double d = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            d += (double(x[k]) - y[k]) * (double(x[k]) - y[k]);
+        return d;
+    };
+    if (dist2(*pos[0], *pos[2]) <= dist2(*pos[1], *pos[3])) {
+        out.push_back({id[0], id[1], id[2]});
+        out.push_back({id[0], id[2], id[3]});
+    } else {
+        out.push_back({id[0], id[1], id[3]});
+        out.push_back({id[1], id[2], id[3]});
+    }
 }
 
 class Contourer {
@@ -318,21 +342,34 @@ class Contourer {
         }
         const long base[3] = {long(b[0]) * kB, long(b[1]) * kB, long(b[2]) * kB};
         // Every edge this block owns with a sign change starts at the lowest
-        // corner of a cell of a kept sub-block.
-        forEachKeptCell(block, [&](int ci, int cj, int ck) {
-            const int local[3] = {ci, cj, ck};
-            const long g[3] = {base[0] + ci, base[1] + cj, base[2] + ck};
-            if (g[0] >= grid_.cells[0] || g[1] >= grid_.cells[1] || g[2] >= grid_.cells[2]) return;
-            const std::uint8_t sa = block.states[std::size_t(cornerIndex(ci, cj, ck))];
-            for (int a = 0; a < 3; ++a) {
-                int far[3] = {local[0], local[1], local[2]};
-                ++far[a];
-                const std::uint8_t sb =
-                    block.states[std::size_t(cornerIndex(far[0], far[1], far[2]))];
-                if (!crosses(sa, sb)) continue;
-                quad(block, a, local, sa == kIn, missing);
-            }
-        });
+        // corner of a cell of a kept sub-block; those with all four cells in
+        // the block were made while sampling, the rest lie on its lower faces.
+        for (std::uint8_t sub : block.kept) {
+            const int si = (sub % 4) * 2, sj = (sub / 4 % 4) * 2, sk = (sub / 16) * 2;
+            if (si != 0 && sj != 0 && sk != 0) continue;
+            for (int c = 0; c < 8; ++c)
+                connectCell(block, base, {si + (c & 1), sj + ((c >> 1) & 1), sk + ((c >> 2) & 1)},
+                            missing);
+        }
+    }
+
+    // The quads around the edges from the lowest corner of one cell that need
+    // a neighbouring block (at least one of their other two coordinates is 0).
+    void connectCell(Block& block, const long base[3], std::array<int, 3> local,
+                     std::vector<BlockCoord>& missing) {
+        if (local[0] != 0 && local[1] != 0 && local[2] != 0) return;
+        const long g[3] = {base[0] + local[0], base[1] + local[1], base[2] + local[2]};
+        if (g[0] >= grid_.cells[0] || g[1] >= grid_.cells[1] || g[2] >= grid_.cells[2]) return;
+        const std::uint8_t sa =
+            block.states[std::size_t(cornerIndex(local[0], local[1], local[2]))];
+        for (int a = 0; a < 3; ++a) {
+            if (local[(a + 1) % 3] != 0 && local[(a + 2) % 3] != 0) continue; // made already
+            int far[3] = {local[0], local[1], local[2]};
+            ++far[a];
+            const std::uint8_t sb = block.states[std::size_t(cornerIndex(far[0], far[1], far[2]))];
+            if (!crosses(sa, sb)) continue;
+            quad(block, a, local.data(), sa == kIn, missing);
+        }
     }
 
     // The blocks, sorted by key, shared by every thread's contourer (read
@@ -525,7 +562,9 @@ class Contourer {
         if (cellQefs_.size() != std::size_t(kCells * kPieces))
             cellQefs_.resize(std::size_t(kCells * kPieces));
         touched_.clear();
-        for (int slot : found_) {
+        around_.assign(found_.size(), {-1, -1, -1, -1});
+        for (std::size_t n = 0; n < found_.size(); ++n) {
+            const int slot = found_[n];
             const Crossing& x = crossings_[std::size_t(slot)];
             const int axis = slot / kCorners, c = slot % kCorners;
             const int corner[3] = {c % kC, (c / kC) % kC, c / (kC * kC)};
@@ -553,6 +592,7 @@ class Contourer {
                     cq.generation = generation_;
                     touched_.push_back(index);
                 }
+                around_[n][std::size_t(q)] = index;
                 cq.qef.add(x.point, x.normal);
                 for (std::size_t k = 0; k < 3; ++k)
                     cq.normalSum[k] += sign * x.normal[k];
@@ -589,8 +629,40 @@ class Contourer {
                 block.cells.push_back({std::uint16_t(cell), configs_[std::size_t(cell)],
                                        std::uint16_t(block.positions.size()), 0});
             block.cells.back().pieceMask |= std::uint8_t(1u << (index % kPieces));
+            cellQefs_[std::size_t(index)].vertex = std::uint32_t(block.positions.size());
             block.positions.push_back({float(p[0]), float(p[1]), float(p[2])});
             block.normals.push_back({float(n[0]), float(n[1]), float(n[2])});
+        }
+        makeInteriorQuads(block);
+    }
+
+    // The quads around the crossings this block owns whose four cells all lie
+    // in it: most of them, made here from what buildVertices knows, without
+    // looking anything up (the connect phase does the rest).
+    void makeInteriorQuads(Block& block) {
+        block.interior.clear();
+        for (std::size_t n = 0; n < found_.size(); ++n) {
+            const int slot = found_[n];
+            const int axis = slot / kCorners, c = slot % kCorners;
+            const int corner[3] = {c % kC, (c / kC) % kC, c / (kC * kC)};
+            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            if (corner[0] >= kB || corner[1] >= kB || corner[2] >= kB || corner[u] == 0 ||
+                corner[v] == 0)
+                continue; // owned by the next block, or around it a cell of the one before
+            const std::array<int, 4>& cells = around_[n];
+            if (cells[0] < 0 || cells[1] < 0 || cells[2] < 0 || cells[3] < 0)
+                continue; // at the border of the grid: left open
+            // buildVertices' cell q lies at (-(q & 1), -(q >> 1)) in (u, v);
+            // the quad goes round (-1,-1), (0,-1), (0,0), (-1,0) as connect's.
+            std::array<std::uint32_t, 4> ids{};
+            static constexpr int kOrder[4] = {3, 2, 0, 1};
+            for (std::size_t q = 0; q < 4; ++q)
+                ids[q] = cellQefs_[std::size_t(cells[std::size_t(kOrder[q])])].vertex;
+            if (block.states[std::size_t(c)] != kIn) std::swap(ids[1], ids[3]);
+            std::array<const Vec3f*, 4> pos{};
+            for (std::size_t q = 0; q < 4; ++q)
+                pos[q] = &block.positions[ids[q]];
+            appendQuad(block.interior, ids, pos);
         }
     }
 
@@ -679,23 +751,13 @@ class Contourer {
         }
         // Inside below, outside above: the surface faces +a; else the other way.
         if (!lowerInside) std::swap(refs[1], refs[3]);
-        auto id = [&](int q) { return refs[q].block->offset + std::uint32_t(refs[q].local); };
-        auto pos = [&](int q) -> const Vec3f& {
-            return refs[q].block->positions[std::size_t(refs[q].local)];
-        };
-        auto dist2 = [](const Vec3f& x, const Vec3f& y) {
-            double d = 0;
-            for (std::size_t k = 0; k < 3; ++k)
-                d += (double(x[k]) - y[k]) * (double(x[k]) - y[k]);
-            return d;
-        };
-        if (dist2(pos(0), pos(2)) <= dist2(pos(1), pos(3))) {
-            block.triangles.push_back({id(0), id(1), id(2)});
-            block.triangles.push_back({id(0), id(2), id(3)});
-        } else {
-            block.triangles.push_back({id(0), id(1), id(3)});
-            block.triangles.push_back({id(1), id(2), id(3)});
+        std::array<std::uint32_t, 4> ids{};
+        std::array<const Vec3f*, 4> pos{};
+        for (std::size_t q = 0; q < 4; ++q) {
+            ids[q] = refs[q].block->offset + std::uint32_t(refs[q].local);
+            pos[q] = &refs[q].block->positions[std::size_t(refs[q].local)];
         }
+        appendQuad(block.triangles, ids, pos);
     }
 
   private:
@@ -712,12 +774,14 @@ class Contourer {
     std::vector<formula::Dual> gradientOut_;
     struct CellQef {
         std::uint32_t generation = 0;
+        std::uint32_t vertex = 0; // block-local, once made
         Qef qef;
         Vec3 normalSum{};
     };
     std::vector<CellQef> cellQefs_;              // per cell of the block, valid by generation
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
     std::vector<int> touched_;
+    std::vector<std::array<int, 4>> around_; // per found_ crossing: its cells' QEF entries
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
     const Block* blockAt(std::uint64_t key) const {
         const auto it =
@@ -904,7 +968,10 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                 }
                 Block& b = list[i];
                 contourers[std::size_t(w)].sampleBlock(b, s, seen[std::size_t(w)]);
-                const std::size_t bytes = b.bytes() + b.positions.size() * kLaterBytesPerVertex;
+                // (the interior quads, counted among the later bytes, exist already)
+                const std::size_t later = b.positions.size() * kLaterBytesPerVertex;
+                const std::size_t made = b.interior.size() * sizeof(Triangle);
+                const std::size_t bytes = b.bytes() + later - std::min(later, made);
                 if (bytesHeld += bytes; bytesHeld > options.memoryBudgetBytes) {
                     overBudgetNow = true;
                     stopped = true;
@@ -969,7 +1036,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     std::size_t vertexCount = 0, triangleCount = 0;
     for (const Block& b : blocks) {
         vertexCount += b.positions.size();
-        triangleCount += b.triangles.size();
+        triangleCount += b.interior.size() + b.triangles.size();
     }
     mesh.positions.reserve(vertexCount);
     mesh.normals.reserve(vertexCount);
@@ -980,6 +1047,8 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         result.stats.surfaceCells += b.positions.size();
         mesh.positions.insert(mesh.positions.end(), b.positions.begin(), b.positions.end());
         mesh.normals.insert(mesh.normals.end(), b.normals.begin(), b.normals.end());
+        for (const Triangle& t : b.interior)
+            mesh.triangles.push_back({t[0] + b.offset, t[1] + b.offset, t[2] + b.offset});
         mesh.triangles.insert(mesh.triangles.end(), b.triangles.begin(), b.triangles.end());
         b = Block{};
     }
