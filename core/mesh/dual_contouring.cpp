@@ -82,8 +82,25 @@ int cubeEdge(int a, int du, int dv) {
     }
 }
 
+// A set of small indices, cleared per block and read back in increasing
+// order (which replaces sorting the lists of a block's crossings and cells).
+template <std::size_t N>
+class IndexSet {
+  public:
+    void clear() { words_.fill(0); }
+    bool contains(std::size_t i) const { return words_[i / 64] >> (i % 64) & 1u; }
+    void insert(std::size_t i) { words_[i / 64] |= std::uint64_t(1) << (i % 64); }
+    void appendTo(std::vector<int>& out) const {
+        for (std::size_t w = 0; w < words_.size(); ++w)
+            for (std::uint64_t bits = words_[w]; bits != 0; bits &= bits - 1)
+                out.push_back(int(w * 64 + std::size_t(std::countr_zero(bits))));
+    }
+
+  private:
+    std::array<std::uint64_t, (N + 63) / 64> words_{};
+};
+
 struct Crossing {
-    std::uint32_t generation = 0; // the block it was computed for (see Contourer::generation_)
     Vec3 point{};
     Vec3 normal{}; // unit gradient direction (the sign does not matter to the QEF)
 };
@@ -120,7 +137,6 @@ struct SurfaceCell {
 // What phase 1 leaves for each active block.
 struct Block {
     BlockCoord coord{};
-    std::vector<double> values;       // kCorners corner values of f, while sampling only
     std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
     std::vector<SurfaceCell> cells;   // sorted by cell
     std::vector<std::uint8_t> kept;   // the 2x2x2-cell sub-blocks that may hold surface
@@ -276,12 +292,12 @@ class Contourer {
         out_.resize(index_.size());
         if (!index_.empty())
             sampler.values(xs_.data(), ys_.data(), zs_.data(), index_.size(), out_.data());
-        block.values.assign(kCorners, std::numeric_limits<double>::quiet_NaN());
+        values_.fill(std::numeric_limits<double>::quiet_NaN());
         block.states.assign(kCorners, kUnknown);
         for (std::size_t n = 0; n < index_.size(); ++n) {
             const int c = index_[n];
             const double v = out_[n];
-            block.values[std::size_t(c)] = v;
+            values_[std::size_t(c)] = v;
             if (!cornerInBox(block, c)) {
                 block.states[std::size_t(c)] = kOut; // margin of a closed box
                 continue;
@@ -309,10 +325,9 @@ class Contourer {
                             1u << block.states[std::size_t(cornerIndex(si + di, sj + dj, sk + dk))];
             return (states & (1u << kIn | 1u << kOut)) != (1u << kIn | 1u << kOut);
         });
-        // Entries of earlier blocks are stale by generation: no clearing pass.
+        // Entries of earlier blocks are stale unless in found_: no clearing pass.
         if (crossings_.size() != std::size_t(3 * kCorners))
             crossings_.assign(std::size_t(3 * kCorners), Crossing{});
-        ++generation_;
         computeCrossings(block, sampler);
         block.cells.clear();
         block.positions.clear();
@@ -323,9 +338,6 @@ class Contourer {
                 std::int16_t(cellConfig(block.states, ci, cj, ck));
         });
         buildVertices(block, sampler);
-        // The corner values were only needed for the crossings: freeing them
-        // keeps the blocks of phase 2 small (better cached, less memory).
-        std::vector<double>().swap(block.values);
     }
 
     // The cells of the kept sub-blocks, in a fixed order.
@@ -344,12 +356,23 @@ class Contourer {
     void connectBlock(Block& block, std::vector<BlockCoord>& missing) {
         block.triangles.clear();
         const BlockCoord& b = block.coord;
-        // The 27 blocks around (and including) this one, looked up once.
-        for (int n = 0; n < 27; ++n) {
-            const BlockCoord nb{b[0] + n % 3 - 1, b[1] + n / 3 % 3 - 1, b[2] + n / 9 - 1};
-            neighbours_[std::size_t(n)] =
-                nb[0] < 0 || nb[1] < 0 || nb[2] < 0 ? nullptr : blockAt(keyOf(nb));
-            neighbourCoords_[std::size_t(n)] = nb;
+        // The 27 blocks around (and including) this one, looked up once: a
+        // column's three (along z) lie next to each other in the sorted list.
+        for (int column = 0; column < 9; ++column) {
+            const int x = b[0] + column % 3 - 1, y = b[1] + column / 3 - 1;
+            for (int dz = 0; dz < 3; ++dz) {
+                const std::size_t n = std::size_t(dz * 9 + column);
+                neighbourCoords_[n] = {x, y, b[2] + dz - 1};
+                neighbours_[n] = nullptr;
+            }
+            if (x < 0 || y < 0) continue;
+            auto it = std::lower_bound(
+                blocks_->begin(), blocks_->end(), keyOf({x, y, std::max(b[2] - 1, 0)}),
+                [](const Block& other, std::uint64_t k) { return keyOf(other.coord) < k; });
+            for (; it != blocks_->end() && it->coord[0] == x && it->coord[1] == y &&
+                   it->coord[2] <= b[2] + 1;
+                 ++it)
+                neighbours_[std::size_t((it->coord[2] - b[2] + 1) * 9 + column)] = &*it;
         }
         const long base[3] = {long(b[0]) * kB, long(b[1]) * kB, long(b[2]) * kB};
         // Every edge this block owns with a sign change starts at the lowest
@@ -443,6 +466,7 @@ class Contourer {
     void computeCrossings(const Block& block, FieldSampler& sampler) {
         pending_.clear();
         found_.clear();
+        edgesSeen_.clear();
         // The lattice edges of the kept 2x2x2-cell sub-blocks (only their
         // corners were evaluated; an edge two of them share is seen once).
         static constexpr int kStride[3] = {1, kC, kC * kC};
@@ -452,9 +476,8 @@ class Contourer {
             const std::uint8_t sa = block.states[std::size_t(c)],
                                sb = block.states[std::size_t(cb)];
             if (!crosses(sa, sb)) return;
-            Crossing& slot = crossings_[std::size_t(axis * kCorners + c)];
-            if (slot.generation == generation_) return; // seen from a neighbour
-            slot.generation = generation_;
+            if (edgesSeen_.contains(std::size_t(axis * kCorners + c))) return; // from a neighbour
+            edgesSeen_.insert(std::size_t(axis * kCorners + c));
             PendingCrossing p;
             p.slot = axis * kCorners + c;
             p.axis = axis;
@@ -462,8 +485,8 @@ class Contourer {
             p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
             p.pb = p.pa;
             p.pb[std::size_t(axis)] += grid_.h[std::size_t(axis)];
-            p.fa = block.values[std::size_t(c)];
-            p.fb = block.values[std::size_t(cb)];
+            p.fa = values_[std::size_t(c)];
+            p.fb = values_[std::size_t(cb)];
             const bool aInBox = cornerInBox(block, c), bInBox = cornerInBox(block, cb);
             if (!aInBox || !bInBox) {
                 // Through a face of the closed box: the solid ends at the
@@ -472,13 +495,11 @@ class Contourer {
                 face[std::size_t(axis)] =
                     aInBox ? field_.box.hi[std::size_t(axis)] : field_.box.lo[std::size_t(axis)];
                 const double ff = sampler.value(face);
-                Crossing& x = crossings_[std::size_t(p.slot)];
-                x.generation = generation_;
                 if (inside(ff) || std::isnan(ff)) {
+                    Crossing& x = crossings_[std::size_t(p.slot)];
                     x.point = face;
                     x.normal = {0, 0, 0};
                     x.normal[std::size_t(axis)] = 1;
-                    found_.push_back(p.slot);
                     return;
                 }
                 (aInBox ? p.pb : p.pa) = face;
@@ -547,7 +568,6 @@ class Contourer {
         for (std::size_t n = 0; n < pending_.size(); ++n) {
             const PendingCrossing& p = pending_[n];
             Crossing& x = crossings_[std::size_t(p.slot)];
-            x.generation = generation_;
             x.point = gradientAt_[n];
             bool ok = false;
             x.normal = normalised(gradientOut_[n].d, ok);
@@ -555,9 +575,8 @@ class Contourer {
                 x.normal = {0, 0, 0};
                 x.normal[std::size_t(p.axis)] = 1;
             }
-            found_.push_back(p.slot);
         }
-        std::sort(found_.begin(), found_.end()); // a fixed order, whatever happened above
+        edgesSeen_.appendTo(found_); // every edge seen has its crossing now, in a fixed order
     }
 
     // One vertex per cell the crossings touch: each crossing adds its plane
@@ -567,7 +586,7 @@ class Contourer {
                               long(block.coord[2]) * kB};
         if (cellQefs_.size() != std::size_t(kCells * kPieces))
             cellQefs_.resize(std::size_t(kCells * kPieces));
-        touched_.clear();
+        cellsTouched_.clear();
         around_.assign(found_.size(), {-1, -1, -1, -1});
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int slot = found_[n];
@@ -593,10 +612,9 @@ class Contourer {
                     cellIndex(cell[0], cell[1], cell[2]) * kPieces +
                     pieceOf(configs_[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
                 CellQef& cq = cellQefs_[std::size_t(index)];
-                if (cq.generation != generation_) {
+                if (!cellsTouched_.contains(std::size_t(index))) {
                     cq = CellQef{};
-                    cq.generation = generation_;
-                    touched_.push_back(index);
+                    cellsTouched_.insert(std::size_t(index));
                 }
                 around_[n][std::size_t(q)] = index;
                 cq.qef.add(x.point, x.normal);
@@ -604,7 +622,8 @@ class Contourer {
                     cq.normalSum[k] += sign * x.normal[k];
             }
         }
-        std::sort(touched_.begin(), touched_.end());
+        touched_.clear();
+        cellsTouched_.appendTo(touched_);
         block.positions.reserve(touched_.size()); // one vertex per entry: no growth slack
         block.normals.reserve(touched_.size());
         for (int index : touched_) {
@@ -773,28 +792,23 @@ class Contourer {
     std::vector<double> xs_, ys_, zs_, out_;
     std::vector<int> index_;
     std::vector<Crossing> crossings_;
-    std::uint32_t generation_ = 0;
     std::vector<PendingCrossing> pending_;
-    std::vector<int> found_; // crossing slots of the current block, sorted
+    std::array<double, kCorners> values_{}; // of the block being sampled (NaN: not evaluated)
+    IndexSet<3 * kCorners> edgesSeen_;      // the block's sign-changing edges, by slot
+    std::vector<int> found_;                // those edges in increasing order
     std::vector<Vec3> gradientAt_;
     std::vector<formula::Dual> gradientOut_;
     struct CellQef {
-        std::uint32_t generation = 0;
         std::uint32_t vertex = 0; // block-local, once made
         Qef qef;
         Vec3 normalSum{};
     };
-    std::vector<CellQef> cellQefs_;              // per cell of the block, valid by generation
+    std::vector<CellQef> cellQefs_; // per cell and piece of the block, valid if touched
+    IndexSet<kCells * kPieces> cellsTouched_;
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
-    std::vector<int> touched_;
+    std::vector<int> touched_;                   // cellsTouched_ in increasing order
     std::vector<std::array<int, 4>> around_;     // per found_ crossing: its cells' QEF entries
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
-    const Block* blockAt(std::uint64_t key) const {
-        const auto it =
-            std::lower_bound(blocks_->begin(), blocks_->end(), key,
-                             [](const Block& b, std::uint64_t k) { return keyOf(b.coord) < k; });
-        return it != blocks_->end() && keyOf(it->coord) == key ? &*it : nullptr;
-    }
     std::array<const Block*, 27> neighbours_{};
     std::array<BlockCoord, 27> neighbourCoords_{};
 };
