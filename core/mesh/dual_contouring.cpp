@@ -813,19 +813,33 @@ class Contourer {
     std::array<BlockCoord, 27> neighbourCoords_{};
 };
 
+using BlockRange = std::array<std::array<int, 3>, 2>; // [lo, hi) in blocks
+
 // Octree over blocks: a node whose interval cannot hold a sign change is
-// dropped with everything below it.
+// dropped with everything below it. With a split depth, the nodes reached at
+// that depth are handed back as tasks instead (their subtrees then run on
+// the threads, each with a Pruner of its own).
 struct Pruner {
+    Pruner(const Grid& g, FieldSampler& s, std::size_t blockLimit, std::atomic<std::size_t>& count,
+           int depth = -1)
+        : grid(g), sampler(s), limit(blockLimit), activeCount(count), splitDepth(depth) {}
+
     const Grid& grid;
     FieldSampler& sampler;
     std::size_t limit;
+    std::atomic<std::size_t>& activeCount; // all the pruners' active blocks
+    int splitDepth = -1;
+    std::vector<BlockRange> tasks;
     std::vector<BlockCoord> active;
     std::vector<Vec3> undefinedCentres; // boxes where f may be undefined (first few)
     std::vector<Vec3> touchCentres;     // boxes where f <= 0 reaches 0 at most (first few)
     bool overLimit = false;
 
-    void run(std::array<int, 3> lo, std::array<int, 3> hi) {
-        if (overLimit) return;
+    void run(std::array<int, 3> lo, std::array<int, 3> hi, int depth = 0) {
+        if (overLimit || activeCount > limit) {
+            overLimit = true;
+            return;
+        }
         Vec3 boxLo{}, boxHi{};
         for (std::size_t a = 0; a < 3; ++a) {
             boxLo[a] = grid.origin[a] + double(lo[a]) * kB * grid.h[a];
@@ -851,15 +865,28 @@ struct Pruner {
                 return;
             }
             active.push_back(lo);
-            if (active.size() > limit) overLimit = true;
+            if (++activeCount > limit) overLimit = true;
+            return;
+        }
+        if (depth == splitDepth) {
+            tasks.push_back({lo, hi});
             return;
         }
         const int mid = lo[axis] + (hi[axis] - lo[axis]) / 2;
         std::array<int, 3> hiA = hi, loB = lo;
         hiA[axis] = mid;
         loB[axis] = mid;
-        run(lo, hiA);
-        run(loB, hi);
+        run(lo, hiA, depth + 1);
+        run(loB, hi, depth + 1);
+    }
+
+    // A task's findings after this pruner's own, in task order.
+    void append(const Pruner& task) {
+        active.insert(active.end(), task.active.begin(), task.active.end());
+        for (const Vec3& c : task.undefinedCentres)
+            if (undefinedCentres.size() < 8) undefinedCentres.push_back(c);
+        if (touchCentres.empty()) touchCentres = task.touchCentres;
+        overLimit = overLimit || task.overLimit;
     }
 };
 
@@ -934,10 +961,27 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     const std::size_t blockLimit =
         std::max<std::size_t>(1, options.memoryBudgetBytes / bytesPerBlock);
 
+    const int threads = options.threads > 0 ? options.threads
+                                            : std::max(1, int(std::thread::hardware_concurrency()));
+    // The octree's top levels here, its subtrees (64 or fewer) on the threads.
     FieldSampler pruneSampler(field);
-    Pruner pruner{grid, pruneSampler, blockLimit, {}, {}, {}, false};
+    std::atomic<std::size_t> activeCount{0};
+    Pruner pruner(grid, pruneSampler, blockLimit, activeCount, 6);
     pruner.run({0, 0, 0}, grid.blocks);
     EvaluationCounts counts = pruneSampler.counts();
+    {
+        std::vector<EvaluationCounts> taskCounts(static_cast<std::size_t>(threads));
+        std::vector<std::optional<Pruner>> tasks(pruner.tasks.size());
+        parallelFor(tasks.size(), threads, field, taskCounts,
+                    [&](std::size_t i, FieldSampler& s, int) {
+                        Pruner& task = tasks[i].emplace(grid, s, blockLimit, activeCount);
+                        task.run(pruner.tasks[i][0], pruner.tasks[i][1]);
+                    });
+        for (const std::optional<Pruner>& task : tasks)
+            pruner.append(*task);
+        for (const EvaluationCounts& c : taskCounts)
+            counts += c;
+    }
     const std::string overBudget =
         "resolution " + std::to_string(int(options.resolution)) + " would need more than " +
         std::to_string(options.memoryBudgetBytes >> 20) +
@@ -951,8 +995,6 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     std::sort(pruner.active.begin(), pruner.active.end(),
               [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
 
-    const int threads = options.threads > 0 ? options.threads
-                                            : std::max(1, int(std::thread::hardware_concurrency()));
     std::vector<Block> blocks(pruner.active.size());
     for (std::size_t i = 0; i < blocks.size(); ++i)
         blocks[i].coord = pruner.active[i];
@@ -1052,26 +1094,30 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         return result;
     }
 
+    // Each block's share is copied to its place in the mesh (its vertices
+    // from its offset on, its triangles after the blocks before it), the
+    // blocks on the threads, and freed at once; the budget counts both, as
+    // the allocator may keep freed pieces.
     Mesh& mesh = result.mesh;
-    std::size_t vertexCount = 0, triangleCount = 0;
-    for (const Block& b : blocks) {
-        vertexCount += b.positions.size();
-        triangleCount += b.interior.size() + b.triangles.size();
-    }
-    mesh.positions.reserve(vertexCount);
-    mesh.normals.reserve(vertexCount);
-    mesh.triangles.reserve(triangleCount);
-    // Each block's share is copied into the (reserved) mesh and freed at
-    // once; the budget counts both, as the allocator may keep freed pieces.
-    for (Block& b : blocks) {
+    std::vector<std::size_t> firstTriangle(blocks.size() + 1, 0);
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const Block& b = blocks[i];
         result.stats.surfaceCells += b.positions.size();
-        mesh.positions.insert(mesh.positions.end(), b.positions.begin(), b.positions.end());
-        mesh.normals.insert(mesh.normals.end(), b.normals.begin(), b.normals.end());
-        for (const Triangle& t : b.interior)
-            mesh.triangles.push_back({t[0] + b.offset, t[1] + b.offset, t[2] + b.offset});
-        mesh.triangles.insert(mesh.triangles.end(), b.triangles.begin(), b.triangles.end());
-        b = Block{};
+        firstTriangle[i + 1] = firstTriangle[i] + b.interior.size() + b.triangles.size();
     }
+    mesh.positions.resize(result.stats.surfaceCells);
+    mesh.normals.resize(result.stats.surfaceCells);
+    mesh.triangles.resize(firstTriangle.back());
+    parallelFor(blocks.size(), threads, field, perThread, [&](std::size_t i, FieldSampler&, int) {
+        Block& b = blocks[i];
+        std::copy(b.positions.begin(), b.positions.end(), mesh.positions.begin() + b.offset);
+        std::copy(b.normals.begin(), b.normals.end(), mesh.normals.begin() + b.offset);
+        auto out = mesh.triangles.begin() + std::ptrdiff_t(firstTriangle[i]);
+        for (const Triangle& t : b.interior)
+            *out++ = {t[0] + b.offset, t[1] + b.offset, t[2] + b.offset};
+        std::copy(b.triangles.begin(), b.triangles.end(), out);
+        b = Block{};
+    });
 
     // Warnings: undefined regions, and a function that touches zero without
     // ever changing sign (no inside, so no surface).
