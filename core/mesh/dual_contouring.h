@@ -24,7 +24,7 @@ struct MeshOptions {
     double resolution = 64;
     // Regula falsi steps that move each edge crossing onto f = 0 after the
     // linear guess (0: linear interpolation only, as marching cubes does).
-    int refineSteps = 2;
+    int refineSteps = 1;
     int threads = 0;                            // 0: one per core
     std::size_t memoryBudgetBytes = 2ull << 30; // refuse (with a message) what would need more
     const std::atomic<bool>* cancel = nullptr;  // set it to stop early
