@@ -20,7 +20,8 @@ std::string num(double v, const char* format = "%.4g") {
 } // namespace
 
 std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
-                                          const std::vector<double>& resolutions, int threads,
+                                          const std::vector<double>& resolutions,
+                                          const SweepOptions& options,
                                           std::vector<std::string>* skipped) {
     std::vector<AccuracyRow> rows;
     // The error of a closed mesh's box faces is zero by construction; the
@@ -30,7 +31,8 @@ std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
     for (double res : resolutions) {
         mesh::MeshOptions o;
         o.resolution = res;
-        o.threads = threads;
+        o.threads = options.threads;
+        o.memoryBudgetBytes = options.memoryBudgetBytes;
         const mesh::MeshResult a = mesh::meshImplicit(open, o);
         if (a.ok()) {
             const mesh::SurfaceError e = mesh::measureSurfaceError(open, a.mesh);
@@ -41,7 +43,7 @@ std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
             skipped->push_back("adaptive at resolution " + num(res) + ": " +
                                (a.cancelled ? std::string("cancelled") : a.error));
         }
-        const mesh::DenseResult d = mesh::marchingCubes(open, res, threads);
+        const mesh::DenseResult d = mesh::marchingCubes(open, res, options.threads);
         const mesh::SurfaceError e = mesh::measureSurfaceError(open, d.mesh);
         rows.push_back({"dense", res, d.mesh.triangleCount(), d.evaluations.points, 0,
                         d.milliseconds, e.max, e.mean});

@@ -22,10 +22,16 @@ struct AccuracyRow {
     double meanError = 0;
 };
 
+struct SweepOptions {
+    int threads = 0;                            // both methods; 0: one per core
+    std::size_t memoryBudgetBytes = 2ull << 30; // the adaptive mesher's (mesh::MeshOptions)
+};
+
 // `skipped` (when given) gets one line per run that did not produce a row,
 // e.g. a resolution over the memory budget.
 std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
-                                          const std::vector<double>& resolutions, int threads = 0,
+                                          const std::vector<double>& resolutions,
+                                          const SweepOptions& options = {},
                                           std::vector<std::string>* skipped = nullptr);
 
 std::string accuracyTableText(const std::vector<AccuracyRow>& rows);

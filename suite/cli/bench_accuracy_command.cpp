@@ -52,7 +52,7 @@ int benchAccuracyCommand(const Args& args) {
     std::string file, formula, box, plot;
     std::vector<double> resolutions{16, 32, 64, 128, 256};
     bool json = false;
-    int threads = 0;
+    bench::SweepOptions sweep;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         const bool hasValue = i + 1 < args.size();
@@ -64,9 +64,17 @@ int benchAccuracyCommand(const Args& args) {
             box = args[++i];
         else if (a == "--plot" && hasValue)
             plot = args[++i];
-        else if (a == "--threads" && hasValue)
-            threads = std::atoi(args[++i].c_str());
-        else if (a == "--resolutions" && hasValue) {
+        else if (a == "--threads" && hasValue) {
+            sweep.threads = std::atoi(args[++i].c_str());
+            if (sweep.threads < 0) return usage("--threads must be 0 (one per core) or more");
+        } else if (a == "--memory" && hasValue) {
+            const std::string& value = args[++i];
+            char* end = nullptr;
+            const double mib = std::strtod(value.c_str(), &end);
+            if (end == value.c_str() || *end != '\0' || !(mib >= 1) || mib > double(1 << 30))
+                return usage("--memory needs a budget in MiB, e.g. --memory 8192");
+            sweep.memoryBudgetBytes = std::size_t(mib * 1024 * 1024);
+        } else if (a == "--resolutions" && hasValue) {
             if (!parseNumberList(args[++i], resolutions))
                 return usage("--resolutions needs numbers like 16,32,64");
             for (double r : resolutions)
@@ -94,7 +102,7 @@ int benchAccuracyCommand(const Args& args) {
     }
     std::vector<std::string> skipped;
     const std::vector<bench::AccuracyRow> rows =
-        bench::runAccuracySweep(field, resolutions, threads, &skipped);
+        bench::runAccuracySweep(field, resolutions, sweep, &skipped);
     for (const std::string& s : skipped)
         std::cerr << "note: no row for " << s << "\n";
     std::cout << (json ? bench::accuracyJson(rows) : bench::accuracyTableText(rows));

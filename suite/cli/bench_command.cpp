@@ -13,6 +13,7 @@ namespace {
 const char* kBenchHelp = R"(usage: functionlab bench eval [--json] [--side N] [--seconds S]
        functionlab bench accuracy FILE|--formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1
                                   [--json] [--plot OUT.svg] [--resolutions N,N,...]
+                                  [--threads N] [--memory MIB]
 
 eval    evaluates the benchmark formulas over an N^3 grid (default 64) with
         FunctionLab's batch evaluator, the same formulas hand-written in C++,
@@ -32,8 +33,10 @@ accuracy  sweeps the resolution (default 16,32,64,128,256 cells along the
         "evaluations", "ms", "max_error", "mean_error"}; --plot draws error
         against time (log-log) for both methods as SVG. Resolutions go up to
         2048; dense marching cubes at 2048 takes about a minute and 2-3 GB
-        for a sphere (the adaptive mesher keeps to its 2 GiB budget and says
-        when a resolution would exceed it).
+        for a sphere. The adaptive mesher keeps to its memory budget (--memory,
+        default 2048 MiB) and says when a resolution would exceed it; dense
+        marching cubes has none. --threads: both methods' threads (default
+        one per core).
 )";
 }
 
