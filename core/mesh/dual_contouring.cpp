@@ -448,15 +448,22 @@ class Contourer {
                         Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
                 continue;
             }
+            // Its sub-blocks with a cell in the grid (an octant at the grid's
+            // far end may stick out), and their corners.
             for (int sub = 0; sub < 8; ++sub) {
                 const int s0[3] = {o0[0] + (sub & 1) * 2, o0[1] + ((sub >> 1) & 1) * 2,
                                    o0[2] + ((sub >> 2) & 1) * 2};
+                bool inGrid = true;
+                for (std::size_t a = 0; a < 3; ++a)
+                    inGrid = inGrid && long(block.coord[a]) * kB + s0[a] < grid_.cells[a];
+                if (!inGrid) continue;
                 block.kept.push_back(std::uint8_t((s0[2] / 2 * 4 + s0[1] / 2) * 4 + s0[0] / 2));
+                for (int dk = 0; dk <= 2; ++dk)
+                    for (int dj = 0; dj <= 2; ++dj)
+                        for (int di = 0; di <= 2; ++di)
+                            needed[std::size_t(cornerIndex(s0[0] + di, s0[1] + dj, s0[2] + dk))] =
+                                true;
             }
-            for (int dk = 0; dk <= 4; ++dk)
-                for (int dj = 0; dj <= 4; ++dj)
-                    for (int di = 0; di <= 4; ++di)
-                        needed[std::size_t(cornerIndex(o0[0] + di, o0[1] + dj, o0[2] + dk))] = true;
         }
     }
 
@@ -665,18 +672,26 @@ class Contourer {
     // in it: most of them, made here from what buildVertices knows, without
     // looking anything up (the connect phase does the rest).
     void makeInteriorQuads(Block& block) {
-        block.interior.clear();
-        for (std::size_t n = 0; n < found_.size(); ++n) {
-            const int slot = found_[n];
-            const int axis = slot / kCorners, c = slot % kCorners;
+        auto interior = [&](std::size_t n) {
+            const int axis = found_[n] / kCorners, c = found_[n] % kCorners;
             const int corner[3] = {c % kC, (c / kC) % kC, c / (kC * kC)};
             const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            if (corner[0] >= kB || corner[1] >= kB || corner[2] >= kB || corner[u] == 0 ||
-                corner[v] == 0)
-                continue; // owned by the next block, or around it a cell of the one before
+            // Not owned by the next block, no cell of the one before around
+            // it, and not at the border of the grid (left open there).
             const std::array<int, 4>& cells = around_[n];
-            if (cells[0] < 0 || cells[1] < 0 || cells[2] < 0 || cells[3] < 0)
-                continue; // at the border of the grid: left open
+            return corner[0] < kB && corner[1] < kB && corner[2] < kB && corner[u] > 0 &&
+                   corner[v] > 0 && cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 &&
+                   cells[3] >= 0;
+        };
+        std::size_t count = 0; // reserved exactly: the budget counts the capacity
+        for (std::size_t n = 0; n < found_.size(); ++n)
+            count += interior(n) ? 1 : 0;
+        block.interior.clear();
+        block.interior.reserve(2 * count);
+        for (std::size_t n = 0; n < found_.size(); ++n) {
+            if (!interior(n)) continue;
+            const int c = found_[n] % kCorners;
+            const std::array<int, 4>& cells = around_[n];
             // buildVertices' cell q lies at (-(q & 1), -(q >> 1)) in (u, v);
             // the quad goes round (-1,-1), (0,-1), (0,0), (-1,0) as connect's.
             std::array<std::uint32_t, 4> ids{};
@@ -815,10 +830,27 @@ class Contourer {
 
 using BlockRange = std::array<std::array<int, 3>, 2>; // [lo, hi) in blocks
 
+// What pruning found: the blocks to mesh, and where to look for warnings.
+struct PruneFindings {
+    std::vector<BlockCoord> active;
+    std::vector<Vec3> undefinedCentres; // boxes where f may be undefined (first few)
+    std::vector<Vec3> touchCentres;     // boxes where f <= 0 reaches 0 at most (first few)
+    bool overLimit = false;
+
+    // A subtree's findings after these, in a fixed order.
+    void append(PruneFindings&& later) {
+        active.insert(active.end(), later.active.begin(), later.active.end());
+        for (const Vec3& c : later.undefinedCentres)
+            if (undefinedCentres.size() < 8) undefinedCentres.push_back(c);
+        if (touchCentres.empty()) touchCentres = std::move(later.touchCentres);
+        overLimit = overLimit || later.overLimit;
+    }
+};
+
 // Octree over blocks: a node whose interval cannot hold a sign change is
 // dropped with everything below it. With a split depth, the nodes reached at
-// that depth are handed back as tasks instead (their subtrees then run on
-// the threads, each with a Pruner of its own).
+// that depth (one axis is halved per level) are handed back as tasks instead:
+// their subtrees then run on the threads, each with a Pruner of its own.
 struct Pruner {
     Pruner(const Grid& g, FieldSampler& s, std::size_t blockLimit, std::atomic<std::size_t>& count,
            int depth = -1)
@@ -830,14 +862,11 @@ struct Pruner {
     std::atomic<std::size_t>& activeCount; // all the pruners' active blocks
     int splitDepth = -1;
     std::vector<BlockRange> tasks;
-    std::vector<BlockCoord> active;
-    std::vector<Vec3> undefinedCentres; // boxes where f may be undefined (first few)
-    std::vector<Vec3> touchCentres;     // boxes where f <= 0 reaches 0 at most (first few)
-    bool overLimit = false;
+    PruneFindings found;
 
     void run(std::array<int, 3> lo, std::array<int, 3> hi, int depth = 0) {
-        if (overLimit || activeCount > limit) {
-            overLimit = true;
+        if (found.overLimit || activeCount > limit) {
+            found.overLimit = true;
             return;
         }
         Vec3 boxLo{}, boxHi{};
@@ -851,21 +880,23 @@ struct Pruner {
         const bool possible = !r.empty() && r.lo <= 0 && r.hi > 0; // f may change sign here
         const bool touching = !possible && !r.empty() && r.hi == 0;
         if (!possible) {
-            if (r.nan && undefinedCentres.size() < 8) undefinedCentres.push_back(centre);
+            if (r.nan && found.undefinedCentres.size() < 8)
+                found.undefinedCentres.push_back(centre);
             // f <= 0 here and reaches 0 at most: a surface without an inside?
-            // Followed down to blocks (only while none is found) to say where.
-            if (!touching || !touchCentres.empty() || !active.empty()) return;
+            // Followed down to blocks (only while this pruner has found none)
+            // to say where.
+            if (!touching || !found.touchCentres.empty() || !found.active.empty()) return;
         }
         int axis = 0;
         for (int a = 1; a < 3; ++a)
             if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
         if (hi[axis] - lo[axis] == 1) {
             if (touching) {
-                touchCentres.push_back(centre);
+                found.touchCentres.push_back(centre);
                 return;
             }
-            active.push_back(lo);
-            if (++activeCount > limit) overLimit = true;
+            found.active.push_back(lo);
+            if (++activeCount > limit) found.overLimit = true;
             return;
         }
         if (depth == splitDepth) {
@@ -878,15 +909,6 @@ struct Pruner {
         loB[axis] = mid;
         run(lo, hiA, depth + 1);
         run(loB, hi, depth + 1);
-    }
-
-    // A task's findings after this pruner's own, in task order.
-    void append(const Pruner& task) {
-        active.insert(active.end(), task.active.begin(), task.active.end());
-        for (const Vec3& c : task.undefinedCentres)
-            if (undefinedCentres.size() < 8) undefinedCentres.push_back(c);
-        if (touchCentres.empty()) touchCentres = task.touchCentres;
-        overLimit = overLimit || task.overLimit;
     }
 };
 
@@ -963,22 +985,25 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
 
     const int threads = options.threads > 0 ? options.threads
                                             : std::max(1, int(std::thread::hardware_concurrency()));
-    // The octree's top levels here, its subtrees (64 or fewer) on the threads.
+    // The octree's top six levels here, their subtrees (64 or fewer) on the
+    // mesher's threads.
     FieldSampler pruneSampler(field);
     std::atomic<std::size_t> activeCount{0};
-    Pruner pruner(grid, pruneSampler, blockLimit, activeCount, 6);
-    pruner.run({0, 0, 0}, grid.blocks);
+    Pruner top(grid, pruneSampler, blockLimit, activeCount, 6);
+    top.run({0, 0, 0}, grid.blocks);
+    PruneFindings pruned = std::move(top.found);
     EvaluationCounts counts = pruneSampler.counts();
     {
         std::vector<EvaluationCounts> taskCounts(static_cast<std::size_t>(threads));
-        std::vector<std::optional<Pruner>> tasks(pruner.tasks.size());
-        parallelFor(tasks.size(), threads, field, taskCounts,
+        std::vector<PruneFindings> subtrees(top.tasks.size());
+        parallelFor(subtrees.size(), threads, field, taskCounts,
                     [&](std::size_t i, FieldSampler& s, int) {
-                        Pruner& task = tasks[i].emplace(grid, s, blockLimit, activeCount);
-                        task.run(pruner.tasks[i][0], pruner.tasks[i][1]);
+                        Pruner task(grid, s, blockLimit, activeCount);
+                        task.run(top.tasks[i][0], top.tasks[i][1]);
+                        subtrees[i] = std::move(task.found);
                     });
-        for (const std::optional<Pruner>& task : tasks)
-            pruner.append(*task);
+        for (PruneFindings& f : subtrees)
+            pruned.append(std::move(f));
         for (const EvaluationCounts& c : taskCounts)
             counts += c;
     }
@@ -987,17 +1012,17 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         std::to_string(options.memoryBudgetBytes >> 20) +
         " MiB for this shape; lower the resolution (or the target accuracy) or raise "
         "the memory budget";
-    if (pruner.overLimit) {
+    if (pruned.overLimit) {
         result.error = overBudget;
         result.stats.evaluations = counts;
         return result;
     }
-    std::sort(pruner.active.begin(), pruner.active.end(),
+    std::sort(pruned.active.begin(), pruned.active.end(),
               [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
 
-    std::vector<Block> blocks(pruner.active.size());
+    std::vector<Block> blocks(pruned.active.size());
     for (std::size_t i = 0; i < blocks.size(); ++i)
-        blocks[i].coord = pruner.active[i];
+        blocks[i].coord = pruned.active[i];
     std::vector<EvaluationCounts> perThread(static_cast<std::size_t>(threads));
     std::vector<Observations> seen(static_cast<std::size_t>(threads));
     std::atomic<bool> stopped{false};
@@ -1124,10 +1149,10 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     Observations all;
     for (const Observations& o : seen)
         all.merge(o);
-    if (all.undefinedCandidate) pruner.undefinedCentres.push_back(*all.undefinedCandidate);
+    if (all.undefinedCandidate) pruned.undefinedCentres.push_back(*all.undefinedCandidate);
     if (!all.sawNaN) {
         FieldSampler probe(field);
-        for (const Vec3& c : pruner.undefinedCentres)
+        for (const Vec3& c : pruned.undefinedCentres)
             if (std::isnan(probe.value(c))) {
                 all.sawNaN = true;
                 all.nanPoint = c;
@@ -1148,10 +1173,10 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                                   formatPoint(all.nanPoint) + where +
                                   "; the surface is meshed only where it is defined");
     }
-    if (mesh.empty() && (std::isfinite(all.maxValue) || !pruner.touchCentres.empty())) {
+    if (mesh.empty() && (std::isfinite(all.maxValue) || !pruned.touchCentres.empty())) {
         FieldSampler probe(field);
         if (!std::isfinite(all.maxValue)) {
-            all.maxPoint = pruner.touchCentres.front();
+            all.maxPoint = pruned.touchCentres.front();
             all.maxAbs = std::abs(probe.value(all.maxPoint));
         }
         const double reached = climbTowardsZero(probe, all.maxPoint);

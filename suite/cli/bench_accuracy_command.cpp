@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace fl::cli {
@@ -46,6 +47,13 @@ bool fieldFromScene(const std::string& file, mesh::ImplicitField& field, std::st
     return found;
 }
 
+// A whole number in [lo, hi] written out in full ("8192"), or none.
+std::optional<double> wholeNumber(const std::string& text, double lo, double hi) {
+    double v = 0;
+    if (!parseNumber(text, v) || !(v >= lo && v <= hi) || v != std::floor(v)) return std::nullopt;
+    return v;
+}
+
 } // namespace
 
 int benchAccuracyCommand(const Args& args) {
@@ -65,15 +73,13 @@ int benchAccuracyCommand(const Args& args) {
         else if (a == "--plot" && hasValue)
             plot = args[++i];
         else if (a == "--threads" && hasValue) {
-            sweep.threads = std::atoi(args[++i].c_str());
-            if (sweep.threads < 0) return usage("--threads must be 0 (one per core) or more");
+            const std::optional<double> n = wholeNumber(args[++i], 0, 1024);
+            if (!n) return usage("--threads needs a whole number 0..1024 (0: one per core)");
+            sweep.threads = int(*n);
         } else if (a == "--memory" && hasValue) {
-            const std::string& value = args[++i];
-            char* end = nullptr;
-            const double mib = std::strtod(value.c_str(), &end);
-            if (end == value.c_str() || *end != '\0' || !(mib >= 1) || mib > double(1 << 30))
-                return usage("--memory needs a budget in MiB, e.g. --memory 8192");
-            sweep.memoryBudgetBytes = std::size_t(mib * 1024 * 1024);
+            const std::optional<double> mib = wholeNumber(args[++i], 1, double(1 << 30));
+            if (!mib) return usage("--memory needs a budget in MiB, e.g. --memory 8192");
+            sweep.memoryBudgetBytes = std::size_t(*mib) * 1024 * 1024;
         } else if (a == "--resolutions" && hasValue) {
             if (!parseNumberList(args[++i], resolutions))
                 return usage("--resolutions needs numbers like 16,32,64");

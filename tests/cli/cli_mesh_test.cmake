@@ -85,3 +85,11 @@ expect_match("${svg}" "<svg.*polyline.*polyline.*</svg>")
 run(0 bench accuracy ${EXAMPLES}/watermelon.x3d --resolutions 8)
 expect_match("${OUT}" "at resolution 8: adaptive")
 run(2 bench accuracy --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --resolutions 0)
+# The adaptive mesher's budget: too small a one leaves its rows out with the
+# mesher's message (dense rows remain); a bad value is a usage error.
+run(0 bench accuracy --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --resolutions 64 --memory 1
+    --threads 1)
+expect_match("${OUT}" "dense +64")
+expect_match("${ERR}" "no row for adaptive at resolution 64: .*raise the memory budget")
+run(2 bench accuracy --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --memory 0.5)
+run(2 bench accuracy --formula "${SPHERE}" --box -1,-1,-1,1,1,1 --threads abc)
