@@ -78,19 +78,35 @@ std::string accuracyJson(const std::vector<AccuracyRow>& rows) {
     return out + "]\n";
 }
 
-std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
-                                  double error) {
+namespace {
+// A method's `value` at a max error, read off the log-log line between its
+// two rows whose errors bracket it; the row itself when only finer rows exist.
+template <class Value>
+std::optional<double> atError(const std::vector<AccuracyRow>& rows, const std::string& method,
+                              double error, Value value) {
     const AccuracyRow *above = nullptr, *below = nullptr;
     for (const AccuracyRow& r : rows) {
         if (r.method != method || r.ms <= 0 || r.maxError <= 0) continue;
         if (r.maxError > error && (!above || r.maxError < above->maxError)) above = &r;
         if (r.maxError <= error && (!below || r.maxError > below->maxError)) below = &r;
     }
-    if (!below) return std::nullopt;
-    if (!above || below->maxError == error) return below->ms;
+    if (!below || !(value(*below) > 0)) return std::nullopt;
+    if (!above || below->maxError == error || !(value(*above) > 0)) return value(*below);
     const double s = (std::log(error) - std::log(above->maxError)) /
                      (std::log(below->maxError) - std::log(above->maxError));
-    return std::exp(std::log(above->ms) + s * (std::log(below->ms) - std::log(above->ms)));
+    return std::exp(std::log(value(*above)) +
+                    s * (std::log(value(*below)) - std::log(value(*above))));
+}
+} // namespace
+
+std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
+                                  double error) {
+    return atError(rows, method, error, [](const AccuracyRow& r) { return r.ms; });
+}
+
+std::optional<double> evaluationsAtError(const std::vector<AccuracyRow>& rows,
+                                         const std::string& method, double error) {
+    return atError(rows, method, error, [](const AccuracyRow& r) { return double(r.evaluations); });
 }
 
 std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
@@ -133,6 +149,15 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
     if (a2 && d2 && *a2 > 0)
         out += "  interpolated at that error: adaptive " + num(*a2, "%.1f") + " ms, dense " +
                num(*d2, "%.1f") + " ms (" + num(*d2 / *a2, "%.1f") + "x)\n";
+    // "256^3-equivalent": what the adaptive mesher evaluates to reach the
+    // error of dense marching cubes at 256 (read off its own line).
+    for (const AccuracyRow& r : rows) {
+        if (r.method != "dense" || r.resolution != 256 || r.evaluations == 0) continue;
+        if (const auto e = evaluationsAtError(rows, "adaptive", r.maxError))
+            out += "at dense 256's error (" + num(r.maxError, "%.2e") + "): adaptive " +
+                   num(*e, "%.0f") + " evaluations, dense " + std::to_string(r.evaluations) + " (" +
+                   num(double(r.evaluations) / *e, "%.1f") + "x fewer)\n";
+    }
     return out;
 }
 

@@ -44,5 +44,8 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows);
 // its two rows whose errors bracket it; none when no row reaches the error.
 std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
                                   double error);
+// The same for its evaluations (points + gradients).
+std::optional<double> evaluationsAtError(const std::vector<AccuracyRow>& rows,
+                                         const std::string& method, double error);
 
 } // namespace fl::bench

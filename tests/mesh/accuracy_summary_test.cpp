@@ -38,3 +38,19 @@ TEST(AccuracySummary, TheLimitedMethodKeepsItsRowTheOtherIsInterpolated) {
         << summary;
     EXPECT_FALSE(fl::bench::timeAtError(rows, "dense", 1e-7)); // never reached
 }
+
+TEST(AccuracySummary, EvaluationsAtDense256sErrorAreReadOffTheAdaptiveLine) {
+    std::vector<AccuracyRow> rows = {row("adaptive", 128, 10, 4e-6), row("adaptive", 256, 40, 1e-6),
+                                     row("dense", 256, 50, 2e-6)};
+    rows[0].evaluations = 1000;
+    rows[1].evaluations = 4000;
+    rows[2].evaluations = 17000;
+    // Halfway (in log error) from 4e-6 to 1e-6: halfway from 1000 to 4000 in log.
+    EXPECT_NEAR(*fl::bench::evaluationsAtError(rows, "adaptive", 2e-6), 2000, 1e-9);
+    const std::string summary = fl::bench::accuracySummary(rows);
+    EXPECT_NE(
+        summary.find("at dense 256's error (2.00e-06): adaptive 2000 evaluations, dense 17000 "
+                     "(8.5x fewer)"),
+        std::string::npos)
+        << summary;
+}
