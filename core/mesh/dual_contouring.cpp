@@ -60,8 +60,21 @@ std::uint64_t keyOf(const BlockCoord& b) {
 int cornerIndex(int ci, int cj, int ck) {
     return (ck * kC + cj) * kC + ci;
 }
+// The block-local lattice coordinates of corner index c.
+std::array<int, 3> cornerAt(int c) {
+    return {c % kC, (c / kC) % kC, c / (kC * kC)};
+}
 int cellIndex(int ci, int cj, int ck) {
     return (ck * kB + cj) * kB + ci;
+}
+
+// A block's 2x2x2-cell sub-blocks are numbered 0..63 (x fastest); a
+// sub-block is named by its lowest cell, whose coordinates are even.
+std::uint8_t subBlockIndex(const int s0[3]) {
+    return std::uint8_t((s0[2] / 2 * 4 + s0[1] / 2) * 4 + s0[0] / 2);
+}
+std::array<int, 3> subBlockOrigin(std::uint8_t sub) {
+    return {(sub % 4) * 2, (sub / 4 % 4) * 2, (sub / 16) * 2};
 }
 
 // A cell holds at most four separate pieces of surface (the marching-cubes
@@ -282,7 +295,7 @@ class Contourer {
         index_.clear();
         for (int c = 0; c < kCorners; ++c) {
             if (!needed[std::size_t(c)]) continue;
-            const int ci = c % kC, cj = (c / kC) % kC, ck = c / (kC * kC);
+            const auto [ci, cj, ck] = cornerAt(c);
             const Vec3 p = grid_.corner(i0 + ci, j0 + cj, k0 + ck);
             xs_.push_back(p[0]);
             ys_.push_back(p[1]);
@@ -316,7 +329,7 @@ class Contourer {
         }
         // Only sub-blocks with corners on both sides hold sign-changing edges.
         std::erase_if(block.kept, [&](std::uint8_t sub) {
-            const int si = (sub % 4) * 2, sj = (sub / 4 % 4) * 2, sk = (sub / 16) * 2;
+            const auto [si, sj, sk] = subBlockOrigin(sub);
             unsigned states = 0;
             for (int dk = 0; dk <= 2; ++dk)
                 for (int dj = 0; dj <= 2; ++dj)
@@ -344,7 +357,7 @@ class Contourer {
     template <class F>
     static void forEachKeptCell(const Block& block, F f) {
         for (std::uint8_t sub : block.kept) {
-            const int si = (sub % 4) * 2, sj = (sub / 4 % 4) * 2, sk = (sub / 16) * 2;
+            const auto [si, sj, sk] = subBlockOrigin(sub);
             for (int c = 0; c < 8; ++c)
                 f(si + (c & 1), sj + ((c >> 1) & 1), sk + ((c >> 2) & 1));
         }
@@ -379,7 +392,7 @@ class Contourer {
         // corner of a cell of a kept sub-block; those with all four cells in
         // the block were made while sampling, the rest lie on its lower faces.
         for (std::uint8_t sub : block.kept) {
-            const int si = (sub % 4) * 2, sj = (sub / 4 % 4) * 2, sk = (sub / 16) * 2;
+            const auto [si, sj, sk] = subBlockOrigin(sub);
             if (si != 0 && sj != 0 && sk != 0) continue;
             for (int c = 0; c < 8; ++c)
                 connectCell(block, base, {si + (c & 1), sj + ((c >> 1) & 1), sk + ((c >> 2) & 1)},
@@ -457,7 +470,7 @@ class Contourer {
                 for (std::size_t a = 0; a < 3; ++a)
                     inGrid = inGrid && long(block.coord[a]) * kB + s0[a] < grid_.cells[a];
                 if (!inGrid) continue;
-                block.kept.push_back(std::uint8_t((s0[2] / 2 * 4 + s0[1] / 2) * 4 + s0[0] / 2));
+                block.kept.push_back(subBlockIndex(s0));
                 for (int dk = 0; dk <= 2; ++dk)
                     for (int dj = 0; dj <= 2; ++dj)
                         for (int di = 0; di <= 2; ++di)
@@ -516,7 +529,7 @@ class Contourer {
             pending_.push_back(p);
         };
         for (std::uint8_t sub : block.kept) {
-            const int s0[3] = {(sub % 4) * 2, (sub / 4 % 4) * 2, (sub / 16) * 2};
+            const std::array<int, 3> s0 = subBlockOrigin(sub);
             for (int axis = 0; axis < 3; ++axis) {
                 int n[3] = {3, 3, 3}; // corners along each axis of the sub-block ...
                 n[axis] = 2;          // ... and 2 edges along the scanned one
@@ -599,7 +612,7 @@ class Contourer {
             const int slot = found_[n];
             const Crossing& x = crossings_[std::size_t(slot)];
             const int axis = slot / kCorners, c = slot % kCorners;
-            const int corner[3] = {c % kC, (c / kC) % kC, c / (kC * kC)};
+            const std::array<int, 3> corner = cornerAt(c);
             const int u = (axis + 1) % 3, v = (axis + 2) % 3;
             // Outward: along the edge from its inside corner to its outside one.
             const bool lowerIn = block.states[std::size_t(c)] == kIn;
@@ -672,24 +685,22 @@ class Contourer {
     // in it: most of them, made here from what buildVertices knows, without
     // looking anything up (the connect phase does the rest).
     void makeInteriorQuads(Block& block) {
-        auto interior = [&](std::size_t n) {
-            const int axis = found_[n] / kCorners, c = found_[n] % kCorners;
-            const int corner[3] = {c % kC, (c / kC) % kC, c / (kC * kC)};
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-            // Not owned by the next block, no cell of the one before around
-            // it, and not at the border of the grid (left open there).
-            const std::array<int, 4>& cells = around_[n];
-            return corner[0] < kB && corner[1] < kB && corner[2] < kB && corner[u] > 0 &&
-                   corner[v] > 0 && cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 &&
-                   cells[3] >= 0;
-        };
-        std::size_t count = 0; // reserved exactly: the budget counts the capacity
-        for (std::size_t n = 0; n < found_.size(); ++n)
-            count += interior(n) ? 1 : 0;
-        block.interior.clear();
-        block.interior.reserve(2 * count);
+        // Not owned by the next block, no cell of the one before around it,
+        // and not at the border of the grid (left open there).
+        interiorCrossings_.clear();
         for (std::size_t n = 0; n < found_.size(); ++n) {
-            if (!interior(n)) continue;
+            const int axis = found_[n] / kCorners;
+            const std::array<int, 3> corner = cornerAt(found_[n] % kCorners);
+            const std::array<int, 4>& cells = around_[n];
+            if (corner[0] < kB && corner[1] < kB && corner[2] < kB &&
+                corner[std::size_t((axis + 1) % 3)] > 0 &&
+                corner[std::size_t((axis + 2) % 3)] > 0 && cells[0] >= 0 && cells[1] >= 0 &&
+                cells[2] >= 0 && cells[3] >= 0)
+                interiorCrossings_.push_back(n);
+        }
+        block.interior.clear();
+        block.interior.reserve(2 * interiorCrossings_.size()); // exact: the budget counts capacity
+        for (std::size_t n : interiorCrossings_) {
             const int c = found_[n] % kCorners;
             const std::array<int, 4>& cells = around_[n];
             // buildVertices' cell q lies at (-(q & 1), -(q >> 1)) in (u, v);
@@ -713,7 +724,7 @@ class Contourer {
                k < grid_.cells[2];
     }
     bool cornerInBox(const Block& block, int c) const {
-        const int ci = c % kC, cj = (c / kC) % kC, ck = c / (kC * kC);
+        const auto [ci, cj, ck] = cornerAt(c);
         return inBox(long(block.coord[0]) * kB + ci, long(block.coord[1]) * kB + cj,
                      long(block.coord[2]) * kB + ck);
     }
@@ -823,6 +834,7 @@ class Contourer {
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
     std::vector<int> touched_;                   // cellsTouched_ in increasing order
     std::vector<std::array<int, 4>> around_;     // per found_ crossing: its cells' QEF entries
+    std::vector<std::size_t> interiorCrossings_; // those of found_ makeInteriorQuads serves
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
     std::array<const Block*, 27> neighbours_{};
     std::array<BlockCoord, 27> neighbourCoords_{};
