@@ -7,11 +7,15 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 
 # Debian 12 package names. Qt, GLM, hidapi, libusb and SQLite are for the
 # viewer, haptics and grading parts; muParser is a benchmark peer only.
+# Installed with --no-install-recommends, so every package CMake needs is
+# named here even where another package only recommends it (libqt6opengl6-dev:
+# Qt6 3DRender needs Qt6OpenGL, a mere Recommends of qt6-base-dev).
+# scripts/check-fresh-machine proves this list on a clean Debian 12 root.
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev libmuparser-dev
   libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
-  qt6-base-dev qt6-3d-dev qt6-websockets-dev zlib1g-dev
+  qt6-base-dev libqt6opengl6-dev qt6-3d-dev qt6-websockets-dev zlib1g-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 # Only for scripts/fuzz (libFuzzer); skipped with a warning where the
@@ -52,8 +56,8 @@ install_missing_packages() {
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
-# configure_and_build DIR [extra cmake args...]
-configure_and_build() {
+# configure DIR [extra cmake args...]: CMake's errors reach stderr.
+configure() {
   local dir="$1"
   shift
   local generator=()
@@ -64,8 +68,18 @@ configure_and_build() {
   else
     cmake -S "$ROOT" -B "$dir" "$@" >/dev/null
   fi
-  log "building $dir"
-  cmake --build "$dir" --parallel "$(nproc 2>/dev/null || echo 2)"
+}
+
+# build DIR
+build() {
+  log "building $1"
+  cmake --build "$1" --parallel "$(nproc 2>/dev/null || echo 2)"
+}
+
+# configure_and_build DIR [extra cmake args...]
+configure_and_build() {
+  configure "$@"
+  build "$1"
 }
 
 setup() {
