@@ -1,5 +1,7 @@
 #include "mesh_export.h"
 
+#include "mesh_topology.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -278,9 +280,14 @@ std::string x3d(const Mesh& m) {
         }
         out += "'>\n        <Coordinate point='";
     } else {
-        out += points ? "      <PointSet>\n        <Coordinate point='"
-                      : "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' "
-                        "coordIndex='";
+        // Open surfaces (parametric sheets, shapes cut by their box) are
+        // seen from both sides; closed ones only from outside.
+        const bool closed = !points && analyseTopology(weldedByPosition(m)).closed();
+        out += points   ? "      <PointSet>\n        <Coordinate point='"
+               : closed ? "      <IndexedFaceSet solid='true' ccw='true' normalPerVertex='true' "
+                          "coordIndex='"
+                        : "      <IndexedFaceSet solid='false' ccw='true' normalPerVertex='true' "
+                          "coordIndex='";
     }
     for (std::size_t i = 0; !points && i < m.triangles.size(); ++i) {
         for (std::uint32_t v : m.triangles[i]) {

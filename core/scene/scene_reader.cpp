@@ -3,6 +3,7 @@
 #include "classic_reader.h"
 #include "function_definitions.h"
 #include "gzip.h"
+#include "preview_marker.h"
 #include "scene_builder.h"
 #include "scene_references.h"
 #include "xml_reader.h"
@@ -78,6 +79,8 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
         return result;
     }
     if (builder.hasErrors()) return result;
+    // A preview written by `convert` is for other browsers, not part of the scene.
+    std::erase_if(scene->roots, [](const Node* n) { return n && n->defName == kPreviewDefName; });
     references.resolveInlines();
     if (options.compileFunctions) {
         compileFunctionDefinitions(*scene, result.diagnostics);

@@ -1,0 +1,162 @@
+#include "scene_preview.h"
+
+#include "scene/node_catalogue.h"
+#include "scene/preview_marker.h"
+#include "scene_meshing.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace fl::mesh {
+namespace {
+
+// The decimal a float prints as, read back as a double: the writer prints
+// doubles exactly, and 0.1f as a double would print 0.10000000149011612.
+double shortDecimal(float v) {
+    char buf[32];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    double out = 0;
+    std::from_chars(buf, end, out);
+    return ec == std::errc() ? out : double(v);
+}
+
+// Normals and colours need no more than 4 digits to look the same.
+double fourDigits(float v) {
+    return std::round(double(v) * 1e4) / 1e4;
+}
+
+class PreviewBuilder {
+  public:
+    explicit PreviewBuilder(scene::Scene& scene) : scene_(scene) {}
+
+    scene::Node* node(std::string_view type) {
+        scene::Node* n = scene_.newNode();
+        n->type = std::string(type);
+        n->spec = scene::findNodeSpec(type);
+        return n;
+    }
+
+    static void setNodes(scene::Node& n, std::string name, scene::FieldType type,
+                         std::vector<scene::Node*> nodes) {
+        scene::Field f;
+        f.name = std::move(name);
+        f.value.type = type;
+        f.value.nodes = std::move(nodes);
+        n.fields.push_back(std::move(f));
+    }
+
+    static void setNumbers(scene::Node& n, std::string name, scene::FieldType type,
+                           std::vector<double> numbers) {
+        scene::Field f;
+        f.name = std::move(name);
+        f.value.type = type;
+        f.value.numbers = std::move(numbers);
+        n.fields.push_back(std::move(f));
+    }
+
+    scene::Node* shape(const ShapeMesh& s) {
+        const Mesh& m = s.mesh;
+        scene::Node* faces = node("IndexedFaceSet");
+        std::vector<double> index;
+        index.reserve(m.triangles.size() * 4);
+        for (const Triangle& t : m.triangles) {
+            index.insert(index.end(), {double(t[0]), double(t[1]), double(t[2]), -1.0});
+        }
+        // Implicit surfaces are open and seen from both sides.
+        setNumbers(*faces, "solid", scene::FieldType::SFBool, {s.look.solid ? 1.0 : 0.0});
+        setNumbers(*faces, "coordIndex", scene::FieldType::MFInt32, std::move(index));
+
+        scene::Node* coordinate = node("Coordinate");
+        std::vector<double> points;
+        points.reserve(m.positions.size() * 3);
+        for (const Vec3f& p : m.positions)
+            for (float c : p)
+                points.push_back(shortDecimal(c));
+        setNumbers(*coordinate, "point", scene::FieldType::MFVec3f, std::move(points));
+        setNodes(*faces, "coord", scene::FieldType::SFNode, {coordinate});
+
+        if (m.normals.size() == m.positions.size()) {
+            scene::Node* normal = node("Normal");
+            std::vector<double> vectors;
+            vectors.reserve(m.normals.size() * 3);
+            for (const Vec3f& v : m.normals)
+                for (float c : v)
+                    vectors.push_back(fourDigits(c));
+            setNumbers(*normal, "vector", scene::FieldType::MFVec3f, std::move(vectors));
+            setNodes(*faces, "normal", scene::FieldType::SFNode, {normal});
+        }
+        if (m.colours.size() == m.positions.size()) {
+            // Color (RGB), not ColorRGBA: VRML97 has only the former.
+            scene::Node* colour = node("Color");
+            std::vector<double> rgb;
+            rgb.reserve(m.colours.size() * 3);
+            for (const auto& c : m.colours)
+                for (int k = 0; k < 3; ++k)
+                    rgb.push_back(fourDigits(c[k]));
+            setNumbers(*colour, "color", scene::FieldType::MFColor, std::move(rgb));
+            setNodes(*faces, "color", scene::FieldType::SFNode, {colour});
+        }
+
+        scene::Node* material = node("Material");
+        setNumbers(*material, "diffuseColor", scene::FieldType::SFColor, {0.8, 0.8, 0.8});
+        // Color has no alpha: a see-through shape (the fan's wind, the shark's
+        // water) keeps its mean opacity as the material's transparency.
+        if (m.colours.size() == m.positions.size() && !m.colours.empty()) {
+            double opacity = 0;
+            for (const auto& c : m.colours)
+                opacity += c[3];
+            opacity /= double(m.colours.size());
+            if (opacity < 0.999)
+                setNumbers(*material, "transparency", scene::FieldType::SFFloat,
+                           {fourDigits(float(1.0 - opacity))});
+        }
+        setNumbers(*material, "specularColor", scene::FieldType::SFColor,
+                   {fourDigits(s.look.specular[0]), fourDigits(s.look.specular[1]),
+                    fourDigits(s.look.specular[2])});
+        scene::Node* appearance = node("Appearance");
+        setNodes(*appearance, "material", scene::FieldType::SFNode, {material});
+
+        scene::Node* result = node("Shape");
+        setNodes(*result, "appearance", scene::FieldType::SFNode, {appearance});
+        setNodes(*result, "geometry", scene::FieldType::SFNode, {faces});
+        return result;
+    }
+
+  private:
+    scene::Scene& scene_;
+};
+
+} // namespace
+
+PreviewResult addPreview(scene::Scene& scene, const PreviewOptions& options) {
+    SceneMeshOptions so;
+    so.mesh.resolution = options.resolution;
+    so.mesh.threads = options.threads;
+    so.useFileResolution = false;
+    so.standardShapes = false; // other browsers draw those themselves
+    so.placeInScene = true;
+    SceneMeshes meshes = meshScene(scene, so);
+
+    PreviewResult result;
+    PreviewBuilder build(scene);
+    std::vector<scene::Node*> shapes;
+    for (const ShapeMesh& s : meshes.shapes) {
+        for (const std::string& w : s.warnings)
+            result.warnings.push_back(s.name + ": " + w);
+        if (!s.error.empty()) result.warnings.push_back(s.name + ": " + s.error);
+        // Triangles only: curves and point clouds are left to FunctionLab.
+        if (!s.functionGeometry || s.mesh.primitive != Primitive::Triangles || s.mesh.empty())
+            continue;
+        shapes.push_back(build.shape(s));
+        ++result.shapes;
+        result.triangles += s.mesh.triangleCount();
+    }
+    if (shapes.empty()) return result;
+    scene::Node* group = build.node("Group");
+    group->defName = std::string(scene::kPreviewDefName);
+    PreviewBuilder::setNodes(*group, "children", scene::FieldType::MFNode, std::move(shapes));
+    scene.roots.push_back(group);
+    return result;
+}
+
+} // namespace fl::mesh
