@@ -24,26 +24,42 @@ OPTIONAL_PACKAGES=(clang libclang-rt-14-dev)
 
 log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 
+# The packages of the arguments that dpkg does not have installed.
+not_installed() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+  done
+}
+
+# Runs apt-get as root, or through sudo; the first call runs `apt-get update`.
+APT_UPDATED=0
+apt_get() {
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null 2>&1 || { log "need root or sudo to run: apt-get $*"; return 1; }
+    sudo=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  if [ "$APT_UPDATED" = 0 ]; then
+    "${sudo[@]}" apt-get update -qq || return 1
+    APT_UPDATED=1
+  fi
+  [ "${*: -1}" = update ] && return 0 # just done
+  "${sudo[@]}" apt-get "$@"
+}
+
 install_missing_packages() {
   if ! command -v dpkg-query >/dev/null 2>&1; then
     log "not a Debian/Ubuntu system: install the equivalents of: ${PACKAGES[*]}"
     return 0
   fi
-  local missing=() optional=()
-  for p in "${PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-  done
-  for p in "${OPTIONAL_PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || optional+=("$p")
-  done
+  local missing=() optional=() p
+  mapfile -t missing < <(not_installed "${PACKAGES[@]}")
+  mapfile -t optional < <(not_installed "${OPTIONAL_PACKAGES[@]}")
   [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
-  local sudo=""
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null 2>&1 || { log "need root or sudo to install: ${missing[*]}"; exit 1; }
-    sudo="sudo"
-  fi
-  export DEBIAN_FRONTEND=noninteractive
-  $sudo apt-get update -qq
+  # apt-cache knows the optional packages only after the update.
+  apt_get -qq update || exit 1
   for p in "${optional[@]}"; do
     if apt-cache show "$p" >/dev/null 2>&1; then
       missing+=("$p")
@@ -53,7 +69,42 @@ install_missing_packages() {
   done
   [ ${#missing[@]} -eq 0 ] && return 0
   log "installing: ${missing[*]}"
-  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  apt_get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# The programs the interop tests (CTest label `interop`) open our exports
+# with: Debian's view3dscene and assimp, and the Khronos glTF validator from
+# npm, pinned by tests/interop/package-lock.json and installed under
+# $BUILD_DIR/interop-tools. A tool that cannot be installed is reported and
+# its tests skip, saying so; the rest of the suite does not depend on them.
+TEST_TOOL_PACKAGES=(view3dscene assimp-utils)
+
+install_test_tools() {
+  command -v dpkg-query >/dev/null 2>&1 || { log "not Debian: interop tools not installed"; return 0; }
+  local wanted=("${TEST_TOOL_PACKAGES[@]}")
+  command -v node >/dev/null 2>&1 || wanted+=(nodejs)
+  command -v npm >/dev/null 2>&1 || wanted+=(npm)
+  local missing=()
+  mapfile -t missing < <(not_installed "${wanted[@]}")
+  if [ ${#missing[@]} -gt 0 ]; then
+    log "installing the interop test tools: ${missing[*]}"
+    apt_get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null ||
+      log "warning: could not install ${missing[*]}: their interop tests will be skipped"
+  fi
+  local tools="$BUILD_DIR/interop-tools"
+  if [ -d "$tools/node_modules/gltf-validator" ] &&
+    cmp -s "$ROOT/tests/interop/package-lock.json" "$tools/package-lock.json"; then
+    return 0
+  fi
+  if ! command -v npm >/dev/null 2>&1; then
+    log "warning: no npm: the glTF validator's interop tests will be skipped"
+    return 0
+  fi
+  log "installing the glTF validator (npm ci in $tools)"
+  mkdir -p "$tools"
+  cp "$ROOT/tests/interop/package.json" "$ROOT/tests/interop/package-lock.json" "$tools/"
+  (cd "$tools" && npm ci --no-audit --no-fund --loglevel=error >/dev/null) ||
+    log "warning: npm could not install the glTF validator: its interop tests will be skipped"
 }
 
 # configure DIR [extra cmake args...]: CMake's errors reach stderr.
