@@ -10,6 +10,7 @@
 // and answers `value()` with them (or the file's value). The viewer reads
 // `changes()` after each tick to update only what moved.
 #include "clock.h"
+#include "scene/field_source.h"
 #include "scene/scene.h"
 
 #include <cstddef>
@@ -31,10 +32,12 @@ struct AnimatorLimits {
     std::size_t maxEventsPerTimestamp = 1'000'000;
 };
 
-class Animator {
+// It is the scene's one clock (DESIGN §3): as a FieldSource it answers "what
+// does this field hold now" for meshing, rendering and the wings.
+class Animator final : public scene::FieldSource {
   public:
     explicit Animator(const scene::Scene& scene, AnimatorLimits limits = {});
-    ~Animator();
+    ~Animator() override;
     Animator(const Animator&) = delete;
     Animator& operator=(const Animator&) = delete;
 
@@ -60,7 +63,7 @@ class Animator {
     void reset();
 
     // The field's current value: set by events, else the file's, else the default.
-    scene::FieldValue value(const scene::Node& node, std::string_view field) const;
+    scene::FieldValue value(const scene::Node& node, std::string_view field) const override;
     // A function node's t at the last tick (timeSpan[0] before the first).
     double time(const scene::Node& functionNode) const;
     // Fields set since the last tick or send began, each once.

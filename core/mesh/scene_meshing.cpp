@@ -1,7 +1,6 @@
 #include "scene_meshing.h"
 
 #include "animation/clock.h"
-#include "animation/time_window.h"
 #include "colouring.h"
 #include "error_driven.h"
 #include "formula/eval_scalar.h"
@@ -22,14 +21,11 @@ namespace {
 
 using scene::Node;
 
-std::vector<double> vec(const Node& n, const char* field) {
-    return scene::numbersField(n, field);
-}
-
-// X3D Transform: T * C * R * SR * S * -SR * -C.
-Affine transformOf(const Node& n) {
-    const auto t = vec(n, "translation"), c = vec(n, "center"), s = vec(n, "scale");
-    const auto r = vec(n, "rotation"), sr = vec(n, "scaleOrientation");
+// X3D Transform: T * C * R * SR * S * -SR * -C, with the moment's values.
+Affine transformOf(const Node& n, const scene::FieldSource& fields) {
+    const auto t = fields.numbers(n, "translation"), c = fields.numbers(n, "center"),
+               s = fields.numbers(n, "scale");
+    const auto r = fields.numbers(n, "rotation"), sr = fields.numbers(n, "scaleOrientation");
     Affine srInverse = Affine::rotate(sr);
     if (sr.size() == 4) srInverse = Affine::rotate(sr[0], sr[1], sr[2], -sr[3]);
     return Affine::translate(t[0], t[1], t[2]) * Affine::translate(c[0], c[1], c[2]) *
@@ -39,8 +35,9 @@ Affine transformOf(const Node& n) {
 
 class Walker {
   public:
-    Walker(const scene::Scene& scene, const SceneMeshOptions& options, SceneMeshes& out)
-        : scene_(scene), options_(options), out_(out) {}
+    Walker(const scene::Scene& scene, const SceneMeshOptions& options, SceneMeshes& out,
+           const animation::Animator& moment)
+        : scene_(scene), options_(options), out_(out), moment_(moment) {}
 
     void walk(const Node* raw, const Affine& m) {
         const Node* n = scene::effectiveNode(raw);
@@ -63,24 +60,24 @@ class Walker {
         }
         if (viewNode(*n, m)) return;
         Affine here = m;
-        if (type == "Transform") here = m * transformOf(*n);
+        if (type == "Transform") here = m * transformOf(*n, moment_);
         if (type == "FTransform") {
             here = m * functionTransform(*n);
-            if (scene::stringField(*n, "operation") != "group") {
+            if (moment_.string(*n, "operation") != "group") {
                 composite(*n, here);
                 return;
             }
         }
         if (type == "Switch") {
-            const auto choice = scene::numberField(*n, "whichChoice", 0, -1);
-            const auto children = scene::nodesField(*n, "children");
+            const auto choice = moment_.number(*n, "whichChoice", 0, -1);
+            const auto children = moment_.nodes(*n, "children");
             if (choice >= 0 && choice < double(children.size()))
                 walk(children[std::size_t(choice)], here);
             return;
         }
         if (type == "LOD") { // the most detailed level
-            const auto levels = scene::nodesField(*n, "level");
-            const auto children = scene::nodesField(*n, "children");
+            const auto levels = moment_.nodes(*n, "level");
+            const auto children = moment_.nodes(*n, "children");
             if (!children.empty())
                 walk(children.front(), here);
             else if (!levels.empty())
@@ -89,7 +86,7 @@ class Walker {
         }
         for (const char* field : {"children"})
             if (n->spec && scene::findFieldSpec(*n->spec, field))
-                for (const Node* child : scene::nodesField(*n, field))
+                for (const Node* child : moment_.nodes(*n, field))
                     walk(child, here);
         if (n->inlined)
             for (const Node* root : n->inlined->roots)
@@ -120,50 +117,50 @@ class Walker {
         SceneView& view = out_.view;
         const std::string& type = n.type;
         auto rgb = [&](const char* field, std::array<float, 3>& out) {
-            const auto v = vec(n, field);
+            const auto v = moment_.numbers(n, field);
             if (v.size() >= 3) out = {float(v[0]), float(v[1]), float(v[2])};
         };
         if (type == "DirectionalLight" || type == "PointLight" || type == "SpotLight") {
-            if (!scene::boolField(n, "on")) return true;
+            if (!moment_.flag(n, "on")) return true;
             ViewLight l;
             l.kind = type == "DirectionalLight" ? ViewLight::Kind::Directional
                      : type == "PointLight"     ? ViewLight::Kind::Point
                                                 : ViewLight::Kind::Spot;
             rgb("color", l.colour);
-            l.intensity = float(scene::numberField(n, "intensity", 0, 1));
-            l.ambientIntensity = float(scene::numberField(n, "ambientIntensity"));
+            l.intensity = float(moment_.number(n, "intensity", 0, 1));
+            l.ambientIntensity = float(moment_.number(n, "ambientIntensity"));
             if (l.kind != ViewLight::Kind::Point) {
-                const auto d = vec(n, "direction");
+                const auto d = moment_.numbers(n, "direction");
                 if (d.size() == 3) l.direction = turn(m, {d[0], d[1], d[2]});
             }
             if (l.kind != ViewLight::Kind::Directional) {
-                const auto p = vec(n, "location");
+                const auto p = moment_.numbers(n, "location");
                 if (p.size() == 3) l.location = apply(m, p);
-                const auto a = vec(n, "attenuation");
+                const auto a = moment_.numbers(n, "attenuation");
                 if (a.size() == 3) l.attenuation = {float(a[0]), float(a[1]), float(a[2])};
-                l.radius = scene::numberField(n, "radius", 0, 100);
+                l.radius = moment_.number(n, "radius", 0, 100);
             }
             if (l.kind == ViewLight::Kind::Spot) {
-                l.beamWidth = scene::numberField(n, "beamWidth", 0, l.beamWidth);
-                l.cutOffAngle = scene::numberField(n, "cutOffAngle", 0, l.cutOffAngle);
+                l.beamWidth = moment_.number(n, "beamWidth", 0, l.beamWidth);
+                l.cutOffAngle = moment_.number(n, "cutOffAngle", 0, l.cutOffAngle);
             }
             view.lights.push_back(l);
             return true;
         }
         if (type == "Viewpoint" || type == "OrthoViewpoint") {
             ViewPoint v;
-            v.name = scene::stringField(n, "description");
+            v.name = moment_.string(n, "description");
             if (v.name.empty()) v.name = n.defName;
             if (v.name.empty()) v.name = "Viewpoint " + std::to_string(view.viewpoints.size() + 1);
-            const auto p = vec(n, "position");
+            const auto p = moment_.numbers(n, "position");
             if (p.size() == 3) v.position = apply(m, p);
-            const Affine frame = m * Affine::rotate(vec(n, "orientation"));
+            const Affine frame = m * Affine::rotate(moment_.numbers(n, "orientation"));
             v.direction = turn(frame, {0, 0, -1});
             v.up = turn(frame, {0, 1, 0});
-            const auto c = vec(n, "centerOfRotation");
+            const auto c = moment_.numbers(n, "centerOfRotation");
             if (c.size() == 3) v.centerOfRotation = apply(m, c);
             if (type == "Viewpoint")
-                v.fieldOfView = scene::numberField(n, "fieldOfView", 0, v.fieldOfView);
+                v.fieldOfView = moment_.number(n, "fieldOfView", 0, v.fieldOfView);
             view.viewpoints.push_back(v);
             return true;
         }
@@ -176,10 +173,10 @@ class Walker {
         }
         if (type == "NavigationInfo") {
             if (!view.hasNavigation) {
-                view.navigation.types = scene::stringsField(n, "type");
-                view.navigation.headlight = scene::boolField(n, "headlight");
-                view.navigation.speed = scene::numberField(n, "speed", 0, 1);
-                const auto a = vec(n, "avatarSize");
+                view.navigation.types = moment_.strings(n, "type");
+                view.navigation.headlight = moment_.flag(n, "headlight");
+                view.navigation.speed = moment_.number(n, "speed", 0, 1);
+                const auto a = moment_.numbers(n, "avatarSize");
                 for (std::size_t i = 0; i < 3 && i < a.size(); ++i)
                     view.navigation.avatarSize[i] = a[i];
                 view.hasNavigation = true;
@@ -194,21 +191,8 @@ class Walker {
                ")";
     }
 
-    // The node's t at the moment asked for.
-    double timeOf(const Node& n) const {
-        const animation::TimeWindow w = animation::timeWindowOf(
-            scene::numberField(n, "startTime"), scene::numberField(n, "stopTime"),
-            scene::numberField(n, "cycleInterval", 0, 1), scene::boolField(n, "loop"));
-        const auto span = vec(n, "timeSpan");
-        const std::int64_t seconds = animation::secondsToNanoseconds(options_.sceneSeconds);
-        const animation::Instant instant =
-            options_.instant.value_or(animation::Instant{seconds, seconds, 0});
-        const std::int64_t now =
-            instant.nanosecondsOn(animation::parseTimeBase(scene::stringField(n, "timeBase"))
-                                      .value_or(animation::TimeBase::Scene));
-        return animation::functionTime(w, span.size() > 0 ? span[0] : 0,
-                                       span.size() > 1 ? span[1] : 1, now);
-    }
+    // The node's t at the moment asked for: the one clock's answer.
+    double timeOf(const Node& n) const { return moment_.time(n); }
 
     // translation, rotationAngle about rotationAxis and scale as functions of t, about center.
     Affine functionTransform(const Node& n) {
@@ -224,7 +208,7 @@ class Walker {
         const auto tr = outputs("translation", {0, 0, 0});
         const auto angle = outputs("rotationAngle", {0});
         const auto sc = outputs("scale", {1, 1, 1});
-        const auto axis = vec(n, "rotationAxis"), c = vec(n, "center");
+        const auto axis = moment_.numbers(n, "rotationAxis"), c = moment_.numbers(n, "center");
         if (tr.size() < 3 || sc.size() < 3 || angle.empty()) return {};
         return Affine::translate(tr[0], tr[1], tr[2]) * Affine::translate(c[0], c[1], c[2]) *
                Affine::rotate(axis[0], axis[1], axis[2], angle[0]) *
@@ -232,13 +216,13 @@ class Walker {
     }
 
     void shape(const Node& n, const Affine& m) {
-        const Node* geometry = scene::effectiveNode(scene::nodeField(n, "geometry"));
+        const Node* geometry = scene::effectiveNode(moment_.node(n, "geometry"));
         if (!geometry) return; // lends its properties to the shapes grouped with it
         if (geometry->type != "FGeometry") {
             standardShape(n, *geometry, m);
             return;
         }
-        const std::string type = scene::stringField(*geometry, "type");
+        const std::string type = moment_.string(*geometry, "type");
         const formula::Tape* tape = scene_.definition(*geometry, "definition");
         ShapeMesh sm;
         sm.shape = &n;
@@ -259,9 +243,9 @@ class Walker {
         sm.parameters = field.parameters;
         // A displacement texture: added to f here, or moves a parametric
         // surface along its normals once meshed.
-        const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
+        const Node* appearance = scene::effectiveNode(moment_.node(n, "appearance"));
         const Node* texture =
-            appearance ? scene::effectiveNode(scene::nodeField(*appearance, "texture")) : nullptr;
+            appearance ? scene::effectiveNode(moment_.node(*appearance, "texture")) : nullptr;
         std::optional<Displacement> displacement;
         if (texture && texture->type == "FTexture3D")
             if (const formula::Tape* d = scene_.definition(*texture, "definition"))
@@ -271,9 +255,8 @@ class Walker {
         MeshResult r;
         // A point cloud instead of a mesh: asked for by the file or the caller.
         const std::size_t points =
-            options_.points > 0
-                ? options_.points
-                : std::size_t(std::max(0.0, scene::numberField(*geometry, "points")));
+            options_.points > 0 ? options_.points
+                                : std::size_t(std::max(0.0, moment_.number(*geometry, "points")));
         PointCloudOptions pc;
         pc.count = points;
         pc.threads = o.threads;
@@ -288,12 +271,12 @@ class Walker {
             pf.box = field.box;
             const char* ranges[3] = {"uRange", "vRange", "wRange"};
             for (std::size_t k = 0; k < 3; ++k) {
-                const auto range = vec(*geometry, ranges[k]);
+                const auto range = moment_.numbers(*geometry, ranges[k]);
                 pf.ranges[k] = {range[0], range[1]};
             }
             ParametricOptions po;
             po.resolution = options_.useFileResolution || options_.targetError > 0
-                                ? scene::numberField(*geometry, "resolution", 0, 32)
+                                ? moment_.number(*geometry, "resolution", 0, 32)
                                 : o.resolution;
             if (auto it = options_.resolutions.find(geometry); it != options_.resolutions.end())
                 po.resolution = it->second;
@@ -323,7 +306,7 @@ class Walker {
                                       std::to_string(e.error.max) + " of the box diagonal");
         } else {
             if (options_.useFileResolution)
-                o.resolution = scene::numberField(*geometry, "resolution", 0, 32);
+                o.resolution = moment_.number(*geometry, "resolution", 0, 32);
             if (auto it = options_.resolutions.find(geometry); it != options_.resolutions.end())
                 o.resolution = it->second;
             sm.resolution = o.resolution;
@@ -388,7 +371,7 @@ class Walker {
         sm.functionGeometry = false;
         sm.mesh = std::move(r.mesh);
         sm.warnings = std::move(r.warnings);
-        const Node* appearance = scene::effectiveNode(scene::nodeField(n, "appearance"));
+        const Node* appearance = scene::effectiveNode(moment_.node(n, "appearance"));
         sm.look = lookOf(appearance, n.type == "FShape");
         sm.look.solid = r.solid;
         sm.look.texture =
@@ -400,7 +383,8 @@ class Walker {
         if (sm.mesh.isLines() && sm.mesh.colours.empty()) {
             // X3D lines take the Material's emissive colour (white without one).
             const Node* material = materialOf(appearance);
-            const auto e = material ? vec(*material, "emissiveColor") : std::vector<double>{};
+            const auto e =
+                material ? moment_.numbers(*material, "emissiveColor") : std::vector<double>{};
             const std::array<float, 4> c =
                 e.size() == 3 ? std::array<float, 4>{float(e[0]), float(e[1]), float(e[2]), 1}
                               : std::array<float, 4>{1, 1, 1, 1};
@@ -410,7 +394,7 @@ class Walker {
             colour(appearance, boundsOf(sm.mesh), sm);
         } else if (const Node* material = materialOf(appearance)) {
             // A Color node replaces the diffuse colour; the material's transparency stays.
-            const float alpha = float(1 - scene::numberField(*material, "transparency"));
+            const float alpha = float(1 - moment_.number(*material, "transparency"));
             for (auto& c : sm.mesh.colours)
                 c[3] *= alpha;
         }
@@ -418,9 +402,8 @@ class Walker {
         out_.shapes.push_back(std::move(sm));
     }
 
-    static const Node* materialOf(const Node* appearance) {
-        return appearance ? scene::effectiveNode(scene::nodeField(*appearance, "material"))
-                          : nullptr;
+    const Node* materialOf(const Node* appearance) const {
+        return appearance ? scene::effectiveNode(moment_.node(*appearance, "material")) : nullptr;
     }
 
     static Box3 boundsOf(const Mesh& m) {
@@ -437,7 +420,7 @@ class Walker {
     }
 
     // The constant light terms of the appearance's Material or FMaterial.
-    static SurfaceLook lookOf(const Node* appearance, bool functionShape) {
+    SurfaceLook lookOf(const Node* appearance, bool functionShape) const {
         SurfaceLook look;
         const Node* material = materialOf(appearance);
         if (!material) {
@@ -445,13 +428,13 @@ class Walker {
             return look;
         }
         auto rgb = [&](const char* field, std::array<float, 3>& out) {
-            const auto v = vec(*material, field);
+            const auto v = moment_.numbers(*material, field);
             if (v.size() == 3) out = {float(v[0]), float(v[1]), float(v[2])};
         };
         rgb("emissiveColor", look.emissive);
         rgb("specularColor", look.specular);
-        look.shininess = float(scene::numberField(*material, "shininess", 0, 0.2));
-        look.ambientIntensity = float(scene::numberField(*material, "ambientIntensity", 0, 0.2));
+        look.shininess = float(moment_.number(*material, "shininess", 0, 0.2));
+        look.ambientIntensity = float(moment_.number(*material, "ambientIntensity", 0, 0.2));
         return look;
     }
 
@@ -471,9 +454,9 @@ class Walker {
         const Node* n = scene::effectiveNode(raw);
         if (!n) return;
         if (n->type == "FShape") {
-            const Node* geometry = scene::effectiveNode(scene::nodeField(*n, "geometry"));
+            const Node* geometry = scene::effectiveNode(moment_.node(*n, "geometry"));
             if (!geometry || geometry->type != "FGeometry" ||
-                scene::stringField(*geometry, "type") == "parametric") {
+                moment_.string(*geometry, "type") == "parametric") {
                 out_.notes.push_back(nameOf(*n) +
                                      ": only implicit and explicit geometry takes part in "
                                      "an FTransform's set operation; left out");
@@ -503,17 +486,17 @@ class Walker {
                 f = b.min(f, b.sub(formula::Val::constant(box.hi[k]), in[k]));
             }
             out.push_back({f, mesh::boundsOf(box, toLocal),
-                           scene::effectiveNode(scene::nodeField(*n, "appearance")),
-                           scene::numberField(*geometry, "resolution", 0, 32)});
+                           scene::effectiveNode(moment_.node(*n, "appearance")),
+                           moment_.number(*geometry, "resolution", 0, 32)});
             return;
         }
         if (n->type == "Transform" || n->type == "FTransform") {
-            const Affine inner =
-                toLocal * (n->type == "Transform" ? transformOf(*n) : functionTransform(*n));
+            const Affine inner = toLocal * (n->type == "Transform" ? transformOf(*n, moment_)
+                                                                   : functionTransform(*n));
             std::vector<Piece> pieces;
-            for (const Node* child : scene::nodesField(*n, "children"))
+            for (const Node* child : moment_.nodes(*n, "children"))
                 collect(child, inner, b, local, pieces);
-            if (n->type == "FTransform" && scene::stringField(*n, "operation") != "group" &&
+            if (n->type == "FTransform" && moment_.string(*n, "operation") != "group" &&
                 !pieces.empty()) {
                 out.push_back(combine(*n, pieces, b, local));
                 return;
@@ -522,13 +505,13 @@ class Walker {
             return;
         }
         if (n->spec && scene::findFieldSpec(*n->spec, "children"))
-            for (const Node* child : scene::nodesField(*n, "children"))
+            for (const Node* child : moment_.nodes(*n, "children"))
                 collect(child, toLocal, b, local, out);
     }
 
     Piece combine(const Node& ft, const std::vector<Piece>& pieces, formula::TapeBuilder& b,
                   const std::array<formula::Val, formula::kInputCount>& local) {
-        const std::string op = scene::stringField(ft, "operation");
+        const std::string op = moment_.string(ft, "operation");
         Piece r = pieces.front();
         for (const Piece& p : pieces) {
             r.resolution = std::max(r.resolution, p.resolution);
@@ -585,7 +568,7 @@ class Walker {
         for (int i = 0; i < formula::kInputCount; ++i)
             local[std::size_t(i)] = b.input(formula::Input(i));
         std::vector<Piece> pieces;
-        for (const Node* child : scene::nodesField(ft, "children"))
+        for (const Node* child : moment_.nodes(ft, "children"))
             collect(child, Affine{}, b, local, pieces);
         ShapeMesh sm;
         sm.shape = &ft;
@@ -600,7 +583,7 @@ class Walker {
         field.box = whole.box;
         if (!field.box.valid()) {
             sm.error = "the children's boxes do not overlap: the " +
-                       scene::stringField(ft, "operation") + " is empty";
+                       moment_.string(ft, "operation") + " is empty";
             out_.shapes.push_back(std::move(sm));
             return;
         }
@@ -663,21 +646,21 @@ class Walker {
     // coordinates (before the transforms above it move the mesh).
     void colour(const Node* appearance, const Box3& geometryBox, ShapeMesh& sm) {
         const Node* material =
-            appearance ? scene::effectiveNode(scene::nodeField(*appearance, "material")) : nullptr;
+            appearance ? scene::effectiveNode(moment_.node(*appearance, "material")) : nullptr;
         if (!material || sm.mesh.empty()) return;
         ColourField cf;
         cf.geometryBox = geometryBox;
         cf.componentBox = geometryBox;
-        const auto diffuse = vec(*material, "diffuseColor");
+        const auto diffuse = moment_.numbers(*material, "diffuseColor");
         if (diffuse.size() == 3) cf.fallback = {diffuse[0], diffuse[1], diffuse[2]};
-        cf.constantTransparency = scene::numberField(*material, "transparency");
+        cf.constantTransparency = moment_.number(*material, "transparency");
         if (material->type == "FMaterial") {
             if (const formula::Tape* tape = scene_.definition(*material, "definition"))
                 cf.colour = *tape;
             if (const formula::Tape* tape = scene_.definition(*material, "transparencyDefinition"))
                 cf.transparency = *tape;
-            cf.key = vec(*material, "key");
-            const auto kv = vec(*material, "keyValue");
+            cf.key = moment_.numbers(*material, "key");
+            const auto kv = moment_.numbers(*material, "keyValue");
             for (std::size_t i = 0; i + 2 < kv.size(); i += 3)
                 cf.keyValue.push_back({kv[i], kv[i + 1], kv[i + 2]});
             cf.componentBox = domainOf(*material);
@@ -690,6 +673,7 @@ class Walker {
     const scene::Scene& scene_;
     const SceneMeshOptions& options_;
     SceneMeshes& out_;
+    const animation::Animator& moment_; // the one clock at the moment meshed
     static constexpr std::size_t kMaxVisits = 200000;
     std::size_t visits_ = 0;
     bool overBudget_ = false;
@@ -704,9 +688,21 @@ Box3 domainOf(const scene::Node& node) {
     return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
+animation::Instant momentOf(const SceneMeshOptions& options) {
+    const std::int64_t seconds = animation::secondsToNanoseconds(options.sceneSeconds);
+    return options.instant.value_or(animation::Instant{seconds, seconds, 0});
+}
+
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options) {
     SceneMeshes out;
-    Walker walker(scene, options, out);
+    // Without the caller's clock, the moment is replayed from the start: one
+    // tick at it, as every other cold reader of the same moment does.
+    std::unique_ptr<animation::Animator> own;
+    if (!options.animator) {
+        own = std::make_unique<animation::Animator>(scene);
+        own->tick(momentOf(options));
+    }
+    Walker walker(scene, options, out, options.animator ? *options.animator : *own);
     for (const Node* root : scene.roots)
         walker.walk(root, {});
     return out;

@@ -3,8 +3,10 @@
 // (implicit, explicit, parametric) in its domain box at the geometry's own t
 // for that moment, and the standard geometry of Shape and FShape nodes (Box,
 // Sphere, IndexedFaceSet, ...), each coloured by its appearance and placed by
-// the Transform and FTransform nodes above it.
+// the Transform and FTransform nodes above it, with the values the scene's
+// animation (TimeSensors, interpolators, ROUTEs) gives them at that moment.
 #include "affine.h"
+#include "animation/animator.h"
 #include "animation/clock.h"
 #include "dual_contouring.h"
 #include "mesh.h"
@@ -31,6 +33,12 @@ struct SceneMeshOptions {
     // The moment on every clock (a running viewer's timeline): overrides
     // sceneSeconds, so `timeBase "local"` nodes (the clock) show the real time.
     std::optional<animation::Instant> instant;
+    // The one clock (DESIGN §3): every field (a Transform's rotation set by an
+    // interpolator, a Material's colour ...) and every function node's t is
+    // read from it. Null: meshScene runs the scene's animation to the moment
+    // above itself, from the start, as a cold `render --time` does (design
+    // notes: a moment is replayed, not stepped to). Not owned.
+    const animation::Animator* animator = nullptr;
     // > 0: every function shape as a cloud of about this many points (its
     // FGeometry's `points` field otherwise; 0 there: a mesh).
     std::size_t points = 0;
@@ -107,6 +115,9 @@ struct SceneMeshes {
 };
 
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options);
+
+// The moment SceneMeshOptions names: `instant`, else sceneSeconds on every clock.
+animation::Instant momentOf(const SceneMeshOptions& options);
 
 // A function node's domain box (domainMin .. domainMax).
 Box3 domainOf(const scene::Node& node);

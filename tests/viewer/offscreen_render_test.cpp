@@ -114,6 +114,34 @@ TEST(OffscreenRender, TheBouncingSphereMovesBetweenTwoMoments) {
               0.02);
 }
 
+// Pixels covered in one frame and not in the other, within columns [x0, x1).
+double movedShare(const QImage& a, const QImage& b, int x0, int x1) {
+    const QColor background = a.pixelColor(0, 0);
+    std::size_t moved = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = x0; x < x1; ++x)
+            moved += (a.pixelColor(x, y) != background) != (b.pixelColor(x, y) != background);
+    return double(moved) / double(a.height() * (x1 - x0));
+}
+
+TEST(OffscreenRender, TheSharksTailSwingsAndItsBodyStays) {
+    // TimeSensor SWIM (5 s) -> OrientationInterpolator TAIL_SWING -> the
+    // tail's Transform: +0.4 rad at a quarter of the cycle, -0.4 at three.
+    auto scene = example("shark.x3d");
+    const Frame rest = render(*scene, "shark-0s", 0.0);
+    const Frame left = render(*scene, "shark-1.25s", 1.25);
+    const Frame right = render(*scene, "shark-3.75s", 3.75);
+    ASSERT_FALSE(rest.image.isNull() || left.image.isNull() || right.image.isNull())
+        << rest.error.toStdString();
+    const int w = rest.image.width();
+    // The tail is the left third of the frame, the body and head the right half.
+    for (const Frame* f : {&left, &right}) {
+        EXPECT_GT(movedShare(rest.image, f->image, 0, w / 3), 0.003) << "the tail did not move";
+        EXPECT_LT(movedShare(rest.image, f->image, w / 2, w), 0.0005) << "the body moved";
+    }
+    EXPECT_GT(movedShare(left.image, right.image, 0, w / 3), 0.003);
+}
+
 TEST(OffscreenRender, TheClockFaceIsCreamAtTenOClock) {
     auto scene = example("clock.x3d");
     const Frame f = render(*scene, "clock-10h", 10 * 3600);
