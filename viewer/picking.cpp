@@ -180,7 +180,10 @@ std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& mes
         if (!s.error.empty()) continue;
         std::optional<Pick> p = onFunction(scene, s, ray);
         if (!p) p = onTriangles(s, ray);
-        if (p && (!best || p->distance < best->distance)) best = p;
+        if (p && (!best || p->distance < best->distance)) {
+            best = p;
+            best->touchSensors = s.touchSensors;
+        }
     }
     return best;
 }

@@ -14,6 +14,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fl::viewer {
 
@@ -31,6 +32,8 @@ struct Pick {
     double distance = 0;            // along the ray
     std::string shape;              // the ShapeMesh's name
     bool onFunction = false;        // found on f = 0 (else on a triangle)
+    // The TouchSensors a click here triggers (the ShapeMesh's).
+    std::vector<const scene::Node*> touchSensors;
 };
 
 std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& meshes,

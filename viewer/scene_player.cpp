@@ -24,6 +24,7 @@ ScenePlayer::~ScenePlayer() {
 
 void ScenePlayer::setScene(std::shared_ptr<const scene::Scene> scene) {
     scene_ = std::move(scene);
+    inputs_.clear(); // they name the old scene's nodes
     plan_ = scene_ ? scene::makeEffectsPlan(*scene_) : scene::EffectsPlan{};
     resolutions_.clear(); // they name the old scene's nodes
     cancel_ = true;       // the frame in progress is for the old scene
@@ -44,6 +45,9 @@ void ScenePlayer::pause() {
 
 void ScenePlayer::seek(double seconds) {
     timeline_.seek(animation::secondsToNanoseconds(seconds));
+    // What the user did after the moment sought has not happened there.
+    const std::int64_t now = timeline_.now().sceneNs;
+    std::erase_if(inputs_, [&](const Input& i) { return i.at.sceneNs > now; });
     Q_EMIT timeChanged(sceneSeconds());
     request();
 }
@@ -75,6 +79,29 @@ void ScenePlayer::refresh() {
     request();
 }
 
+bool ScenePlayer::touch(const scene::Node& sensor) {
+    if (!scene_ || sensor.type != "TouchSensor") return false;
+    bool ours = false;
+    for (const scene::Scene* s : scene::scenesShownBy(*scene_))
+        s->forEachNode([&](const scene::Node& n) { ours = ours || &n == &sensor; });
+    if (!ours) return false;
+    const animation::Instant now = timeline_.now();
+    auto single = [](scene::FieldType type, double v) {
+        scene::FieldValue value;
+        value.type = type;
+        value.numbers = {v};
+        return value;
+    };
+    // X3D 20.4.4: pressing sends isActive TRUE, releasing over the geometry
+    // isActive FALSE and touchTime (UTC seconds, as every SFTime).
+    inputs_.push_back({&sensor, "isActive", single(scene::FieldType::SFBool, 1), now});
+    inputs_.push_back({&sensor, "isActive", single(scene::FieldType::SFBool, 0), now});
+    inputs_.push_back(
+        {&sensor, "touchTime", single(scene::FieldType::SFTime, now.x3dSeconds()), now});
+    request();
+    return true;
+}
+
 void ScenePlayer::tick() {
     Q_EMIT timeChanged(sceneSeconds());
     // A static scene looks the same at every moment: nothing to redo.
@@ -88,7 +115,7 @@ bool ScenePlayer::busy() const {
 
 void ScenePlayer::request() {
     if (!scene_) return;
-    Request r{scene_, timeline_.now(), resolution_, parameters_, resolutions_};
+    Request r{scene_, timeline_.now(), inputs_, resolution_, parameters_, resolutions_};
     std::lock_guard lock(mutex_);
     if (working_) {
         pending_ = std::move(r); // replaces any older one: stale frames are dropped
@@ -118,6 +145,14 @@ void ScenePlayer::startWorker(Request r) {
         }
         mesh::SceneMeshes made;
         try {
+            // The one clock for this frame, replayed from the start: the
+            // user's events at their moments, then this moment. Its own
+            // animator per frame, so the interface never waits on a worker.
+            animation::Animator clock(*r.scene);
+            for (const Input& input : r.inputs)
+                clock.sensorOutput(*input.node, input.field, input.value, input.at);
+            clock.tick(r.instant);
+            o.animator = &clock;
             made = mesh::meshScene(*r.scene, o);
         } catch (const std::exception& e) {
             // Out of memory on a hostile scene, say: the interface stays up

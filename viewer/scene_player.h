@@ -50,6 +50,13 @@ class ScenePlayer : public QObject {
     void setParameters(std::vector<std::pair<std::string, double>> values);
     // Mesh the current moment again now (after a seek while paused, say).
     void refresh();
+    // A click on a shape under `sensor` (a TouchSensor) at the current moment:
+    // isActive TRUE, then FALSE with touchTime, and their ROUTEs (the fan
+    // starts turning). Kept with the moment and replayed into every later
+    // frame; seeking back before it forgets it. False when the sensor is not
+    // of the scene being played.
+    bool touch(const scene::Node& sensor);
+    std::size_t inputsKept() const { return inputs_.size(); }
     // Advance the timeline and ask for a frame if the scene varies with time;
     // the timer calls it about 30 times a second while playing.
     void tick();
@@ -65,9 +72,17 @@ class ScenePlayer : public QObject {
     void timeChanged(double sceneSeconds);
 
   private:
+    // One event from the user, delivered to the one clock at its moment.
+    struct Input {
+        const scene::Node* node = nullptr;
+        std::string field;
+        scene::FieldValue value;
+        animation::Instant at;
+    };
     struct Request {
         std::shared_ptr<const scene::Scene> scene;
         animation::Instant instant;
+        std::vector<Input> inputs; // up to `instant`, oldest first
         double resolution = 0;
         std::vector<std::pair<std::string, double>> parameters;
         std::unordered_map<const scene::Node*, double> resolutions;
@@ -81,6 +96,7 @@ class ScenePlayer : public QObject {
     const animation::WallClock& clock_;
     animation::SceneTimeline timeline_;
     std::shared_ptr<const scene::Scene> scene_;
+    std::vector<Input> inputs_; // the user's events on scene_, oldest first
     scene::EffectsPlan plan_;
     double resolution_ = 0;
     std::vector<std::pair<std::string, double>> parameters_;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <optional>
 #include <unordered_set>
+#include <utility>
 
 namespace fl::mesh {
 namespace {
@@ -55,16 +56,21 @@ class Walker {
         }
         const std::string& type = n->type;
         if (type == "FShape" || type == "Shape") {
+            const std::size_t first = out_.shapes.size();
             shape(*n, m);
+            senseTouches(first);
             return;
         }
+        const SensorScope sensors(*this, *n);
         if (viewNode(*n, m)) return;
         Affine here = m;
         if (type == "Transform") here = m * transformOf(*n, moment_);
         if (type == "FTransform") {
             here = m * functionTransform(*n);
             if (moment_.string(*n, "operation") != "group") {
+                const std::size_t first = out_.shapes.size();
                 composite(*n, here);
+                senseTouches(first);
                 return;
             }
         }
@@ -94,6 +100,37 @@ class Walker {
     }
 
   private:
+    // The TouchSensors among a group's children sense every shape below it
+    // while the walk is inside that group; the lowest group with any shadows
+    // those above it (X3D 19775-1 §20.2.1: the lowest sensors are activated).
+    struct SensorScope {
+        SensorScope(Walker& w, const Node& group) : walker(w) {
+            if (!group.spec || !scene::findFieldSpec(*group.spec, "children")) return;
+            std::vector<const Node*> here;
+            for (const Node* child : w.moment_.nodes(group, "children")) {
+                const Node* sensor = scene::effectiveNode(child);
+                if (sensor && sensor->type == "TouchSensor" && w.moment_.flag(*sensor, "enabled"))
+                    here.push_back(sensor);
+            }
+            if (here.empty()) return;
+            outer = std::exchange(w.touchSensors_, std::move(here));
+            shadowing = true;
+        }
+        ~SensorScope() {
+            if (shadowing) walker.touchSensors_ = std::move(outer);
+        }
+        SensorScope(const SensorScope&) = delete;
+        SensorScope& operator=(const SensorScope&) = delete;
+        Walker& walker;
+        std::vector<const Node*> outer;
+        bool shadowing = false;
+    };
+
+    void senseTouches(std::size_t firstShape) {
+        for (std::size_t i = firstShape; i < out_.shapes.size(); ++i)
+            out_.shapes[i].touchSensors = touchSensors_;
+    }
+
     static std::array<double, 3> apply(const Affine& m, const std::vector<double>& p) {
         std::array<double, 3> out{};
         for (int k = 0; k < 3; ++k)
@@ -673,7 +710,8 @@ class Walker {
     const scene::Scene& scene_;
     const SceneMeshOptions& options_;
     SceneMeshes& out_;
-    const animation::Animator& moment_; // the one clock at the moment meshed
+    const animation::Animator& moment_;     // the one clock at the moment meshed
+    std::vector<const Node*> touchSensors_; // of the lowest group the walk is inside that has any
     static constexpr std::size_t kMaxVisits = 200000;
     std::size_t visits_ = 0;
     bool overBudget_ = false;

@@ -100,6 +100,9 @@ struct ShapeMesh {
     std::vector<std::pair<std::string, double>> parameters; // `param` values used
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
+    // The enabled TouchSensors a click on this shape triggers: those beside
+    // it, or beside the lowest group above it that has any (X3D §20.2.1).
+    std::vector<const scene::Node*> touchSensors;
     std::vector<std::string> warnings;
     std::string error;
 };

@@ -152,6 +152,10 @@ MainWindow::MainWindow(QWidget* parent)
             return;
         }
         view_->setMarker(QVector3D(float(p->point[0]), float(p->point[1]), float(p->point[2])));
+        // A TouchSensor over the shape hears the click (the fan starts).
+        if (meshes->source == scene_)
+            for (const scene::Node* sensor : p->touchSensors)
+                player_->touch(*sensor);
         statusBar()->showMessage(tr("(%1, %2, %3) on %4%5")
                                      .arg(p->point[0], 0, 'g', 6)
                                      .arg(p->point[1], 0, 'g', 6)

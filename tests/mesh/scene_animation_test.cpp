@@ -179,3 +179,52 @@ TEST(SceneAnimation, FunctionShapesTakeTheirTFromTheOneClock) {
     }
     EXPECT_TRUE(found);
 }
+
+TEST(SceneAnimation, ShapesKnowTheTouchSensorsAClickOnThemTriggers) {
+    auto s = read(R"(#X3D V3.3 utf8
+PROFILE Immersive
+Group {
+  children [
+    DEF OUTER TouchSensor {}
+    DEF NEAR Shape { geometry Box {} }
+    Transform {
+      children [
+        DEF INNER TouchSensor {}
+        DEF OFF TouchSensor { enabled FALSE }
+        DEF DEEP Shape { geometry Sphere {} }
+      ]
+    }
+    Transform { children DEF BELOW Shape { geometry Cone {} } }
+  ]
+}
+DEF ALONE Shape { geometry Cylinder {} }
+)");
+    const mesh::SceneMeshes m = meshAt(*s, 0);
+    auto sensorsOf = [&](const std::string& def) {
+        std::vector<std::string> names;
+        for (const scene::Node* n : shapeNamed(m, def).touchSensors)
+            names.push_back(n->defName);
+        return names;
+    };
+    EXPECT_EQ(sensorsOf("NEAR"), std::vector<std::string>{"OUTER"});
+    EXPECT_EQ(sensorsOf("BELOW"), std::vector<std::string>{"OUTER"});
+    // The lowest group's enabled sensors shadow those above (X3D §20.2.1).
+    EXPECT_EQ(sensorsOf("DEEP"), std::vector<std::string>{"INNER"});
+    EXPECT_TRUE(sensorsOf("ALONE").empty());
+
+    // The fan: a click on its head reaches SWITCH, on its stand nothing.
+    auto fan = readExample("fan.x3d");
+    const mesh::SceneMeshes f = meshAt(*fan, 0);
+    std::size_t sensed = 0, deaf = 0;
+    for (const auto& shape : f.shapes) {
+        if (shape.touchSensors.empty()) {
+            ++deaf;
+            continue;
+        }
+        ++sensed;
+        ASSERT_EQ(shape.touchSensors.size(), 1u);
+        EXPECT_EQ(shape.touchSensors[0]->defName, "SWITCH");
+    }
+    EXPECT_GT(sensed, 0u);
+    EXPECT_GT(deaf, 0u);
+}

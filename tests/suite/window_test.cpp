@@ -3,6 +3,7 @@
 #include "main_window.h"
 #include "mesh_geometry.h"
 #include "navigation.h"
+#include "picking.h"
 #include "scene_player.h"
 #include "scene_widget.h"
 #include "timeline_bar.h"
@@ -20,6 +21,9 @@
 #include <QTextBlock>
 #include <QToolButton>
 #include <QTreeWidget>
+
+#include <optional>
+#include <vector>
 
 using namespace fl;
 
@@ -216,6 +220,62 @@ class WindowTest : public QObject {
         QVERIFY(settle(w));
         QVERIFY(w.player()->framesDelivered() > frames); // the hands moved ...
         QCOMPARE(w.player()->meshesMade(), made);        // ... without a single new mesh
+    }
+
+    void clickingTheFanStartsItsBlades() {
+        // TouchSensor SWITCH -> touchTime -> TimeSensor SPIN.startTime ->
+        // OrientationInterpolator ROTOR -> the blades' Transform.
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("fan.x3d")));
+        QVERIFY(settle(w));
+        auto placements = [&] {
+            std::vector<mesh::Matrix4> out;
+            for (const auto& s : w.view()->meshes()->shapes)
+                out.push_back(s.placement);
+            return out;
+        };
+        auto playFor = [&](int ms) {
+            w.player()->play();
+            QTest::qWait(ms);
+            w.player()->pause();
+            return settle(w);
+        };
+        // Played before the click, nothing turns.
+        QVERIFY(playFor(400));
+        const auto before = placements();
+        QVERIFY(playFor(400));
+        QVERIFY(placements() == before);
+
+        // A pixel on the fan's head, found by the window's own picking.
+        const auto meshes = w.view()->meshes();
+        std::optional<QPoint> head;
+        for (int y = 0; y < w.view()->height() && !head; y += 4)
+            for (int x = 0; x < w.view()->width() && !head; x += 4) {
+                const auto p = viewer::pick(
+                    *meshes->source, *meshes,
+                    viewer::rayThroughPixel(w.view()->pose(), w.view()->size(), QPointF(x, y)));
+                if (p && !p->touchSensors.empty()) head = QPoint(x, y);
+            }
+        QVERIFY2(head, "no pixel of the view shows a shape under the TouchSensor");
+        const QImage still = w.view()->grabFrame();
+        QTest::mouseClick(w.view()->renderWindow(), Qt::LeftButton, {}, *head);
+        QTRY_VERIFY_WITH_TIMEOUT(w.player()->inputsKept() > 0, 3000);
+
+        // Now the blades turn: their Transform differs from one moment to the next.
+        QVERIFY(playFor(300));
+        const auto first = placements();
+        QVERIFY(playFor(300));
+        const auto second = placements();
+        QVERIFY(first != before || second != before);
+        QVERIFY(first != second);
+        const QImage turning = w.view()->grabFrame();
+        QVERIFY(turning != still);
+        save(still, "fan-before-click");
+        save(turning, "fan-turning");
     }
 
     void approachingTheWatermelonRefinesItInAFewRemeshes() {
