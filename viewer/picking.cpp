@@ -74,6 +74,31 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
         std::max(s.domain.diagonal() / 512 / std::max(length(along), 1e-300), span / 100000);
     if (!std::isfinite(step) || !(step > 0)) return std::nullopt;
     double a = t0, fa = value(a);
+    // An explicit solid is cut by its box: a ray that enters the box inside
+    // the solid (f > 0 there) hits the box face that closes it.
+    if (t0 > 0 && fa > 0 && scene::stringField(*s.geometry, "type") == "explicit") {
+        const Vec3 local = at(t0);
+        std::size_t axis = 0;
+        double nearest = 1e300, side = 1;
+        for (std::size_t k = 0; k < 3; ++k)
+            for (const double face : {s.domain.lo[k], s.domain.hi[k]})
+                if (std::abs(local[k] - face) < nearest) {
+                    nearest = std::abs(local[k] - face);
+                    axis = k;
+                    side = face == s.domain.lo[k] ? -1 : 1;
+                }
+        Vec3 world{};
+        for (int r = 0; r < 3; ++r)
+            world[std::size_t(r)] = back->m[axis][r] * side;
+        Pick p;
+        p.point = place.point(local);
+        p.normal = unit(world);
+        p.distance = length({p.point[0] - ray.origin.x(), p.point[1] - ray.origin.y(),
+                             p.point[2] - ray.origin.z()});
+        p.shape = s.name;
+        p.onFunction = true;
+        return p;
+    }
     int steps = 0;
     for (double b = std::min(t0 + step, t1);; b = std::min(b + step, t1)) {
         // A step lost to rounding (a camera very far away) or a march too
@@ -103,6 +128,13 @@ std::optional<Pick> onFunction(const scene::Scene& scene, const mesh::ShapeMesh&
             Pick p;
             p.point = place.point(local);
             p.normal = unit(world);
+            // An implicit surface f = 0 has no outside: its normal faces the eye.
+            if (scene::stringField(*s.geometry, "type") == "implicit" &&
+                p.normal[0] * ray.direction.x() + p.normal[1] * ray.direction.y() +
+                        p.normal[2] * ray.direction.z() >
+                    0)
+                for (double& c : p.normal)
+                    c = -c;
             p.distance = length({p.point[0] - ray.origin.x(), p.point[1] - ray.origin.y(),
                                  p.point[2] - ray.origin.z()});
             p.shape = s.name;

@@ -28,7 +28,7 @@ Ray rayThroughPixel(const CameraPose& pose, QSize viewport, QPointF pixel);
 
 struct Pick {
     std::array<double, 3> point{};  // in the scene
-    std::array<double, 3> normal{}; // unit, outward
+    std::array<double, 3> normal{}; // unit, outward (an implicit surface: towards the eye)
     double distance = 0;            // along the ray
     std::string shape;              // the ShapeMesh's name
     bool onFunction = false;        // found on f = 0 (else on a triangle)

@@ -51,6 +51,9 @@ struct MeshResult {
     std::vector<std::string> warnings; // NaN regions, no sign change, ...
     std::string error;                 // set when nothing was meshed (budget, bad box)
     bool cancelled = false;
+    // False for an implicit surface (BoxBoundary::Open) that leaves its box or
+    // does not close: it has two sides to show. Set by those who orient it.
+    bool closedSurface = true;
     bool ok() const { return error.empty() && !cancelled; }
 };
 

@@ -311,12 +311,19 @@ std::string x3d(const Mesh& m) {
         out += "'/>\n";
     }
     if (colours) {
-        out += "        <ColorRGBA color='";
+        // Opaque colours as Color: a ColorRGBA makes viewers (view3dscene)
+        // blend the shape as see-through, and a two-sided open mesh then
+        // shows its back faces through its front.
+        const bool opaque = std::all_of(m.colours.begin(), m.colours.end(),
+                                        [](const auto& c) { return c[3] >= 1.0f; });
+        out += opaque ? "        <Color color='" : "        <ColorRGBA color='";
         for (std::size_t i = 0; i < m.colours.size(); ++i) {
             const auto& c = m.colours[i];
             appendTriple(out, i ? ", " : "", c[0], c[1], c[2]);
-            out += ' ';
-            out += number(c[3]);
+            if (!opaque) {
+                out += ' ';
+                out += number(c[3]);
+            }
         }
         out += "'/>\n";
     }

@@ -63,4 +63,18 @@ Mesh weldedByPosition(const Mesh& mesh) {
     return out;
 }
 
+bool orientClosedSurfaceOutward(Mesh& mesh) {
+    if (mesh.isPointCloud() || mesh.isLines() || mesh.triangles.empty()) return false;
+    const Topology t = analyseTopology(mesh);
+    if (!t.closed() || !t.consistentlyOriented()) return false;
+    if (t.signedVolume < 0) {
+        for (Triangle& tri : mesh.triangles)
+            std::swap(tri[1], tri[2]);
+        for (Vec3f& n : mesh.normals)
+            for (float& c : n)
+                c = -c;
+    }
+    return true;
+}
+
 } // namespace fl::mesh

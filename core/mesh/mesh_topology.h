@@ -29,4 +29,11 @@ Topology analyseTopology(const Mesh& mesh);
 // topology of the surface itself (closed once welded).
 Mesh weldedByPosition(const Mesh& mesh);
 
+// An implicit surface f = 0 has no preferred side, so its triangles face
+// whichever way the sign of f says. When the surface closes on itself (a
+// sphere written x^2+y^2+z^2-r^2), turns them and the normals to face out of
+// the volume it encloses and returns true; leaves an open surface as it is
+// and returns false.
+bool orientClosedSurfaceOutward(Mesh& mesh);
+
 } // namespace fl::mesh

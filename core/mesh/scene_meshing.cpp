@@ -6,6 +6,7 @@
 #include "formula/eval_scalar.h"
 #include "formula/tape_builder.h"
 #include "formula/tape_compose.h"
+#include "mesh_topology.h"
 #include "parametric.h"
 #include "point_cloud.h"
 #include "scene/field_access.h"
@@ -271,9 +272,19 @@ class Walker {
         }
         sm.geometry = geometry;
         sm.domain = domainOf(*geometry);
+        // `implicit`: the surface f = 0, whichever side is positive: not closed
+        // by its box, oriented by the volume it encloses (if it closes), else
+        // seen from both sides. `explicit`: the FRep solid f >= 0, cut by its box.
+        const bool surface = type == "implicit";
+        auto orient = [surface](MeshResult&& made) {
+            if (surface && made.ok() && !made.mesh.isPointCloud())
+                made.closedSurface = orientClosedSurfaceOutward(made.mesh);
+            return std::move(made);
+        };
         ImplicitField field;
         field.tape = *tape;
         field.box = domainOf(*geometry);
+        if (surface) field.boundary = BoxBoundary::Open;
         field.t = timeOf(*geometry);
         field.parameters = parametersFor(*tape);
         sm.t = field.t;
@@ -336,7 +347,7 @@ class Walker {
             }
         } else if (options_.targetError > 0) {
             ErrorDrivenResult e = meshForError(field, options_.targetError, o);
-            r = std::move(e.result);
+            r = orient(std::move(e.result));
             sm.measuredError = e.error.max;
             if (r.ok() && !e.met)
                 sm.warnings.push_back("the target error was not reached: " +
@@ -348,7 +359,7 @@ class Walker {
                 o.resolution = it->second;
             sm.resolution = o.resolution;
             r = cached(MeshCache::keyOf(field, o.resolution),
-                       [&] { return meshImplicit(field, o); });
+                       [&] { return orient(meshImplicit(field, o)); });
         }
         sm.stats = r.stats;
         sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
@@ -361,6 +372,7 @@ class Walker {
         }
         colour(appearance, field.box, sm);
         sm.look = lookOf(appearance, n.type == "FShape");
+        if (surface && !sm.mesh.isPointCloud()) sm.look.solid = r.closedSurface;
         // A parametric surface has two sides and no inside: both are drawn.
         // (Curves become closed tubes and solids their closed boundary.)
         if (type == "parametric") {

@@ -3,6 +3,7 @@
 #include "classic_reader.h"
 #include "function_definitions.h"
 #include "gzip.h"
+#include "implicit_sides.h"
 #include "preview_marker.h"
 #include "scene_builder.h"
 #include "scene_references.h"
@@ -85,6 +86,8 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
     if (options.compileFunctions) {
         compileFunctionDefinitions(*scene, result.diagnostics);
         if (hasErrors(result.diagnostics)) return result;
+        for (SceneDiagnostic& d : checkImplicitSides(*scene))
+            result.diagnostics.push_back(std::move(d));
     }
     result.scene = std::move(scene);
     return result;

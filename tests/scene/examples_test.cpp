@@ -84,3 +84,15 @@ TEST(Examples, ImplicitGalleryIsStatic) {
 }
 
 } // namespace
+
+TEST(Examples, SurfacesLoadWithoutAWarning) {
+    // The paper's sphere and a torus, negative inside, as implicit surfaces
+    // that take part in nothing needing an inside: no warning to give.
+    ReadResult r = readSceneFile(kExamples + "/surfaces.x3d");
+    ASSERT_TRUE(r.ok());
+    for (const auto& d : r.diagnostics)
+        ADD_FAILURE() << formatSceneDiagnostic(d);
+    EffectsPlan p = makeEffectsPlan(*r.scene);
+    EXPECT_EQ(p.timeVarying, kStatic);
+    EXPECT_EQ(p.functionShapes, 4u);
+}

@@ -11,6 +11,7 @@
 #include <QDir>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <memory>
 
@@ -74,9 +75,9 @@ double notBackground(const QImage& image) {
 } // namespace
 
 TEST(OffscreenRender, EveryExampleDrawsSomething) {
-    for (const char* file :
-         {"watermelon.x3d", "watermelon.x3dv", "bouncing_sphere.x3d", "clock.x3d", "fan.x3d",
-          "implicit_gallery.x3d", "metamorphosis.x3d", "shark.x3d", "textured_sphere.x3d"}) {
+    for (const char* file : {"watermelon.x3d", "watermelon.x3dv", "bouncing_sphere.x3d",
+                             "clock.x3d", "fan.x3d", "implicit_gallery.x3d", "metamorphosis.x3d",
+                             "shark.x3d", "surfaces.x3d", "textured_sphere.x3d"}) {
         auto scene = example(file);
         ASSERT_TRUE(scene);
         const Frame f = render(*scene, std::string("example-") + file);
@@ -140,6 +141,74 @@ TEST(OffscreenRender, TheSharksTailSwingsAndItsBodyStays) {
         EXPECT_LT(movedShare(rest.image, f->image, w / 2, w), 0.0005) << "the body moved";
     }
     EXPECT_GT(movedShare(left.image, right.image, 0, w / 3), 0.003);
+}
+
+TEST(OffscreenRender, ThePapersSphereIsADiscAndTheTorusARing) {
+    // x^2 + y^2 + z^2 - R^2 = 0 (negative inside, as the paper writes it) is
+    // a sphere, not the grey cube of the box closing its outside.
+    auto sphere = text("COMPONENT FunctionLab:1\nViewpoint { position 0 0 3 }\n"
+                       "FShape { geometry FGeometry { type \"implicit\" "
+                       "definition \"x^2 + y^2 + z^2 - 0.5\" } }\n");
+    const Frame disc = render(*sphere, "implicit-paper-sphere");
+    ASSERT_FALSE(disc.image.isNull()) << disc.error.toStdString();
+    const QColor background = disc.image.pixelColor(0, 0);
+    int left = disc.image.width(), right = -1, top = disc.image.height(), bottom = -1;
+    double sx = 0, sy = 0, n = 0;
+    for (int y = 0; y < disc.image.height(); ++y)
+        for (int x = 0; x < disc.image.width(); ++x)
+            if (disc.image.pixelColor(x, y) != background) {
+                left = std::min(left, x), right = std::max(right, x);
+                top = std::min(top, y), bottom = std::max(bottom, y);
+                sx += x, sy += y, ++n;
+            }
+    // Radius sqrt(0.5) seen from 3 with a 45 degree view: about 70 pixels of 120.
+    const double radius = std::tan(std::asin(std::sqrt(0.5) / 3)) / std::tan(0.3927) * 120;
+    EXPECT_NEAR(sx / n, 160, 2);
+    EXPECT_NEAR(sy / n, 120, 2);
+    EXPECT_NEAR(right - left, 2 * radius, 6);
+    EXPECT_NEAR(bottom - top, 2 * radius, 6);
+    EXPECT_NEAR(n / (320.0 * 240.0), M_PI * radius * radius / (320.0 * 240.0), 0.02);
+    EXPECT_EQ(disc.image.pixelColor(2, 120), background); // no box around it
+
+    // The torus as mathematicians write it, seen from above: a ring with a hole.
+    auto torus = text("COMPONENT FunctionLab:1\n"
+                      "Viewpoint { position 0 3 0 orientation 1 0 0 -1.5707963 }\n"
+                      "FShape { geometry FGeometry { type \"implicit\" "
+                      "definition \"(sqrt(x*x + z*z) - 0.6)^2 + y*y - 0.2^2\" } }\n");
+    const Frame ring = render(*torus, "implicit-paper-torus");
+    ASSERT_FALSE(ring.image.isNull()) << ring.error.toStdString();
+    const QColor empty = ring.image.pixelColor(0, 0);
+    const int across = int(std::lround(0.6 / 3 / std::tan(0.3927) * 120)); // the tube's middle
+    EXPECT_EQ(ring.image.pixelColor(160, 120), empty) << "the hole";
+    for (const QPoint p : {QPoint(160 - across, 120), QPoint(160 + across, 120),
+                           QPoint(160, 120 - across), QPoint(160, 120 + across)})
+        EXPECT_NE(ring.image.pixelColor(p), empty) << "the ring at " << p.x() << "," << p.y();
+    EXPECT_EQ(ring.image.pixelColor(4, 4), empty);
+}
+
+TEST(OffscreenRender, AnOpenImplicitSurfaceIsLitFromBothSides) {
+    // A saddle crossing its box: open, so both of its sides can be seen.
+    auto brightness = [](const QImage& image) {
+        const QColor background = image.pixelColor(0, 0);
+        double sum = 0, n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (const QColor c = image.pixelColor(x, y); c != background)
+                    sum += c.valueF(), ++n;
+        return std::pair{n / double(image.width() * image.height()), n > 0 ? sum / n : 0.0};
+    };
+    for (const char* view : {"position 0 0 4", "position 0 0 -4 orientation 0 1 0 3.14159265"}) {
+        auto saddle = text(std::string("COMPONENT FunctionLab:1\nViewpoint { ") + view +
+                           " }\nFShape { geometry FGeometry { type \"implicit\" definition "
+                           "\"z - x*y/2\" } }\n");
+        const Frame f = render(
+            *saddle, std::string("implicit-saddle-") +
+                         (std::string(view).find("-4") != std::string::npos ? "back" : "front"));
+        ASSERT_FALSE(f.image.isNull()) << f.error.toStdString();
+        const auto [covered, value] = brightness(f.image);
+        EXPECT_GT(covered, 0.2) << view << ": the surface is culled from this side";
+        EXPECT_GT(value, 0.45) << view << ": the surface is dark from this side";
+    }
 }
 
 TEST(OffscreenRender, TheClockFaceIsCreamAtTenOClock) {

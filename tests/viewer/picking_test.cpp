@@ -78,3 +78,25 @@ TEST(Picking, RaysFromInfinityOrNowhereFindNothingAndReturn) {
     // Very far away, the march's steps vanish in rounding: it still ends.
     viewer::pick(*s.scene, s.meshes, {{1e30f, 0, 0}, QVector3D(-1, 0, 0)});
 }
+
+TEST(Picking, AnImplicitSurfacesNormalFacesTheEyeFromEitherSide) {
+    // The paper's sphere, negative inside: -grad f points into it, but an
+    // implicit surface has no outside, so the picked normal faces the eye.
+    const Picked s = load(R"x(COMPONENT FunctionLab:1
+        FShape { geometry FGeometry { type "implicit" definition "x^2 + y^2 + z^2 - 0.5" } })x");
+    const auto front = viewer::pick(*s.scene, s.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(front);
+    EXPECT_TRUE(front->onFunction);
+    EXPECT_GT(front->normal[2], 0.9);
+    const auto back = viewer::pick(*s.scene, s.meshes, {{0.1f, 0.1f, -5}, QVector3D(0, 0, 1)});
+    ASSERT_TRUE(back);
+    EXPECT_LT(back->normal[2], -0.9);
+    // An explicit solid keeps its outward normal: here, into the cavity.
+    const Picked solid = load(R"x(COMPONENT FunctionLab:1
+        FShape { geometry FGeometry { type "explicit" definition "x^2 + y^2 + z^2 - 0.5" } })x");
+    const auto box =
+        viewer::pick(*solid.scene, solid.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(box);
+    EXPECT_NEAR(box->point[2], 1, 1e-6); // the box face closing the solid
+    EXPECT_GT(box->normal[2], 0.9);
+}
