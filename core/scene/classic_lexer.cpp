@@ -1,5 +1,7 @@
 #include "classic_lexer.h"
 
+#include <algorithm>
+
 namespace fl::scene {
 namespace {
 
@@ -38,6 +40,11 @@ bool isHexDigit(char c) {
 }
 
 } // namespace
+
+bool isClassicName(std::string_view name, bool x3d) {
+    if (name.empty() || isDigit(name[0]) || name[0] == '+' || name[0] == '-') return false;
+    return std::all_of(name.begin(), name.end(), [&](char c) { return isNameChar(c, x3d); });
+}
 
 ClassicLexer::ClassicLexer(std::string_view text, std::size_t startOffset, FilePos startPos,
                            bool x3d)

@@ -30,6 +30,12 @@ struct ClassicTokenInfo {
     FilePos pos;
 };
 
+// Whether `name` can be written as a ClassicVRML name (ISO/IEC 14772-1 §5.1,
+// X3D 19776-2 §5.3: no spaces, controls, quotes, '#', ',', '.', brackets,
+// braces or backslash, and not starting with a digit, '+' or '-'; X3D also
+// forbids ':'). Names read from X3D XML must pass it to survive conversion.
+bool isClassicName(std::string_view name, bool x3d = true);
+
 class ClassicLexer {
   public:
     // `x3d`: ':' separates tokens (X3D); in VRML97 it may be part of a name.

@@ -17,12 +17,6 @@ bool isAccessKeyword(std::string_view s) {
     return parseAccessType(s).has_value();
 }
 
-// Nodes whose bodies declare their own fields.
-bool declaresFields(const Node& n) {
-    return n.type == "Script" || n.type == "ComposedShader" || n.type == "PackagedShader" ||
-           n.type == "ShaderProgram";
-}
-
 std::string describe(const ClassicTokenInfo& t) {
     switch (t.kind) {
     case T::End:
@@ -216,12 +210,13 @@ void ClassicReader::nodeBody(Node& n) {
             proto(next().text == "EXTERNPROTO");
             continue;
         }
-        if (declaresFields(n) && isAccessKeyword(t.text)) {
+        if (n.declaresFields() && isAccessKeyword(t.text)) {
             fieldDeclaration(n);
             continue;
         }
         next();
         const std::string fieldName(t.text);
+        b_.checkName(fieldName, "field", t.pos);
         FieldInfo info = b_.fieldInfo(n, fieldName);
         Field field;
         field.name = fieldName;
@@ -269,6 +264,7 @@ void ClassicReader::fieldDeclaration(Node& n) {
     std::optional<FieldType> type = parseFieldType(typeTok.text);
     if (!type) b_.fail(typeTok.pos, "unknown field type '" + std::string(typeTok.text) + "'");
     ClassicTokenInfo nameTok = expect(T::Identifier, "a field name");
+    b_.checkName(nameTok.text, "field", nameTok.pos);
     FieldDeclaration d;
     d.name = std::string(nameTok.text);
     d.type = *type;
@@ -305,6 +301,7 @@ void ClassicReader::fieldDeclaration(Node& n) {
 
 void ClassicReader::proto(bool external) {
     ClassicTokenInfo nameTok = expect(T::Identifier, "a PROTO name");
+    b_.checkName(nameTok.text, "PROTO", nameTok.pos);
     ProtoDeclaration* p = b_.scene().newProto();
     p->name = std::string(nameTok.text);
     p->external = external;
@@ -354,6 +351,7 @@ void ClassicReader::interface(ProtoDeclaration& p, bool external) {
         std::optional<FieldType> type = parseFieldType(typeTok.text);
         if (!type) b_.fail(typeTok.pos, "unknown field type '" + std::string(typeTok.text) + "'");
         ClassicTokenInfo nameTok = expect(T::Identifier, "a field name");
+        b_.checkName(nameTok.text, "field", nameTok.pos);
         FieldDeclaration d;
         d.name = std::string(nameTok.text);
         d.type = *type;

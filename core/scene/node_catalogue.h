@@ -32,6 +32,12 @@ struct NodeSpec {
     bool inVrml97;                     // part of VRML97's closed node set
     std::string_view containerField;   // default containerField in X3D XML
     std::span<const FieldSpec> fields; // without `metadata` (every node has it)
+    // Its instances declare fields of their own (`inputOnly SFTime tick`, an
+    // XML <field>): Script and the shaders that take uniforms.
+    bool declaresFields = false;
+    // In X3D XML its element text (CDATA) is source code, one more `url` entry:
+    // Script, ShaderPart, ShaderProgram, PackagedShader.
+    bool sourceInText = false;
 };
 
 // Every node every X3D node has; VRML97 nodes accept it too.

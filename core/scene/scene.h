@@ -104,6 +104,11 @@ struct Node {
     const Field* field(std::string_view name) const;
     Field* field(std::string_view name);
     bool isUnknown() const { return spec == nullptr && proto == nullptr; }
+    // Whether it may declare fields of its own (Script and shaders; a node of
+    // a type FunctionLab does not know, too, so that its interface survives).
+    bool declaresFields() const { return spec ? spec->declaresFields : proto == nullptr; }
+    // Whether, in X3D XML, its element text is source code (a `url` entry).
+    bool sourceInText() const { return spec ? spec->sourceInText : proto == nullptr; }
 };
 
 struct Route {

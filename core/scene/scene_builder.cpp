@@ -1,9 +1,12 @@
 #include "scene_builder.h"
 
+#include "classic_lexer.h"
 #include "components.h"
 #include "formula/suggest.h"
+#include "utf8.h"
 
 #include <algorithm>
+#include <cctype>
 
 namespace fl::scene {
 
@@ -125,7 +128,35 @@ void SceneBuilder::leaveNode() {
     --depth_;
 }
 
+// A name must survive every encoding: a ClassicVRML name (X3D's rules, also
+// for VRML97 files, which may be written as X3D) that is valid UTF-8 and, for
+// node types, PROTOs and fields, an XML name too (letters, digits, '_', '-',
+// non-ASCII; not starting with a digit or '-'), since X3D XML writes those as
+// element and attribute names. Anything else is refused with a located error:
+// a scene holding it could not be converted.
+void SceneBuilder::checkName(std::string_view name, std::string_view what, FilePos pos) {
+    const bool xmlName = what == "node type" || what == "PROTO" || what == "field";
+    const bool portable =
+        isClassicName(name, true) && isValidUtf8(name) &&
+        (!xmlName ||
+         (std::all_of(name.begin(), name.end(),
+                      [](char c) {
+                          const auto u = static_cast<unsigned char>(c);
+                          return u >= 0x80 || std::isalnum(u) || c == '_' || c == '-';
+                      }) &&
+          // XML reserves names that start with "xml" (xmlns ...)
+          !(name.size() >= 3 && std::tolower(static_cast<unsigned char>(name[0])) == 'x' &&
+            std::tolower(static_cast<unsigned char>(name[1])) == 'm' &&
+            std::tolower(static_cast<unsigned char>(name[2])) == 'l')));
+    if (portable) return;
+    fail(pos, "'" + std::string(name) + "' is not a valid " + std::string(what) + " name",
+         xmlName ? "use letters, digits, '_' and '-', starting with a letter or '_' but not 'xml'"
+                 : "X3D names have no spaces, quotes, '#', ',', '.', ':', brackets, braces or "
+                   "backslashes, and do not start with a digit, '+' or '-'");
+}
+
 Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
+    checkName(type, "node type", pos);
     if (++nodesCreated_ > limits_.maxNodes)
         fail(pos, "the scene has more than " + std::to_string(limits_.maxNodes) + " nodes");
     Node* node = scene_.newNode();
@@ -158,6 +189,7 @@ Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
 }
 
 void SceneBuilder::define(Node* node, std::string_view name, FilePos pos) {
+    checkName(name, "DEF", pos);
     Scope& scope = scopes_.back();
     scope.defHistory[std::string(name)].push_back(node);
     auto [it, inserted] = scope.defs.try_emplace(std::string(name), node);
@@ -268,6 +300,7 @@ const ProtoDeclaration* SceneBuilder::findProto(std::string_view name) const {
 }
 
 void SceneBuilder::setProfile(std::string profile, FilePos pos) {
+    checkName(profile, "profile", pos);
     if (!isKnownProfile(profile))
         warning(pos, "unknown profile '" + profile + "'",
                 "profiles are Core, Interchange, Interactive, Immersive, Full");
@@ -276,6 +309,7 @@ void SceneBuilder::setProfile(std::string profile, FilePos pos) {
 
 void SceneBuilder::addComponent(std::string name, int level, std::string_view levelText,
                                 FilePos namePos, FilePos levelPos) {
+    checkName(name, "component", namePos);
     std::optional<int> max = componentMaxLevel(name);
     if (!max)
         warning(namePos, "unknown component '" + name + "'");

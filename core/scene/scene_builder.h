@@ -47,6 +47,8 @@ class SceneBuilder {
     ProtoDeclaration* currentProto() const;
 
     // Node creation: type lookup (built-in, PROTO, unknown) by the encoding's rules.
+    // Refuses (with a located error) a name ClassicVRML could not write.
+    void checkName(std::string_view name, std::string_view what, FilePos pos);
     Node* newNode(std::string_view type, FilePos pos);
     void define(Node* node, std::string_view name, FilePos pos);
     // The node a USE names; a placeholder when the name comes later in the file.

@@ -11,6 +11,7 @@
 
 #include <QString>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -55,6 +56,30 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
                     .toStdString();
     }
     if (bytes.starts_with("\xEF\xBB\xBF")) bytes.erase(0, 3); // UTF-8 byte order mark
+    // A scene file is text. A NUL or another C0 control character (other than
+    // tab, line breaks, form feed and vertical tab) has no place in it, and X3D
+    // XML cannot hold one at all, so a scene with one could not be converted.
+    for (std::size_t i = 0, line = 1, column = 1; i < bytes.size(); ++i) {
+        const auto c = static_cast<unsigned char>(bytes[i]);
+        if (c == '\n') {
+            ++line;
+            column = 1;
+            continue;
+        }
+        if (c < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v') {
+            char code[8];
+            std::snprintf(code, sizeof code, "U+%04X", unsigned(c));
+            ReadResult r;
+            r.diagnostics.push_back({Severity::Error,
+                                     path,
+                                     {int(line), int(column)},
+                                     std::string("the file holds the control character ") + code +
+                                         "; a scene file is text",
+                                     "remove it (was the file saved as binary?)"});
+            return r;
+        }
+        if ((c & 0xC0) != 0x80) ++column;
+    }
     ReadResult result;
     auto scene = std::make_unique<Scene>();
     scene->files.push_back({path, std::move(bytes)});

@@ -1176,6 +1176,62 @@ constexpr FieldSpec kScriptFields[] = {
 };
 
 // ---------------------------------------------------------------------------
+// Shaders (X3D 19775-1 §31): programs are kept and written back, never run;
+// ComposedShader, PackagedShader and ShaderProgram declare their uniforms as
+// fields of their own.
+// ---------------------------------------------------------------------------
+
+constexpr FieldSpec kComposedShaderFields[] = {
+    {"activate", SFBool, InputOnly, ""},
+    {"parts", MFNode, InputOutput, ""},
+    {"isSelected", SFBool, OutputOnly, ""},
+    {"isValid", SFBool, OutputOnly, ""},
+    {"language", SFString, InitializeOnly, "\"\""},
+};
+
+constexpr FieldSpec kPackagedShaderFields[] = {
+    {"activate", SFBool, InputOnly, ""},
+    {"url", MFString, InputOutput, ""},
+    {"isSelected", SFBool, OutputOnly, ""},
+    {"isValid", SFBool, OutputOnly, ""},
+    {"language", SFString, InitializeOnly, "\"\""},
+};
+
+constexpr FieldSpec kProgramShaderFields[] = {
+    {"activate", SFBool, InputOnly, ""},
+    {"programs", MFNode, InputOutput, ""},
+    {"isSelected", SFBool, OutputOnly, ""},
+    {"isValid", SFBool, OutputOnly, ""},
+    {"language", SFString, InitializeOnly, "\"\""},
+};
+
+constexpr FieldSpec kShaderPartFields[] = {
+    {"url", MFString, InputOutput, ""},
+    {"type", SFString, InitializeOnly, "\"VERTEX\""},
+};
+
+constexpr FieldSpec kShaderProgramFields[] = {
+    {"url", MFString, InputOutput, ""},
+    {"type", SFString, InitializeOnly, "\"VERTEX\""},
+};
+
+constexpr FieldSpec kFloatVertexAttributeFields[] = {
+    {"value", MFFloat, InputOutput, ""},
+    {"name", SFString, InitializeOnly, "\"\""},
+    {"numComponents", SFInt32, InitializeOnly, "4"},
+};
+
+constexpr FieldSpec kMatrix3VertexAttributeFields[] = {
+    {"value", MFMatrix3f, InputOutput, ""},
+    {"name", SFString, InitializeOnly, "\"\""},
+};
+
+constexpr FieldSpec kMatrix4VertexAttributeFields[] = {
+    {"value", MFMatrix4f, InputOutput, ""},
+    {"name", SFString, InitializeOnly, "\"\""},
+};
+
+// ---------------------------------------------------------------------------
 // CADGeometry (QuadSet and IndexedQuadSet reuse kTriangleSetFields and
 // kIndexedTriangleSetFields)
 // ---------------------------------------------------------------------------
@@ -1237,6 +1293,14 @@ constexpr NodeSpec vrml(std::string_view name, std::string_view component, int l
     return {name, NodeFamily::Standard, component, level, true, container, fields};
 }
 
+// A node whose instances declare their own fields and/or hold source code
+// as XML element text.
+constexpr NodeSpec withInterface(NodeSpec n, bool declaresFields, bool sourceInText) {
+    n.declaresFields = declaresFields;
+    n.sourceInText = sourceInText;
+    return n;
+}
+
 // Sorted by name (ASCII), for binary search.
 constexpr std::array kStandardNodes = {
     vrml("Anchor", "Networking", 2, "children", kAnchorFields),
@@ -1261,6 +1325,8 @@ constexpr std::array kStandardNodes = {
     vrml("Color", "Rendering", 1, "color", kColorFields),
     vrml("ColorInterpolator", "Interpolation", 1, "children", kColorInterpolatorFields),
     x3d("ColorRGBA", "Rendering", 1, "color", kColorRGBAFields),
+    withInterface(x3d("ComposedShader", "Shaders", 1, "shaders", kComposedShaderFields), true,
+                  false),
     vrml("Cone", "Geometry3D", 1, "geometry", kConeFields),
     x3d("Contour2D", "NURBS", 4, "trimmingContour", kContour2DFields),
     x3d("ContourPolyline2D", "NURBS", 3, "children", kContourPolyline2DFields),
@@ -1277,6 +1343,7 @@ constexpr std::array kStandardNodes = {
     vrml("ElevationGrid", "Geometry3D", 3, "geometry", kElevationGridFields),
     vrml("Extrusion", "Geometry3D", 4, "geometry", kExtrusionFields),
     x3d("FillProperties", "Shape", 3, "fillProperties", kFillPropertiesFields),
+    x3d("FloatVertexAttribute", "Shaders", 1, "attrib", kFloatVertexAttributeFields),
     vrml("Fog", "EnvironmentalEffects", 2, "children", kFogFields),
     x3d("FogCoordinate", "EnvironmentalEffects", 4, "fogCoord", kFogCoordinateFields),
     vrml("FontStyle", "Text", 1, "fontStyle", kFontStyleFields),
@@ -1298,6 +1365,8 @@ constexpr std::array kStandardNodes = {
     x3d("LoadSensor", "Networking", 3, "children", kLoadSensorFields),
     x3d("LocalFog", "EnvironmentalEffects", 4, "children", kLocalFogFields),
     vrml("Material", "Shape", 1, "material", kMaterialFields),
+    x3d("Matrix3VertexAttribute", "Shaders", 1, "attrib", kMatrix3VertexAttributeFields),
+    x3d("Matrix4VertexAttribute", "Shaders", 1, "attrib", kMatrix4VertexAttributeFields),
     x3d("MetadataBoolean", "Core", 1, "metadata", kMetadataBooleanFields),
     x3d("MetadataDouble", "Core", 1, "metadata", kMetadataDoubleFields),
     x3d("MetadataFloat", "Core", 1, "metadata", kMetadataFloatFields),
@@ -1319,6 +1388,8 @@ constexpr std::array kStandardNodes = {
     x3d("NurbsTrimmedSurface", "NURBS", 4, "geometry", kNurbsTrimmedSurfaceFields),
     vrml("OrientationInterpolator", "Interpolation", 1, "children", kOrientationInterpolatorFields),
     x3d("OrthoViewpoint", "Navigation", 3, "children", kOrthoViewpointFields),
+    withInterface(x3d("PackagedShader", "Shaders", 1, "shaders", kPackagedShaderFields), true,
+                  true),
     vrml("PixelTexture", "Texturing", 1, "texture", kPixelTextureFields),
     vrml("PlaneSensor", "PointingDeviceSensor", 1, "children", kPlaneSensorFields),
     vrml("PointLight", "Lighting", 2, "children", kPointLightFields),
@@ -1327,11 +1398,14 @@ constexpr std::array kStandardNodes = {
     x3d("Polypoint2D", "Geometry2D", 1, "geometry", kPolypoint2DFields),
     vrml("PositionInterpolator", "Interpolation", 1, "children", kPositionInterpolatorFields),
     x3d("PositionInterpolator2D", "Interpolation", 3, "children", kPositionInterpolator2DFields),
+    x3d("ProgramShader", "Shaders", 1, "shaders", kProgramShaderFields),
     vrml("ProximitySensor", "EnvironmentalSensor", 1, "children", kProximitySensorFields),
     x3d("QuadSet", "CADGeometry", 1, "geometry", kTriangleSetFields),
     x3d("Rectangle2D", "Geometry2D", 1, "geometry", kRectangle2DFields),
     vrml("ScalarInterpolator", "Interpolation", 1, "children", kScalarInterpolatorFields),
-    vrml("Script", "Scripting", 1, "children", kScriptFields),
+    withInterface(vrml("Script", "Scripting", 1, "children", kScriptFields), true, true),
+    withInterface(x3d("ShaderPart", "Shaders", 1, "parts", kShaderPartFields), false, true),
+    withInterface(x3d("ShaderProgram", "Shaders", 1, "programs", kShaderProgramFields), true, true),
     vrml("Shape", "Shape", 1, "children", kShapeFields),
     vrml("Sound", "Sound", 1, "children", kSoundFields),
     vrml("Sphere", "Geometry3D", 1, "geometry", kSphereFields),

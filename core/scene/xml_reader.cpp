@@ -1,5 +1,7 @@
 #include "xml_reader.h"
 
+#include "classic_lexer.h"
+
 #include "field_access.h"
 #include "source_map.h"
 
@@ -323,6 +325,12 @@ Node* XmlReader::nodeElement() {
 }
 
 void XmlReader::setAttributeField(Node& n, const Attr& a) {
+    if (!isClassicName(a.name, true)) {
+        // xml:lang, a namespace prefix, ...: no field of any node, and no
+        // name ClassicVRML could write back.
+        b_.warning(a.pos, "attribute " + a.name + " is not an X3D field name; it is ignored");
+        return;
+    }
     FieldInfo info = b_.fieldInfo(n, a.name);
     Field field;
     field.name = a.name;
@@ -349,8 +357,7 @@ void XmlReader::nodeContent(Node& n) {
         if (t == QXmlStreamReader::Invalid)
             b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
         if (t == QXmlStreamReader::EndElement) return;
-        if (t == QXmlStreamReader::Characters && !xml_.isWhitespace() &&
-            (n.type == "Script" || n.isUnknown())) {
+        if (t == QXmlStreamReader::Characters && !xml_.isWhitespace() && n.sourceInText()) {
             // Script source in CDATA: the same as a url entry holding it.
             Field* url = n.field("url");
             if (!url) {
@@ -371,10 +378,15 @@ void XmlReader::nodeContent(Node& n) {
         if (name == u"IS") {
             isElement(n);
         } else if (name == u"field") {
-            if (n.proto || n.isUnknown() ||
-                !(n.type == "Script" || n.type == "ComposedShader" || n.type == "PackagedShader" ||
-                  n.type == "ShaderProgram")) {
-                b_.warning(tagPos_, "<field> declarations belong in Script and shader nodes");
+            if (!n.declaresFields()) {
+                b_.warning(tagPos_, "<field> declarations belong in Script and shader nodes "
+                                    "(ComposedShader, PackagedShader, ShaderProgram)");
+                skipElement();
+            } else if (const std::string type = attrValue("type"); !parseFieldType(type)) {
+                // A type of another browser's (X_ITE's SFQuaternion): the
+                // node stays usable without that one field.
+                b_.warning(tagPos_, "<field name='" + attrValue("name") + "'> has type '" + type +
+                                        "', which X3D does not define; the field is left out");
                 skipElement();
             } else {
                 FieldDeclaration d = fieldElement(false, false);
@@ -432,6 +444,7 @@ FieldDeclaration XmlReader::fieldElement(bool external, bool inProtoInterface) {
     FieldDeclaration d;
     d.where = tagPos_;
     d.name = attrValue("name");
+    if (!d.name.empty()) b_.checkName(d.name, "field", tagPos_);
     const std::string typeName = attrValue("type");
     const std::string accessName = attrValue("accessType");
     if (d.name.empty()) b_.fail(tagPos_, "<field> needs a name attribute");
@@ -525,6 +538,7 @@ void XmlReader::isElement(Node& n) {
 void XmlReader::fieldValueElement(Node& instance) {
     const std::string name = attrValue("name");
     const FilePos pos = tagPos_;
+    b_.checkName(name, "field", pos);
     FieldInfo info = b_.fieldInfo(instance, name);
     Field field;
     field.name = name;
@@ -549,6 +563,7 @@ void XmlReader::fieldValueElement(Node& instance) {
 }
 
 void XmlReader::protoDeclare(bool external) {
+    b_.checkName(attrValue("name"), "PROTO", tagPos_);
     ProtoDeclaration* p = b_.scene().newProto();
     p->name = attrValue("name");
     p->external = external;

@@ -13,6 +13,7 @@
 
 #include <cstdio>
 #include <random>
+#include <tuple>
 
 using namespace fl::scene;
 
@@ -137,6 +138,83 @@ class Generator {
         }
     }
 
+  public:
+    // Issue 20: nodes that carry an interface — Script, ComposedShader,
+    // PackagedShader, ShaderProgram, and a node type FunctionLab does not
+    // know — each declaring fields of every type and access with values
+    // (nodes in SFNode/MFNode ones too), some inside a PROTO body connected
+    // to its interface by IS.
+    std::string interfaces() {
+        std::string out = "#X3D V3.3 utf8\nPROFILE Full\n";
+        std::vector<std::tuple<std::string, FieldType, AccessType>> iface;
+        std::string protoHead = "PROTO Carrier [\n";
+        for (int i = 0; i < pick(1, 6); ++i) {
+            const FieldType type = anyType();
+            const AccessType access = anyAccess();
+            const std::string name = "i" + std::to_string(i);
+            iface.emplace_back(name, type, access);
+            protoHead += "  " + std::string(accessTypeName(access)) + " " +
+                         std::string(fieldTypeName(type)) + " " + name +
+                         (hasInitialValue(access) ? " " + anyValue(type) : "") + "\n";
+        }
+        out += protoHead + "] {\n  Shape {\n    appearance Appearance {\n      shaders " +
+               declaring("ComposedShader", "language \"GLSL\"", &iface) +
+               "\n    }\n    geometry Box { }\n  }\n}\n";
+        out += "Carrier { }\n";
+        out += declaring("Script", "url \"ecmascript: function f() {}\"", nullptr) + "\n";
+        out += "Shape {\n  appearance Appearance {\n    shaders [\n" +
+               declaring("PackagedShader", "url \"effect.fx\"", nullptr) + "\n" +
+               "ProgramShader { programs " +
+               declaring("ShaderProgram", "type \"FRAGMENT\" url \"p.glsl\"", nullptr) +
+               " }\n    ]\n  }\n  geometry Sphere { }\n}\n";
+        out += declaring("SomeoneElsesNode", "", nullptr) + "\n";
+        return out;
+    }
+
+  private:
+    FieldType anyType() {
+        FieldType t;
+        do {
+            t = FieldType(pick(0, int(FieldType::MFNode)));
+        } while (t == FieldType::SFImage || t == FieldType::MFImage);
+        return t;
+    }
+    AccessType anyAccess() { return AccessType(pick(0, 3)); }
+    std::string anyValue(FieldType type) {
+        if (type == FieldType::SFNode) return chance(0.3) ? "NULL" : "Box { size 1 2 3 }";
+        if (type == FieldType::MFNode)
+            return chance(0.3) ? "[]" : "[ Box { } Sphere { radius 2 } ]";
+        return value(type);
+    }
+
+    // `type { own... declarations... }`; inside a PROTO body, some connected
+    // by IS to an interface field they may connect to (same type; the same
+    // access, or any for an inputOutput field).
+    std::string
+    declaring(const std::string& type, const std::string& own,
+              const std::vector<std::tuple<std::string, FieldType, AccessType>>* iface) {
+        std::string out = type + " {\n";
+        if (!own.empty()) out += "  " + own + "\n";
+        for (int i = 0; i < pick(1, 8); ++i) {
+            const FieldType t = anyType();
+            const AccessType a = anyAccess();
+            std::string line = "  " + std::string(accessTypeName(a)) + " " +
+                               std::string(fieldTypeName(t)) + " f" + std::to_string(i);
+            const std::tuple<std::string, FieldType, AccessType>* partner = nullptr;
+            if (iface)
+                for (const auto& f : *iface)
+                    if (std::get<1>(f) == t &&
+                        (a == AccessType::InputOutput || std::get<2>(f) == a))
+                        partner = &f;
+            if (partner && chance(0.7))
+                line += " IS " + std::get<0>(*partner);
+            else if (hasInitialValue(a))
+                line += " " + anyValue(t);
+            out += line + "\n";
+        }
+        return out + "}";
+    }
+
     std::mt19937 rng_;
     bool vrml97_;
     std::vector<const NodeSpec*> childTypes_;
@@ -179,6 +257,23 @@ TEST(RandomScenes, X3dWritingThenReadingIsTheIdentity) {
 TEST(RandomScenes, Vrml97WritingThenReadingIsTheIdentity) {
     for (unsigned seed = 1; seed <= 500; ++seed) {
         expectRoundTrip(Generator(seed, true).scene(), true, seed);
+        if (HasFailure()) return;
+    }
+}
+
+TEST(RandomScenes, InterfacesAndTheirIsSurviveEveryEncoding) {
+    for (unsigned seed = 1; seed <= 300; ++seed) {
+        const std::string text = Generator(seed, false).interfaces();
+        expectRoundTrip(text, false, seed);
+        // And the ClassicVRML text is a fixed point through X3D XML (issue 20).
+        ReadOptions options;
+        options.compileFunctions = false;
+        ReadResult a = readSceneBytes(text, "i.x3dv", options);
+        ASSERT_TRUE(a.ok());
+        const std::string classic = writeScene(*a.scene, Encoding::ClassicVrml);
+        ReadResult x = readSceneBytes(writeScene(*a.scene, Encoding::Xml), "i.x3d", options);
+        ASSERT_TRUE(x.ok()) << "seed " << seed;
+        EXPECT_EQ(writeScene(*x.scene, Encoding::ClassicVrml), classic) << "seed " << seed;
         if (HasFailure()) return;
     }
 }
