@@ -1,4 +1,5 @@
 #include "classic_reader.h"
+#include "components.h"
 
 #include "classic_lexer.h"
 #include "number_text.h"
@@ -581,7 +582,8 @@ FieldValue ClassicReader::unknownValue() {
     while (!raw.empty() && (raw.back() == ' ' || raw.back() == '\n' || raw.back() == '\r' ||
                             raw.back() == '\t' || raw.back() == ','))
         raw.remove_suffix(1);
-    v.strings.emplace_back(raw);
+    // Kept as text, repaired as strings are: every writer must write it back.
+    v.strings.emplace_back(replaceInvalidUtf8(raw));
     return v;
 }
 
@@ -626,9 +628,7 @@ std::optional<Header> parseHeader(std::string_view text, std::string& problem) {
     if (first == "#X3D" && version.size() >= 4 && version[0] == 'V' && charset == "utf8") {
         h.encoding = Encoding::ClassicVrml;
         h.version = std::string(version.substr(1));
-        const bool known = h.version == "3.0" || h.version == "3.1" || h.version == "3.2" ||
-                           h.version == "3.3" || h.version == "4.0" || h.version == "4.1";
-        if (!known) {
+        if (!isKnownX3dVersion(h.version)) {
             problem = "unknown X3D version '" + h.version + "'; expected 3.0 to 4.1";
             return std::nullopt;
         }

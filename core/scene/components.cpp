@@ -74,4 +74,8 @@ bool isKnownProfile(std::string_view profile) {
     return false;
 }
 
+bool isKnownX3dVersion(std::string_view v) {
+    return v == "3.0" || v == "3.1" || v == "3.2" || v == "3.3" || v == "4.0" || v == "4.1";
+}
+
 } // namespace fl::scene

@@ -1,6 +1,7 @@
 #include "xml_reader.h"
 
 #include "classic_lexer.h"
+#include "components.h"
 
 #include "field_access.h"
 #include "source_map.h"
@@ -207,6 +208,9 @@ void XmlReader::readFile() {
     Scene& s = b_.scene();
     s.encoding = Encoding::Xml;
     s.version = attrValue("version");
+    if (!s.version.empty() && !isKnownX3dVersion(s.version))
+        b_.error(tagPos_, "unknown X3D version '" + s.version + "'; expected 3.0 to 4.1",
+                 "write version='3.3'");
     if (attrValue("profile").empty())
         b_.error(tagPos_, "<X3D> needs a profile attribute",
                  "write <X3D profile='Immersive' version='3.3'>");
