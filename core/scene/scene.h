@@ -108,7 +108,9 @@ struct Node {
     // a type FunctionLab does not know, too, so that its interface survives).
     bool declaresFields() const { return spec ? spec->declaresFields : proto == nullptr; }
     // Whether, in X3D XML, its element text is source code (a `url` entry).
-    bool sourceInText() const { return spec ? spec->sourceInText : proto == nullptr; }
+    // Text inside an unknown element is not kept: mixed with child elements it
+    // has no field to go back to.
+    bool sourceInText() const { return spec && spec->sourceInText; }
 };
 
 struct Route {

@@ -131,26 +131,35 @@ void SceneBuilder::leaveNode() {
 // A name must survive every encoding: a ClassicVRML name (X3D's rules, also
 // for VRML97 files, which may be written as X3D) that is valid UTF-8 and, for
 // node types, PROTOs and fields, an XML name too (letters, digits, '_', '-',
-// non-ASCII; not starting with a digit or '-'), since X3D XML writes those as
-// element and attribute names. Anything else is refused with a located error:
-// a scene holding it could not be converted.
+// non-ASCII; not starting with a digit or '-', nor with "xml", which XML
+// reserves), since X3D XML writes those as element and attribute names. A
+// field may not be called by a word the encodings reserve (DEF, USE, IS ...):
+// X3D XML would read it as that word.
+bool isPortableName(std::string_view name, bool xmlName) {
+    if (!isClassicName(name, true) || !isValidUtf8(name)) return false;
+    if (!xmlName) return true;
+    const bool xmlChars = std::all_of(name.begin(), name.end(), [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return u >= 0x80 || std::isalnum(u) || c == '_' || c == '-';
+    });
+    auto lower = [&](std::size_t i) { return std::tolower(static_cast<unsigned char>(name[i])); };
+    const bool reservedByXml =
+        name.size() >= 3 && lower(0) == 'x' && lower(1) == 'm' && lower(2) == 'l';
+    static constexpr std::string_view kReserved[] = {
+        "AS",     "COMPONENT", "DEF",  "EXPORT", "EXTERNPROTO", "FALSE",
+        "IMPORT", "IS",        "META", "NULL",   "PROFILE",     "PROTO",
+        "ROUTE",  "TO",        "TRUE", "UNIT",   "USE",         "containerField"};
+    const bool reservedWord =
+        std::find(std::begin(kReserved), std::end(kReserved), name) != std::end(kReserved);
+    return xmlChars && !reservedByXml && !reservedWord;
+}
+
 void SceneBuilder::checkName(std::string_view name, std::string_view what, FilePos pos) {
     const bool xmlName = what == "node type" || what == "PROTO" || what == "field";
-    const bool portable =
-        isClassicName(name, true) && isValidUtf8(name) &&
-        (!xmlName ||
-         (std::all_of(name.begin(), name.end(),
-                      [](char c) {
-                          const auto u = static_cast<unsigned char>(c);
-                          return u >= 0x80 || std::isalnum(u) || c == '_' || c == '-';
-                      }) &&
-          // XML reserves names that start with "xml" (xmlns ...)
-          !(name.size() >= 3 && std::tolower(static_cast<unsigned char>(name[0])) == 'x' &&
-            std::tolower(static_cast<unsigned char>(name[1])) == 'm' &&
-            std::tolower(static_cast<unsigned char>(name[2])) == 'l')));
-    if (portable) return;
+    if (isPortableName(name, xmlName)) return;
     fail(pos, "'" + std::string(name) + "' is not a valid " + std::string(what) + " name",
-         xmlName ? "use letters, digits, '_' and '-', starting with a letter or '_' but not 'xml'"
+         xmlName ? "use letters, digits, '_' and '-', starting with a letter or '_' but not "
+                   "'xml', and no word X3D reserves (DEF, USE, IS, ROUTE ...)"
                  : "X3D names have no spaces, quotes, '#', ',', '.', ':', brackets, braces or "
                    "backslashes, and do not start with a digit, '+' or '-'");
 }

@@ -26,6 +26,10 @@ struct FieldInfo {
     std::string_view canonicalName;
 };
 
+// Whether `name` survives every encoding (see SceneBuilder::checkName);
+// `xmlName`: it is written as an XML element or attribute name too.
+bool isPortableName(std::string_view name, bool xmlName);
+
 class SceneBuilder {
   public:
     SceneBuilder(Scene& scene, int file, const ReadLimits& limits,

@@ -57,8 +57,9 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
     }
     if (bytes.starts_with("\xEF\xBB\xBF")) bytes.erase(0, 3); // UTF-8 byte order mark
     // A scene file is text. A NUL or another C0 control character (other than
-    // tab, line breaks, form feed and vertical tab) has no place in it, and X3D
-    // XML cannot hold one at all, so a scene with one could not be converted.
+    // tab and line breaks) has no place in it, and X3D XML cannot hold one at
+    // all (form feed and vertical tab included), so a scene with one could not
+    // be converted.
     for (std::size_t i = 0, line = 1, column = 1; i < bytes.size(); ++i) {
         const auto c = static_cast<unsigned char>(bytes[i]);
         if (c == '\n') {
@@ -66,7 +67,7 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
             column = 1;
             continue;
         }
-        if (c < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v') {
+        if (c < 0x20 && c != '\t' && c != '\r') {
             char code[8];
             std::snprintf(code, sizeof code, "U+%04X", unsigned(c));
             ReadResult r;

@@ -329,7 +329,7 @@ Node* XmlReader::nodeElement() {
 }
 
 void XmlReader::setAttributeField(Node& n, const Attr& a) {
-    if (!isClassicName(a.name, true)) {
+    if (!isPortableName(a.name, true)) {
         // xml:lang, a namespace prefix, ...: no field of any node, and no
         // name ClassicVRML could write back.
         b_.warning(a.pos, "attribute " + a.name + " is not an X3D field name; it is ignored");
@@ -367,10 +367,9 @@ void XmlReader::nodeContent(Node& n) {
             if (!url) {
                 n.fields.push_back({"url", {}, here(), b_.file(), {}});
                 url = &n.fields.back();
-                url->value.type = n.isUnknown() ? FieldType::Unknown : FieldType::MFString;
+                url->value.type = FieldType::MFString;
             }
-            const std::string text = str(xml_.text());
-            url->value.strings.emplace_back(n.isUnknown() ? trimmedUnknownValue(text) : text);
+            url->value.strings.emplace_back(str(xml_.text()));
             url->value.stringOrigins.push_back(
                 {b_.file(), byteOffset(xml_.characterOffset() - xml_.text().size()),
                  StringEscapes::XmlText});
