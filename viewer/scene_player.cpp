@@ -184,7 +184,7 @@ void ScenePlayer::finished(std::shared_ptr<const mesh::SceneMeshes> meshes, doub
     // A frame of a scene that has since been replaced is not shown.
     bool cancelled = false;
     for (const auto& s : meshes->shapes)
-        cancelled = cancelled || s.error == "cancelled";
+        cancelled = cancelled || s.cancelled;
     if (scene == scene_ && !cancelled) {
         ++delivered_;
         Q_EMIT meshesReady(meshes, seconds);

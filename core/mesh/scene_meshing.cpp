@@ -363,6 +363,7 @@ class Walker {
         }
         sm.stats = r.stats;
         sm.warnings.insert(sm.warnings.end(), r.warnings.begin(), r.warnings.end());
+        sm.cancelled = r.cancelled;
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
         if (type == "parametric" && displacement && !sm.mesh.empty() && !sm.mesh.isPointCloud()) {
@@ -649,6 +650,7 @@ class Walker {
         }
         sm.stats = r.stats;
         sm.warnings = r.warnings;
+        sm.cancelled = r.cancelled;
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
         colour(whole.appearance, field.box, sm);

@@ -105,6 +105,7 @@ struct ShapeMesh {
     std::vector<const scene::Node*> touchSensors;
     std::vector<std::string> warnings;
     std::string error;
+    bool cancelled = false; // stopped by MeshOptions::cancel (error then says so)
 };
 
 struct SceneMeshes {
