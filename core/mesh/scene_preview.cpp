@@ -54,6 +54,22 @@ class PreviewBuilder {
         n.fields.push_back(std::move(f));
     }
 
+    // A Coordinate, Normal or Color node of the faces: the first three numbers
+    // of each element, rounded by `round`.
+    template <class Elements>
+    void faceData(scene::Node& faces, const char* field, std::string_view type,
+                  const char* valueField, scene::FieldType valueType, const Elements& elements,
+                  double (*round)(float)) {
+        scene::Node* data = node(type);
+        std::vector<double> numbers;
+        numbers.reserve(elements.size() * 3);
+        for (const auto& e : elements)
+            for (std::size_t k = 0; k < 3; ++k)
+                numbers.push_back(round(e[k]));
+        setNumbers(*data, valueField, valueType, std::move(numbers));
+        setNodes(faces, field, scene::FieldType::SFNode, {data});
+    }
+
     scene::Node* shape(const ShapeMesh& s) {
         const Mesh& m = s.mesh;
         scene::Node* faces = node("IndexedFaceSet");
@@ -66,36 +82,15 @@ class PreviewBuilder {
         setNumbers(*faces, "solid", scene::FieldType::SFBool, {s.look.solid ? 1.0 : 0.0});
         setNumbers(*faces, "coordIndex", scene::FieldType::MFInt32, std::move(index));
 
-        scene::Node* coordinate = node("Coordinate");
-        std::vector<double> points;
-        points.reserve(m.positions.size() * 3);
-        for (const Vec3f& p : m.positions)
-            for (float c : p)
-                points.push_back(shortDecimal(c));
-        setNumbers(*coordinate, "point", scene::FieldType::MFVec3f, std::move(points));
-        setNodes(*faces, "coord", scene::FieldType::SFNode, {coordinate});
-
-        if (m.normals.size() == m.positions.size()) {
-            scene::Node* normal = node("Normal");
-            std::vector<double> vectors;
-            vectors.reserve(m.normals.size() * 3);
-            for (const Vec3f& v : m.normals)
-                for (float c : v)
-                    vectors.push_back(fourDigits(c));
-            setNumbers(*normal, "vector", scene::FieldType::MFVec3f, std::move(vectors));
-            setNodes(*faces, "normal", scene::FieldType::SFNode, {normal});
-        }
-        if (m.colours.size() == m.positions.size()) {
-            // Color (RGB), not ColorRGBA: VRML97 has only the former.
-            scene::Node* colour = node("Color");
-            std::vector<double> rgb;
-            rgb.reserve(m.colours.size() * 3);
-            for (const auto& c : m.colours)
-                for (int k = 0; k < 3; ++k)
-                    rgb.push_back(fourDigits(c[k]));
-            setNumbers(*colour, "color", scene::FieldType::MFColor, std::move(rgb));
-            setNodes(*faces, "color", scene::FieldType::SFNode, {colour});
-        }
+        faceData(*faces, "coord", "Coordinate", "point", scene::FieldType::MFVec3f, m.positions,
+                 shortDecimal);
+        if (m.normals.size() == m.positions.size())
+            faceData(*faces, "normal", "Normal", "vector", scene::FieldType::MFVec3f, m.normals,
+                     fourDigits);
+        // Color (RGB), not ColorRGBA: VRML97 has only the former.
+        if (m.colours.size() == m.positions.size())
+            faceData(*faces, "color", "Color", "color", scene::FieldType::MFColor, m.colours,
+                     fourDigits);
 
         scene::Node* material = node("Material");
         setNumbers(*material, "diffuseColor", scene::FieldType::SFColor, {0.8, 0.8, 0.8});

@@ -231,20 +231,21 @@ void expectView3dsceneShows(const QString& file) {
 
 class View3dscene : public testing::TestWithParam<std::string> {};
 
-TEST_P(View3dscene, OpensTheConvertedX3d) {
-    const QString out = outputPath(GetParam(), "-converted.x3d");
+// `functionlab convert EXAMPLE OUT` with OUT ending in `suffix`, opened in view3dscene.
+void expectConvertedShows(const std::string& example, const QString& suffix) {
+    const QString out = outputPath(example, suffix);
     const ToolRun r =
-        run(kFunctionLab, {"convert", kExamples + "/" + QString::fromStdString(GetParam()), out});
+        run(kFunctionLab, {"convert", kExamples + "/" + QString::fromStdString(example), out});
     ASSERT_EQ(r.exitCode, 0) << r.describe();
     expectView3dsceneShows(out);
 }
 
+TEST_P(View3dscene, OpensTheConvertedX3d) {
+    expectConvertedShows(GetParam(), "-converted.x3d");
+}
+
 TEST_P(View3dscene, OpensTheConvertedClassicVrml) {
-    const QString out = outputPath(GetParam(), "-converted.x3dv");
-    const ToolRun r =
-        run(kFunctionLab, {"convert", kExamples + "/" + QString::fromStdString(GetParam()), out});
-    ASSERT_EQ(r.exitCode, 0) << r.describe();
-    expectView3dsceneShows(out);
+    expectConvertedShows(GetParam(), "-converted.x3dv");
 }
 
 TEST_P(View3dscene, OpensTheMeshAsX3d) {
