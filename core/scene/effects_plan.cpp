@@ -143,19 +143,19 @@ class Planner {
         if (physics) {
             const Node* surface = effectiveNode(nodeField(*physics, "surface"));
             if (surface) {
-                tangible(e, "friction", effectiveNode(nodeField(*surface, "friction")));
-                tangible(e, "tension", effectiveNode(nodeField(*surface, "tension")));
+                tangible(e, TangibleKind::Friction, effectiveNode(nodeField(*surface, "friction")));
+                tangible(e, TangibleKind::Tension, effectiveNode(nodeField(*surface, "tension")));
             }
-            tangible(e, "density", effectiveNode(nodeField(*physics, "density")));
-            tangible(e, "force", effectiveNode(nodeField(*physics, "force")));
+            tangible(e, TangibleKind::Density, effectiveNode(nodeField(*physics, "density")));
+            tangible(e, TangibleKind::Force, effectiveNode(nodeField(*physics, "force")));
         }
         plan_.entries.push_back(std::move(e));
     }
 
-    void tangible(PlanEntry& e, std::string kind, const Node* node) {
+    void tangible(PlanEntry& e, TangibleKind kind, const Node* node) {
         if (!node) return;
         TangibleEffect t;
-        t.kind = std::move(kind);
+        t.kind = kind;
         t.node = node;
         const auto lo = numbersField(*node, "domainMin"), hi = numbersField(*node, "domainMax");
         for (int i = 0; i < 3 && lo.size() == 3 && hi.size() == 3; ++i) {
@@ -201,6 +201,20 @@ std::string num(double v) {
 
 } // namespace
 
+std::string_view tangibleKindName(TangibleKind kind) {
+    switch (kind) {
+    case TangibleKind::Friction:
+        return "friction";
+    case TangibleKind::Tension:
+        return "tension";
+    case TangibleKind::Density:
+        return "density";
+    case TangibleKind::Force:
+        return "force";
+    }
+    return "?";
+}
+
 EffectsPlan makeEffectsPlan(const Scene& scene) {
     return Planner(scene).run();
 }
@@ -236,10 +250,10 @@ std::string planText(const EffectsPlan& plan) {
         out += "    varies with time: " + timeVaryingText(e.timeVarying) +
                (e.usesWallClock ? " (wall clock)" : "") + "\n";
         for (const TangibleEffect& t : e.tangible)
-            out += "    tangible: " + t.kind + " in [" + num(t.domainMin[0]) + " " +
-                   num(t.domainMin[1]) + " " + num(t.domainMin[2]) + " .. " + num(t.domainMax[0]) +
-                   " " + num(t.domainMax[1]) + " " + num(t.domainMax[2]) + "]" +
-                   (t.timeVarying ? ", varies with time" : "") + "\n";
+            out += "    tangible: " + std::string(tangibleKindName(t.kind)) + " in [" +
+                   num(t.domainMin[0]) + " " + num(t.domainMin[1]) + " " + num(t.domainMin[2]) +
+                   " .. " + num(t.domainMax[0]) + " " + num(t.domainMax[1]) + " " +
+                   num(t.domainMax[2]) + "]" + (t.timeVarying ? ", varies with time" : "") + "\n";
         for (const std::string& note : e.notes)
             out += "    " + note + "\n";
     }

@@ -6,6 +6,7 @@
 #include "scene.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,8 +22,12 @@ enum TimeVarying : unsigned {
     kPhysics = 1u << 4,      // haptic fields change with t
 };
 
+// What a tangible effect does to the haptic tool (DESIGN §6).
+enum class TangibleKind : std::uint8_t { Friction, Tension, Density, Force };
+std::string_view tangibleKindName(TangibleKind kind); // "friction", ... as plans print them
+
 struct TangibleEffect {
-    std::string kind; // "friction", "tension", "density", "force"
+    TangibleKind kind = TangibleKind::Friction;
     const Node* node = nullptr;
     std::array<double, 3> domainMin{-1, -1, -1};
     std::array<double, 3> domainMax{1, 1, 1};

@@ -62,7 +62,8 @@ std::string planJson(const scene::EffectsPlan& plan) {
                ",\"appliesToSiblings\":" + boolean(e.appliesToSiblings) + ",\"tangible\":[";
         for (std::size_t j = 0; j < e.tangible.size(); ++j) {
             const scene::TangibleEffect& t = e.tangible[j];
-            out += std::string(j ? "," : "") + "{\"kind\":" + jsonString(t.kind) +
+            out += std::string(j ? "," : "") +
+                   "{\"kind\":" + jsonString(std::string(scene::tangibleKindName(t.kind))) +
                    ",\"domainMin\":" + vectorJson(t.domainMin) +
                    ",\"domainMax\":" + vectorJson(t.domainMax) +
                    ",\"timeVarying\":" + boolean(t.timeVarying) + "}";

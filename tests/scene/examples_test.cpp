@@ -45,7 +45,7 @@ TEST(Examples, WatermelonIsStaticAndTangible) {
         ASSERT_EQ(p.entries.size(), 1u) << f;
         std::vector<std::string> kinds;
         for (const auto& t : p.entries[0].tangible)
-            kinds.push_back(t.kind);
+            kinds.emplace_back(tangibleKindName(t.kind));
         EXPECT_EQ(kinds, (std::vector<std::string>{"friction", "tension", "density"})) << f;
     }
 }
@@ -64,7 +64,7 @@ TEST(Examples, FanTurnsItsBladesAndBlowsATimeDependentForce) {
     bool force = false, lends = false;
     for (const auto& e : p.entries) {
         for (const auto& t : e.tangible)
-            force |= t.kind == "force" && t.timeVarying;
+            force |= t.kind == TangibleKind::Force && t.timeVarying;
         lends |= e.appliesToSiblings && !e.tangible.empty();
     }
     EXPECT_TRUE(force);

@@ -209,7 +209,7 @@ TEST(Plan, TimeDependentGeometryColourAndPhysics) {
     EXPECT_TRUE(plan.needsHaptics);
     ASSERT_EQ(plan.entries.size(), 1u);
     ASSERT_EQ(plan.entries[0].tangible.size(), 1u);
-    EXPECT_EQ(plan.entries[0].tangible[0].kind, "density");
+    EXPECT_EQ(plan.entries[0].tangible[0].kind, TangibleKind::Density);
     EXPECT_FALSE(plan.entries[0].tangible[0].timeVarying);
 }
 
