@@ -8,11 +8,89 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
+#include <string_view>
+#include <utility>
 
 namespace fl::mesh {
 namespace {
 
 using scene::Node;
+
+// The standard geometry node types drawn here, told apart by type: the
+// catalogue's name is looked up once, at the edge, and every branch below
+// switches on the kind (issue 14: a kind is a type, not a string).
+enum class GeometryKind : std::uint8_t {
+    Arc2D,
+    ArcClose2D,
+    Box,
+    Circle2D,
+    Cone,
+    Cylinder,
+    Disk2D,
+    ElevationGrid,
+    Extrusion,
+    IndexedFaceSet,
+    IndexedLineSet,
+    IndexedQuadSet,
+    IndexedTriangleFanSet,
+    IndexedTriangleSet,
+    IndexedTriangleStripSet,
+    LineSet,
+    NurbsCurve,
+    NurbsPatchSurface,
+    NurbsTrimmedSurface,
+    PointSet,
+    Polyline2D,
+    Polypoint2D,
+    QuadSet,
+    Rectangle2D,
+    Sphere,
+    Text,
+    TriangleFanSet,
+    TriangleSet,
+    TriangleSet2D,
+    TriangleStripSet,
+};
+
+std::optional<GeometryKind> geometryKindOf(const Node& g) {
+    static constexpr std::pair<std::string_view, GeometryKind> kKinds[] = {
+        {"Arc2D", GeometryKind::Arc2D},
+        {"ArcClose2D", GeometryKind::ArcClose2D},
+        {"Box", GeometryKind::Box},
+        {"Circle2D", GeometryKind::Circle2D},
+        {"Cone", GeometryKind::Cone},
+        {"Cylinder", GeometryKind::Cylinder},
+        {"Disk2D", GeometryKind::Disk2D},
+        {"ElevationGrid", GeometryKind::ElevationGrid},
+        {"Extrusion", GeometryKind::Extrusion},
+        {"IndexedFaceSet", GeometryKind::IndexedFaceSet},
+        {"IndexedLineSet", GeometryKind::IndexedLineSet},
+        {"IndexedQuadSet", GeometryKind::IndexedQuadSet},
+        {"IndexedTriangleFanSet", GeometryKind::IndexedTriangleFanSet},
+        {"IndexedTriangleSet", GeometryKind::IndexedTriangleSet},
+        {"IndexedTriangleStripSet", GeometryKind::IndexedTriangleStripSet},
+        {"LineSet", GeometryKind::LineSet},
+        {"NurbsCurve", GeometryKind::NurbsCurve},
+        {"NurbsPatchSurface", GeometryKind::NurbsPatchSurface},
+        {"NurbsTrimmedSurface", GeometryKind::NurbsTrimmedSurface},
+        {"PointSet", GeometryKind::PointSet},
+        {"Polyline2D", GeometryKind::Polyline2D},
+        {"Polypoint2D", GeometryKind::Polypoint2D},
+        {"QuadSet", GeometryKind::QuadSet},
+        {"Rectangle2D", GeometryKind::Rectangle2D},
+        {"Sphere", GeometryKind::Sphere},
+        {"Text", GeometryKind::Text},
+        {"TriangleFanSet", GeometryKind::TriangleFanSet},
+        {"TriangleSet", GeometryKind::TriangleSet},
+        {"TriangleSet2D", GeometryKind::TriangleSet2D},
+        {"TriangleStripSet", GeometryKind::TriangleStripSet},
+    };
+    if (!g.spec) return std::nullopt;
+    for (const auto& [name, kind] : kKinds)
+        if (name == g.spec->name) return kind;
+    return std::nullopt;
+}
 
 std::vector<std::array<double, 3>> triples(const std::vector<double>& v) {
     std::vector<std::array<double, 3>> out;
@@ -190,9 +268,8 @@ FaceSet polyline(std::vector<std::array<double, 3>> points) {
     return f;
 }
 
-FaceSetResult geometry2DMesh(const Node& g, int segments) {
-    const std::string& type = g.type;
-    if (type == "Rectangle2D") {
+FaceSetResult geometry2DMesh(const Node& g, GeometryKind kind, int segments) {
+    if (kind == GeometryKind::Rectangle2D) {
         const double w = scene::numberField(g, "size", 0, 2) / 2;
         const double h = scene::numberField(g, "size", 1, 2) / 2;
         FaceSet f;
@@ -200,13 +277,13 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
         f.coordIndex = {0, 1, 2, 3};
         return faceSetMesh(f);
     }
-    if (type == "TriangleSet2D") {
+    if (kind == GeometryKind::TriangleSet2D) {
         FaceSet f;
         f.points = planePoints(scene::numbersField(g, "vertices"));
         f.coordIndex = inThrees(sequence(f.points.size()));
         return faceSetMesh(f);
     }
-    if (type == "Disk2D") {
+    if (kind == GeometryKind::Disk2D) {
         const double inner = scene::numberField(g, "innerRadius", 0, 0);
         const double outer = scene::numberField(g, "outerRadius", 0, 1);
         const auto o = arcPoints(outer, 0, 0, segments);
@@ -225,7 +302,7 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
         }
         return faceSetMesh(f);
     }
-    if (type == "ArcClose2D") {
+    if (kind == GeometryKind::ArcClose2D) {
         auto arc =
             arcPoints(scene::numberField(g, "radius", 0, 1), scene::numberField(g, "startAngle"),
                       scene::numberField(g, "endAngle", 0, 1.570796), segments);
@@ -236,11 +313,11 @@ FaceSetResult geometry2DMesh(const Node& g, int segments) {
         f.coordIndex = sequence(f.points.size());
         return faceSetMesh(f);
     }
-    if (type == "Arc2D")
+    if (kind == GeometryKind::Arc2D)
         return lineSetMesh(polyline(
             arcPoints(scene::numberField(g, "radius", 0, 1), scene::numberField(g, "startAngle"),
                       scene::numberField(g, "endAngle", 0, 1.570796), segments)));
-    if (type == "Circle2D")
+    if (kind == GeometryKind::Circle2D)
         return lineSetMesh(
             polyline(arcPoints(scene::numberField(g, "radius", 0, 1), 0, 0, segments)));
     // Polyline2D
@@ -299,7 +376,8 @@ std::vector<Contour2> trimmingContours(const Node& g, std::vector<std::string>& 
 
 FaceSetResult nurbsMesh(const Node& g) {
     FaceSetResult r;
-    if (g.type == "NurbsCurve") {
+    const std::optional<GeometryKind> kind = geometryKindOf(g);
+    if (kind == GeometryKind::NurbsCurve) {
         NurbsCurve c;
         c.points = pointsOf(g, "controlPoint", "point");
         c.basis = makeNurbsBasis(int(scene::numberField(g, "order", 0, 3)), int(c.points.size()),
@@ -312,8 +390,9 @@ FaceSetResult nurbsMesh(const Node& g) {
     }
     const NurbsSurface s = nurbsSurfaceOf(g, r.warnings);
     if (s.points.empty()) return r;
-    const std::vector<Contour2> trim =
-        g.type == "NurbsTrimmedSurface" ? trimmingContours(g, r.warnings) : std::vector<Contour2>{};
+    const std::vector<Contour2> trim = kind == GeometryKind::NurbsTrimmedSurface
+                                           ? trimmingContours(g, r.warnings)
+                                           : std::vector<Contour2>{};
     int uSegments = nurbsSegments(int(scene::numberField(g, "uTessellation")), s.u.count);
     int vSegments = nurbsSegments(int(scene::numberField(g, "vTessellation")), s.v.count);
     limitNurbsCells(uSegments, vSegments, r.warnings);
@@ -343,35 +422,37 @@ TextLayout textLayoutOf(const Node& g) {
     return t;
 }
 
-bool isGeometry2D(const std::string& type) {
-    return type == "Rectangle2D" || type == "TriangleSet2D" || type == "Disk2D" ||
-           type == "ArcClose2D" || type == "Arc2D" || type == "Circle2D" || type == "Polyline2D";
+bool isGeometry2D(std::optional<GeometryKind> kind) {
+    return kind == GeometryKind::Rectangle2D || kind == GeometryKind::TriangleSet2D ||
+           kind == GeometryKind::Disk2D || kind == GeometryKind::ArcClose2D ||
+           kind == GeometryKind::Arc2D || kind == GeometryKind::Circle2D ||
+           kind == GeometryKind::Polyline2D;
 }
 
 } // namespace
 
 StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const TextOutliner& text) {
     StandardGeometryResult r;
-    const std::string& type = g.type;
+    const std::optional<GeometryKind> kind = geometryKindOf(g);
     r.solid = !g.spec || !scene::findFieldSpec(*g.spec, "solid") || scene::boolField(g, "solid");
     auto use = [&](FaceSetResult&& f) {
         r.mesh = std::move(f.mesh);
         r.warnings = std::move(f.warnings);
     };
-    if (type == "Box") {
+    if (kind == GeometryKind::Box) {
         const auto s = scene::numbersField(g, "size");
         if (s.size() == 3) r.mesh = boxMesh({s[0], s[1], s[2]});
-    } else if (type == "Sphere") {
+    } else if (kind == GeometryKind::Sphere) {
         r.mesh = sphereMesh(scene::numberField(g, "radius", 0, 1), segments);
-    } else if (type == "Cone") {
+    } else if (kind == GeometryKind::Cone) {
         r.mesh = coneMesh(scene::numberField(g, "bottomRadius", 0, 1),
                           scene::numberField(g, "height", 0, 2), scene::boolField(g, "side"),
                           scene::boolField(g, "bottom"), segments);
-    } else if (type == "Cylinder") {
+    } else if (kind == GeometryKind::Cylinder) {
         r.mesh = cylinderMesh(scene::numberField(g, "radius", 0, 1),
                               scene::numberField(g, "height", 0, 2), scene::boolField(g, "side"),
                               scene::boolField(g, "top"), scene::boolField(g, "bottom"), segments);
-    } else if (type == "IndexedFaceSet") {
+    } else if (kind == GeometryKind::IndexedFaceSet) {
         FaceSet f = commonFaceSet(g);
         f.coordIndex = indices(g, "coordIndex");
         f.colourIndex = indices(g, "colorIndex");
@@ -379,16 +460,16 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         f.texCoordIndex = indices(g, "texCoordIndex");
         f.creaseAngle = scene::numberField(g, "creaseAngle");
         use(faceSetMesh(f));
-    } else if (type == "IndexedTriangleSet") {
+    } else if (kind == GeometryKind::IndexedTriangleSet) {
         FaceSet f = commonFaceSet(g);
         f.coordIndex = inThrees(indices(g, "index"));
         smoothUnlessNormalsGiven(f, g);
         use(faceSetMesh(f));
-    } else if (type == "TriangleSet") {
+    } else if (kind == GeometryKind::TriangleSet) {
         FaceSet f = commonFaceSet(g);
         f.coordIndex = inThrees(sequence(f.points.size()));
         use(faceSetMesh(f));
-    } else if (type == "ElevationGrid") {
+    } else if (kind == GeometryKind::ElevationGrid) {
         ElevationGrid eg;
         eg.xDimension = int(scene::numberField(g, "xDimension"));
         eg.zDimension = int(scene::numberField(g, "zDimension"));
@@ -401,7 +482,7 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         eg.creaseAngle = scene::numberField(g, "creaseAngle");
         eg.texCoords = texCoordsOf(g);
         use(elevationGridMesh(eg));
-    } else if (type == "Extrusion") {
+    } else if (kind == GeometryKind::Extrusion) {
         Extrusion ex;
         ex.crossSection = pairsOf(scene::numbersField(g, "crossSection"));
         ex.spine = triples(scene::numbersField(g, "spine"));
@@ -416,12 +497,12 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         ex.endCap = scene::boolField(g, "endCap");
         ex.creaseAngle = scene::numberField(g, "creaseAngle");
         use(extrusionMesh(ex));
-    } else if (type == "IndexedLineSet") {
+    } else if (kind == GeometryKind::IndexedLineSet) {
         FaceSet f = commonFaceSet(g);
         f.coordIndex = indices(g, "coordIndex");
         f.colourIndex = indices(g, "colorIndex");
         use(lineSetMesh(f));
-    } else if (type == "LineSet") {
+    } else if (kind == GeometryKind::LineSet) {
         FaceSet f = commonFaceSet(g);
         f.colourPerVertex = true;
         std::int64_t next = 0;
@@ -433,46 +514,48 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
             if (next >= points) break;
         }
         use(lineSetMesh(f));
-    } else if (type == "TriangleFanSet" || type == "TriangleStripSet") {
+    } else if (kind == GeometryKind::TriangleFanSet || kind == GeometryKind::TriangleStripSet) {
         FaceSet f = commonFaceSet(g);
         const auto groups =
-            type == "TriangleFanSet"
+            kind == GeometryKind::TriangleFanSet
                 ? groupsByCount(scene::numbersField(g, "fanCount"), f.points.size())
                 : groupsByCount(scene::numbersField(g, "stripCount"), f.points.size());
-        use(triangulatedMesh(std::move(f), type == "TriangleFanSet" ? fans(groups) : strips(groups),
-                             g));
-    } else if (type == "IndexedTriangleFanSet" || type == "IndexedTriangleStripSet") {
+        use(triangulatedMesh(
+            std::move(f), kind == GeometryKind::TriangleFanSet ? fans(groups) : strips(groups), g));
+    } else if (kind == GeometryKind::IndexedTriangleFanSet ||
+               kind == GeometryKind::IndexedTriangleStripSet) {
         FaceSet f = commonFaceSet(g);
         const auto groups = groupsByIndex(indices(g, "index"));
-        use(triangulatedMesh(std::move(f),
-                             type == "IndexedTriangleFanSet" ? fans(groups) : strips(groups), g));
-    } else if (type == "QuadSet" || type == "IndexedQuadSet") {
+        use(triangulatedMesh(
+            std::move(f),
+            kind == GeometryKind::IndexedTriangleFanSet ? fans(groups) : strips(groups), g));
+    } else if (kind == GeometryKind::QuadSet || kind == GeometryKind::IndexedQuadSet) {
         FaceSet f = commonFaceSet(g);
         const std::vector<std::int64_t> corners =
-            type == "QuadSet" ? sequence(f.points.size()) : indices(g, "index");
+            kind == GeometryKind::QuadSet ? sequence(f.points.size()) : indices(g, "index");
         for (std::size_t i = 0; i + 3 < corners.size(); i += 4)
             f.coordIndex.insert(f.coordIndex.end(),
                                 {corners[i], corners[i + 1], corners[i + 2], corners[i + 3], -1});
         smoothUnlessNormalsGiven(f, g);
         use(faceSetMesh(f));
-    } else if (isGeometry2D(type)) {
-        use(geometry2DMesh(g, segments));
-    } else if (type == "Polypoint2D") {
+    } else if (isGeometry2D(kind)) {
+        use(geometry2DMesh(g, *kind, segments));
+    } else if (kind == GeometryKind::Polypoint2D) {
         r.mesh = pointSetMesh(planePoints(scene::numbersField(g, "point")), {});
-    } else if (type == "NurbsCurve" || type == "NurbsPatchSurface" ||
-               type == "NurbsTrimmedSurface") {
+    } else if (kind == GeometryKind::NurbsCurve || kind == GeometryKind::NurbsPatchSurface ||
+               kind == GeometryKind::NurbsTrimmedSurface) {
         use(nurbsMesh(g));
-    } else if (type == "Text") {
+    } else if (kind == GeometryKind::Text) {
         if (!text) {
             r.unsupported = "Text is not drawn without a font source (the window, `functionlab "
                             "render` and `functionlab mesh` have one)";
             return r;
         }
         r.mesh = textMesh(textLayoutOf(g), text, &r.warnings);
-    } else if (type == "PointSet") {
+    } else if (kind == GeometryKind::PointSet) {
         r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
     } else {
-        r.unsupported = type + " is not drawn yet";
+        r.unsupported = g.type + " is not drawn yet";
     }
     // Coordinates beyond float's range (about 3.4e38) become infinite on the
     // way to the GPU and the exports: such a shape is not drawn.
