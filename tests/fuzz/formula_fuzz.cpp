@@ -1,6 +1,9 @@
 // libFuzzer target: lexer + parser + checker + compiler + all four evaluators.
-// Beyond "no crash, no hang, no unbounded allocation" it checks two laws on
-// whatever compiles: batch == scalar, and interval contains scalar.
+// Beyond "no crash, no hang, no unbounded allocation" it checks four laws on
+// whatever compiles, each aborting when broken: batch == scalar, interval
+// contains scalar, the gradient evaluator's value == scalar, and its
+// derivatives match central differences wherever f is smooth there (the
+// one-sided differences agree, so kinks such as abs(x) at 0 are not judged).
 #include "formula/compiler.h"
 #include "formula/eval_batch.h"
 #include "formula/eval_gradient.h"
@@ -16,6 +19,45 @@
 #include <string_view>
 
 using namespace fl::formula;
+
+// d f_o / d x_k at p against central differences of the scalar evaluator,
+// judged only where they can judge: the differences at step h and at 10 h
+// agree (f is smooth there, and its values are not rounding noise, as
+// mod(a, 1e-9) of a large a is).
+static void checkDerivative(ScalarEvaluator& scalar, const Point& p, int k,
+                            const std::vector<Dual>& grads, std::size_t outs) {
+    const double h = 1e-6 * (1 + std::abs(p[k]));
+    auto central = [&](double step, std::vector<double>& out) {
+        std::vector<double> lo(outs), hi(outs);
+        Point q = p;
+        q[k] = p[k] - step;
+        scalar.evaluateAll(q, lo.data());
+        q[k] = p[k] + step;
+        scalar.evaluateAll(q, hi.data());
+        for (std::size_t o = 0; o < outs; ++o)
+            out[o] = (hi[o] - lo[o]) / (2 * step);
+    };
+    std::vector<double> fine(outs), coarse(outs), value(outs);
+    central(h, fine);
+    central(10 * h, coarse);
+    scalar.evaluateAll(p, value.data());
+    for (std::size_t o = 0; o < outs; ++o) {
+        const double d = grads[o].d[std::size_t(k)];
+        if (!std::isfinite(d) || !std::isfinite(fine[o]) || !std::isfinite(coarse[o]) ||
+            !std::isfinite(value[o]))
+            continue;
+        const double scale = 1 + std::abs(d) + std::abs(fine[o]);
+        // What rounding f's value alone puts into a difference (a change of
+        // d * h below f's last digits is not seen at all).
+        const double noise = 100 * std::abs(value[o]) * 2.3e-16 / h;
+        if (std::abs(fine[o] - coarse[o]) > 1e-6 * scale + noise) continue; // not smooth here
+        if (std::abs(fine[o] - d) > 1e-3 * scale + noise) {
+            std::fprintf(stderr, "d/d%c = %.17g, differences say %.17g (and %.17g at 10 h)\n",
+                         "xyz"[k], d, fine[o], coarse[o]);
+            std::abort();
+        }
+    }
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size > 64 * 1024) return 0;
@@ -89,7 +131,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              ranges[o].hi, ranges[o].nan, s);
                 std::abort();
             }
+            const double g = grads[o].v;
+            if (std::bit_cast<std::uint64_t>(g) != std::bit_cast<std::uint64_t>(s) &&
+                !(std::isnan(g) && std::isnan(s))) {
+                std::fprintf(stderr, "gradient value %.17g != scalar %.17g\n", g, s);
+                std::abort();
+            }
         }
+        // Derivatives off the round coordinates: at a point where a branch's
+        // condition is exactly at its boundary (`if (a) ... ` with a = 0),
+        // forward-mode differentiation follows the branch taken, which is
+        // right almost everywhere but not there.
+        Point off = points[i];
+        for (int k = 0; k < 3; ++k)
+            off[k] += 0.1234567 * (k + 1);
+        gradient.evaluateAll(off, grads.data());
+        for (int k = 0; k < 3; ++k)
+            checkDerivative(scalar, off, k, grads, outs);
     }
     return 0;
 }

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -153,7 +154,23 @@ TEST(OffscreenRender, TheBouncingSphereMovesBetweenTwoMoments) {
     const Frame a = render(*scene, "bouncing-sphere-0s", 0.0);
     const Frame b = render(*scene, "bouncing-sphere-0.5s", 0.5);
     ASSERT_FALSE(a.image.isNull() || b.image.isNull()) << a.error.toStdString();
-    EXPECT_NE(a.image, b.image);
+    // Where the sphere is: the centre of its green-to-red pixels (the grey
+    // ground is neither). At 0.5 s it is a*sin(pi/4) = 0.71 higher: up the
+    // picture, by tens of pixels, and not sideways.
+    auto centre = [](const QImage& image) {
+        double sx = 0, sy = 0, n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (std::max(c.redF(), c.greenF()) > c.blueF() + 0.25) sx += x, sy += y, ++n;
+            }
+        return std::array<double, 3>{n > 0 ? sx / n : 0, n > 0 ? sy / n : 0, n};
+    };
+    const auto low = centre(a.image), high = centre(b.image);
+    ASSERT_GT(low[2], 500) << "no sphere at 0 s";
+    ASSERT_GT(high[2], 500) << "no sphere at 0.5 s";
+    EXPECT_LT(high[1], low[1] - 10) << "the sphere did not rise";
+    EXPECT_NEAR(high[0], low[0], 2) << "the sphere moved sideways";
     EXPECT_GT(share(a.image, [](const QColor& c) { return c.greenF() > 0.5 && c.redF() < 0.3; }),
               0.02);
 }
