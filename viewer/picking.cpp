@@ -208,6 +208,21 @@ std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& mes
     std::optional<Pick> best;
     for (int k = 0; k < 3; ++k)
         if (!std::isfinite(ray.origin[k]) || !std::isfinite(ray.direction[k])) return best;
+    // An eye so far away that its coordinates' last digit is larger than a
+    // thousandth of the scene cannot say where on the scene it points
+    // (origin + t * direction rounds to that digit): nothing is picked,
+    // rather than a point the rounding made up.
+    double reach = 0;
+    for (const mesh::ShapeMesh& s : meshes.shapes) {
+        const Affine place = Affine::fromMatrix(s.placement);
+        for (const auto& v : s.mesh.positions) {
+            const Vec3 p = place.point({v[0], v[1], v[2]});
+            reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+        }
+    }
+    const double far = std::max({std::abs(double(ray.origin.x())), std::abs(double(ray.origin.y())),
+                                 std::abs(double(ray.origin.z()))});
+    if (far * 2.3e-16 > 1e-3 * std::max(reach, 1e-6)) return best;
     for (const mesh::ShapeMesh& s : meshes.shapes) {
         if (!s.error.empty()) continue;
         std::optional<Pick> p = onFunction(scene, s, ray);

@@ -2,10 +2,12 @@
 // ROUTEs and ticking its clocks for a while never crashes, never hangs, and
 // keeps every value it produces finite where the file's were.
 #include "animation/animator.h"
+#include "scene/field_access.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -29,10 +31,17 @@ TEST(CorpusAnimation, EveryLoadingSceneTicksWithoutTrouble) {
             const std::int64_t ns = std::int64_t(frame) * 137'000'000; // 0.137 s steps
             a.tick({ns, start + ns, 0});
             moved = moved || !a.changes().empty();
-            for (const FieldChange& c : a.changes())
+            for (const FieldChange& c : a.changes()) {
+                // Finite where the file's value was (an event may set a field
+                // the file left at its finite default, too).
+                const auto file = fl::scene::fieldValue(*c.node, c.field).numbers;
+                if (!std::all_of(file.begin(), file.end(),
+                                 [](double v) { return std::isfinite(v); }))
+                    continue;
                 for (double v : a.value(*c.node, c.field).numbers)
-                    ASSERT_FALSE(std::isnan(v))
-                        << entry.path() << " " << c.node->type << "." << c.field;
+                    ASSERT_TRUE(std::isfinite(v))
+                        << entry.path() << " " << c.node->type << "." << c.field << " = " << v;
+            }
         }
         animated += moved;
     }

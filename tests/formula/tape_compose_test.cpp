@@ -70,11 +70,13 @@ TEST(TapeCompose, ParametersAreFixedAndScriptsInlineWhole) {
 
 TEST(TapeCompose, RandomFormulasInlineToTheSameValues) {
     std::mt19937_64 rng(11);
+    int compiled = 0;
     for (int i = 0; i < 200; ++i) {
         const std::string source = fl::formula::testing::randomFormula(rng, 4);
         CompileOptions o;
         auto r = fl::formula::compile(source, o);
         if (!r.ok()) continue;
+        ++compiled;
         TapeBuilder b;
         const Val f = inlineTape(b, *r.tape, plainInputs(b))[0];
         const Tape t = b.finish({{"value", f}}, {});
@@ -88,16 +90,21 @@ TEST(TapeCompose, RandomFormulasInlineToTheSameValues) {
                 EXPECT_EQ(v0, v1) << source;
         }
     }
+    // The generator makes formulas that compile; a test that skipped them all
+    // would pass while checking nothing.
+    EXPECT_GE(compiled, 180) << "of 200";
 }
 
 TEST(GradientMany, SameBitsAsPointByPointForRandomFormulas) {
     std::mt19937_64 rng(21);
     std::uniform_real_distribution<double> d(-1.5, 1.5);
+    int compiled = 0;
     for (int i = 0; i < 300; ++i) {
         const std::string source = fl::formula::testing::randomFormula(rng, 4);
         CompileOptions o;
         auto r = fl::formula::compile(source, o);
         if (!r.ok()) continue;
+        ++compiled;
         GradientEvaluator one(*r.tape), many(*r.tape);
         std::vector<Point> points(150); // more than one block of 64
         for (Point& p : points)
@@ -114,4 +121,5 @@ TEST(GradientMany, SameBitsAsPointByPointForRandomFormulas) {
                 << source << " at point " << k;
         }
     }
+    EXPECT_GE(compiled, 270) << "of 300";
 }

@@ -11,6 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+#include <vector>
+
 using namespace fl::scene;
 
 namespace {
@@ -152,18 +155,28 @@ TEST(Gzip, CompressedFilesReadLikePlainOnes) {
 }
 
 TEST(Garbage, NeverCrashesAndSaysWhere) {
-    for (const std::string& text :
-         {std::string("\0\1\2", 3),
-          std::string("#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry"),
-          std::string("<X3D profile='Full'><Scene><Shape>"), std::string("#VRML V2.0 utf8\n\"open"),
-          std::string("#X3D V3.3 utf8\nPROFILE Full\nTransform { translation 1e999 0 0 }"),
-          "#X3D V3.3 utf8\nPROFILE Full\nTransform { translation 1" + std::string(400, '0') +
-              " 0 0 }",
-          "<X3D profile='Full'><Scene><Transform translation='1" + std::string(400, '0') +
-              " 0 0'/></Scene></X3D>"}) {
+    // Each input with the line:column its error must name and a word of why.
+    const std::string zeros(400, '0');
+    const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+        {std::string("\0\1\2", 3), "1:1", "control character"},
+        {"#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry", "3:17", "end of the file"},
+        {"<X3D profile='Full'><Scene><Shape>", "1:35", "malformed XML"},
+        {"#VRML V2.0 utf8\n\"open", "2:1", "expected a node"},
+        {"#X3D V3.3 utf8\nPROFILE Full\nTransform { translation 1e999 0 0 }", "3:25", "too large"},
+        {"#X3D V3.3 utf8\nPROFILE Full\nTransform { translation 1" + zeros + " 0 0 }", "3:25",
+         "too large"},
+        {"<X3D profile='Full'><Scene><Transform translation='1" + zeros + " 0 0'/></Scene></X3D>",
+         "1:52", "too large"},
+    };
+    for (const auto& [text, where, why] : cases) {
         ReadResult r = read(text);
         EXPECT_FALSE(r.ok());
-        EXPECT_FALSE(r.diagnostics.empty());
+        std::string first;
+        for (const auto& d : r.diagnostics)
+            if (d.severity == Severity::Error && first.empty()) first = formatSceneDiagnostic(d);
+        EXPECT_NE(first.find(":" + where + ": error:"), std::string::npos)
+            << "expected " << where << ", got: " << first;
+        EXPECT_NE(first.find(why), std::string::npos) << "expected '" << why << "': " << first;
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <limits>
 
 using namespace fl;
@@ -75,8 +76,15 @@ TEST(Picking, RaysFromInfinityOrNowhereFindNothingAndReturn) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{inf, 0, 0}, QVector3D(-1, 0, 0)}));
     EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{0, 0, 5}, QVector3D(nan, 0, -1)}));
-    // Very far away, the march's steps vanish in rounding: it still ends.
-    viewer::pick(*s.scene, s.meshes, {{1e30f, 0, 0}, QVector3D(-1, 0, 0)});
+    // Very far away, the coordinates' last digit (~1e14 at 1e30) is larger
+    // than the scene: nothing can be placed on it, so nothing is picked (a
+    // triangle test used to return the ball's centre with a backward normal).
+    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{1e30f, 0, 0}, QVector3D(-1, 0, 0)}));
+    // Far, but not too far to tell: the ball's near side, facing the eye.
+    const auto distant = viewer::pick(*s.scene, s.meshes, {{1e9f, 0, 0}, QVector3D(-1, 0, 0)});
+    ASSERT_TRUE(distant);
+    EXPECT_NEAR(distant->point[0], 0.5, 1e-4);
+    EXPECT_GT(distant->normal[0], 0.9);
 }
 
 TEST(Picking, AnImplicitSurfacesNormalFacesTheEyeFromEitherSide) {
