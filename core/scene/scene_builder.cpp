@@ -181,6 +181,7 @@ Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
             warnedScript_ = true;
             warning(pos, "Script nodes are kept but never run");
         }
+        checkProfile(*spec, pos);
     } else {
         const std::string suggestion = didYouMean(type, nodeTypeNames());
         if (vrml97()) // VRML97 has a closed set of node types: an unknown name is a mistake
@@ -195,6 +196,24 @@ Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
                     suggestion);
     }
     return node;
+}
+
+// X3D 19775-1 §7.2.5: a node outside the declared profile and components
+// is the file's mistake; a browser refuses it or says so. FunctionLab says so,
+// once per node type, and draws it all the same (many files declare
+// Interchange and use more). Function nodes are ours and always known.
+void SceneBuilder::checkProfile(const NodeSpec& spec, FilePos pos) {
+    if (vrml97() || spec.family == NodeFamily::Function || scene_.profile.empty()) return;
+    const std::optional<int> inProfile = profileComponentLevel(scene_.profile, spec.component);
+    if (!inProfile || *inProfile >= spec.level) return;
+    for (const Component& c : scene_.components)
+        if (c.name == spec.component && c.level >= spec.level) return;
+    if (!outsideProfile_.insert(std::string(spec.name)).second) return;
+    const std::string needed = std::string(spec.component) + ":" + std::to_string(spec.level);
+    warning(pos,
+            std::string(spec.name) + " (" + needed + ") is not part of profile " + scene_.profile +
+                (scene_.components.empty() ? "" : " or the declared components"),
+            "declare COMPONENT " + needed + " or a profile that includes it (Immersive, Full)");
 }
 
 void SceneBuilder::define(Node* node, std::string_view name, FilePos pos) {

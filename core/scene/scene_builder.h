@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -143,6 +144,8 @@ class SceneBuilder {
     std::size_t errorCount_ = 0;
     std::unordered_map<std::string, int> warningCounts_;
     bool warnedScript_ = false;
+    std::set<std::string> outsideProfile_; // node types already warned about
+    void checkProfile(const NodeSpec& spec, FilePos pos);
 };
 
 std::string_view encodingName(Encoding encoding);

@@ -80,6 +80,23 @@ const std::map<std::string, std::string>& knownRoundTripGaps() {
     return table;
 }
 
+// path -> (line:column, start of the message) of its first error.
+const std::map<std::string, std::pair<std::string, std::string>>& expectedRejectionPlaces() {
+    static const std::map<std::string, std::pair<std::string, std::string>> table = [] {
+        std::map<std::string, std::pair<std::string, std::string>> t;
+        std::ifstream in(FUNCTIONLAB_CORPUS_REJECTIONS);
+        std::string line;
+        while (std::getline(in, line)) {
+            if (line.empty() || line[0] == '#') continue;
+            const auto a = line.find(' '), b = line.find(' ', a + 1);
+            if (a == std::string::npos || b == std::string::npos) continue;
+            t[line.substr(0, a)] = {line.substr(a + 1, b - a - 1), line.substr(b + 1)};
+        }
+        return t;
+    }();
+    return table;
+}
+
 bool mustReject(const std::string& file) {
     return file.find("/bad/") != std::string::npos || expectedRejections().count(file) > 0;
 }
@@ -104,10 +121,21 @@ TEST_P(Corpus, LoadsOrIsRejectedWithALocatedError) {
                              << (expectedRejections().count(file) ? expectedRejections().at(file)
                                                                   : std::string("bad folder"))
                              << ")";
-        bool located = false;
+        // The first error stands where corpus_rejections.txt says, for the
+        // reason it says.
+        const auto expected = expectedRejectionPlaces().find(file);
+        ASSERT_NE(expected, expectedRejectionPlaces().end())
+            << file << " is not in corpus_rejections.txt\n"
+            << all;
+        const SceneDiagnostic* first = nullptr;
         for (const auto& d : r.diagnostics)
-            located |= d.severity == Severity::Error && d.pos.line > 0;
-        EXPECT_TRUE(located) << "no error with a line:column\n" << all;
+            if (d.severity == Severity::Error && !first) first = &d;
+        ASSERT_NE(first, nullptr) << all;
+        EXPECT_EQ(std::to_string(first->pos.line) + ":" + std::to_string(first->pos.column),
+                  expected->second.first)
+            << formatSceneDiagnostic(*first);
+        EXPECT_TRUE(first->message.starts_with(expected->second.second))
+            << "expected '" << expected->second.second << "', got: " << first->message;
     } else {
         EXPECT_TRUE(r.ok()) << file << " should load\n" << all;
     }

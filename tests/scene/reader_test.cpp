@@ -351,3 +351,44 @@ TEST(Utf8, ClassicStringsInAnotherEncodingAreRepairedWithAWarning) {
     ASSERT_NE(text, nullptr);
     EXPECT_TRUE(isValidUtf8(stringsField(*text, "string").at(0)));
 }
+
+TEST(Profiles, NodesOutsideTheProfileAndComponentsAreNamedWhereTheyStand) {
+    // Xj3D's invalid_node_profile.x3dv and invalid_node_component.x3dv, with
+    // their unrelated syntax slip (a DEF without a node type) mended: they
+    // load, and say which node the declared profile does not include.
+    auto warningsOf = [](const std::string& text) {
+        ReadResult r = read(text);
+        EXPECT_TRUE(r.ok());
+        std::vector<std::string> out;
+        for (const auto& d : r.diagnostics)
+            if (d.message.find("is not part of profile") != std::string::npos)
+                out.push_back(formatSceneDiagnostic(d));
+        return out;
+    };
+    const std::string shape =
+        "Shape { appearance Appearance { material DEF M Material { emissiveColor 0 0 1 } } "
+        "geometry Sphere { radius 0.25 } }\n";
+    const auto script = warningsOf("#X3D V3.0 utf8\nPROFILE Interchange\nScript {}\n" + shape);
+    ASSERT_EQ(script.size(), 1u);
+    EXPECT_NE(script[0].find("test.x3dv:3:1: warning: Script (Scripting:1) is not part of profile "
+                             "Interchange (declare COMPONENT Scripting:1"),
+              std::string::npos)
+        << script[0];
+    const std::string sensor = "Group { children [ VisibilitySensor {}\n" + shape + "] }\n";
+    const auto level = warningsOf(
+        "#X3D V3.0 utf8\nPROFILE Interchange\nCOMPONENT EnvironmentalSensor:1\n" + sensor);
+    ASSERT_EQ(level.size(), 1u);
+    EXPECT_NE(level[0].find("4:20: warning: VisibilitySensor (EnvironmentalSensor:2) is not part "
+                            "of profile Interchange or the declared components"),
+              std::string::npos)
+        << level[0];
+    // Declared, or in the profile: nothing to say.
+    EXPECT_TRUE(
+        warningsOf("#X3D V3.0 utf8\nPROFILE Interchange\nCOMPONENT EnvironmentalSensor:2\n" +
+                   sensor)
+            .empty());
+    EXPECT_TRUE(warningsOf("#X3D V3.0 utf8\nPROFILE Immersive\nScript {}\n" + shape).empty());
+    EXPECT_TRUE(warningsOf("#X3D V3.3 utf8\nPROFILE Full\nScript {}\nComposedShader {}\n").empty());
+    // Once per node type, not per node.
+    EXPECT_EQ(warningsOf("#X3D V3.0 utf8\nPROFILE Core\nScript {}\nScript {}\n").size(), 1u);
+}
