@@ -1,6 +1,8 @@
 // Property: writing a scene and reading it back gives the same model, for
-// scenes generated at random from the node catalogue — every standard node
-// type, every field with an initial value, values chosen to be awkward
+// scenes generated at random from the node catalogue — every standard and
+// function node type, nodes in node-valued fields (geometry, appearance,
+// material, coord, texture ... by their containerField), every field with an
+// initial value, PROTOs with IS (interfaces()), values chosen to be awkward
 // (extreme and tiny numbers, quotes, backslashes, XML specials, non-ASCII
 // text), DEF/USE sharing and ROUTEs — in X3D XML, ClassicVRML and, for the
 // nodes it has, VRML97.
@@ -12,6 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <iostream>
+#include <map>
 #include <random>
 #include <tuple>
 
@@ -29,10 +33,14 @@ bool skipped(const NodeSpec& node, const FieldSpec& f) {
 class Generator {
   public:
     explicit Generator(unsigned seed, bool vrml97) : rng_(seed), vrml97_(vrml97) {
-        for (const NodeSpec& s : standardNodes())
-            if ((!vrml97 || s.inVrml97) && s.containerField == "children" && s.name != "Script" &&
-                s.name != "Inline")
+        for (const NodeSpec& s : nodeCatalogue()) {
+            if (vrml97 && !s.inVrml97 && s.family != NodeFamily::Function) continue;
+            if (s.name == "Script" || s.name == "Inline") continue; // followed or warned about
+            if (s.containerField == "children")
                 childTypes_.push_back(&s);
+            else
+                byContainer_[std::string(s.containerField)].push_back(&s);
+        }
     }
 
     std::string scene() {
@@ -92,7 +100,11 @@ class Generator {
     std::string node(int depth) {
         if (!defs_.empty() && chance(0.1))
             return "USE " + defs_[std::size_t(pick(0, int(defs_.size()) - 1))].first;
-        const NodeSpec& spec = *childTypes_[std::size_t(pick(0, int(childTypes_.size()) - 1))];
+        // Shapes a third of the time: what carries geometry, appearance and
+        // materials, standard and function-defined alike.
+        const NodeSpec& spec =
+            chance(0.35) ? *findNodeSpec(chance(0.5) ? "Shape" : "FShape")
+                         : *childTypes_[std::size_t(pick(0, int(childTypes_.size()) - 1))];
         std::string out;
         std::string def;
         if (chance(0.3)) {
@@ -103,6 +115,24 @@ class Generator {
         const FieldSpec* children = nullptr;
         for (const FieldSpec& f : spec.fields) {
             if (f.name == "children" && f.type == FieldType::MFNode) children = &f;
+            if (holdsNodes(f.type) && f.name != "children" && hasInitialValue(f.access) &&
+                f.name != "metadata" && depth < 3 && chance(0.7)) {
+                // geometry, appearance, material, coord, texture ...: a node
+                // whose default containerField is this field's name.
+                const auto fitting = byContainer_.find(std::string(f.name));
+                if (fitting != byContainer_.end() && !fitting->second.empty()) {
+                    const int n = f.type == FieldType::SFNode ? 1 : pick(1, 2);
+                    std::string nodes;
+                    for (int i = 0; i < n; ++i)
+                        nodes += (i ? " " : "") +
+                                 valueNode(*fitting->second[std::size_t(
+                                               pick(0, int(fitting->second.size()) - 1))],
+                                           depth + 1);
+                    out += "  " + std::string(f.name) + " " +
+                           (f.type == FieldType::MFNode ? "[ " + nodes + " ]" : nodes) + "\n";
+                }
+                continue;
+            }
             if (!hasInitialValue(f.access) || skipped(spec, f) || !chance(0.5)) continue;
             out += "  " + std::string(f.name) + " " + value(f.type) + "\n";
         }
@@ -119,6 +149,29 @@ class Generator {
             addRoute(def, spec);
         }
         return out;
+    }
+
+    // A node in a node-valued field: its own fields with values, recursively.
+    std::string valueNode(const NodeSpec& spec, int depth) {
+        std::string out = std::string(spec.name) + " {\n";
+        for (const FieldSpec& f : spec.fields) {
+            if (holdsNodes(f.type)) {
+                const auto fitting = byContainer_.find(std::string(f.name));
+                if (f.type == FieldType::SFNode && f.name != "metadata" &&
+                    hasInitialValue(f.access) && depth < 4 && fitting != byContainer_.end() &&
+                    !fitting->second.empty() && chance(0.6))
+                    out +=
+                        "  " + std::string(f.name) + " " +
+                        valueNode(
+                            *fitting->second[std::size_t(pick(0, int(fitting->second.size()) - 1))],
+                            depth + 1) +
+                        "\n";
+                continue;
+            }
+            if (!hasInitialValue(f.access) || skipped(spec, f) || !chance(0.5)) continue;
+            out += "  " + std::string(f.name) + " " + value(f.type) + "\n";
+        }
+        return out + "}";
     }
 
     // A ROUTE from an output of an earlier DEF'd node to an input of the same
@@ -218,6 +271,7 @@ class Generator {
     std::mt19937 rng_;
     bool vrml97_;
     std::vector<const NodeSpec*> childTypes_;
+    std::map<std::string, std::vector<const NodeSpec*>> byContainer_;
     std::vector<std::pair<std::string, const NodeSpec*>> defs_;
     std::string routes_;
     int nextDef_ = 0;
@@ -276,4 +330,35 @@ TEST(RandomScenes, InterfacesAndTheirIsSurviveEveryEncoding) {
         EXPECT_EQ(writeScene(*x.scene, Encoding::ClassicVrml), classic) << "seed " << seed;
         if (HasFailure()) return;
     }
+}
+
+TEST(RandomScenes, TheGeneratorReallyMakesWhatItClaims) {
+    // A generator that silently stopped making node-valued fields or function
+    // nodes would leave the round-trip tests above checking less.
+    std::size_t geometry = 0, appearance = 0, material = 0, functionNodes = 0, uses = 0, routes = 0;
+    for (unsigned seed = 1; seed <= 200; ++seed) {
+        const std::string text = Generator(seed, false).scene();
+        auto count = [&](const std::string& what) {
+            std::size_t n = 0;
+            for (std::size_t at = text.find(what); at != std::string::npos;
+                 at = text.find(what, at + 1))
+                ++n;
+            return n;
+        };
+        geometry += count("  geometry ");
+        appearance += count("  appearance ");
+        material += count("  material ");
+        functionNodes += count("FShape {") + count("FGeometry {") + count("FTransform {");
+        uses += count("USE ");
+        routes += count("ROUTE ");
+    }
+    EXPECT_GT(geometry, 20u);
+    EXPECT_GT(appearance, 20u);
+    EXPECT_GT(material, 5u);
+    EXPECT_GT(functionNodes, 20u);
+    EXPECT_GT(uses, 10u);
+    EXPECT_GT(routes, 2u);
+    std::cout << geometry << " geometry, " << appearance << " appearance, " << material
+              << " material, " << functionNodes << " function nodes, " << uses << " USE, " << routes
+              << " ROUTE in 200 scenes\n";
 }
