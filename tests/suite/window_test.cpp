@@ -22,6 +22,7 @@
 #include <QToolButton>
 #include <QTreeWidget>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -156,6 +157,12 @@ class WindowTest : public QObject {
         QCOMPARE(w.issues()->count(), 0);
         QVERIFY(w.editor()->diagnostics().isEmpty());
         QVERIFY(w.view()->meshes() != shownBefore);
+        // The shape shown is the fixed formula's: a ball of radius 0.5.
+        float reach = 0;
+        for (const auto& s : w.view()->meshes()->shapes)
+            for (const auto& p : s.mesh.positions)
+                reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+        QVERIFY2(std::abs(reach - 0.5f) < 0.02f, qPrintable(QString::number(reach)));
         save(screenshot(w), "window-formula-fixed");
     }
 
