@@ -7,6 +7,8 @@
 #include <QImage>
 #include <QProcess>
 
+#include "picture_measures.h"
+
 #include <gtest/gtest.h>
 
 namespace {
@@ -22,15 +24,6 @@ QImage render(const QStringList& arguments, const QString& name) {
     return QImage(out);
 }
 
-template <class Test>
-double share(const QImage& image, int x0, int x1, Test test) {
-    std::size_t n = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = x0; x < x1; ++x)
-            n += test(image.pixelColor(x, y)) ? 1 : 0;
-    return double(n) / double(image.height() * (x1 - x0));
-}
-
 const QString kExamples = QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/");
 
 } // namespace
@@ -41,6 +34,7 @@ TEST(RenderCommand, TheWatermelonIsRedInsideAndGreenOutside) {
     EXPECT_EQ(image.size(), QSize(200, 150));
     const auto red = [](const QColor& c) { return c.redF() > 0.5 && c.greenF() < 0.35; };
     const auto green = [](const QColor& c) { return c.greenF() > c.redF() + 0.15; };
+    using fl::testing::share;
     EXPECT_GT(share(image, 0, 200, red), 0.03);
     EXPECT_GT(share(image, 0, 200, green), 0.01);
     // The melon stands in the middle: its left and right margins are background.
@@ -57,16 +51,8 @@ TEST(RenderCommand, TimeMovesTheSharksTailNotItsBody) {
                  b = render({kExamples + "shark.x3d", "--size", "320x240", "--time", "3.75"},
                             "shark-3.75");
     ASSERT_FALSE(a.isNull() || b.isNull());
-    const QColor background = a.pixelColor(0, 0);
-    auto moved = [&](int x0, int x1) {
-        std::size_t n = 0;
-        for (int y = 0; y < a.height(); ++y)
-            for (int x = x0; x < x1; ++x)
-                n += (a.pixelColor(x, y) != background) != (b.pixelColor(x, y) != background);
-        return double(n) / double(a.height() * (x1 - x0));
-    };
-    EXPECT_GT(moved(0, 320 / 3), 0.003) << "the tail did not move";
-    EXPECT_LT(moved(160, 320), 0.0005) << "the body moved";
+    EXPECT_GT(fl::testing::movedShare(a, b, 0, 320 / 3), 0.003) << "the tail did not move";
+    EXPECT_LT(fl::testing::movedShare(a, b, 160, 320), 0.0005) << "the body moved";
 }
 
 int main(int argc, char** argv) {

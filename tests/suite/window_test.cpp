@@ -4,6 +4,7 @@
 #include "mesh_geometry.h"
 #include "navigation.h"
 #include "picking.h"
+#include "picture_measures.h"
 #include "scene_player.h"
 #include "scene_widget.h"
 #include "timeline_bar.h"
@@ -210,16 +211,8 @@ class WindowTest : public QObject {
         // Where the sphere is, not only that the frames differ: the centre of
         // its green-to-red pixels rises between 0 s and 0.5 s, and stays put
         // sideways.
-        auto centre = [](const QImage& image) {
-            double sx = 0, sy = 0, n = 0;
-            for (int y = 0; y < image.height(); ++y)
-                for (int x = 0; x < image.width(); ++x) {
-                    const QColor c = image.pixelColor(x, y);
-                    if (std::max(c.redF(), c.greenF()) > c.blueF() + 0.25) sx += x, sy += y, ++n;
-                }
-            return std::array<double, 3>{n > 0 ? sx / n : 0, n > 0 ? sy / n : 0, n};
-        };
-        const auto low = centre(first), high = centre(second);
+        const auto low = fl::testing::colouredCentre(first),
+                   high = fl::testing::colouredCentre(second);
         QVERIFY2(low[2] > 500 && high[2] > 500, "no sphere in a frame");
         QVERIFY2(high[1] < low[1] - 10,
                  qPrintable(QString("the sphere did not rise: %1 -> %2").arg(low[1]).arg(high[1])));

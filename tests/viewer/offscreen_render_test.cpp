@@ -3,6 +3,7 @@
 // show what is behind them; a bad viewpoint name is explained. Each frame is
 // saved under build/tests/viewer/screenshots/ to be looked at.
 #include "offscreen_render.h"
+#include "picture_measures.h"
 #include "text_outliner.h"
 
 #include "mesh/scene_meshing.h"
@@ -18,6 +19,8 @@
 #include <memory>
 
 using namespace fl;
+using fl::testing::movedShare;
+using fl::testing::share;
 
 namespace {
 
@@ -57,16 +60,6 @@ std::unique_ptr<scene::Scene> text(const std::string& body) {
     auto r = scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "test.x3dv");
     EXPECT_TRUE(r.ok());
     return std::move(r.scene);
-}
-
-// The share of pixels for which `test` holds.
-template <class Test>
-double share(const QImage& image, Test test) {
-    std::size_t n = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            n += test(image.pixelColor(x, y)) ? 1 : 0;
-    return double(n) / double(image.width() * image.height());
 }
 
 double notBackground(const QImage& image) {
@@ -157,32 +150,14 @@ TEST(OffscreenRender, TheBouncingSphereMovesBetweenTwoMoments) {
     // Where the sphere is: the centre of its green-to-red pixels (the grey
     // ground is neither). At 0.5 s it is a*sin(pi/4) = 0.71 higher: up the
     // picture, by tens of pixels, and not sideways.
-    auto centre = [](const QImage& image) {
-        double sx = 0, sy = 0, n = 0;
-        for (int y = 0; y < image.height(); ++y)
-            for (int x = 0; x < image.width(); ++x) {
-                const QColor c = image.pixelColor(x, y);
-                if (std::max(c.redF(), c.greenF()) > c.blueF() + 0.25) sx += x, sy += y, ++n;
-            }
-        return std::array<double, 3>{n > 0 ? sx / n : 0, n > 0 ? sy / n : 0, n};
-    };
-    const auto low = centre(a.image), high = centre(b.image);
+    const auto low = fl::testing::colouredCentre(a.image),
+               high = fl::testing::colouredCentre(b.image);
     ASSERT_GT(low[2], 500) << "no sphere at 0 s";
     ASSERT_GT(high[2], 500) << "no sphere at 0.5 s";
     EXPECT_LT(high[1], low[1] - 10) << "the sphere did not rise";
     EXPECT_NEAR(high[0], low[0], 2) << "the sphere moved sideways";
     EXPECT_GT(share(a.image, [](const QColor& c) { return c.greenF() > 0.5 && c.redF() < 0.3; }),
               0.02);
-}
-
-// Pixels covered in one frame and not in the other, within columns [x0, x1).
-double movedShare(const QImage& a, const QImage& b, int x0, int x1) {
-    const QColor background = a.pixelColor(0, 0);
-    std::size_t moved = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = x0; x < x1; ++x)
-            moved += (a.pixelColor(x, y) != background) != (b.pixelColor(x, y) != background);
-    return double(moved) / double(a.height() * (x1 - x0));
 }
 
 TEST(OffscreenRender, TheSharksTailSwingsAndItsBodyStays) {
