@@ -1,9 +1,11 @@
 // `functionlab bench eval`: the evaluator benchmark table (bench/eval_table).
+#include "arguments.h"
 #include "commands.h"
 #include "exit_codes.h"
 
 #include "eval_table.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -51,23 +53,29 @@ int benchCommand(const Args& args) {
         return kExitUsage;
     }
     bool json = false;
-    long side = 64;
+    double side = 64;
     double seconds = 0.2;
     for (std::size_t i = 1; i < args.size(); ++i) {
-        if (args[i] == "--json")
+        if (args[i] == "--json") {
             json = true;
-        else if (args[i] == "--side" && i + 1 < args.size())
-            side = std::strtol(args[++i].c_str(), nullptr, 10);
-        else if (args[i] == "--seconds" && i + 1 < args.size())
-            seconds = std::strtod(args[++i].c_str(), nullptr);
-        else {
+        } else if ((args[i] == "--side" || args[i] == "--seconds") && i + 1 < args.size()) {
+            // The whole argument must be a number ("12abc" is not 12).
+            double& value = args[i] == "--side" ? side : seconds;
+            if (!parseNumber(args[i + 1], value)) {
+                std::cerr << "functionlab bench eval: " << args[i] << " needs a number, not '"
+                          << args[i + 1] << "'\n";
+                return kExitUsage;
+            }
+            ++i;
+        } else {
             std::cerr << "functionlab bench eval: unexpected argument '" << args[i] << "'\n\n"
                       << kBenchHelp;
             return kExitUsage;
         }
     }
-    if (side < 2 || side > 512 || !(seconds >= 0.0) || seconds > 60.0) {
-        std::cerr << "functionlab bench eval: --side must be 2..512 and --seconds 0..60\n";
+    if (side < 2 || side > 512 || side != std::floor(side) || !(seconds >= 0.0) || seconds > 60.0) {
+        std::cerr << "functionlab bench eval: --side must be a whole number 2..512 and --seconds "
+                     "0..60\n";
         return kExitUsage;
     }
     auto rows = bench::runEvalTable(static_cast<std::size_t>(side), seconds);

@@ -24,3 +24,13 @@ foreach(expected sphere watermelon watermelon_colour gyroid bouncing_sphere unio
     message(FATAL_ERROR "missing formula ${expected}")
   endif()
 endforeach()
+
+# Usage errors, before anything is timed: every value is read whole.
+include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
+run(2 bench eval --side 12abc)
+expect_match("${ERR}" "--side needs a number, not '12abc'")
+run(2 bench eval --seconds 1x)
+run(2 bench eval --side 8.5)
+expect_match("${ERR}" "whole number")
+run(2 bench eval --side 1)
+run(2 bench eval --seconds nan)
