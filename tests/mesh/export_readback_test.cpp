@@ -34,13 +34,6 @@ Mesh sample() {
     return m;
 }
 
-template <class T>
-T at(const std::string& bytes, std::size_t offset) {
-    T v;
-    std::memcpy(&v, bytes.data() + offset, sizeof v);
-    return v;
-}
-
 Vec3f unit(const Vec3f& n) {
     const float l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     return l > 0 ? Vec3f{n[0] / l, n[1] / l, n[2] / l} : n;
@@ -125,17 +118,20 @@ TEST(ExportReadBack, Ply) {
     p += 11;
     ReadBack r;
     for (std::size_t i = 0; i < m.vertexCount(); ++i, p += 28) {
-        r.positions.push_back({at<float>(s, p), at<float>(s, p + 4), at<float>(s, p + 8)});
-        r.normals.push_back({at<float>(s, p + 12), at<float>(s, p + 16), at<float>(s, p + 20)});
-        r.colours.push_back({at<std::uint8_t>(s, p + 24) / 255.0f,
-                             at<std::uint8_t>(s, p + 25) / 255.0f,
-                             at<std::uint8_t>(s, p + 26) / 255.0f});
-        EXPECT_EQ(at<std::uint8_t>(s, p + 27), 255) << "alpha";
+        r.positions.push_back({support::bytesAt<float>(s, p), support::bytesAt<float>(s, p + 4),
+                               support::bytesAt<float>(s, p + 8)});
+        r.normals.push_back({support::bytesAt<float>(s, p + 12), support::bytesAt<float>(s, p + 16),
+                             support::bytesAt<float>(s, p + 20)});
+        r.colours.push_back({support::bytesAt<std::uint8_t>(s, p + 24) / 255.0f,
+                             support::bytesAt<std::uint8_t>(s, p + 25) / 255.0f,
+                             support::bytesAt<std::uint8_t>(s, p + 26) / 255.0f});
+        EXPECT_EQ(support::bytesAt<std::uint8_t>(s, p + 27), 255) << "alpha";
     }
     for (std::size_t i = 0; i < m.triangleCount(); ++i, p += 13) {
-        ASSERT_EQ(at<std::uint8_t>(s, p), 3);
-        r.triangles.push_back({at<std::uint32_t>(s, p + 1), at<std::uint32_t>(s, p + 5),
-                               at<std::uint32_t>(s, p + 9)});
+        ASSERT_EQ(support::bytesAt<std::uint8_t>(s, p), 3);
+        r.triangles.push_back({support::bytesAt<std::uint32_t>(s, p + 1),
+                               support::bytesAt<std::uint32_t>(s, p + 5),
+                               support::bytesAt<std::uint32_t>(s, p + 9)});
     }
     EXPECT_EQ(p, s.size());
     expectSame(m, r, 0, 0.5f / 255 + 1e-6f, "PLY");
@@ -144,7 +140,7 @@ TEST(ExportReadBack, Ply) {
 TEST(ExportReadBack, Glb) {
     const Mesh m = sample();
     const std::string g = encodeMesh(m, MeshFormat::Glb);
-    const std::uint32_t jsonLength = at<std::uint32_t>(g, 12);
+    const std::uint32_t jsonLength = support::bytesAt<std::uint32_t>(g, 12);
     const QJsonObject root =
         QJsonDocument::fromJson(QByteArray(g.data() + 20, jsonLength)).object();
     const std::size_t bin = 20 + jsonLength + 8;
@@ -170,9 +166,9 @@ TEST(ExportReadBack, Glb) {
         Vec3f p, n;
         std::array<float, 3> c;
         for (int k = 0; k < 3; ++k) {
-            p[k] = at<float>(g, offsetOf(position, i, k, 3, 4));
-            n[k] = at<float>(g, offsetOf(normal, i, k, 3, 4));
-            c[k] = at<float>(g, offsetOf(colour, i, k, 4, 4));
+            p[k] = support::bytesAt<float>(g, offsetOf(position, i, k, 3, 4));
+            n[k] = support::bytesAt<float>(g, offsetOf(normal, i, k, 3, 4));
+            c[k] = support::bytesAt<float>(g, offsetOf(colour, i, k, 4, 4));
         }
         r.positions.push_back(p);
         r.normals.push_back(n);
@@ -180,9 +176,10 @@ TEST(ExportReadBack, Glb) {
     }
     ASSERT_EQ(accessors[indices].toObject()["componentType"].toInt(), 5125); // uint32
     for (std::size_t t = 0; t < m.triangleCount(); ++t)
-        r.triangles.push_back({at<std::uint32_t>(g, offsetOf(indices, 3 * t, 0, 1, 4)),
-                               at<std::uint32_t>(g, offsetOf(indices, 3 * t + 1, 0, 1, 4)),
-                               at<std::uint32_t>(g, offsetOf(indices, 3 * t + 2, 0, 1, 4))});
+        r.triangles.push_back(
+            {support::bytesAt<std::uint32_t>(g, offsetOf(indices, 3 * t, 0, 1, 4)),
+             support::bytesAt<std::uint32_t>(g, offsetOf(indices, 3 * t + 1, 0, 1, 4)),
+             support::bytesAt<std::uint32_t>(g, offsetOf(indices, 3 * t + 2, 0, 1, 4))});
     expectSame(m, r, 0, 0, "glTF");
 }
 

@@ -30,13 +30,6 @@ Mesh ball(bool colours = false) {
     return m;
 }
 
-template <class T>
-T read(const std::string& bytes, std::size_t at) {
-    T v;
-    std::memcpy(&v, bytes.data() + at, sizeof v);
-    return v;
-}
-
 } // namespace
 
 TEST(Export, FormatFromTheExtension) {
@@ -55,10 +48,12 @@ TEST(Export, BinaryStlLayout) {
     const Mesh m = ball();
     const std::string s = encodeMesh(m, MeshFormat::Stl);
     ASSERT_EQ(s.size(), 84 + 50 * m.triangleCount());
-    EXPECT_EQ(read<std::uint32_t>(s, 80), m.triangleCount());
+    EXPECT_EQ(support::bytesAt<std::uint32_t>(s, 80), m.triangleCount());
     // The first facet's normal agrees with its winding and points outward.
-    const float nx = read<float>(s, 84), ny = read<float>(s, 88), nz = read<float>(s, 92);
-    const float px = read<float>(s, 96), py = read<float>(s, 100), pz = read<float>(s, 104);
+    const float nx = support::bytesAt<float>(s, 84), ny = support::bytesAt<float>(s, 88),
+                nz = support::bytesAt<float>(s, 92);
+    const float px = support::bytesAt<float>(s, 96), py = support::bytesAt<float>(s, 100),
+                pz = support::bytesAt<float>(s, 104);
     EXPECT_NEAR(nx * nx + ny * ny + nz * nz, 1, 1e-5);
     EXPECT_GT(nx * px + ny * py + nz * pz, 0);
 }
@@ -89,10 +84,10 @@ TEST(Export, GlbIsAValidGltfContainer) {
     for (bool colours : {false, true}) {
         const Mesh m = ball(colours);
         const std::string g = encodeMesh(m, MeshFormat::Glb);
-        ASSERT_EQ(read<std::uint32_t>(g, 0), 0x46546C67u);
-        EXPECT_EQ(read<std::uint32_t>(g, 4), 2u);
-        EXPECT_EQ(read<std::uint32_t>(g, 8), g.size());
-        const std::uint32_t jsonLength = read<std::uint32_t>(g, 12);
+        ASSERT_EQ(support::bytesAt<std::uint32_t>(g, 0), 0x46546C67u);
+        EXPECT_EQ(support::bytesAt<std::uint32_t>(g, 4), 2u);
+        EXPECT_EQ(support::bytesAt<std::uint32_t>(g, 8), g.size());
+        const std::uint32_t jsonLength = support::bytesAt<std::uint32_t>(g, 12);
         EXPECT_EQ(jsonLength % 4, 0u);
         const QJsonDocument doc = QJsonDocument::fromJson(QByteArray(g.data() + 20, jsonLength));
         ASSERT_TRUE(doc.isObject());
@@ -104,8 +99,8 @@ TEST(Export, GlbIsAValidGltfContainer) {
         EXPECT_TRUE(accessors[0].toObject().contains("min"));
         EXPECT_EQ(accessors.last().toObject()["count"].toInt(), int(3 * m.triangleCount()));
         const std::size_t binAt = 20 + jsonLength;
-        const std::uint32_t binLength = read<std::uint32_t>(g, binAt);
-        EXPECT_EQ(read<std::uint32_t>(g, binAt + 4), 0x004E4942u);
+        const std::uint32_t binLength = support::bytesAt<std::uint32_t>(g, binAt);
+        EXPECT_EQ(support::bytesAt<std::uint32_t>(g, binAt + 4), 0x004E4942u);
         EXPECT_EQ(binLength,
                   std::uint32_t(root["buffers"].toArray()[0].toObject()["byteLength"].toInt() + 3) /
                       4 * 4);
@@ -115,7 +110,7 @@ TEST(Export, GlbIsAValidGltfContainer) {
     }
     // An empty mesh is still a valid file: a scene with nothing in it.
     const std::string empty = encodeMesh(Mesh{}, MeshFormat::Glb);
-    EXPECT_EQ(read<std::uint32_t>(empty, 8), empty.size());
+    EXPECT_EQ(support::bytesAt<std::uint32_t>(empty, 8), empty.size());
 }
 
 TEST(Export, X3dReadsBackThroughOurOwnReader) {

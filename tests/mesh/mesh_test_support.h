@@ -5,9 +5,19 @@
 #include "mesh/mesh_topology.h"
 #include "mesh/parametric.h"
 
+#include <cstring>
 #include <string>
 
 namespace fl::mesh::support {
+
+// A value of type T stored in an export's bytes at `offset` (little-endian
+// files read on a little-endian machine).
+template <class T>
+T bytesAt(const std::string& bytes, std::size_t offset) {
+    T v;
+    std::memcpy(&v, bytes.data() + offset, sizeof v);
+    return v;
+}
 
 ImplicitField field(const std::string& formula, double half = 1.0,
                     BoxBoundary boundary = BoxBoundary::Closed);
