@@ -217,7 +217,7 @@ void ClassicReader::nodeBody(Node& n) {
         }
         next();
         const std::string fieldName(t.text);
-        b_.checkName(fieldName, "field", t.pos);
+        b_.checkName(fieldName, NameKind::Field, t.pos);
         FieldInfo info = b_.fieldInfo(n, fieldName);
         Field field;
         field.name = fieldName;
@@ -265,7 +265,7 @@ void ClassicReader::fieldDeclaration(Node& n) {
     std::optional<FieldType> type = parseFieldType(typeTok.text);
     if (!type) b_.fail(typeTok.pos, "unknown field type '" + std::string(typeTok.text) + "'");
     ClassicTokenInfo nameTok = expect(T::Identifier, "a field name");
-    b_.checkName(nameTok.text, "field", nameTok.pos);
+    b_.checkName(nameTok.text, NameKind::Field, nameTok.pos);
     FieldDeclaration d;
     d.name = std::string(nameTok.text);
     d.type = *type;
@@ -302,7 +302,7 @@ void ClassicReader::fieldDeclaration(Node& n) {
 
 void ClassicReader::proto(bool external) {
     ClassicTokenInfo nameTok = expect(T::Identifier, "a PROTO name");
-    b_.checkName(nameTok.text, "PROTO", nameTok.pos);
+    b_.checkName(nameTok.text, NameKind::Proto, nameTok.pos);
     ProtoDeclaration* p = b_.scene().newProto();
     p->name = std::string(nameTok.text);
     p->external = external;
@@ -352,7 +352,7 @@ void ClassicReader::interface(ProtoDeclaration& p, bool external) {
         std::optional<FieldType> type = parseFieldType(typeTok.text);
         if (!type) b_.fail(typeTok.pos, "unknown field type '" + std::string(typeTok.text) + "'");
         ClassicTokenInfo nameTok = expect(T::Identifier, "a field name");
-        b_.checkName(nameTok.text, "field", nameTok.pos);
+        b_.checkName(nameTok.text, NameKind::Field, nameTok.pos);
         FieldDeclaration d;
         d.name = std::string(nameTok.text);
         d.type = *type;

@@ -154,10 +154,30 @@ bool isPortableName(std::string_view name, bool xmlName) {
     return xmlChars && !reservedByXml && !reservedWord;
 }
 
-void SceneBuilder::checkName(std::string_view name, std::string_view what, FilePos pos) {
-    const bool xmlName = what == "node type" || what == "PROTO" || what == "field";
+static std::string_view nameKindWord(NameKind kind) {
+    switch (kind) {
+    case NameKind::NodeType:
+        return "node type";
+    case NameKind::Proto:
+        return "PROTO";
+    case NameKind::Field:
+        return "field";
+    case NameKind::Def:
+        return "DEF";
+    case NameKind::Profile:
+        return "profile";
+    case NameKind::Component:
+        return "component";
+    }
+    return "";
+}
+
+void SceneBuilder::checkName(std::string_view name, NameKind kind, FilePos pos) {
+    const bool xmlName =
+        kind == NameKind::NodeType || kind == NameKind::Proto || kind == NameKind::Field;
     if (isPortableName(name, xmlName)) return;
-    fail(pos, "'" + std::string(name) + "' is not a valid " + std::string(what) + " name",
+    fail(pos,
+         "'" + std::string(name) + "' is not a valid " + std::string(nameKindWord(kind)) + " name",
          xmlName ? "use letters, digits, '_' and '-', starting with a letter or '_' but not "
                    "'xml', and no word X3D reserves (DEF, USE, IS, ROUTE ...)"
                  : "X3D names have no spaces, quotes, '#', ',', '.', ':', brackets, braces or "
@@ -165,7 +185,7 @@ void SceneBuilder::checkName(std::string_view name, std::string_view what, FileP
 }
 
 Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
-    checkName(type, "node type", pos);
+    checkName(type, NameKind::NodeType, pos);
     if (++nodesCreated_ > limits_.maxNodes)
         fail(pos, "the scene has more than " + std::to_string(limits_.maxNodes) + " nodes");
     Node* node = scene_.newNode();
@@ -217,7 +237,7 @@ void SceneBuilder::checkProfile(const NodeSpec& spec, FilePos pos) {
 }
 
 void SceneBuilder::define(Node* node, std::string_view name, FilePos pos) {
-    checkName(name, "DEF", pos);
+    checkName(name, NameKind::Def, pos);
     Scope& scope = scopes_.back();
     scope.defHistory[std::string(name)].push_back(node);
     auto [it, inserted] = scope.defs.try_emplace(std::string(name), node);
@@ -328,7 +348,7 @@ const ProtoDeclaration* SceneBuilder::findProto(std::string_view name) const {
 }
 
 void SceneBuilder::setProfile(std::string profile, FilePos pos) {
-    checkName(profile, "profile", pos);
+    checkName(profile, NameKind::Profile, pos);
     if (!isKnownProfile(profile))
         warning(pos, "unknown profile '" + profile + "'",
                 "profiles are Core, Interchange, Interactive, Immersive, Full");
@@ -337,7 +357,7 @@ void SceneBuilder::setProfile(std::string profile, FilePos pos) {
 
 void SceneBuilder::addComponent(std::string name, int level, std::string_view levelText,
                                 FilePos namePos, FilePos levelPos) {
-    checkName(name, "component", namePos);
+    checkName(name, NameKind::Component, namePos);
     std::optional<int> max = componentMaxLevel(name);
     if (!max)
         warning(namePos, "unknown component '" + name + "'");

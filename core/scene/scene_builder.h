@@ -6,6 +6,7 @@
 #include "read_limits.h"
 #include "scene.h"
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <set>
@@ -26,6 +27,10 @@ struct FieldInfo {
     bool eventName = false; // set_x / x_changed of an inputOutput field
     std::string_view canonicalName;
 };
+
+// What a name names: node types, PROTOs and fields are also written as XML
+// element and attribute names; DEF names, profiles and components are not.
+enum class NameKind : std::uint8_t { NodeType, Proto, Field, Def, Profile, Component };
 
 // Whether `name` survives every encoding (see SceneBuilder::checkName);
 // `xmlName`: it is written as an XML element or attribute name too.
@@ -53,7 +58,7 @@ class SceneBuilder {
 
     // Node creation: type lookup (built-in, PROTO, unknown) by the encoding's rules.
     // Refuses (with a located error) a name ClassicVRML could not write.
-    void checkName(std::string_view name, std::string_view what, FilePos pos);
+    void checkName(std::string_view name, NameKind kind, FilePos pos);
     Node* newNode(std::string_view type, FilePos pos);
     void define(Node* node, std::string_view name, FilePos pos);
     // The node a USE names; a placeholder when the name comes later in the file.

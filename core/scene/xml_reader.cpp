@@ -1,6 +1,5 @@
 #include "xml_reader.h"
 
-#include "classic_lexer.h"
 #include "components.h"
 
 #include "field_access.h"
@@ -447,7 +446,7 @@ FieldDeclaration XmlReader::fieldElement(bool external, bool inProtoInterface) {
     FieldDeclaration d;
     d.where = tagPos_;
     d.name = attrValue("name");
-    if (!d.name.empty()) b_.checkName(d.name, "field", tagPos_);
+    if (!d.name.empty()) b_.checkName(d.name, NameKind::Field, tagPos_);
     const std::string typeName = attrValue("type");
     const std::string accessName = attrValue("accessType");
     if (d.name.empty()) b_.fail(tagPos_, "<field> needs a name attribute");
@@ -541,7 +540,7 @@ void XmlReader::isElement(Node& n) {
 void XmlReader::fieldValueElement(Node& instance) {
     const std::string name = attrValue("name");
     const FilePos pos = tagPos_;
-    b_.checkName(name, "field", pos);
+    b_.checkName(name, NameKind::Field, pos);
     FieldInfo info = b_.fieldInfo(instance, name);
     Field field;
     field.name = name;
@@ -566,7 +565,7 @@ void XmlReader::fieldValueElement(Node& instance) {
 }
 
 void XmlReader::protoDeclare(bool external) {
-    b_.checkName(attrValue("name"), "PROTO", tagPos_);
+    b_.checkName(attrValue("name"), NameKind::Proto, tagPos_);
     ProtoDeclaration* p = b_.scene().newProto();
     p->name = attrValue("name");
     p->external = external;
