@@ -32,21 +32,28 @@ not_installed() {
   done
 }
 
-# Runs apt-get as root, or through sudo; the first call runs `apt-get update`.
+# apt-get as root, or through sudo.
+SUDO=()
+as_root() {
+  if [ "$(id -u)" -ne 0 ] && [ ${#SUDO[@]} -eq 0 ]; then
+    command -v sudo >/dev/null 2>&1 || { log "need root or sudo to run: $*"; return 1; }
+    SUDO=(sudo)
+  fi
+  "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive "$@"
+}
+
+# `apt-get update`, once per run (apt-cache knows new packages only after it).
 APT_UPDATED=0
+apt_update_once() {
+  [ "$APT_UPDATED" = 1 ] && return 0
+  as_root apt-get update -qq || return 1
+  APT_UPDATED=1
+}
+
+# apt-get with the package lists fresh.
 apt_get() {
-  local sudo=()
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null 2>&1 || { log "need root or sudo to run: apt-get $*"; return 1; }
-    sudo=(sudo)
-  fi
-  export DEBIAN_FRONTEND=noninteractive
-  if [ "$APT_UPDATED" = 0 ]; then
-    "${sudo[@]}" apt-get update -qq || return 1
-    APT_UPDATED=1
-  fi
-  [ "${*: -1}" = update ] && return 0 # just done
-  "${sudo[@]}" apt-get "$@"
+  apt_update_once || return 1
+  as_root apt-get "$@"
 }
 
 install_missing_packages() {
@@ -58,8 +65,7 @@ install_missing_packages() {
   mapfile -t missing < <(not_installed "${PACKAGES[@]}")
   mapfile -t optional < <(not_installed "${OPTIONAL_PACKAGES[@]}")
   [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
-  # apt-cache knows the optional packages only after the update.
-  apt_get -qq update || exit 1
+  apt_update_once || exit 1
   for p in "${optional[@]}"; do
     if apt-cache show "$p" >/dev/null 2>&1; then
       missing+=("$p")
