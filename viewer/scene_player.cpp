@@ -1,4 +1,5 @@
 #include "scene_player.h"
+#include "animation/event_responses.h"
 #include "text_outliner.h"
 
 #include <QMetaObject>
@@ -86,18 +87,13 @@ bool ScenePlayer::touch(const scene::Node& sensor) {
         s->forEachNode([&](const scene::Node& n) { ours = ours || &n == &sensor; });
     if (!ours) return false;
     const animation::Instant now = timeline_.now();
-    auto single = [](scene::FieldType type, double v) {
-        scene::FieldValue value;
-        value.type = type;
-        value.numbers = {v};
-        return value;
-    };
+    using animation::singleValue;
     // X3D 20.4.4: pressing sends isActive TRUE, releasing over the geometry
     // isActive FALSE and touchTime (UTC seconds, as every SFTime).
-    inputs_.push_back({&sensor, "isActive", single(scene::FieldType::SFBool, 1), now});
-    inputs_.push_back({&sensor, "isActive", single(scene::FieldType::SFBool, 0), now});
+    inputs_.push_back({&sensor, "isActive", singleValue(scene::FieldType::SFBool, 1), now});
+    inputs_.push_back({&sensor, "isActive", singleValue(scene::FieldType::SFBool, 0), now});
     inputs_.push_back(
-        {&sensor, "touchTime", single(scene::FieldType::SFTime, now.x3dSeconds()), now});
+        {&sensor, "touchTime", singleValue(scene::FieldType::SFTime, now.x3dSeconds()), now});
     request();
     return true;
 }
