@@ -19,15 +19,15 @@ std::string num(double v, const char* format = "%.4g") {
 }
 } // namespace
 
-std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
+std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
                                           const std::vector<double>& resolutions,
                                           const SweepOptions& options,
                                           std::vector<std::string>* skipped) {
     std::vector<AccuracyRow> rows;
     // The error of a closed mesh's box faces is zero by construction; the
     // comparison is about the shape, so both methods mesh the open surface.
-    mesh::ImplicitField open = field;
-    open.boundary = mesh::BoxBoundary::Open;
+    field::ImplicitField open = field;
+    open.boundary = field::BoxBoundary::Open;
     for (double res : resolutions) {
         mesh::MeshOptions o;
         o.resolution = res;

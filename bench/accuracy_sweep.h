@@ -3,7 +3,7 @@
 // marching cubes swept over resolutions in the same run, each row measured
 // the same way — triangles, function evaluations, milliseconds, and the error
 // measured independently of either mesher (core/mesh/mesh_error.h).
-#include "mesh/implicit_field.h"
+#include "field/field_sampler.h"
 
 #include <optional>
 #include <string>
@@ -29,7 +29,7 @@ struct SweepOptions {
 
 // `skipped` (when given) gets one line per run that did not produce a row,
 // e.g. a resolution over the memory budget.
-std::vector<AccuracyRow> runAccuracySweep(const mesh::ImplicitField& field,
+std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
                                           const std::vector<double>& resolutions,
                                           const SweepOptions& options = {},
                                           std::vector<std::string>* skipped = nullptr);

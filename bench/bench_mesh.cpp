@@ -28,15 +28,15 @@ const std::vector<MeshShape>& shapes() {
     return all;
 }
 
-mesh::ImplicitField fieldOf(const MeshShape& shape) {
+field::ImplicitField fieldOf(const MeshShape& shape) {
     auto compiled = formula::compile(shape.formula);
-    mesh::ImplicitField f{std::move(*compiled.tape), {{-1, -1, -1}, {1, 1, 1}}, {}, 0, {}};
-    f.boundary = mesh::BoxBoundary::Open;
+    field::ImplicitField f{std::move(*compiled.tape), {{-1, -1, -1}, {1, 1, 1}}, {}, 0, {}};
+    f.boundary = field::BoxBoundary::Open;
     return f;
 }
 
 void adaptive(benchmark::State& state, const MeshShape* shape) {
-    const mesh::ImplicitField f = fieldOf(*shape);
+    const field::ImplicitField f = fieldOf(*shape);
     mesh::MeshOptions o;
     o.resolution = double(state.range(0));
     o.threads = 1;
@@ -47,7 +47,7 @@ void adaptive(benchmark::State& state, const MeshShape* shape) {
 }
 
 void dense(benchmark::State& state, const MeshShape* shape) {
-    const mesh::ImplicitField f = fieldOf(*shape);
+    const field::ImplicitField f = fieldOf(*shape);
     std::size_t triangles = 0;
     for (auto _ : state)
         triangles = mesh::marchingCubes(f, double(state.range(0)), 1).mesh.triangleCount();

@@ -13,11 +13,11 @@ namespace fl::viewer {
 namespace {
 
 // The shape's domain box in the scene, as the box round its eight corners.
-mesh::Box3 sceneBox(const mesh::ShapeMesh& s) {
-    return mesh::boundsOf(s.domain, mesh::Affine::fromMatrix(s.placement));
+field::Box3 sceneBox(const mesh::ShapeMesh& s) {
+    return field::boundsOf(s.domain, field::Affine::fromMatrix(s.placement));
 }
 
-double distanceTo(const mesh::Box3& box, const QVector3D& eye) {
+double distanceTo(const field::Box3& box, const QVector3D& eye) {
     double d2 = 0;
     for (std::size_t k = 0; k < 3; ++k) {
         const double e = eye[int(k)];
@@ -36,7 +36,7 @@ bool LevelOfDetail::update(const mesh::SceneMeshes& meshes, const CameraPose& po
         if (!s.geometry || !scene::boolField(*s.geometry, "lod") || !s.error.empty()) continue;
         const auto range = scene::numbersField(*s.geometry, "lodRange");
         const double lo = range.size() == 2 ? range[0] : 8, hi = range.size() == 2 ? range[1] : 256;
-        const mesh::Box3 box = sceneBox(s);
+        const field::Box3 box = sceneBox(s);
         mesh::ViewForLod view;
         view.distance = distanceTo(box, pose.position);
         view.fieldOfViewY = double(pose.verticalFieldOfView) * std::numbers::pi / 180;

@@ -1,9 +1,9 @@
 #pragma once
-// The point of a scene under the cursor. On implicit and explicit shapes it
-// is found on the function itself — the ray is marched through the shape's
-// domain box and the sign change refined by bisection, so the point is on
-// f = 0 to rounding, not on the mesh's chords — and elsewhere on the nearest
-// triangle. Plain math over the scene and its meshes.
+// The point of a scene under the cursor. On implicit, explicit and combined
+// function shapes it is found on the function itself — the field each shape
+// was meshed from, marched along the ray by field/ray_march.h (the same march
+// haptic contact and the grader use), so the point is on f = 0 to rounding,
+// not on the mesh's chords — and elsewhere on the nearest triangle.
 #include "camera_pose.h"
 #include "mesh/scene_meshing.h"
 #include "scene/scene.h"
@@ -36,6 +36,9 @@ struct Pick {
     std::vector<const scene::Node*> touchSensors;
 };
 
+std::optional<Pick> pick(const mesh::SceneMeshes& meshes, const Ray& ray);
+// The same; the scene is not needed (the meshes carry their fields). Kept
+// until the window's callers move to the form above.
 std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& meshes,
                          const Ray& ray);
 

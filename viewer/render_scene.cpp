@@ -14,7 +14,7 @@ namespace {
 
 constexpr int kMaxLights = 8; // as in shaders/surface.frag
 
-QMatrix4x4 toMatrix(const mesh::Matrix4& m) {
+QMatrix4x4 toMatrix(const field::Matrix4& m) {
     // Column-major in, QMatrix4x4's constructor wants rows.
     return QMatrix4x4(float(m[0]), float(m[4]), float(m[8]), float(m[12]), float(m[1]), float(m[5]),
                       float(m[9]), float(m[13]), float(m[2]), float(m[6]), float(m[10]),

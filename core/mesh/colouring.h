@@ -3,7 +3,7 @@
 // or an explicit function whose value is mapped through key values to colours
 // (linear interpolation), each read in the material's own domain box mapped
 // onto the geometry's (docs/nodes.md, "Domains and how they are mapped").
-#include "implicit_field.h" // Box3
+#include "field_names.h"
 #include "mesh.h"
 
 #include <array>

@@ -1,9 +1,9 @@
 #pragma once
-// How an appearance or physics component sees a point of its geometry
-// (docs/nodes.md, "Domains and how they are mapped"): x, y, z in the
-// component's own box, u, v, w the point's place in the geometry's box in
-// [0, 1] — or, on parametric geometry, the surface's own parameters.
-#include "implicit_field.h" // Box3
+// How an appearance component sees the vertices of its geometry's mesh
+// (field/domain_mapping.h for one point) — on parametric geometry u, v, w
+// are the surface's own parameters.
+#include "field/domain_mapping.h"
+#include "field_names.h"
 #include "mesh.h"
 
 #include <array>
@@ -11,9 +11,7 @@
 
 namespace fl::mesh {
 
-// (x', y', z', u, v, w) of one point.
-std::array<double, 6> componentView(const std::array<double, 3>& p, const Box3& geometry,
-                                    const Box3& component);
+using field::componentView; // (x', y', z', u, v, w) of one point
 
 // The same for every vertex of a mesh, as six arrays ready for a batch
 // evaluation; u, v, w from mesh.parameters when the mesh has them.

@@ -16,7 +16,6 @@
 namespace fl::mesh {
 namespace {
 
-using Vec3 = std::array<double, 3>;
 
 constexpr int kB = 8;      // cells along a block's edge
 constexpr int kC = kB + 1; // corners along a block's edge (the far ones shared with the next block)

@@ -7,7 +7,7 @@
 // function so the sharp edges and corners of min/max set operations stay
 // sharp. Blocks run on every core; the output is the same whatever the number
 // of threads. docs/meshing.md describes the behaviour on hard cases.
-#include "implicit_field.h"
+#include "field_names.h"
 #include "mesh.h"
 
 #include <atomic>

@@ -3,7 +3,7 @@
 // seen from the camera, covers about `pixelError` pixels — a real number the
 // viewer can move smoothly as the camera approaches (with hysteresis on its
 // side, so it does not re-mesh at every frame), clamped to FGeometry.lodRange.
-#include "implicit_field.h"
+#include "field_names.h"
 
 namespace fl::mesh {
 

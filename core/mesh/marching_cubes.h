@@ -5,7 +5,7 @@
 // algorithm (Lorensen & Cline 1987) with its case table generated from the
 // cube's faces at start-up (ambiguous faces separate the inside corners, so
 // neighbouring cells agree and the mesh has no cracks).
-#include "implicit_field.h"
+#include "field_names.h"
 #include "mesh.h"
 
 #include <array>

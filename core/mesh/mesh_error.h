@@ -4,7 +4,7 @@
 // every triangle's interior (not only its vertices), as a fraction of the
 // domain box's diagonal. Where the box closes the solid, the distance to the
 // box face counts (the face is part of that solid's boundary).
-#include "implicit_field.h"
+#include "field_names.h"
 #include "mesh.h"
 
 namespace fl::mesh {

@@ -73,15 +73,10 @@ void basisAt(const NurbsBasis& b, int span, double t, std::vector<double>& n,
     }
 }
 
-Point3 cross(const Point3& a, const Point3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using field::cross;
+using field::length;
 
-double length(const Point3& a) {
-    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
-
-Vec3f toFloat(const Point3& p) {
+Vec3f toFloat(const Vec3& p) {
     return {float(p[0]), float(p[1]), float(p[2])};
 }
 
@@ -150,11 +145,11 @@ std::vector<double> nurbsWeights(const std::vector<double>& given, std::size_t p
     return std::vector<double>(points, 1.0);
 }
 
-Point3 evaluate(const NurbsCurve& c, double t) {
+Vec3 evaluate(const NurbsCurve& c, double t) {
     std::vector<double> n, dn;
     const int span = findSpan(c.basis, t);
     basisAt(c.basis, span, t, n, dn);
-    Point3 sum{0, 0, 0};
+    Vec3 sum{0, 0, 0};
     double w = 0;
     const int p = c.basis.order - 1;
     for (int r = 0; r <= p; ++r) {
@@ -174,7 +169,7 @@ SurfacePoint evaluate(const NurbsSurface& s, double u, double v) {
     basisAt(s.v, sv, v, nv, dnv);
     const int pu = s.u.order - 1, pv = s.v.order - 1;
     // Homogeneous sums A (weighted point), w and their u and v derivatives.
-    Point3 a{0, 0, 0}, au{0, 0, 0}, av{0, 0, 0};
+    Vec3 a{0, 0, 0}, au{0, 0, 0}, av{0, 0, 0};
     double w = 0, wu = 0, wv = 0;
     for (int j = 0; j <= pv; ++j)
         for (int i = 0; i <= pu; ++i) {
@@ -229,7 +224,7 @@ std::vector<Point2> nurbsCurve2DPoints(int order, const std::vector<Point2>& poi
     std::vector<Point2> out;
     for (int k = 0; k <= segments; ++k) {
         const double t = std::lerp(c.basis.first(), c.basis.last(), double(k) / segments);
-        const Point3 p = evaluate(c, t);
+        const Vec3 p = evaluate(c, t);
         out.push_back({p[0], p[1]});
     }
     return out;
@@ -324,7 +319,7 @@ Mesh nurbsSurfaceMesh(const NurbsSurface& s, int uSegments, int vSegments,
     // normals so the mesh is closed and smooth across them. Only points on
     // the range's edges are matched: inside, distinct sheets may touch.
     double extent = 0;
-    for (const Point3& p : s.points)
+    for (const Vec3& p : s.points)
         extent = std::max({extent, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
     const double snap = std::max(extent, 1e-300) * 1e-9;
     // Derivatives this small (relative to the patch and its range) vanish:
@@ -332,7 +327,7 @@ Mesh nurbsSurfaceMesh(const NurbsSurface& s, int uSegments, int vSegments,
     const double duFloor = 1e-7 * extent / (u1 - u0), dvFloor = 1e-7 * extent / (v1 - v0);
     std::unordered_map<PlaceKey, std::uint32_t, PlaceHash> byPlace;
     std::vector<std::uint32_t> vertexOf(fill.points.size());
-    std::vector<Point3> normalSum;
+    std::vector<Vec3> normalSum;
     for (std::size_t k = 0; k < fill.points.size(); ++k) {
         const double u = fill.points[k][0], v = fill.points[k][1];
         const SurfacePoint sp = evaluate(s, u, v);
@@ -354,7 +349,7 @@ Mesh nurbsSurfaceMesh(const NurbsSurface& s, int uSegments, int vSegments,
         }
         vertexOf[k] = index;
         if (length(sp.du) < duFloor || length(sp.dv) < dvFloor) continue;
-        const Point3 n = cross(sp.du, sp.dv);
+        const Vec3 n = cross(sp.du, sp.dv);
         const double len = length(n);
         if (len > 0 && std::isfinite(len))
             for (std::size_t c = 0; c < 3; ++c)
@@ -368,21 +363,21 @@ Mesh nurbsSurfaceMesh(const NurbsSurface& s, int uSegments, int vSegments,
     }
     // A vertex whose derivatives vanish (a pole, a degenerate edge of
     // control points) takes the mean of its triangles' faces instead.
-    std::vector<Point3> faceSum(m.positions.size(), {0, 0, 0});
+    std::vector<Vec3> faceSum(m.positions.size(), {0, 0, 0});
     for (const Triangle& t : m.triangles) {
         const auto& a = m.positions[t[0]];
         const auto& b = m.positions[t[1]];
         const auto& c = m.positions[t[2]];
-        const Point3 e1 = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
-        const Point3 e2 = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
-        const Point3 n = cross(e1, e2);
+        const Vec3 e1 = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+        const Vec3 e2 = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+        const Vec3 n = cross(e1, e2);
         for (std::uint32_t v : t)
             for (std::size_t k = 0; k < 3; ++k)
                 faceSum[v][k] += n[k];
     }
     m.normals.resize(m.positions.size());
     for (std::size_t v = 0; v < m.positions.size(); ++v) {
-        Point3 n = normalSum[v];
+        Vec3 n = normalSum[v];
         if (length(n) < 1e-6) n = faceSum[v];
         const double len = length(n);
         m.normals[v] = len > 0 ? Vec3f{float(n[0] / len), float(n[1] / len), float(n[2] / len)}

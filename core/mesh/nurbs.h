@@ -8,6 +8,7 @@
 // of control points, a knot vector of the wrong length or decreasing, or
 // weights of the wrong count or not positive, fall back to the specified
 // defaults (a uniform open knot vector, unit weights) with a warning.
+#include "field_names.h"
 #include "mesh.h"
 #include "planar_fill.h"
 
@@ -16,8 +17,6 @@
 #include <vector>
 
 namespace fl::mesh {
-
-using Point3 = std::array<double, 3>;
 
 // Orders above this are lowered (with a warning): evaluation costs order^2.
 inline constexpr int kMaxNurbsOrder = 32;
@@ -48,13 +47,13 @@ void limitNurbsCells(int& uSegments, int& vSegments, std::vector<std::string>& w
 
 struct NurbsCurve {
     NurbsBasis basis;
-    std::vector<Point3> points;  // basis.count of them
+    std::vector<Vec3> points;    // basis.count of them
     std::vector<double> weights; // one per point, all > 0
 };
 
 struct NurbsSurface {
     NurbsBasis u, v;
-    std::vector<Point3> points; // u.count * v.count, u fastest (X3D order)
+    std::vector<Vec3> points; // u.count * v.count, u fastest (X3D order)
     std::vector<double> weights;
 };
 
@@ -62,10 +61,10 @@ struct NurbsSurface {
 std::vector<double> nurbsWeights(const std::vector<double>& given, std::size_t points,
                                  std::vector<std::string>& warnings);
 
-Point3 evaluate(const NurbsCurve& curve, double t);
+Vec3 evaluate(const NurbsCurve& curve, double t);
 // The point and its partial derivatives along u and v.
 struct SurfacePoint {
-    Point3 position, du, dv;
+    Vec3 position, du, dv;
 };
 SurfacePoint evaluate(const NurbsSurface& surface, double u, double v);
 

@@ -17,22 +17,17 @@ namespace {
 // The default chord tolerance: this fraction of a cell of the resolution.
 constexpr double kToleranceOfACell = 0.02;
 
-using Vec3 = std::array<double, 3>;
 using formula::Input;
 
-Vec3 sub(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using field::cross;
+using field::dot;
+using field::minus;
+
+// field::unitOr, with a flag: the frames below fall back in several steps.
 Vec3 unit(const Vec3& a, bool& ok) {
-    const double n = std::sqrt(dot(a, a));
-    ok = std::isfinite(n) && n > 0;
-    return ok ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
+    const Vec3 u = field::unitOr(a, {0, 0, 0});
+    ok = u != Vec3{0, 0, 0};
+    return u;
 }
 
 class Builder {
@@ -229,7 +224,7 @@ class Builder {
             const auto P = [&](std::uint32_t i) {
                 return Vec3{m.positions[i][0], m.positions[i][1], m.positions[i][2]};
             };
-            const Vec3 n = cross(sub(P(t[1]), P(t[0])), sub(P(t[2]), P(t[0])));
+            const Vec3 n = cross(minus(P(t[1]), P(t[0])), minus(P(t[2]), P(t[0])));
             if (!(dot(n, n) > 0)) continue; // zero area
             m.triangles.push_back(t);
             for (std::uint32_t i : t)
@@ -261,7 +256,7 @@ class Builder {
                     const auto P = [&](std::uint32_t i) {
                         return Vec3{m.positions[i][0], m.positions[i][1], m.positions[i][2]};
                     };
-                    const Vec3 n = cross(sub(P(t[1]), P(t[0])), sub(P(t[2]), P(t[0])));
+                    const Vec3 n = cross(minus(P(t[1]), P(t[0])), minus(P(t[2]), P(t[0])));
                     for (std::uint32_t i : t)
                         for (std::size_t k = 0; k < 3; ++k)
                             faceSum[i][k] += n[k];

@@ -8,7 +8,6 @@
 namespace fl::mesh {
 namespace {
 
-using Vec3 = std::array<double, 3>;
 using formula::Input;
 
 constexpr std::size_t kMaxPoints = 10'000'000;
@@ -69,9 +68,7 @@ MeshResult pointsOnSurface(const ImplicitField& field, const PointCloudOptions& 
             e1[k] = double(m.positions[t[1]][k]) - m.positions[t[0]][k];
             e2[k] = double(m.positions[t[2]][k]) - m.positions[t[0]][k];
         }
-        const Vec3 c{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                     e1[0] * e2[1] - e1[1] * e2[0]};
-        total += 0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        total += 0.5 * field::length(field::cross(e1, e2));
         cumulative[i] = total;
     }
     std::mt19937 rng(options.seed);

@@ -366,6 +366,7 @@ class Walker {
         sm.cancelled = r.cancelled;
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
+        if (type != "parametric") sm.field = std::make_shared<const ImplicitField>(field);
         if (type == "parametric" && displacement && !sm.mesh.empty() && !sm.mesh.isPointCloud()) {
             const auto w =
                 displaceAlongNormals(sm.mesh, *displacement, field.box, timeOf(*texture));
@@ -535,7 +536,7 @@ class Walker {
                 f = b.min(f, b.sub(in[k], formula::Val::constant(box.lo[k])));
                 f = b.min(f, b.sub(formula::Val::constant(box.hi[k]), in[k]));
             }
-            out.push_back({f, mesh::boundsOf(box, toLocal),
+            out.push_back({f, field::boundsOf(box, toLocal),
                            scene::effectiveNode(moment_.node(*n, "appearance")),
                            moment_.number(*geometry, "resolution", 0, 32)});
             return;
@@ -653,7 +654,8 @@ class Walker {
         sm.cancelled = r.cancelled;
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
-        colour(whole.appearance, field.box, sm);
+        sm.field = std::make_shared<const ImplicitField>(std::move(field));
+        colour(whole.appearance, sm.field->box, sm);
         sm.look = lookOf(whole.appearance, true);
         place(sm, m);
         out_.shapes.push_back(std::move(sm));

@@ -5,10 +5,10 @@
 // Sphere, IndexedFaceSet, ...), each coloured by its appearance and placed by
 // the Transform and FTransform nodes above it, with the values the scene's
 // animation (TimeSensors, interpolators, ROUTEs) gives them at that moment.
-#include "affine.h"
 #include "animation/animator.h"
 #include "animation/clock.h"
 #include "dual_contouring.h"
+#include "field_names.h"
 #include "mesh.h"
 #include "mesh_cache.h"
 #include "scene/scene.h"
@@ -98,6 +98,10 @@ struct ShapeMesh {
     double resolution = 0;                 // what it was meshed at
     double t = 0;                          // the geometry's t at the moment meshed
     std::vector<std::pair<std::string, double>> parameters; // `param` values used
+    // Implicit, explicit and combined (FTransform) shapes: the field exactly
+    // as it was meshed — definition, displacement, parameters, t, box — for
+    // picking, haptic contact and the grader to sample (field/ray_march.h).
+    std::shared_ptr<const ImplicitField> field;
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
     // The enabled TouchSensors a click on this shape triggers: those beside

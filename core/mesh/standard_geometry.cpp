@@ -9,16 +9,8 @@
 namespace fl::mesh {
 namespace {
 
-using Vec3 = std::array<double, 3>;
-
 Vec3f toFloat(const Vec3& v) {
     return {float(v[0]), float(v[1]), float(v[2])};
-}
-
-Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(n > 0) || !std::isfinite(n)) return fallback;
-    return {v[0] / n, v[1] / n, v[2] / n};
 }
 
 // X3D 13.3.6 (Sphere), 13.3.2/3 (Cone, Cylinder sides): the image wraps
@@ -156,15 +148,15 @@ Mesh coneMesh(double bottomRadius, double height, bool side, bool bottom, int se
         const std::uint32_t first = std::uint32_t(b.mesh.positions.size());
         for (int s = 0; s <= segments; ++s) {
             const double a = wrapAngle(s, segments);
-            const Vec3 n =
-                unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)}, {0, 1, 0});
+            const Vec3 n = field::unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)},
+                                         {0, 1, 0});
             b.vertex({bottomRadius * std::sin(a), y0, bottomRadius * std::cos(a)}, n,
                      {double(s) / segments, 0});
         }
         for (int s = 0; s < segments; ++s) {
             const double a = wrapAngle(s, segments) + std::numbers::pi / segments;
-            const Vec3 n =
-                unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)}, {0, 1, 0});
+            const Vec3 n = field::unitOr({height * std::sin(a), bottomRadius, height * std::cos(a)},
+                                         {0, 1, 0});
             const std::uint32_t apex = b.vertex({0, y1, 0}, n, {(s + 0.5) / segments, 1});
             b.triangle(apex, first + std::uint32_t(s), first + std::uint32_t(s + 1));
         }
@@ -239,7 +231,7 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
             degenerate = true;
         }
         const double sign = f.ccw ? 1.0 : -1.0;
-        faceNormal[p] = unitOr({sign * n[0], sign * n[1], sign * n[2]}, {0, 0, 0});
+        faceNormal[p] = field::unitOr({sign * n[0], sign * n[1], sign * n[2]}, {0, 0, 0});
     }
     // Smooth normals: the faces around each point, for the crease test.
     std::unordered_map<std::int64_t, std::vector<std::size_t>> facesAt;
@@ -278,7 +270,7 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
         }
         const Vec3& n = f.normals[std::size_t(index)];
         const double sign = f.ccw ? 1.0 : -1.0;
-        return unitOr({sign * n[0], sign * n[1], sign * n[2]}, faceNormal[p]);
+        return field::unitOr({sign * n[0], sign * n[1], sign * n[2]}, faceNormal[p]);
     };
     // Texture coordinates: given, or X3D's default from the bounding box.
     std::size_t sAxis = 0, tAxis = 1;
@@ -339,7 +331,7 @@ FaceSetResult faceSetMesh(const FaceSet& f) {
                         for (std::size_t a = 0; a < 3; ++a)
                             sum[a] += fq[a];
                 }
-                n = unitOr(sum, faceNormal[p]);
+                n = field::unitOr(sum, faceNormal[p]);
             }
             m.normals.push_back(toFloat(n));
             m.texCoords.push_back(texCoordAt(corner));
@@ -462,18 +454,11 @@ FaceSetResult elevationGridMesh(const ElevationGrid& g) {
 
 namespace {
 
-Vec3 subtract(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 crossOf(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 // Rodrigues: v turned by `angle` about the unit `axis`.
 Vec3 turned(const Vec3& v, const std::array<double, 4>& r) {
-    const Vec3 axis = unitOr({r[0], r[1], r[2]}, {0, 0, 1});
+    const Vec3 axis = field::unitOr({r[0], r[1], r[2]}, {0, 0, 1});
     const double c = std::cos(r[3]), s = std::sin(r[3]);
-    const Vec3 k = crossOf(axis, v);
+    const Vec3 k = field::cross(axis, v);
     const double d = axis[0] * v[0] + axis[1] * v[1] + axis[2] * v[2];
     return {v[0] * c + k[0] * s + axis[0] * d * (1 - c),
             v[1] * c + k[1] * s + axis[1] * d * (1 - c),
@@ -493,8 +478,10 @@ FaceSetResult extrusionMesh(const Extrusion& e) {
     for (std::size_t i = 0; i < ns; ++i) {
         const Vec3 next = i + 1 < ns ? e.spine[i + 1] : closedSpine ? e.spine[1] : e.spine[i];
         const Vec3 prev = i > 0 ? e.spine[i - 1] : closedSpine ? e.spine[ns - 2] : e.spine[i];
-        Y[i] = unitOr(subtract(next, prev), i ? Y[i - 1] : Vec3{0, 1, 0});
-        Z[i] = unitOr(crossOf(subtract(next, e.spine[i]), subtract(prev, e.spine[i])), {0, 0, 0});
+        Y[i] = field::unitOr(field::minus(next, prev), i ? Y[i - 1] : Vec3{0, 1, 0});
+        Z[i] = field::unitOr(
+            field::cross(field::minus(next, e.spine[i]), field::minus(prev, e.spine[i])),
+            {0, 0, 0});
     }
     // Straight stretches take the first bend's z (or +z turned onto the spine).
     Vec3 firstZ{0, 0, 0};
@@ -506,14 +493,15 @@ FaceSetResult extrusionMesh(const Extrusion& e) {
     if (firstZ == Vec3{0, 0, 0}) {
         const Vec3 y = Y[0];
         const Vec3 helper = std::abs(y[1]) < 0.9 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
-        firstZ = std::abs(y[1]) > 0.999 ? Vec3{0, 0, y[1] > 0 ? 1.0 : -1.0}
-                                        : unitOr(crossOf(crossOf(y, helper), y), {0, 0, 1});
+        firstZ = std::abs(y[1]) > 0.999
+                     ? Vec3{0, 0, y[1] > 0 ? 1.0 : -1.0}
+                     : field::unitOr(field::cross(field::cross(y, helper), y), {0, 0, 1});
     }
     for (std::size_t i = 0; i < ns; ++i) {
         if (Z[i] == Vec3{0, 0, 0}) Z[i] = i ? Z[i - 1] : firstZ;
         if (i && Z[i][0] * Z[i - 1][0] + Z[i][1] * Z[i - 1][1] + Z[i][2] * Z[i - 1][2] < 0)
             Z[i] = {-Z[i][0], -Z[i][1], -Z[i][2]}; // no sudden flip
-        X[i] = unitOr(crossOf(Y[i], Z[i]), {1, 0, 0});
+        X[i] = field::unitOr(field::cross(Y[i], Z[i]), {1, 0, 0});
     }
     FaceSet f;
     f.creaseAngle = e.creaseAngle;
@@ -551,7 +539,7 @@ FaceSetResult extrusionMesh(const Extrusion& e) {
         nc);
     const auto tAlong = cumulative(
         [&](std::size_t k) {
-            const Vec3 d = subtract(e.spine[k], e.spine[k - 1]);
+            const Vec3 d = field::minus(e.spine[k], e.spine[k - 1]);
             return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         },
         ns);
@@ -607,7 +595,7 @@ FaceSetResult extrusionMesh(const Extrusion& e) {
         const Triangle& t = out.mesh.triangles.front();
         const auto& n = out.mesh.normals[t[0]];
         const auto& p = out.mesh.positions[t[0]];
-        const Vec3 away = subtract({p[0], p[1], p[2]}, e.spine[0]);
+        const Vec3 away = field::minus({p[0], p[1], p[2]}, e.spine[0]);
         inward = n[0] * away[0] + n[1] * away[1] + n[2] * away[2] < 0;
     }
     if (inward) {

@@ -4,6 +4,7 @@
 // the exports and the haptics' polygonal mode treat a Box like any function
 // shape. Sizes and orientation follow X3D 19775-1 (13 Geometry3D, 11
 // Rendering): centred on the origin, axes along y, counter-clockwise faces.
+#include "field_names.h"
 #include "mesh.h"
 
 #include <array>

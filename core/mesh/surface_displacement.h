@@ -4,7 +4,7 @@
 // onto the geometry's, with u, v, w the surface's own parameters. Normals are
 // then taken from the displaced triangles. (On implicit and explicit geometry
 // the displacement is added to f instead: ImplicitField::displacement.)
-#include "implicit_field.h"
+#include "field_names.h"
 #include "mesh.h"
 
 #include <string>

@@ -16,7 +16,7 @@ TEST(IntervalTightness, TheMesherEvaluatesAroundTheSurfaceNotTheBox) {
     const char* shell = "min(0.05 - abs(sqrt(x*x + y*y + z*z) - 0.6), 0.3 + 0.1*sin(8*x))";
     formula::CompileResult r = formula::compile(shell);
     ASSERT_TRUE(r.ok());
-    mesh::ImplicitField field;
+    field::ImplicitField field;
     field.tape = *r.tape;
     field.box = {{-1, -1, -1}, {1, 1, 1}};
     mesh::MeshOptions o;

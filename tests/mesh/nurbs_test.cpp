@@ -60,7 +60,7 @@ NurbsSurface unitPlane() {
     return plane;
 }
 
-double distance(const Point3& a, const Point3& b) {
+double distance(const Vec3& a, const Vec3& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
@@ -69,7 +69,7 @@ double distance(const Point3& a, const Point3& b) {
 TEST(Nurbs, RationalQuadraticCircleIsExact) {
     const NurbsCurve c = unitCircle();
     for (int k = 0; k <= 1000; ++k) {
-        const Point3 p = evaluate(c, k / 1000.0);
+        const Vec3 p = evaluate(c, k / 1000.0);
         EXPECT_NEAR(std::hypot(p[0], p[1]), 1.0, 1e-12);
     }
     EXPECT_NEAR(distance(evaluate(c, 0.25), {0, 1, 0}), 0, 1e-15);
@@ -166,7 +166,7 @@ TEST(Nurbs, PoleNormalsPointOutOnAnyScaleAndPlace) {
     // The derivatives vanish at the poles only up to rounding, which grows
     // with the coordinates: a sphere of radius 3 around (5, -2, 1).
     NurbsSurface s = unitSphere();
-    for (Point3& p : s.points)
+    for (Vec3& p : s.points)
         p = {5 + 3 * p[0], -2 + 3 * p[1], 1 + 3 * p[2]};
     const Mesh m = nurbsSurfaceMesh(s, 32, 16);
     for (std::size_t i = 0; i < m.positions.size(); ++i) {

@@ -36,7 +36,7 @@ TEST(Picking, TheFunctionItselfIsHitNotItsMesh) {
     const Picked s = load(R"x(Transform { translation 1 0 0 children
         FShape { geometry FGeometry { definition "0.64 - x*x - y*y - z*z" resolution 12 } } })x");
     const viewer::Ray ray{{1.1f, 0.2f, 5}, QVector3D(0, 0, -1)};
-    const auto p = viewer::pick(*s.scene, s.meshes, ray);
+    const auto p = viewer::pick(s.meshes, ray);
     ASSERT_TRUE(p);
     EXPECT_TRUE(p->onFunction);
     const double x = p->point[0] - 1, y = p->point[1], z = p->point[2];
@@ -50,12 +50,12 @@ TEST(Picking, StandardShapesByTheirTrianglesAndTheNearestWins) {
     const Picked s = load(R"x(
         Transform { translation 0 0 2 children Shape { geometry Box { size 1 1 1 } } }
         FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" } })x");
-    const auto p = viewer::pick(*s.scene, s.meshes, {{0.1f, 0.1f, 10}, QVector3D(0, 0, -1)});
+    const auto p = viewer::pick(s.meshes, {{0.1f, 0.1f, 10}, QVector3D(0, 0, -1)});
     ASSERT_TRUE(p);
     EXPECT_FALSE(p->onFunction);
     EXPECT_NEAR(p->point[2], 2.5, 1e-6); // the box's front face, before the ball
     EXPECT_NEAR(p->normal[2], 1, 1e-6);
-    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{5, 5, 10}, QVector3D(0, 0, -1)}));
+    EXPECT_FALSE(viewer::pick(s.meshes, {{5, 5, 10}, QVector3D(0, 0, -1)}));
 }
 
 TEST(Picking, APixelsRayGoesThroughWhatItShows) {
@@ -74,14 +74,14 @@ TEST(Picking, RaysFromInfinityOrNowhereFindNothingAndReturn) {
         load(R"x(FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" } })x");
     const float inf = std::numeric_limits<float>::infinity();
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{inf, 0, 0}, QVector3D(-1, 0, 0)}));
-    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{0, 0, 5}, QVector3D(nan, 0, -1)}));
+    EXPECT_FALSE(viewer::pick(s.meshes, {{inf, 0, 0}, QVector3D(-1, 0, 0)}));
+    EXPECT_FALSE(viewer::pick(s.meshes, {{0, 0, 5}, QVector3D(nan, 0, -1)}));
     // Very far away, the coordinates' last digit (~1e14 at 1e30) is larger
     // than the scene: nothing can be placed on it, so nothing is picked (a
     // triangle test used to return the ball's centre with a backward normal).
-    EXPECT_FALSE(viewer::pick(*s.scene, s.meshes, {{1e30f, 0, 0}, QVector3D(-1, 0, 0)}));
+    EXPECT_FALSE(viewer::pick(s.meshes, {{1e30f, 0, 0}, QVector3D(-1, 0, 0)}));
     // Far, but not too far to tell: the ball's near side, facing the eye.
-    const auto distant = viewer::pick(*s.scene, s.meshes, {{1e9f, 0, 0}, QVector3D(-1, 0, 0)});
+    const auto distant = viewer::pick(s.meshes, {{1e9f, 0, 0}, QVector3D(-1, 0, 0)});
     ASSERT_TRUE(distant);
     EXPECT_NEAR(distant->point[0], 0.5, 1e-4);
     EXPECT_GT(distant->normal[0], 0.9);
@@ -92,19 +92,47 @@ TEST(Picking, AnImplicitSurfacesNormalFacesTheEyeFromEitherSide) {
     // implicit surface has no outside, so the picked normal faces the eye.
     const Picked s = load(R"x(COMPONENT FunctionLab:1
         FShape { geometry FGeometry { type "implicit" definition "x^2 + y^2 + z^2 - 0.5" } })x");
-    const auto front = viewer::pick(*s.scene, s.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
+    const auto front = viewer::pick(s.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
     ASSERT_TRUE(front);
     EXPECT_TRUE(front->onFunction);
     EXPECT_GT(front->normal[2], 0.9);
-    const auto back = viewer::pick(*s.scene, s.meshes, {{0.1f, 0.1f, -5}, QVector3D(0, 0, 1)});
+    const auto back = viewer::pick(s.meshes, {{0.1f, 0.1f, -5}, QVector3D(0, 0, 1)});
     ASSERT_TRUE(back);
     EXPECT_LT(back->normal[2], -0.9);
     // An explicit solid keeps its outward normal: here, into the cavity.
     const Picked solid = load(R"x(COMPONENT FunctionLab:1
         FShape { geometry FGeometry { type "explicit" definition "x^2 + y^2 + z^2 - 0.5" } })x");
     const auto box =
-        viewer::pick(*solid.scene, solid.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
+        viewer::pick(solid.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
     ASSERT_TRUE(box);
     EXPECT_NEAR(box->point[2], 1, 1e-6); // the box face closing the solid
     EXPECT_GT(box->normal[2], 0.9);
+}
+
+// A shape combined by an FTransform has no FGeometry of its own: it is
+// picked on the combined field (the union's farther ball is hidden by the
+// nearer one).
+TEST(Picking, CombinedShapesArePickedOnTheirField) {
+    const Picked s = load(R"x(FTransform { operation "union" children [
+        FShape { geometry FGeometry { type "explicit" definition "0.25 - (x-0.3)^2 - y^2 - z^2"
+                                      resolution 10 } }
+        FShape { geometry FGeometry { type "explicit" definition "0.25 - (x+0.3)^2 - y^2 - z^2"
+                                      resolution 10 } } ] })x");
+    const auto p = viewer::pick(s.meshes, {{0.7f, 0, 5}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(p);
+    EXPECT_TRUE(p->onFunction);
+    const double x = p->point[0] - 0.3;
+    EXPECT_NEAR(std::sqrt(x * x + p->point[2] * p->point[2]), 0.5, 1e-9);
+}
+
+// A displacement texture moves the surface: the pick is on the displaced
+// surface, which the mesh shows, not on the bare definition.
+TEST(Picking, DisplacedSurfacesArePickedWhereTheyAreShown) {
+    const Picked s = load(R"x(FShape {
+        geometry FGeometry { type "explicit" definition "0.25 - x*x - y*y - z*z" resolution 16 }
+        appearance FAppearance { texture FTexture3D { definition "0.1" } } })x");
+    const auto p = viewer::pick(s.meshes, {{0, 0, 5}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(p);
+    EXPECT_TRUE(p->onFunction);
+    EXPECT_NEAR(p->point[2], std::sqrt(0.35), 1e-9); // 0.35 - z^2 = 0
 }

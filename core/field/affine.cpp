@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace fl::mesh {
+namespace fl::field {
 
 Affine Affine::operator*(const Affine& o) const {
     Affine r;
@@ -58,15 +58,15 @@ Matrix4 Affine::matrix() const {
             m[0][2], m[1][2], m[2][2], 0, t[0],    t[1],    t[2],    1};
 }
 
-Vec3d Affine::point(const Vec3d& p) const {
-    Vec3d v = vector(p);
+Vec3 Affine::point(const Vec3& p) const {
+    Vec3 v = vector(p);
     for (int k = 0; k < 3; ++k)
         v[std::size_t(k)] += t[k];
     return v;
 }
 
-Vec3d Affine::vector(const Vec3d& v) const {
-    Vec3d out{};
+Vec3 Affine::vector(const Vec3& v) const {
+    Vec3 out{};
     for (int r = 0; r < 3; ++r)
         out[std::size_t(r)] = m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2];
     return out;
@@ -96,7 +96,7 @@ std::optional<Affine> Affine::inverse() const {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             r.m[i][j] = c[std::size_t(j)][std::size_t(i)] / det;
-    const Vec3d back = r.vector({t[0], t[1], t[2]});
+    const Vec3 back = r.vector({t[0], t[1], t[2]});
     for (int k = 0; k < 3; ++k)
         r.t[k] = -back[std::size_t(k)];
     return r;
@@ -105,7 +105,7 @@ std::optional<Affine> Affine::inverse() const {
 Box3 boundsOf(const Box3& b, const Affine& a) {
     Box3 out{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
     for (int c = 0; c < 8; ++c) {
-        const Vec3d q = a.point(
+        const Vec3 q = a.point(
             {c & 1 ? b.hi[0] : b.lo[0], c & 2 ? b.hi[1] : b.lo[1], c & 4 ? b.hi[2] : b.lo[2]});
         for (std::size_t k = 0; k < 3; ++k) {
             out.lo[k] = std::min(out.lo[k], q[k]);
@@ -115,4 +115,4 @@ Box3 boundsOf(const Box3& b, const Affine& a) {
     return out;
 }
 
-} // namespace fl::mesh
+} // namespace fl::field

@@ -2,17 +2,16 @@
 // Affine maps x' = m x + t: X3D Transform chains, the pieces of an FTransform
 // set operation, a shape's placement in the scene (and back, for picking).
 // One definition for the kernel and the viewer.
-#include "implicit_field.h" // Box3
+#include "box3.h"
 
 #include <array>
 #include <optional>
 #include <vector>
 
-namespace fl::mesh {
+namespace fl::field {
 
 // A 4x4 matrix, column-major (OpenGL and Qt's order).
 using Matrix4 = std::array<double, 16>;
-using Vec3d = std::array<double, 3>;
 
 struct Affine {
     double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -28,8 +27,8 @@ struct Affine {
     static Affine fromMatrix(const Matrix4& columnMajor);
     Matrix4 matrix() const; // column-major
 
-    Vec3d point(const Vec3d& p) const;  // m p + t
-    Vec3d vector(const Vec3d& v) const; // m v
+    Vec3 point(const Vec3& p) const;  // m p + t
+    Vec3 vector(const Vec3& v) const; // m v
     double determinant() const;
     // The cofactor matrix C of the linear part: its inverse is C^T / det and
     // its inverse transpose, which carries normals, C / det.
@@ -41,4 +40,4 @@ struct Affine {
 // The axis-aligned box round a box's eight corners, mapped.
 Box3 boundsOf(const Box3& box, const Affine& a);
 
-} // namespace fl::mesh
+} // namespace fl::field

@@ -1,27 +1,11 @@
-#include "implicit_field.h"
+#include "field_sampler.h"
 
-#include "component_mapping.h"
+#include "domain_mapping.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace fl::mesh {
-
-double Box3::longestSide() const {
-    return std::max({size(0), size(1), size(2)});
-}
-
-double Box3::diagonal() const {
-    return std::hypot(size(0), size(1), size(2));
-}
-
-bool Box3::valid() const {
-    for (int a = 0; a < 3; ++a)
-        if (!(std::isfinite(lo[std::size_t(a)]) && std::isfinite(hi[std::size_t(a)]) &&
-              size(a) > 0))
-            return false;
-    return true;
-}
+namespace fl::field {
 
 namespace {
 
@@ -49,7 +33,7 @@ struct FieldSampler::DisplacementEvaluators {
 
 FieldSampler::~FieldSampler() = default;
 
-std::array<double, 6> FieldSampler::mapped(const std::array<double, 3>& p) const {
+std::array<double, 6> FieldSampler::mapped(const Vec3& p) const {
     return componentView(p, field_.box, field_.displacement->componentBox);
 }
 
@@ -95,7 +79,7 @@ void FieldSampler::values(const double* x, const double* y, const double* z, std
         out[i] += displacementValues_[i];
 }
 
-double FieldSampler::value(const std::array<double, 3>& p) {
+double FieldSampler::value(const Vec3& p) {
     ++counts_.points;
     const double f = scalar_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
     if (!displacement_) return f;
@@ -103,7 +87,7 @@ double FieldSampler::value(const std::array<double, 3>& p) {
     return f + displacement_->scalar.evaluate({m[0], m[1], m[2], field_.t, m[3], m[4], m[5]});
 }
 
-formula::Dual FieldSampler::gradient(const std::array<double, 3>& p) {
+formula::Dual FieldSampler::gradient(const Vec3& p) {
     ++counts_.gradients;
     formula::Dual d = gradient_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
     if (!displacement_) return d;
@@ -123,8 +107,7 @@ formula::Dual FieldSampler::gradient(const std::array<double, 3>& p) {
     return d;
 }
 
-void FieldSampler::gradients(const std::array<double, 3>* points, std::size_t n,
-                             formula::Dual* out) {
+void FieldSampler::gradients(const Vec3* points, std::size_t n, formula::Dual* out) {
     if (displacement_) { // the chain rule through the mapping, point by point
         for (std::size_t i = 0; i < n; ++i)
             out[i] = gradient(points[i]);
@@ -137,8 +120,7 @@ void FieldSampler::gradients(const std::array<double, 3>* points, std::size_t n,
     gradient_.evaluateMany(gradientPoints_.data(), n, out);
 }
 
-formula::Interval FieldSampler::interval(const std::array<double, 3>& lo,
-                                         const std::array<double, 3>& hi) {
+formula::Interval FieldSampler::interval(const Vec3& lo, const Vec3& hi) {
     ++counts_.intervals;
     formula::Interval r =
         interval_.evaluate(formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t));
@@ -169,4 +151,4 @@ formula::Interval FieldSampler::interval(const std::array<double, 3>& lo,
     return formula::Interval::of(std::min(r.lo, bLo), std::min(r.hi, bHi), r.nan);
 }
 
-} // namespace fl::mesh
+} // namespace fl::field

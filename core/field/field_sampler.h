@@ -1,5 +1,6 @@
 #pragma once
-// What the mesher samples: an implicit / explicit (FRep) definition, f >= 0
+// A function shape as every module samples it — the mesher, picking, haptic
+// contact, the grader: an implicit / explicit (FRep) definition, f >= 0
 // inside, at a fixed time t with chosen parameter values, over a domain box,
 // optionally closed by the box (the solid is cut by the box, so its mesh is
 // closed where the shape meets the box). One `FieldSampler` per thread holds
@@ -10,6 +11,8 @@
 #include "formula/eval_scalar.h"
 #include "formula/tape.h"
 
+#include "box3.h"
+
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -18,16 +21,7 @@
 #include <utility>
 #include <vector>
 
-namespace fl::mesh {
-
-struct Box3 {
-    std::array<double, 3> lo{-1, -1, -1};
-    std::array<double, 3> hi{1, 1, 1};
-    double size(int axis) const { return hi[std::size_t(axis)] - lo[std::size_t(axis)]; }
-    double longestSide() const;
-    double diagonal() const;
-    bool valid() const; // finite and hi > lo on every axis
-};
+namespace fl::field {
 
 enum class BoxBoundary : std::uint8_t {
     Closed, // the box cuts the solid: faces on the box close the mesh (default)
@@ -69,21 +63,22 @@ class FieldSampler {
 
     // f at n points (x, y, z arrays); the box does not enter (see interval).
     void values(const double* x, const double* y, const double* z, std::size_t n, double* out);
-    double value(const std::array<double, 3>& p);
+    double value(const Vec3& p);
     // f and its gradient.
-    formula::Dual gradient(const std::array<double, 3>& p);
+    formula::Dual gradient(const Vec3& p);
     // The same at n points at once (much cheaper per point).
-    void gradients(const std::array<double, 3>* points, std::size_t n, formula::Dual* out);
+    void gradients(const Vec3* points, std::size_t n, formula::Dual* out);
     // An interval containing f over the box [lo, hi] — for a closed boundary,
     // of min(f, distance to the domain box's faces): only its sign is used
     // (can the solid's boundary pass through here?), so the two units may mix.
-    formula::Interval interval(const std::array<double, 3>& lo, const std::array<double, 3>& hi);
+    formula::Interval interval(const Vec3& lo, const Vec3& hi);
 
     const EvaluationCounts& counts() const { return counts_; }
+    const ImplicitField& field() const { return field_; }
 
   private:
     // The displacement's view of a point: (x', y', z', u, v, w).
-    std::array<double, 6> mapped(const std::array<double, 3>& p) const;
+    std::array<double, 6> mapped(const Vec3& p) const;
 
     const ImplicitField& field_;
     bool clip_;
@@ -103,4 +98,4 @@ class FieldSampler {
     ~FieldSampler();
 };
 
-} // namespace fl::mesh
+} // namespace fl::field

@@ -1,13 +1,13 @@
-// Affine maps (affine.h): composition, inverse, the column-major matrix
+// Affine maps (field/affine.h): composition, inverse, the column-major matrix
 // round trip, and boxes through a map.
-#include "mesh/affine.h"
+#include "field/affine.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-using namespace fl::mesh;
+using namespace fl::field;
 
 TEST(Affine, InverseUndoesRandomMaps) {
     std::mt19937 rng(5);
@@ -19,8 +19,8 @@ TEST(Affine, InverseUndoesRandomMaps) {
             Affine::scale(0.1 + std::abs(u(rng)), -0.1 - std::abs(u(rng)), 1 + u(rng) * 0.4);
         const auto back = a.inverse();
         ASSERT_TRUE(back);
-        const Vec3d p{u(rng), u(rng), u(rng)};
-        const Vec3d q = back->point(a.point(p));
+        const Vec3 p{u(rng), u(rng), u(rng)};
+        const Vec3 q = back->point(a.point(p));
         for (std::size_t i = 0; i < 3; ++i)
             EXPECT_NEAR(q[i], p[i], 1e-9);
         EXPECT_NEAR(a.determinant() * back->determinant(), 1.0, 1e-9);
@@ -39,7 +39,7 @@ TEST(Affine, SingularMapsHaveNoInverseAndBadRotationsAreIdentity) {
     const Affine r = Affine::rotate(0, 0, 0, 1);
     EXPECT_EQ(r.m[0][0], 1);
     EXPECT_EQ(Affine::rotate({1, 0, 0}).m[1][1], 1); // three numbers are not a rotation
-    const Vec3d turned = Affine::rotate({0, 0, 1, M_PI / 2}).point({1, 0, 0});
+    const Vec3 turned = Affine::rotate({0, 0, 1, M_PI / 2}).point({1, 0, 0});
     EXPECT_NEAR(turned[0], 0, 1e-15);
     EXPECT_NEAR(turned[1], 1, 1e-15);
 }
@@ -51,8 +51,8 @@ TEST(Affine, BoxBoundsHoldEveryMappedPoint) {
     std::mt19937 rng(9);
     std::uniform_real_distribution<double> u(0, 1);
     for (int k = 0; k < 1000; ++k) {
-        const Vec3d p{box.lo[0] + 2 * u(rng), box.lo[1] + 2 * u(rng), 3 * u(rng)};
-        const Vec3d q = a.point(p);
+        const Vec3 p{box.lo[0] + 2 * u(rng), box.lo[1] + 2 * u(rng), 3 * u(rng)};
+        const Vec3 q = a.point(p);
         for (std::size_t i = 0; i < 3; ++i) {
             EXPECT_GE(q[i], out.lo[i] - 1e-12);
             EXPECT_LE(q[i], out.hi[i] + 1e-12);
