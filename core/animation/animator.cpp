@@ -434,6 +434,10 @@ FieldValue Animator::value(const Node& node, std::string_view field) const {
     return impl_->value(node, field);
 }
 
+bool Animator::holdsEventValues(const Node& node) const {
+    return impl_->values.count(&node) > 0;
+}
+
 double Animator::time(const Node& node) const {
     auto it = impl_->times.find(&node);
     return it == impl_->times.end() ? 0.0 : it->second;

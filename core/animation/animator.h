@@ -64,6 +64,7 @@ class Animator final : public scene::FieldSource {
 
     // The field's current value: set by events, else the file's, else the default.
     scene::FieldValue value(const scene::Node& node, std::string_view field) const override;
+    bool holdsEventValues(const scene::Node& node) const override;
     // A function node's t at the last tick (timeSpan[0] before the first).
     double time(const scene::Node& functionNode) const;
     // Fields set since the last tick or send began, each once.

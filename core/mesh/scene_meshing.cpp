@@ -14,6 +14,7 @@
 #include "surface_displacement.h"
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <unordered_set>
 #include <utility>
@@ -411,7 +412,7 @@ class Walker {
                                  " is left to the viewer");
             return;
         }
-        StandardGeometryResult r = standardGeometryMesh(geometry, options_.segments, options_.text);
+        StandardGeometryResult r = tessellated(geometry);
         if (!r.unsupported.empty()) {
             out_.notes.push_back(nameOf(n) + ": " + r.unsupported);
             return;
@@ -451,6 +452,46 @@ class Walker {
         }
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
+    }
+
+    // A standard geometry's triangles at this moment. Where no event has set
+    // a value of the geometry or of a node it holds (Coordinate, Color ...),
+    // they are the file's at every moment: kept in the cache, so a Box under
+    // a Transform an interpolator turns is tessellated once, and each frame
+    // only moves its matrix (the effects plan's `transform`).
+    StandardGeometryResult tessellated(const Node& geometry) const {
+        auto make = [&] {
+            return standardGeometryMesh(geometry, options_.segments, options_.text, moment_);
+        };
+        if (!options_.cache || setByEvents(geometry, 0)) return make();
+        const std::string key = "standard " + std::to_string(scene_.serial.value()) + " " +
+                                std::to_string(reinterpret_cast<std::uintptr_t>(&geometry)) + " " +
+                                std::to_string(options_.segments) + (options_.text ? " text" : "");
+        const auto kept = options_.cache->get(key, [&] {
+            StandardGeometryResult made = make();
+            MeshResult r;
+            r.mesh = std::move(made.mesh);
+            r.warnings = std::move(made.warnings);
+            r.error = std::move(made.unsupported);
+            return r;
+        });
+        StandardGeometryResult r;
+        r.mesh = kept->mesh;
+        r.warnings = kept->warnings;
+        r.unsupported = kept->error;
+        r.solid = standardGeometryIsSolid(geometry, moment_);
+        return r;
+    }
+
+    // Whether an event has set a field of `node` or of a node below it.
+    bool setByEvents(const Node& node, int depth) const {
+        if (moment_.holdsEventValues(node)) return true;
+        if (depth > 16) return true; // deeper than any geometry: do not keep
+        for (const scene::Field& f : node.fields)
+            for (const Node* child : f.value.nodes)
+                if (const Node* c = scene::effectiveNode(child); c && setByEvents(*c, depth + 1))
+                    return true;
+        return false;
     }
 
     const Node* materialOf(const Node* appearance) const {

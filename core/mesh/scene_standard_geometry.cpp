@@ -15,6 +15,7 @@
 namespace fl::mesh {
 namespace {
 
+using scene::FieldSource;
 using scene::Node;
 
 // The standard geometry node types drawn here, told apart by type: the
@@ -99,25 +100,25 @@ std::vector<std::array<double, 3>> triples(const std::vector<double>& v) {
     return out;
 }
 
-std::vector<std::int64_t> indices(const Node& n, const char* field) {
+std::vector<std::int64_t> indices(const FieldSource& fields, const Node& n, const char* field) {
     std::vector<std::int64_t> out;
-    for (double d : scene::numbersField(n, field))
+    for (double d : fields.numbers(n, field))
         out.push_back(std::int64_t(d));
     return out;
 }
 
-std::vector<std::array<double, 3>> pointsOf(const Node& n, const char* field, const char* values) {
-    const Node* holder = scene::effectiveNode(scene::nodeField(n, field));
-    return holder ? triples(scene::numbersField(*holder, values))
-                  : std::vector<std::array<double, 3>>{};
+std::vector<std::array<double, 3>> pointsOf(const FieldSource& fields, const Node& n,
+                                            const char* field, const char* values) {
+    const Node* holder = scene::effectiveNode(fields.node(n, field));
+    return holder ? triples(fields.numbers(*holder, values)) : std::vector<std::array<double, 3>>{};
 }
 
 // Color (RGB) or ColorRGBA.
-std::vector<std::array<float, 4>> coloursOf(const Node& n) {
+std::vector<std::array<float, 4>> coloursOf(const FieldSource& fields, const Node& n) {
     std::vector<std::array<float, 4>> out;
-    const Node* c = scene::effectiveNode(scene::nodeField(n, "color"));
+    const Node* c = scene::effectiveNode(fields.node(n, "color"));
     if (!c) return out;
-    const auto v = scene::numbersField(*c, "color");
+    const auto v = fields.numbers(*c, "color");
     const std::size_t stride = c->type == "ColorRGBA" ? 4 : 3;
     for (std::size_t i = 0; i + stride - 1 < v.size(); i += stride)
         out.push_back(
@@ -135,21 +136,21 @@ std::vector<Point2> pairsOf(const std::vector<double>& v) {
 
 // TextureCoordinate points; other texCoord nodes (generators, multi-texture)
 // leave X3D's default mapping.
-std::vector<Point2> texCoordsOf(const Node& n) {
-    const Node* holder = scene::effectiveNode(scene::nodeField(n, "texCoord"));
+std::vector<Point2> texCoordsOf(const FieldSource& fields, const Node& n) {
+    const Node* holder = scene::effectiveNode(fields.node(n, "texCoord"));
     if (!holder || holder->type != "TextureCoordinate") return {};
-    return pairsOf(scene::numbersField(*holder, "point"));
+    return pairsOf(fields.numbers(*holder, "point"));
 }
 
-FaceSet commonFaceSet(const Node& n) {
+FaceSet commonFaceSet(const FieldSource& fields, const Node& n) {
     FaceSet f;
-    f.texCoords = texCoordsOf(n);
-    f.points = pointsOf(n, "coord", "point");
-    f.colours = coloursOf(n);
-    f.colourPerVertex = scene::boolField(n, "colorPerVertex");
-    f.normals = pointsOf(n, "normal", "vector");
-    f.normalPerVertex = scene::boolField(n, "normalPerVertex");
-    f.ccw = scene::boolField(n, "ccw");
+    f.texCoords = texCoordsOf(fields, n);
+    f.points = pointsOf(fields, n, "coord", "point");
+    f.colours = coloursOf(fields, n);
+    f.colourPerVertex = fields.flag(n, "colorPerVertex");
+    f.normals = pointsOf(fields, n, "normal", "vector");
+    f.normalPerVertex = fields.flag(n, "normalPerVertex");
+    f.ccw = fields.flag(n, "ccw");
     return f;
 }
 
@@ -220,16 +221,16 @@ std::vector<std::int64_t> strips(const std::vector<std::vector<std::int64_t>>& g
 // X3D 11.4 (triangle, fan, strip and quad sets): without a Normal node and
 // with normalPerVertex, a vertex's normal is the mean of the faces sharing
 // it; else each face's own.
-void smoothUnlessNormalsGiven(FaceSet& f, const Node& g) {
-    if (f.normals.empty() && scene::boolField(g, "normalPerVertex"))
-        f.creaseAngle = std::numbers::pi;
+void smoothUnlessNormalsGiven(const FieldSource& fields, FaceSet& f, const Node& g) {
+    if (f.normals.empty() && fields.flag(g, "normalPerVertex")) f.creaseAngle = std::numbers::pi;
 }
 
 // Fan and strip sets also ignore colorPerVertex: colours are per vertex.
-FaceSetResult triangulatedMesh(FaceSet f, std::vector<std::int64_t>&& coordIndex, const Node& g) {
+FaceSetResult triangulatedMesh(const FieldSource& fields, FaceSet f,
+                               std::vector<std::int64_t>&& coordIndex, const Node& g) {
     f.coordIndex = std::move(coordIndex);
     f.colourPerVertex = true;
-    smoothUnlessNormalsGiven(f, g);
+    smoothUnlessNormalsGiven(fields, f, g);
     return faceSetMesh(f);
 }
 
@@ -268,10 +269,11 @@ FaceSet polyline(std::vector<std::array<double, 3>> points) {
     return f;
 }
 
-FaceSetResult geometry2DMesh(const Node& g, GeometryKind kind, int segments) {
+FaceSetResult geometry2DMesh(const FieldSource& fields, const Node& g, GeometryKind kind,
+                             int segments) {
     if (kind == GeometryKind::Rectangle2D) {
-        const double w = scene::numberField(g, "size", 0, 2) / 2;
-        const double h = scene::numberField(g, "size", 1, 2) / 2;
+        const double w = fields.number(g, "size", 0, 2) / 2;
+        const double h = fields.number(g, "size", 1, 2) / 2;
         FaceSet f;
         f.points = {{-w, -h, 0}, {w, -h, 0}, {w, h, 0}, {-w, h, 0}};
         f.coordIndex = {0, 1, 2, 3};
@@ -279,13 +281,13 @@ FaceSetResult geometry2DMesh(const Node& g, GeometryKind kind, int segments) {
     }
     if (kind == GeometryKind::TriangleSet2D) {
         FaceSet f;
-        f.points = planePoints(scene::numbersField(g, "vertices"));
+        f.points = planePoints(fields.numbers(g, "vertices"));
         f.coordIndex = inThrees(sequence(f.points.size()));
         return faceSetMesh(f);
     }
     if (kind == GeometryKind::Disk2D) {
-        const double inner = scene::numberField(g, "innerRadius", 0, 0);
-        const double outer = scene::numberField(g, "outerRadius", 0, 1);
+        const double inner = fields.number(g, "innerRadius", 0, 0);
+        const double outer = fields.number(g, "outerRadius", 0, 1);
         const auto o = arcPoints(outer, 0, 0, segments);
         if (inner == outer) return lineSetMesh(polyline(o)); // X3D: a circle
         FaceSet f;
@@ -303,32 +305,31 @@ FaceSetResult geometry2DMesh(const Node& g, GeometryKind kind, int segments) {
         return faceSetMesh(f);
     }
     if (kind == GeometryKind::ArcClose2D) {
-        auto arc =
-            arcPoints(scene::numberField(g, "radius", 0, 1), scene::numberField(g, "startAngle"),
-                      scene::numberField(g, "endAngle", 0, 1.570796), segments);
+        auto arc = arcPoints(fields.number(g, "radius", 0, 1), fields.number(g, "startAngle"),
+                             fields.number(g, "endAngle", 0, 1.570796), segments);
         FaceSet f;
-        const bool pie = scene::stringField(g, "closureType") != "CHORD";
+        const bool pie = fields.string(g, "closureType") != "CHORD";
         if (pie) f.points.push_back({0, 0, 0});
         f.points.insert(f.points.end(), arc.begin(), arc.end());
         f.coordIndex = sequence(f.points.size());
         return faceSetMesh(f);
     }
     if (kind == GeometryKind::Arc2D)
-        return lineSetMesh(polyline(
-            arcPoints(scene::numberField(g, "radius", 0, 1), scene::numberField(g, "startAngle"),
-                      scene::numberField(g, "endAngle", 0, 1.570796), segments)));
-    if (kind == GeometryKind::Circle2D)
         return lineSetMesh(
-            polyline(arcPoints(scene::numberField(g, "radius", 0, 1), 0, 0, segments)));
+            polyline(arcPoints(fields.number(g, "radius", 0, 1), fields.number(g, "startAngle"),
+                               fields.number(g, "endAngle", 0, 1.570796), segments)));
+    if (kind == GeometryKind::Circle2D)
+        return lineSetMesh(polyline(arcPoints(fields.number(g, "radius", 0, 1), 0, 0, segments)));
     // Polyline2D
-    return lineSetMesh(polyline(planePoints(scene::numbersField(g, "lineSegments"))));
+    return lineSetMesh(polyline(planePoints(fields.numbers(g, "lineSegments"))));
 }
 
-NurbsSurface nurbsSurfaceOf(const Node& g, std::vector<std::string>& warnings) {
+NurbsSurface nurbsSurfaceOf(const FieldSource& fields, const Node& g,
+                            std::vector<std::string>& warnings) {
     NurbsSurface s;
-    s.points = pointsOf(g, "controlPoint", "point");
-    const int uDim = int(scene::numberField(g, "uDimension"));
-    const int vDim = int(scene::numberField(g, "vDimension"));
+    s.points = pointsOf(fields, g, "controlPoint", "point");
+    const int uDim = int(fields.number(g, "uDimension"));
+    const int vDim = int(fields.number(g, "vDimension"));
     if (uDim < 2 || vDim < 2 || std::size_t(uDim) * std::size_t(vDim) != s.points.size()) {
         warnings.push_back("uDimension " + std::to_string(uDim) + " x vDimension " +
                            std::to_string(vDim) + " does not match the " +
@@ -336,33 +337,33 @@ NurbsSurface nurbsSurfaceOf(const Node& g, std::vector<std::string>& warnings) {
                            " control points (each dimension needs at least 2); nothing drawn");
         return {};
     }
-    s.u = makeNurbsBasis(int(scene::numberField(g, "uOrder", 0, 3)), uDim,
-                         scene::numbersField(g, "uKnot"), "u", warnings);
-    s.v = makeNurbsBasis(int(scene::numberField(g, "vOrder", 0, 3)), vDim,
-                         scene::numbersField(g, "vKnot"), "v", warnings);
-    s.weights = nurbsWeights(scene::numbersField(g, "weight"), s.points.size(), warnings);
+    s.u = makeNurbsBasis(int(fields.number(g, "uOrder", 0, 3)), uDim, fields.numbers(g, "uKnot"),
+                         "u", warnings);
+    s.v = makeNurbsBasis(int(fields.number(g, "vOrder", 0, 3)), vDim, fields.numbers(g, "vKnot"),
+                         "v", warnings);
+    s.weights = nurbsWeights(fields.numbers(g, "weight"), s.points.size(), warnings);
     return s;
 }
 
 // The trimming contours of a NurbsTrimmedSurface: each Contour2D's pieces
 // (ContourPolyline2D, NurbsCurve2D) joined end to end into one closed loop.
-std::vector<Contour2> trimmingContours(const Node& g, std::vector<std::string>& warnings) {
+std::vector<Contour2> trimmingContours(const FieldSource& fields, const Node& g,
+                                       std::vector<std::string>& warnings) {
     std::vector<Contour2> out;
-    for (const Node* raw : scene::nodesField(g, "trimmingContour")) {
+    for (const Node* raw : fields.nodes(g, "trimmingContour")) {
         const Node* contour = scene::effectiveNode(raw);
         if (!contour) continue;
         Contour2 loop;
-        for (const Node* rawPiece : scene::nodesField(*contour, "children")) {
+        for (const Node* rawPiece : fields.nodes(*contour, "children")) {
             const Node* piece = scene::effectiveNode(rawPiece);
             if (!piece) continue;
-            const auto points = pairsOf(scene::numbersField(*piece, "controlPoint"));
+            const auto points = pairsOf(fields.numbers(*piece, "controlPoint"));
             std::vector<Point2> along;
             if (piece->type == "NurbsCurve2D")
                 along = nurbsCurve2DPoints(
-                    int(scene::numberField(*piece, "order", 0, 3)), points,
-                    scene::numbersField(*piece, "weight"), scene::numbersField(*piece, "knot"),
-                    nurbsSegments(int(scene::numberField(*piece, "tessellation")),
-                                  int(points.size())),
+                    int(fields.number(*piece, "order", 0, 3)), points,
+                    fields.numbers(*piece, "weight"), fields.numbers(*piece, "knot"),
+                    nurbsSegments(int(fields.number(*piece, "tessellation")), int(points.size())),
                     warnings);
             else
                 along = points;
@@ -374,51 +375,51 @@ std::vector<Contour2> trimmingContours(const Node& g, std::vector<std::string>& 
     return out;
 }
 
-FaceSetResult nurbsMesh(const Node& g) {
+FaceSetResult nurbsMesh(const FieldSource& fields, const Node& g) {
     FaceSetResult r;
     const std::optional<GeometryKind> kind = geometryKindOf(g);
     if (kind == GeometryKind::NurbsCurve) {
         NurbsCurve c;
-        c.points = pointsOf(g, "controlPoint", "point");
-        c.basis = makeNurbsBasis(int(scene::numberField(g, "order", 0, 3)), int(c.points.size()),
-                                 scene::numbersField(g, "knot"), "", r.warnings);
+        c.points = pointsOf(fields, g, "controlPoint", "point");
+        c.basis = makeNurbsBasis(int(fields.number(g, "order", 0, 3)), int(c.points.size()),
+                                 fields.numbers(g, "knot"), "", r.warnings);
         if (c.basis.count < 2) return r;
-        c.weights = nurbsWeights(scene::numbersField(g, "weight"), c.points.size(), r.warnings);
+        c.weights = nurbsWeights(fields.numbers(g, "weight"), c.points.size(), r.warnings);
         r.mesh = nurbsCurveMesh(
-            c, nurbsSegments(int(scene::numberField(g, "tessellation")), int(c.points.size())));
+            c, nurbsSegments(int(fields.number(g, "tessellation")), int(c.points.size())));
         return r;
     }
-    const NurbsSurface s = nurbsSurfaceOf(g, r.warnings);
+    const NurbsSurface s = nurbsSurfaceOf(fields, g, r.warnings);
     if (s.points.empty()) return r;
     const std::vector<Contour2> trim = kind == GeometryKind::NurbsTrimmedSurface
-                                           ? trimmingContours(g, r.warnings)
+                                           ? trimmingContours(fields, g, r.warnings)
                                            : std::vector<Contour2>{};
-    int uSegments = nurbsSegments(int(scene::numberField(g, "uTessellation")), s.u.count);
-    int vSegments = nurbsSegments(int(scene::numberField(g, "vTessellation")), s.v.count);
+    int uSegments = nurbsSegments(int(fields.number(g, "uTessellation")), s.u.count);
+    int vSegments = nurbsSegments(int(fields.number(g, "vTessellation")), s.v.count);
     limitNurbsCells(uSegments, vSegments, r.warnings);
     r.mesh = nurbsSurfaceMesh(s, uSegments, vSegments, trim, &r.warnings);
     return r;
 }
 
 // Text and its FontStyle (defaults from the catalogue when there is none).
-TextLayout textLayoutOf(const Node& g) {
+TextLayout textLayoutOf(const FieldSource& fields, const Node& g) {
     TextLayout t;
-    t.lines = scene::stringsField(g, "string");
-    t.length = scene::numbersField(g, "length");
-    t.maxExtent = scene::numberField(g, "maxExtent");
-    const Node* style = scene::effectiveNode(scene::nodeField(g, "fontStyle"));
+    t.lines = fields.strings(g, "string");
+    t.length = fields.numbers(g, "length");
+    t.maxExtent = fields.number(g, "maxExtent");
+    const Node* style = scene::effectiveNode(fields.node(g, "fontStyle"));
     if (!style) return t;
-    const auto family = scene::stringsField(*style, "family");
+    const auto family = fields.strings(*style, "family");
     if (!family.empty()) t.font.family = family;
-    t.font.style = scene::stringField(*style, "style");
-    t.font.size = scene::numberField(*style, "size", 0, 1);
-    t.spacing = scene::numberField(*style, "spacing", 0, 1);
-    const auto justify = scene::stringsField(*style, "justify");
+    t.font.style = fields.string(*style, "style");
+    t.font.size = fields.number(*style, "size", 0, 1);
+    t.spacing = fields.number(*style, "spacing", 0, 1);
+    const auto justify = fields.strings(*style, "justify");
     if (!justify.empty()) t.justifyMajor = justify[0];
     if (justify.size() > 1) t.justifyMinor = justify[1];
-    t.horizontal = scene::boolField(*style, "horizontal");
-    t.leftToRight = scene::boolField(*style, "leftToRight");
-    t.topToBottom = scene::boolField(*style, "topToBottom");
+    t.horizontal = fields.flag(*style, "horizontal");
+    t.leftToRight = fields.flag(*style, "leftToRight");
+    t.topToBottom = fields.flag(*style, "topToBottom");
     return t;
 }
 
@@ -431,83 +432,87 @@ bool isGeometry2D(std::optional<GeometryKind> kind) {
 
 } // namespace
 
-StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const TextOutliner& text) {
+bool standardGeometryIsSolid(const Node& g, const FieldSource& fields) {
+    return !g.spec || !scene::findFieldSpec(*g.spec, "solid") || fields.flag(g, "solid");
+}
+
+StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const TextOutliner& text,
+                                            const FieldSource& fields) {
     StandardGeometryResult r;
     const std::optional<GeometryKind> kind = geometryKindOf(g);
-    r.solid = !g.spec || !scene::findFieldSpec(*g.spec, "solid") || scene::boolField(g, "solid");
+    r.solid = standardGeometryIsSolid(g, fields);
     auto use = [&](FaceSetResult&& f) {
         r.mesh = std::move(f.mesh);
         r.warnings = std::move(f.warnings);
     };
     if (kind == GeometryKind::Box) {
-        const auto s = scene::numbersField(g, "size");
+        const auto s = fields.numbers(g, "size");
         if (s.size() == 3) r.mesh = boxMesh({s[0], s[1], s[2]});
     } else if (kind == GeometryKind::Sphere) {
-        r.mesh = sphereMesh(scene::numberField(g, "radius", 0, 1), segments);
+        r.mesh = sphereMesh(fields.number(g, "radius", 0, 1), segments);
     } else if (kind == GeometryKind::Cone) {
-        r.mesh = coneMesh(scene::numberField(g, "bottomRadius", 0, 1),
-                          scene::numberField(g, "height", 0, 2), scene::boolField(g, "side"),
-                          scene::boolField(g, "bottom"), segments);
+        r.mesh = coneMesh(fields.number(g, "bottomRadius", 0, 1), fields.number(g, "height", 0, 2),
+                          fields.flag(g, "side"), fields.flag(g, "bottom"), segments);
     } else if (kind == GeometryKind::Cylinder) {
-        r.mesh = cylinderMesh(scene::numberField(g, "radius", 0, 1),
-                              scene::numberField(g, "height", 0, 2), scene::boolField(g, "side"),
-                              scene::boolField(g, "top"), scene::boolField(g, "bottom"), segments);
+        r.mesh = cylinderMesh(fields.number(g, "radius", 0, 1), fields.number(g, "height", 0, 2),
+                              fields.flag(g, "side"), fields.flag(g, "top"),
+                              fields.flag(g, "bottom"), segments);
     } else if (kind == GeometryKind::IndexedFaceSet) {
-        FaceSet f = commonFaceSet(g);
-        f.coordIndex = indices(g, "coordIndex");
-        f.colourIndex = indices(g, "colorIndex");
-        f.normalIndex = indices(g, "normalIndex");
-        f.texCoordIndex = indices(g, "texCoordIndex");
-        f.creaseAngle = scene::numberField(g, "creaseAngle");
+        FaceSet f = commonFaceSet(fields, g);
+        f.coordIndex = indices(fields, g, "coordIndex");
+        f.colourIndex = indices(fields, g, "colorIndex");
+        f.normalIndex = indices(fields, g, "normalIndex");
+        f.texCoordIndex = indices(fields, g, "texCoordIndex");
+        f.creaseAngle = fields.number(g, "creaseAngle");
         use(faceSetMesh(f));
     } else if (kind == GeometryKind::IndexedTriangleSet) {
-        FaceSet f = commonFaceSet(g);
-        f.coordIndex = inThrees(indices(g, "index"));
-        smoothUnlessNormalsGiven(f, g);
+        FaceSet f = commonFaceSet(fields, g);
+        f.coordIndex = inThrees(indices(fields, g, "index"));
+        smoothUnlessNormalsGiven(fields, f, g);
         use(faceSetMesh(f));
     } else if (kind == GeometryKind::TriangleSet) {
-        FaceSet f = commonFaceSet(g);
+        FaceSet f = commonFaceSet(fields, g);
         f.coordIndex = inThrees(sequence(f.points.size()));
         use(faceSetMesh(f));
     } else if (kind == GeometryKind::ElevationGrid) {
         ElevationGrid eg;
-        eg.xDimension = int(scene::numberField(g, "xDimension"));
-        eg.zDimension = int(scene::numberField(g, "zDimension"));
-        eg.xSpacing = scene::numberField(g, "xSpacing", 0, 1);
-        eg.zSpacing = scene::numberField(g, "zSpacing", 0, 1);
-        eg.height = scene::numbersField(g, "height");
-        eg.colours = coloursOf(g);
-        eg.colourPerVertex = scene::boolField(g, "colorPerVertex");
-        eg.ccw = scene::boolField(g, "ccw");
-        eg.creaseAngle = scene::numberField(g, "creaseAngle");
-        eg.texCoords = texCoordsOf(g);
+        eg.xDimension = int(fields.number(g, "xDimension"));
+        eg.zDimension = int(fields.number(g, "zDimension"));
+        eg.xSpacing = fields.number(g, "xSpacing", 0, 1);
+        eg.zSpacing = fields.number(g, "zSpacing", 0, 1);
+        eg.height = fields.numbers(g, "height");
+        eg.colours = coloursOf(fields, g);
+        eg.colourPerVertex = fields.flag(g, "colorPerVertex");
+        eg.ccw = fields.flag(g, "ccw");
+        eg.creaseAngle = fields.number(g, "creaseAngle");
+        eg.texCoords = texCoordsOf(fields, g);
         use(elevationGridMesh(eg));
     } else if (kind == GeometryKind::Extrusion) {
         Extrusion ex;
-        ex.crossSection = pairsOf(scene::numbersField(g, "crossSection"));
-        ex.spine = triples(scene::numbersField(g, "spine"));
-        ex.scale = pairsOf(scene::numbersField(g, "scale"));
+        ex.crossSection = pairsOf(fields.numbers(g, "crossSection"));
+        ex.spine = triples(fields.numbers(g, "spine"));
+        ex.scale = pairsOf(fields.numbers(g, "scale"));
         if (ex.scale.empty()) ex.scale = {{1, 1}};
         ex.orientation.clear();
-        const auto o = scene::numbersField(g, "orientation");
+        const auto o = fields.numbers(g, "orientation");
         for (std::size_t i = 0; i + 3 < o.size(); i += 4)
             ex.orientation.push_back({o[i], o[i + 1], o[i + 2], o[i + 3]});
         if (ex.orientation.empty()) ex.orientation = {{0, 0, 1, 0}};
-        ex.beginCap = scene::boolField(g, "beginCap");
-        ex.endCap = scene::boolField(g, "endCap");
-        ex.creaseAngle = scene::numberField(g, "creaseAngle");
+        ex.beginCap = fields.flag(g, "beginCap");
+        ex.endCap = fields.flag(g, "endCap");
+        ex.creaseAngle = fields.number(g, "creaseAngle");
         use(extrusionMesh(ex));
     } else if (kind == GeometryKind::IndexedLineSet) {
-        FaceSet f = commonFaceSet(g);
-        f.coordIndex = indices(g, "coordIndex");
-        f.colourIndex = indices(g, "colorIndex");
+        FaceSet f = commonFaceSet(fields, g);
+        f.coordIndex = indices(fields, g, "coordIndex");
+        f.colourIndex = indices(fields, g, "colorIndex");
         use(lineSetMesh(f));
     } else if (kind == GeometryKind::LineSet) {
-        FaceSet f = commonFaceSet(g);
+        FaceSet f = commonFaceSet(fields, g);
         f.colourPerVertex = true;
         std::int64_t next = 0;
         const auto points = std::int64_t(f.points.size());
-        for (double count : scene::numbersField(g, "vertexCount")) {
+        for (double count : fields.numbers(g, "vertexCount")) {
             for (std::int64_t k = 0; k < std::int64_t(count) && next < points; ++k)
                 f.coordIndex.push_back(next++);
             f.coordIndex.push_back(-1);
@@ -515,45 +520,45 @@ StandardGeometryResult standardGeometryMesh(const Node& g, int segments, const T
         }
         use(lineSetMesh(f));
     } else if (kind == GeometryKind::TriangleFanSet || kind == GeometryKind::TriangleStripSet) {
-        FaceSet f = commonFaceSet(g);
-        const auto groups =
-            kind == GeometryKind::TriangleFanSet
-                ? groupsByCount(scene::numbersField(g, "fanCount"), f.points.size())
-                : groupsByCount(scene::numbersField(g, "stripCount"), f.points.size());
-        use(triangulatedMesh(
-            std::move(f), kind == GeometryKind::TriangleFanSet ? fans(groups) : strips(groups), g));
+        FaceSet f = commonFaceSet(fields, g);
+        const auto groups = kind == GeometryKind::TriangleFanSet
+                                ? groupsByCount(fields.numbers(g, "fanCount"), f.points.size())
+                                : groupsByCount(fields.numbers(g, "stripCount"), f.points.size());
+        use(triangulatedMesh(fields, std::move(f),
+                             kind == GeometryKind::TriangleFanSet ? fans(groups) : strips(groups),
+                             g));
     } else if (kind == GeometryKind::IndexedTriangleFanSet ||
                kind == GeometryKind::IndexedTriangleStripSet) {
-        FaceSet f = commonFaceSet(g);
-        const auto groups = groupsByIndex(indices(g, "index"));
+        FaceSet f = commonFaceSet(fields, g);
+        const auto groups = groupsByIndex(indices(fields, g, "index"));
         use(triangulatedMesh(
-            std::move(f),
+            fields, std::move(f),
             kind == GeometryKind::IndexedTriangleFanSet ? fans(groups) : strips(groups), g));
     } else if (kind == GeometryKind::QuadSet || kind == GeometryKind::IndexedQuadSet) {
-        FaceSet f = commonFaceSet(g);
+        FaceSet f = commonFaceSet(fields, g);
         const std::vector<std::int64_t> corners =
-            kind == GeometryKind::QuadSet ? sequence(f.points.size()) : indices(g, "index");
+            kind == GeometryKind::QuadSet ? sequence(f.points.size()) : indices(fields, g, "index");
         for (std::size_t i = 0; i + 3 < corners.size(); i += 4)
             f.coordIndex.insert(f.coordIndex.end(),
                                 {corners[i], corners[i + 1], corners[i + 2], corners[i + 3], -1});
-        smoothUnlessNormalsGiven(f, g);
+        smoothUnlessNormalsGiven(fields, f, g);
         use(faceSetMesh(f));
     } else if (isGeometry2D(kind)) {
-        use(geometry2DMesh(g, *kind, segments));
+        use(geometry2DMesh(fields, g, *kind, segments));
     } else if (kind == GeometryKind::Polypoint2D) {
-        r.mesh = pointSetMesh(planePoints(scene::numbersField(g, "point")), {});
+        r.mesh = pointSetMesh(planePoints(fields.numbers(g, "point")), {});
     } else if (kind == GeometryKind::NurbsCurve || kind == GeometryKind::NurbsPatchSurface ||
                kind == GeometryKind::NurbsTrimmedSurface) {
-        use(nurbsMesh(g));
+        use(nurbsMesh(fields, g));
     } else if (kind == GeometryKind::Text) {
         if (!text) {
             r.unsupported = "Text is not drawn without a font source (the window, `functionlab "
                             "render` and `functionlab mesh` have one)";
             return r;
         }
-        r.mesh = textMesh(textLayoutOf(g), text, &r.warnings);
+        r.mesh = textMesh(textLayoutOf(fields, g), text, &r.warnings);
     } else if (kind == GeometryKind::PointSet) {
-        r.mesh = pointSetMesh(pointsOf(g, "coord", "point"), coloursOf(g));
+        r.mesh = pointSetMesh(pointsOf(fields, g, "coord", "point"), coloursOf(fields, g));
     } else {
         r.unsupported = g.type + " is not drawn yet";
     }

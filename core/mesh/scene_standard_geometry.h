@@ -5,6 +5,7 @@
 // and quad sets, indexed or not, line and point sets), Geometry2D (in the
 // z = 0 plane). Other geometry is named in a note.
 #include "mesh.h"
+#include "scene/field_source.h"
 #include "scene/scene.h"
 #include "text_layout.h"
 
@@ -22,7 +23,13 @@ struct StandardGeometryResult {
 
 // `segments`: around the axis of spheres, cones and cylinders (and of
 // Geometry2D circles). `text`: the font source for Text (none: a note).
+// `fields`: where the node's values come from — the one clock at a moment
+// (a CoordinateInterpolator moves the points), or the file.
 StandardGeometryResult standardGeometryMesh(const scene::Node& geometry, int segments = 48,
-                                            const TextOutliner& text = {});
+                                            const TextOutliner& text = {},
+                                            const scene::FieldSource& fields = scene::FileFields{});
+
+// The node's `solid` (only front faces drawn); true for nodes without one.
+bool standardGeometryIsSolid(const scene::Node& geometry, const scene::FieldSource& fields);
 
 } // namespace fl::mesh

@@ -17,6 +17,11 @@ class FieldSource {
     virtual ~FieldSource() = default;
     // The field's value: set at this moment, else the file's, else the default.
     virtual FieldValue value(const Node& node, std::string_view field) const = 0;
+    // True when an event has set a field of `node` (at or before this
+    // moment), so its values may differ from the file's. What reads only
+    // unset nodes can be kept from one moment to the next: a Box under a
+    // turning Transform is tessellated once.
+    virtual bool holdsEventValues(const Node& node) const = 0;
 
     // The same value, read as one kind (as the free functions of field_access.h).
     double number(const Node& node, std::string_view field, std::size_t index = 0,
@@ -33,6 +38,7 @@ class FieldSource {
 class FileFields final : public FieldSource {
   public:
     FieldValue value(const Node& node, std::string_view field) const override;
+    bool holdsEventValues(const Node&) const override { return false; }
 };
 
 } // namespace fl::scene

@@ -1,8 +1,15 @@
 #include "scene.h"
 
+#include <atomic>
+
 #include <algorithm>
 
 namespace fl::scene {
+
+std::uint64_t SceneSerial::next() {
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+}
 
 std::size_t FieldValue::elementCount() const {
     if (holdsNodes(type)) return nodes.size();

@@ -165,7 +165,29 @@ struct CompiledDefinition {
     formula::Tape tape;
 };
 
+// A number no other Scene object of this process has had: caches keyed by
+// node addresses add it, so an address reused by a later scene never finds
+// an earlier scene's entry. A moved-from scene takes a fresh one.
+class SceneSerial {
+  public:
+    SceneSerial() : value_(next()) {}
+    SceneSerial(const SceneSerial&) = delete;
+    SceneSerial& operator=(const SceneSerial&) = delete;
+    SceneSerial(SceneSerial&& o) noexcept : value_(o.value_) { o.value_ = next(); }
+    SceneSerial& operator=(SceneSerial&& o) noexcept {
+        value_ = o.value_;
+        o.value_ = next();
+        return *this;
+    }
+    std::uint64_t value() const { return value_; }
+
+  private:
+    static std::uint64_t next();
+    std::uint64_t value_;
+};
+
 struct Scene {
+    SceneSerial serial;
     Encoding encoding = Encoding::Xml;
     std::string version; // "2.0" for VRML97, "3.3" ...
     std::string profile; // X3D profile; empty for VRML97

@@ -228,3 +228,55 @@ DEF ALONE Shape { geometry Cylinder {} }
     EXPECT_GT(sensed, 0u);
     EXPECT_GT(deaf, 0u);
 }
+
+// Effects plan: a ROUTE that only moves a Transform moves a matrix. Played
+// through one cache, the Boxes and the ball are made once; later moments
+// only place them elsewhere.
+TEST(SceneAnimation, ATransformRouteMovesAMatrixAndMeshesNothing) {
+    auto s = read(kMovingScene);
+    mesh::MeshCache cache;
+    mesh::SceneMeshOptions o;
+    o.placeInScene = false;
+    o.cache = &cache;
+    o.sceneSeconds = 0;
+    const mesh::SceneMeshes first = mesh::meshScene(*s, o);
+    const std::size_t made = cache.misses();
+    EXPECT_EQ(made, 3u) << "two Boxes (one node each) and the ball";
+    for (double seconds : {0.5, 1.25, 3.0, 0.25}) {
+        o.sceneSeconds = seconds;
+        const mesh::SceneMeshes later = mesh::meshScene(*s, o);
+        EXPECT_EQ(cache.misses(), made) << "re-meshed at " << seconds << " s";
+        EXPECT_EQ(shapeNamed(later, "BOX").mesh.positions, shapeNamed(first, "BOX").mesh.positions);
+        EXPECT_NE(std::memcmp(&shapeNamed(later, "BOX").placement,
+                              &shapeNamed(first, "BOX").placement, sizeof(mesh::Matrix4)),
+                  0)
+            << "the matrix moves at " << seconds << " s";
+    }
+}
+
+// Standard geometry reads its values through the one clock too: a
+// CoordinateInterpolator moves an IndexedFaceSet's points (and such a
+// geometry is tessellated again at each moment, never taken from the cache).
+TEST(SceneAnimation, CoordinateInterpolatorMovesPointsOfStandardGeometry) {
+    auto s = read(R"(#X3D V3.3 utf8
+PROFILE Immersive
+DEF FACE Shape { geometry IndexedFaceSet { coordIndex [ 0 1 2 -1 ]
+  coord DEF POINTS Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] } } }
+DEF CLOCK TimeSensor { cycleInterval 2 loop TRUE }
+DEF SHAPE CoordinateInterpolator { key [ 0 1 ]
+  keyValue [ 0 0 0, 1 0 0, 0 1 0,   0 0 0, 2 0 0, 0 2 0 ] }
+ROUTE CLOCK.fraction_changed TO SHAPE.set_fraction
+ROUTE SHAPE.value_changed TO POINTS.set_point
+)");
+    mesh::MeshCache cache;
+    mesh::SceneMeshOptions o;
+    o.cache = &cache;
+    for (double seconds : {0.0, 1.0, 0.5}) {
+        o.sceneSeconds = seconds;
+        const mesh::SceneMeshes m = mesh::meshScene(*s, o);
+        double right = 0;
+        for (const auto& p : shapeNamed(m, "FACE").mesh.positions)
+            right = std::max(right, double(p[0]));
+        EXPECT_NEAR(right, 1 + seconds / 2, 1e-6) << seconds << " s"; // fraction = seconds / 2
+    }
+}
