@@ -42,6 +42,16 @@ SceneWidget::SceneWidget(QWidget* parent)
 
 SceneWidget::~SceneWidget() = default;
 
+namespace {
+
+bool samePose(const std::optional<mesh::ViewPoint>& a, const std::optional<mesh::ViewPoint>& b) {
+    if (!a || !b) return a.has_value() == b.has_value();
+    return a->position == b->position && a->direction == b->direction && a->up == b->up &&
+           a->fieldOfView == b->fieldOfView && a->centerOfRotation == b->centerOfRotation;
+}
+
+} // namespace
+
 QWindow* SceneWidget::renderWindow() const {
     return window_;
 }
@@ -60,10 +70,33 @@ void SceneWidget::setMeshes(std::shared_ptr<const mesh::SceneMeshes> meshes) {
         triangles_ += s.mesh.triangleCount();
     const auto& sky = meshes_->view.background;
     frameGraph_.clear->setClearColor(QColor::fromRgbF(sky[0], sky[1], sky[2]));
+    const auto& view = meshes_->view;
+    const int bound = view.boundViewpoint;
+    const std::optional<mesh::ViewPoint> boundPose =
+        bound >= 0 ? std::optional(view.viewpoints[std::size_t(bound)]) : std::nullopt;
     if (!cameraPlaced_) {
         cameraPlaced_ = true;
-        bindViewpoint(meshes_->view.viewpoints.empty() ? -1 : 0);
+        bindViewpoint(bound);
+    } else if (bound != sceneBound_) {
+        bindViewpoint(bound); // a set_bind event
+    } else if (bound >= 0 && boundViewpoint_ == bound && !samePose(boundPose, sceneBoundPose_)) {
+        bindViewpoint(bound); // an animated viewpoint carries the camera
     }
+    sceneBound_ = bound;
+    sceneBoundPose_ = boundPose;
+    // NavigationInfo: its first type says how one moves (WALK and FLY walk).
+    const std::vector<std::string> types =
+        view.hasNavigation ? view.navigation.types : std::vector<std::string>{};
+    if (types != sceneNavigationTypes_ && !types.empty()) {
+        const Navigation n = types.front() == "WALK" || types.front() == "FLY"
+                                 ? Navigation::Walk
+                                 : Navigation::Examine;
+        if (n != navigation_) {
+            setNavigation(n);
+            Q_EMIT navigationBound(n);
+        }
+    }
+    sceneNavigationTypes_ = types;
 }
 
 QStringList SceneWidget::viewpointNames() const {

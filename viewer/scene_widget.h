@@ -31,7 +31,11 @@ class SceneWidget : public QWidget {
     ~SceneWidget() override;
 
     // Shows these meshes. The first time (and after resetView) the camera
-    // goes to the first Viewpoint, or to a view of everything.
+    // goes to the bound Viewpoint, or to a view of everything. Later, the
+    // scene's own binding is followed: a set_bind event that binds another
+    // viewpoint takes the camera there, and while the scene's bound
+    // viewpoint is the one shown, the camera moves with it when ROUTEs
+    // animate it.
     void setMeshes(std::shared_ptr<const mesh::SceneMeshes> meshes);
     std::shared_ptr<const mesh::SceneMeshes> meshes() const { return meshes_; }
     std::size_t triangleCount() const { return triangles_; }
@@ -57,6 +61,9 @@ class SceneWidget : public QWidget {
 
   Q_SIGNALS:
     void poseChanged();
+    // The scene bound a NavigationInfo of another type (a set_bind event):
+    // the widget moves that way now; a window shows it in its controls.
+    void navigationBound(fl::viewer::SceneWidget::Navigation n);
     // A click (press and release without dragging) at this pixel of the view.
     void clicked(QPointF pixel);
 
@@ -76,6 +83,10 @@ class SceneWidget : public QWidget {
     std::size_t triangles_ = 0;
     CameraPose pose_;
     int boundViewpoint_ = 0;
+    // What the scene bound (SceneView::boundViewpoint) and how, last frame.
+    int sceneBound_ = -1;
+    std::optional<mesh::ViewPoint> sceneBoundPose_;
+    std::vector<std::string> sceneNavigationTypes_;
     bool cameraPlaced_ = false;
     Navigation navigation_ = Navigation::Examine;
     QPoint lastMouse_, pressedAt_;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <deque>
 #include <limits>
+#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -100,6 +101,9 @@ struct Animator::Impl final : ResponseContext {
     // Mutable state: what events have set.
     std::unordered_map<const Node*, std::vector<std::pair<std::string, FieldValue>>> values;
     std::unordered_map<const Node*, int> sequencer;
+    // Nodes bound by set_bind events, top last (the file's first node of each
+    // kind is bound at load without being on it: see bind()).
+    std::map<BindableKind, std::vector<const Node*>> bindStacks;
     std::unordered_map<const Node*, double> times;
     std::vector<char> fired;
     std::deque<Event> queue;
@@ -254,6 +258,32 @@ struct Animator::Impl final : ResponseContext {
 
     double nowSeconds() const override { return now.x3dSeconds(); }
     int& sequencerIndex(const Node& node) override { return sequencer[&node]; }
+
+    // X3D 7.2.2: TRUE puts the node on top of its stack (the old top sends
+    // isBound FALSE); FALSE takes it off (the node below, if any, is bound
+    // again). The first node of each kind, bound at load, is below every
+    // event's: readers fall back to it when no node says isBound.
+    void bind(const Node& node, BindableKind kind, bool on) override {
+        std::vector<const Node*>& stack = bindStacks[kind];
+        const Node* top = stack.empty() ? nullptr : stack.back();
+        auto bound = [&](const Node& n, bool b) {
+            set(n, "isBound", singleValue(scene::FieldType::SFBool, b));
+            if (b) set(n, "bindTime", singleValue(scene::FieldType::SFTime, nowSeconds()));
+        };
+        if (on) {
+            if (top == &node) return;
+            std::erase(stack, &node);
+            if (top) bound(*top, false);
+            stack.push_back(&node);
+            bound(node, true);
+        } else if (top == &node) {
+            stack.pop_back();
+            bound(node, false);
+            if (!stack.empty()) bound(*stack.back(), true);
+        } else {
+            std::erase(stack, &node);
+        }
+    }
 
     // X3D ignores startTime / cycleInterval changes while a time-dependent
     // node is active, and a stopTime at or before its startTime.
@@ -420,6 +450,7 @@ void Animator::reset() {
     Impl& m = *impl_;
     m.values.clear();
     m.sequencer.clear();
+    m.bindStacks.clear();
     m.queue.clear();
     m.changes.clear();
     m.changeKeys.clear();

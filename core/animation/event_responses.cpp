@@ -60,9 +60,23 @@ bool interpolate(const Node& node, InterpolatorKind kind, std::string_view field
 
 } // namespace
 
+std::optional<BindableKind> bindableKindOf(std::string_view type) {
+    if (type == "Viewpoint" || type == "OrthoViewpoint" || type == "GeoViewpoint")
+        return BindableKind::Viewpoint;
+    if (type == "NavigationInfo") return BindableKind::NavigationInfo;
+    if (type == "Background" || type == "TextureBackground") return BindableKind::Background;
+    if (type == "Fog") return BindableKind::Fog;
+    return std::nullopt;
+}
+
 bool respond(const Node& node, std::string_view field, const FieldValue& in, ResponseContext& ctx) {
     if (const auto kind = interpolatorKind(node.type))
         return interpolate(node, *kind, field, in, ctx);
+    if (field == "set_bind")
+        if (const auto kind = bindableKindOf(node.type)) {
+            ctx.bind(node, *kind, first(in));
+            return true;
+        }
     const std::string_view type = node.type;
     if (type == "BooleanFilter" && field == "set_boolean") {
         const bool b = first(in);

@@ -200,18 +200,22 @@ class Walker {
             if (c.size() == 3) v.centerOfRotation = apply(m, c);
             if (type == "Viewpoint")
                 v.fieldOfView = moment_.number(n, "fieldOfView", 0, v.fieldOfView);
+            // The first is bound at load; a set_bind event binds another.
+            if (view.viewpoints.empty() || moment_.flag(n, "isBound"))
+                view.boundViewpoint = int(view.viewpoints.size());
             view.viewpoints.push_back(v);
             return true;
         }
+        // Backgrounds and NavigationInfos: the first, unless an event bound another.
         if (type == "Background" || type == "TextureBackground") {
-            if (!view.hasBackground) {
+            if (!view.hasBackground || moment_.flag(n, "isBound")) {
                 rgb("skyColor", view.background);
                 view.hasBackground = true;
             }
             return true;
         }
         if (type == "NavigationInfo") {
-            if (!view.hasNavigation) {
+            if (!view.hasNavigation || moment_.flag(n, "isBound")) {
                 view.navigation.types = moment_.strings(n, "type");
                 view.navigation.headlight = moment_.flag(n, "headlight");
                 view.navigation.speed = moment_.number(n, "speed", 0, 1);

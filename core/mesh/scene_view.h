@@ -39,9 +39,12 @@ struct ViewNavigation {
 struct SceneView {
     std::vector<ViewLight> lights;
     std::vector<ViewPoint> viewpoints; // in file order; the first is bound at load
-    std::array<float, 3> background{0, 0, 0};
+    // The viewpoint bound at this moment (set_bind events through the one
+    // clock; 0, the first, when no event has bound another); -1 without any.
+    int boundViewpoint = -1;
+    std::array<float, 3> background{0, 0, 0}; // the bound Background's sky (else the first's)
     bool hasBackground = false;
-    ViewNavigation navigation;
+    ViewNavigation navigation; // the bound NavigationInfo (else the first)
     bool hasNavigation = false;
 };
 

@@ -361,3 +361,41 @@ TEST(Animator, RunsTheAnimationsOfInlinedScenes) {
     ASSERT_EQ(shown.size(), 2u);
     EXPECT_EQ(numbers(a, byName(*shown[1], "T"), "translation"), (std::vector<double>{1, 0, 0}));
 }
+
+// X3D 7.2.2 binding stacks: set_bind TRUE binds (the old top sends isBound
+// FALSE), FALSE unbinds and binds the node below again; each kind has its
+// own stack (a Viewpoint does not unbind a NavigationInfo); bindTime is the
+// moment; isBound can be routed on.
+TEST(Animator, BindingStacks) {
+    auto scene = load(R"(
+DEF A Viewpoint {}
+DEF B OrthoViewpoint {}
+DEF NAV NavigationInfo {}
+DEF COPY BooleanFilter {}
+ROUTE B.isBound TO COPY.set_boolean
+)");
+    Animator a(*scene);
+    const Node &A = byName(*scene, "A"), &B = byName(*scene, "B"), &nav = byName(*scene, "NAV");
+    FieldValue yes, no;
+    yes.type = no.type = FieldType::SFBool;
+    yes.numbers = {1};
+    no.numbers = {0};
+    EXPECT_FALSE(a.holdsEventValues(A));
+    ASSERT_TRUE(a.send(A, "set_bind", yes, at(10)));
+    ASSERT_TRUE(a.send(nav, "set_bind", yes, at(11)));
+    ASSERT_TRUE(a.send(B, "set_bind", yes, at(12)));
+    EXPECT_TRUE(a.holdsEventValues(A));
+    EXPECT_EQ(numbers(a, A, "isBound"), std::vector<double>{0}) << "pushed down by B";
+    EXPECT_EQ(numbers(a, B, "isBound"), std::vector<double>{1});
+    EXPECT_EQ(numbers(a, B, "bindTime"), std::vector<double>{12});
+    EXPECT_EQ(numbers(a, nav, "isBound"), std::vector<double>{1}) << "another stack";
+    EXPECT_EQ(numbers(a, byName(*scene, "COPY"), "inputTrue"), std::vector<double>{1});
+    ASSERT_TRUE(a.send(B, "set_bind", no, at(13)));
+    EXPECT_EQ(numbers(a, B, "isBound"), std::vector<double>{0});
+    EXPECT_EQ(numbers(a, A, "isBound"), std::vector<double>{1}) << "bound again";
+    EXPECT_EQ(numbers(a, A, "bindTime"), std::vector<double>{13});
+    // Unbinding a node that is not on top only takes it out of the stack.
+    ASSERT_TRUE(a.send(nav, "set_bind", no, at(14)));
+    EXPECT_EQ(numbers(a, nav, "isBound"), std::vector<double>{0});
+    EXPECT_EQ(numbers(a, A, "isBound"), std::vector<double>{1});
+}

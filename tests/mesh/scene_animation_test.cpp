@@ -280,3 +280,37 @@ ROUTE SHAPE.value_changed TO POINTS.set_point
         EXPECT_NEAR(right, 1 + seconds / 2, 1e-6) << seconds << " s"; // fraction = seconds / 2
     }
 }
+
+// Bindable nodes follow their ROUTEs: while a TimeSensor is active it binds
+// the second Viewpoint and a WALK NavigationInfo (isActive TO set_bind); when
+// it stops they are unbound and the first ones are bound again. A bound
+// viewpoint an interpolator moves is where the keys say.
+TEST(SceneAnimation, ViewpointAndNavigationBindingFollowRoutes) {
+    auto s = read(R"(#X3D V3.3 utf8
+PROFILE Immersive
+DEF FRONT Viewpoint { position 0 0 10 description "front" }
+DEF RIDE Viewpoint { position 0 0 5 description "ride" }
+DEF LOOK NavigationInfo { type [ "EXAMINE" "ANY" ] }
+DEF WALKING NavigationInfo { type [ "WALK" "ANY" ] }
+Shape { geometry Box {} }
+DEF TIMER TimeSensor { cycleInterval 2 startTime 1 }
+DEF PATH PositionInterpolator { key [ 0 1 ] keyValue [ 0 0 5, 4 0 5 ] }
+ROUTE TIMER.isActive TO RIDE.set_bind
+ROUTE TIMER.isActive TO WALKING.set_bind
+ROUTE TIMER.fraction_changed TO PATH.set_fraction
+ROUTE PATH.value_changed TO RIDE.set_position
+)");
+    auto bound = [&](double seconds) {
+        const mesh::SceneMeshes m = meshAt(*s, seconds);
+        EXPECT_EQ(m.view.viewpoints.size(), 2u);
+        return m.view;
+    };
+    EXPECT_EQ(bound(0.5).boundViewpoint, 0) << "before the timer starts: the first";
+    EXPECT_EQ(bound(0.5).navigation.types.front(), "EXAMINE");
+    const mesh::SceneView riding = bound(2);
+    EXPECT_EQ(riding.boundViewpoint, 1);
+    EXPECT_EQ(riding.navigation.types.front(), "WALK");
+    EXPECT_NEAR(riding.viewpoints[1].position[0], 2, 1e-9) << "half way along the path";
+    EXPECT_EQ(bound(3.5).boundViewpoint, 0) << "the timer stopped at 3 s: unbound";
+    EXPECT_EQ(bound(3.5).navigation.types.front(), "EXAMINE");
+}
