@@ -10,6 +10,7 @@
 #include "parametric.h"
 #include "point_cloud.h"
 #include "scene/field_access.h"
+#include "scene/function_kinds.h"
 #include "scene_standard_geometry.h"
 #include "surface_displacement.h"
 
@@ -22,7 +23,9 @@
 namespace fl::mesh {
 namespace {
 
+using scene::GeometryType;
 using scene::Node;
+using scene::SetOperation;
 
 // X3D Transform: T * C * R * SR * S * -SR * -C, with the moment's values.
 Affine transformOf(const Node& n, const scene::FieldSource& fields) {
@@ -69,7 +72,7 @@ class Walker {
         if (type == "Transform") here = m * transformOf(*n, moment_);
         if (type == "FTransform") {
             here = m * functionTransform(*n);
-            if (moment_.string(*n, "operation") != "group") {
+            if (operationOf(*n) != SetOperation::Group) {
                 const std::size_t first = out_.shapes.size();
                 composite(*n, here);
                 senseTouches(first);
@@ -229,6 +232,17 @@ class Walker {
         return false;
     }
 
+    // An unknown word was reported by the reader: such a shape is drawn as a solid.
+    GeometryType geometryTypeOf(const Node& geometry) const {
+        return scene::geometryTypeNamed(moment_.string(geometry, "type"))
+            .value_or(GeometryType::Explicit);
+    }
+
+    // None for a word the reader reported: the first child is shown.
+    std::optional<SetOperation> operationOf(const Node& ft) const {
+        return scene::setOperationNamed(moment_.string(ft, "operation"));
+    }
+
     std::string nameOf(const Node& n) const {
         return n.type + (n.defName.empty() ? "" : " " + n.defName) + " (" + scene_.locationOf(n) +
                ")";
@@ -265,7 +279,7 @@ class Walker {
             standardShape(n, *geometry, m);
             return;
         }
-        const std::string type = moment_.string(*geometry, "type");
+        const GeometryType type = geometryTypeOf(*geometry);
         const formula::Tape* tape = scene_.definition(*geometry, "definition");
         ShapeMesh sm;
         sm.shape = &n;
@@ -280,7 +294,7 @@ class Walker {
         // `implicit`: the surface f = 0, whichever side is positive: not closed
         // by its box, oriented by the volume it encloses (if it closes), else
         // seen from both sides. `explicit`: the FRep solid f >= 0, cut by its box.
-        const bool surface = type == "implicit";
+        const bool surface = type == GeometryType::Implicit;
         auto orient = [surface](MeshResult&& made) {
             if (surface && made.ok() && !made.mesh.isPointCloud())
                 made.closedSurface = orientClosedSurfaceOutward(made.mesh);
@@ -303,7 +317,7 @@ class Walker {
         if (texture && texture->type == "FTexture3D")
             if (const formula::Tape* d = scene_.definition(*texture, "definition"))
                 displacement = Displacement{*d, domainOf(*texture)};
-        if (type != "parametric") field.displacement = displacement;
+        if (type != GeometryType::Parametric) field.displacement = displacement;
         MeshOptions o = options_.mesh;
         MeshResult r;
         // A point cloud instead of a mesh: asked for by the file or the caller.
@@ -313,10 +327,11 @@ class Walker {
         PointCloudOptions pc;
         pc.count = points;
         pc.threads = o.threads;
-        if (points > 0 && type != "parametric") {
+        if (points > 0 && type != GeometryType::Parametric) {
             // An explicit (FRep) solid shows its inside; an implicit surface, itself.
-            r = type == "explicit" ? pointsInSolid(field, pc) : pointsOnSurface(field, pc);
-        } else if (type == "parametric") {
+            r = type == GeometryType::Explicit ? pointsInSolid(field, pc)
+                                               : pointsOnSurface(field, pc);
+        } else if (type == GeometryType::Parametric) {
             ParametricField pf;
             pf.tape = *tape;
             pf.t = field.t;
@@ -371,8 +386,10 @@ class Walker {
         sm.cancelled = r.cancelled;
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
-        if (type != "parametric") sm.field = std::make_shared<const ImplicitField>(field);
-        if (type == "parametric" && displacement && !sm.mesh.empty() && !sm.mesh.isPointCloud()) {
+        if (type != GeometryType::Parametric)
+            sm.field = std::make_shared<const ImplicitField>(field);
+        if (type == GeometryType::Parametric && displacement && !sm.mesh.empty() &&
+            !sm.mesh.isPointCloud()) {
             const auto w =
                 displaceAlongNormals(sm.mesh, *displacement, field.box, timeOf(*texture));
             sm.warnings.insert(sm.warnings.end(), w.begin(), w.end());
@@ -382,7 +399,7 @@ class Walker {
         if (surface && !sm.mesh.isPointCloud()) sm.look.solid = r.closedSurface;
         // A parametric surface has two sides and no inside: both are drawn.
         // (Curves become closed tubes and solids their closed boundary.)
-        if (type == "parametric") {
+        if (type == GeometryType::Parametric) {
             int used = 0;
             for (formula::Input in : {formula::Input::U, formula::Input::V, formula::Input::W})
                 used += tape->usesInput[std::size_t(in)] ? 1 : 0;
@@ -552,7 +569,7 @@ class Walker {
         if (n->type == "FShape") {
             const Node* geometry = scene::effectiveNode(moment_.node(*n, "geometry"));
             if (!geometry || geometry->type != "FGeometry" ||
-                moment_.string(*geometry, "type") == "parametric") {
+                geometryTypeOf(*geometry) == GeometryType::Parametric) {
                 out_.notes.push_back(nameOf(*n) +
                                      ": only implicit and explicit geometry takes part in "
                                      "an FTransform's set operation; left out");
@@ -592,7 +609,7 @@ class Walker {
             std::vector<Piece> pieces;
             for (const Node* child : moment_.nodes(*n, "children"))
                 collect(child, inner, b, local, pieces);
-            if (n->type == "FTransform" && moment_.string(*n, "operation") != "group" &&
+            if (n->type == "FTransform" && operationOf(*n) != SetOperation::Group &&
                 !pieces.empty()) {
                 out.push_back(combine(*n, pieces, b, local));
                 return;
@@ -607,32 +624,32 @@ class Walker {
 
     Piece combine(const Node& ft, const std::vector<Piece>& pieces, formula::TapeBuilder& b,
                   const std::array<formula::Val, formula::kInputCount>& local) {
-        const std::string op = moment_.string(ft, "operation");
+        const std::optional<SetOperation> op = operationOf(ft);
         Piece r = pieces.front();
         for (const Piece& p : pieces) {
             r.resolution = std::max(r.resolution, p.resolution);
-            if (op != "intersection" && op != "difference")
+            if (op != SetOperation::Intersection && op != SetOperation::Difference)
                 for (std::size_t k = 0; k < 3; ++k) {
                     r.box.lo[k] = std::min(r.box.lo[k], p.box.lo[k]);
                     r.box.hi[k] = std::max(r.box.hi[k], p.box.hi[k]);
                 }
-            if (op == "intersection")
+            if (op == SetOperation::Intersection)
                 for (std::size_t k = 0; k < 3; ++k) {
                     r.box.lo[k] = std::max(r.box.lo[k], p.box.lo[k]);
                     r.box.hi[k] = std::min(r.box.hi[k], p.box.hi[k]);
                 }
         }
         const double t = timeOf(ft);
-        if (op == "union") {
+        if (op == SetOperation::Union) {
             for (std::size_t i = 1; i < pieces.size(); ++i)
                 r.f = b.max(r.f, pieces[i].f);
-        } else if (op == "intersection") {
+        } else if (op == SetOperation::Intersection) {
             for (std::size_t i = 1; i < pieces.size(); ++i)
                 r.f = b.min(r.f, pieces[i].f);
-        } else if (op == "difference") { // the first child minus the others
+        } else if (op == SetOperation::Difference) { // the first child minus the others
             for (std::size_t i = 1; i < pieces.size(); ++i)
                 r.f = b.min(r.f, b.neg(pieces[i].f));
-        } else if (op == "morph") {
+        } else if (op == SetOperation::Morph) {
             double s = 0;
             if (const formula::Tape* tape = scene_.definition(ft, "morphFactor")) {
                 formula::ScalarEvaluator e(*tape);
@@ -641,7 +658,7 @@ class Walker {
             if (pieces.size() >= 2 && std::isfinite(s))
                 r.f = b.add(b.mul(formula::Val::constant(1 - s), pieces[0].f),
                             b.mul(formula::Val::constant(s), pieces[1].f));
-        } else if (op == "formula") {
+        } else if (op == SetOperation::Formula) {
             if (const formula::Tape* tape = scene_.definition(ft, "operationDefinition")) {
                 std::vector<formula::Val> values;
                 for (const formula::ParameterInfo& p : tape->params) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "field_access.h"
+#include "function_kinds.h"
 #include "source_map.h"
 
 #include <map>
@@ -93,10 +94,11 @@ formula::CompileOptions DefinitionCompiler::optionsFor(const Node& node, Definit
 }
 
 void DefinitionCompiler::checkGeometry(const Node& node) {
-    const std::string type = stringField(node, "type");
-    if (type != "implicit" && type != "explicit" && type != "parametric")
+    const std::string word = stringField(node, "type");
+    const std::optional<GeometryType> type = geometryTypeNamed(word);
+    if (!type)
         report(node, node.field("type"), Severity::Error, fieldPos(node, "type"),
-               "FGeometry type '" + type + "' is not implicit, explicit or parametric");
+               "FGeometry type '" + word + "' is not implicit, explicit or parametric");
     const std::string ops = stringField(node, "setOperations");
     if (ops != "minmax" && ops != "rfunction")
         report(node, node.field("setOperations"), Severity::Error, fieldPos(node, "setOperations"),
@@ -132,7 +134,7 @@ void DefinitionCompiler::checkGeometry(const Node& node) {
                "first not above the second");
     // The default "function" quietly means polygons for parametric geometry;
     // only asking for it in the file is worth a word.
-    if (type == "parametric" && collision == "function" && node.field("collision"))
+    if (type == GeometryType::Parametric && collision == "function" && node.field("collision"))
         report(node, node.field("collision"), Severity::Warning, fieldPos(node, "collision"),
                "collision 'function' needs a formula that says inside or outside; parametric "
                "geometry has none, so it is touched through its polygons",
@@ -196,20 +198,19 @@ void DefinitionCompiler::warnDroppedBackslashes(const Node& node, const Field& f
 }
 
 void DefinitionCompiler::checkTransform(const Node& node) {
-    const std::string op = stringField(node, "operation");
-    static const char* const known[] = {"group",      "union", "intersection",
-                                        "difference", "morph", "formula"};
-    if (std::find(std::begin(known), std::end(known), op) == std::end(known)) {
+    const std::string word = stringField(node, "operation");
+    const std::optional<SetOperation> op = setOperationNamed(word);
+    if (!op) {
         report(node, node.field("operation"), Severity::Error, fieldPos(node, "operation"),
-               "FTransform operation '" + op +
+               "FTransform operation '" + word +
                    "' is not group, union, intersection, difference, morph or formula");
         return;
     }
-    if (op == "formula" && stringsField(node, "operationDefinition").empty())
+    if (op == SetOperation::Formula && stringsField(node, "operationDefinition").empty())
         report(node, node.field("operation"), Severity::Error, fieldPos(node, "operation"),
                "operation 'formula' combines the children by operationDefinition, which is empty",
                "write operationDefinition \"max(f1, f2)\" (the union of the first two children)");
-    if (op == "morph" && stringsField(node, "morphFactor").empty())
+    if (op == SetOperation::Morph && stringsField(node, "morphFactor").empty())
         report(node, node.field("operation"), Severity::Warning, fieldPos(node, "operation"),
                "operation 'morph' without a morphFactor shows the first child only",
                "write morphFactor \"0.5 - 0.5*cos(2*pi*t)\" to morph back and forth");
@@ -292,9 +293,9 @@ std::vector<DefinitionField> definitionFields(const Node& node) {
     const std::string& t = node.type;
     if (!node.spec || node.spec->family != NodeFamily::Function) return {};
     if (t == "FGeometry") {
-        const std::string type = stringField(node, "type");
-        return {{"definition",
-                 type == "parametric" ? DefinitionKind::Parametric : DefinitionKind::Implicit}};
+        const bool parametric =
+            geometryTypeNamed(stringField(node, "type")) == GeometryType::Parametric;
+        return {{"definition", parametric ? DefinitionKind::Parametric : DefinitionKind::Implicit}};
     }
     if (t == "FMaterial")
         return {{"definition", DefinitionKind::Colour},

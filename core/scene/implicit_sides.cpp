@@ -2,6 +2,7 @@
 
 #include "field_access.h"
 #include "formula/eval_scalar.h"
+#include "function_kinds.h"
 
 #include <array>
 #include <cmath>
@@ -75,7 +76,7 @@ std::vector<SceneDiagnostic> checkImplicitSides(const Scene& scene) {
         if (n.inProtoBody) return;
         if (n.type == "FTransform") {
             const std::string op = stringField(n, "operation");
-            if (op != "group")
+            if (setOperationNamed(op) != SetOperation::Group)
                 for (const Node* child : nodesField(n, "children"))
                     shapesBelow(child, "an FTransform's " + op, uses);
         }
@@ -93,7 +94,7 @@ std::vector<SceneDiagnostic> checkImplicitSides(const Scene& scene) {
     for (const auto& [shape, why] : uses.list) {
         const Node* geometry = effectiveNode(nodeField(*shape, "geometry"));
         if (!geometry || geometry->type != "FGeometry" ||
-            stringField(*geometry, "type") != "implicit")
+            geometryTypeNamed(stringField(*geometry, "type")) != GeometryType::Implicit)
             continue;
         const formula::Tape* tape = scene.definition(*geometry, "definition");
         const std::vector<double> lo = numbersField(*geometry, "domainMin"),
