@@ -14,6 +14,11 @@ struct SourcePos {
 struct SourceRange {
     SourcePos begin;
     SourcePos end;
+    // Which text the positions are in: 0, the tape's own definition; a tape
+    // composed of others (an FTransform's) numbers the texts it inlined
+    // (formula::inlineTape's sourceTag), so every instruction still says
+    // where a student wrote it.
+    int source = 0;
 
     static SourceRange span(const SourceRange& a, const SourceRange& b) { return {a.begin, b.end}; }
 };

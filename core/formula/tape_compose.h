@@ -15,14 +15,15 @@ namespace fl::formula {
 
 // The tape's outputs as values of `builder`, its inputs being `inputs`
 // (indexed by Input) and its parameters `parameterValues` (their defaults
-// when empty).
+// when empty). Each inlined instruction keeps its source range, tagged
+// `sourceTag` (SourceRange::source); the builder's own origin is left as it was.
 std::vector<Val> inlineTape(TapeBuilder& builder, const Tape& tape,
                             const std::array<Val, kInputCount>& inputs,
-                            const std::vector<double>& parameterValues = {});
+                            const std::vector<double>& parameterValues = {}, int sourceTag = 0);
 // The same with parameters bound to values of the builder (an FTransform's
 // operationDefinition reads its children's values as parameters f1, f2, ...).
 std::vector<Val> inlineTape(TapeBuilder& builder, const Tape& tape,
                             const std::array<Val, kInputCount>& inputs,
-                            const std::vector<Val>& parameterValues);
+                            const std::vector<Val>& parameterValues, int sourceTag = 0);
 
 } // namespace fl::formula

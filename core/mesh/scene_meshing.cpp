@@ -386,8 +386,10 @@ class Walker {
         sm.cancelled = r.cancelled;
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
-        if (type != GeometryType::Parametric)
+        if (type != GeometryType::Parametric) {
             sm.field = std::make_shared<const ImplicitField>(field);
+            sm.texts = {{geometry, "definition"}};
+        }
         if (type == GeometryType::Parametric && displacement && !sm.mesh.empty() &&
             !sm.mesh.isPointCloud()) {
             const auto w =
@@ -591,8 +593,12 @@ class Walker {
                 in[std::size_t(k)] = v;
             }
             in[std::size_t(formula::Input::T)] = formula::Val::constant(timeOf(*geometry));
-            formula::Val f = formula::inlineTape(b, *tape, in)[0];
+            formula::Val f = formula::inlineTape(b, *tape, in, std::vector<double>{},
+                                                 textTag(*geometry, "definition"))[0];
             // Nothing of the child exists outside its box.
+            formula::SourceRange boxText;
+            boxText.source = textTag(*geometry, "domainMin");
+            b.setOrigin(boxText);
             const Box3 box = domainOf(*geometry);
             for (std::size_t k = 0; k < 3; ++k) {
                 f = b.min(f, b.sub(in[k], formula::Val::constant(box.lo[k])));
@@ -625,6 +631,10 @@ class Walker {
     Piece combine(const Node& ft, const std::vector<Piece>& pieces, formula::TapeBuilder& b,
                   const std::array<formula::Val, formula::kInputCount>& local) {
         const std::optional<SetOperation> op = operationOf(ft);
+        // The combining instructions are the FTransform's `operation`.
+        formula::SourceRange here;
+        here.source = textTag(ft, "operation");
+        b.setOrigin(here);
         Piece r = pieces.front();
         for (const Piece& p : pieces) {
             r.resolution = std::max(r.resolution, p.resolution);
@@ -668,14 +678,25 @@ class Walker {
                 }
                 auto in = local;
                 in[std::size_t(formula::Input::T)] = formula::Val::constant(t);
-                r.f = formula::inlineTape(b, *tape, in, values)[0];
+                r.f = formula::inlineTape(b, *tape, in, values,
+                                          textTag(ft, "operationDefinition"))[0];
             }
         }
         return r;
     }
 
+    // The number of a text a composed tape's instructions come from
+    // (SourceRange::source, ShapeMesh::texts).
+    int textTag(const Node& node, const char* field) {
+        for (std::size_t i = 0; i < texts_.size(); ++i)
+            if (texts_[i].node == &node && texts_[i].field == field) return int(i);
+        texts_.push_back({&node, field});
+        return int(texts_.size()) - 1;
+    }
+
     // An FTransform whose children are combined into one shape.
     void composite(const Node& ft, const Affine& m) {
+        texts_.clear();
         formula::TapeBuilder b;
         std::array<formula::Val, formula::kInputCount> local{};
         for (int i = 0; i < formula::kInputCount; ++i)
@@ -717,6 +738,7 @@ class Walker {
         sm.error = r.cancelled ? "cancelled" : r.error;
         sm.mesh = std::move(r.mesh);
         sm.field = std::make_shared<const ImplicitField>(std::move(field));
+        sm.texts = std::move(texts_);
         colour(whole.appearance, sm.field->box, sm);
         sm.look = lookOf(whole.appearance, true);
         place(sm, m);
@@ -790,6 +812,7 @@ class Walker {
     SceneMeshes& out_;
     const animation::Animator& moment_;     // the one clock at the moment meshed
     std::vector<const Node*> touchSensors_; // of the lowest group the walk is inside that has any
+    std::vector<DefinitionText> texts_;     // of the composite being built
     static constexpr std::size_t kMaxVisits = 200000;
     std::size_t visits_ = 0;
     bool overBudget_ = false;

@@ -86,6 +86,12 @@ struct SurfaceLook {
 
 constexpr Matrix4 kIdentity4{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
+// A text of a node (a field's value) that formulas were compiled from.
+struct DefinitionText {
+    const scene::Node* node = nullptr;
+    std::string field; // "definition", "operation", "domainMin" ...
+};
+
 struct ShapeMesh {
     const scene::Node* shape = nullptr;
     std::string name;               // "FShape WATERMELON (file:line:col)"
@@ -102,6 +108,11 @@ struct ShapeMesh {
     // as it was meshed — definition, displacement, parameters, t, box — for
     // picking, haptic contact and the grader to sample (field/ray_march.h).
     std::shared_ptr<const ImplicitField> field;
+    // The texts the field's instructions come from: an instruction's origin
+    // range is in texts[origin.source] (an FGeometry's definition; for a
+    // combined shape also each child's, each FTransform's operation and its
+    // children's domain boxes). The grader locates operations by it.
+    std::vector<DefinitionText> texts;
     MeshStats stats;
     double measuredError = -1; // with a target error: what was reached
     // The enabled TouchSensors a click on this shape triggers: those beside

@@ -42,13 +42,7 @@ class DefinitionCompiler {
         const Field* f = node.field(name);
         return f ? f->where : node.where;
     }
-    FilePos locate(const Field& field, const std::vector<std::size_t>& starts, std::size_t offset);
-    const LineIndex& lines(int file) {
-        auto it = lineIndexes_.find(file);
-        if (it == lineIndexes_.end())
-            it = lineIndexes_.emplace(file, LineIndex(scene_.files[file].text)).first;
-        return it->second;
-    }
+    const LineIndex& lines(int file) { return lineIndexes_.of(file); }
     formula::CompileOptions optionsFor(const Node& node, DefinitionKind kind);
     void checkGeometry(const Node& node);
     void warnDroppedBackslashes(const Node& node, const Field& field);
@@ -59,22 +53,9 @@ class DefinitionCompiler {
 
     Scene& scene_;
     std::vector<SceneDiagnostic>& out_;
-    std::map<int, LineIndex> lineIndexes_;
+    LineIndexes lineIndexes_{scene_};
     std::set<std::tuple<std::string, int, int, std::string>> seen_;
 };
-
-FilePos DefinitionCompiler::locate(const Field& field, const std::vector<std::size_t>& starts,
-                                   std::size_t offset) {
-    const FieldValue& v = field.value;
-    std::size_t i = 0;
-    while (i + 1 < starts.size() && starts[i + 1] <= offset)
-        ++i;
-    if (i >= v.stringOrigins.size() || v.stringOrigins[i].file < 0) return field.where;
-    const StringOrigin& origin = v.stringOrigins[i];
-    const std::size_t within = std::min(offset - starts[i], v.strings[i].size());
-    const std::string& text = scene_.files[origin.file].text;
-    return lines(origin.file).position(fileOffsetOf(text, origin, within));
-}
 
 formula::CompileOptions DefinitionCompiler::optionsFor(const Node& node, DefinitionKind kind) {
     formula::CompileOptions options;
@@ -265,17 +246,11 @@ void DefinitionCompiler::compileNode(const Node& node) {
     for (const DefinitionField& df : definitionFields(node)) {
         const Field* field = node.field(df.field);
         if (!field || field->value.strings.empty()) continue;
-        std::string source;
-        std::vector<std::size_t> starts;
-        for (const std::string& line : field->value.strings) {
-            if (!starts.empty()) source += '\n';
-            starts.push_back(source.size());
-            source += line;
-        }
+        const std::string source = formulaText(*field);
         warnDroppedBackslashes(node, *field);
         formula::CompileResult result = formula::compile(source, optionsFor(node, df.kind));
         for (const formula::Diagnostic& d : result.diagnostics) {
-            const FilePos pos = locate(*field, starts, d.range.begin.offset);
+            const FilePos pos = formulaTextPosition(*field, d.range.begin.offset, lineIndexes_);
             report(node, field, d.severity, pos,
                    node.type + "." + std::string(df.field) + ": " + d.message, d.suggestion);
         }

@@ -78,4 +78,34 @@ std::size_t fileOffsetOf(std::string_view fileText, const StringOrigin& origin,
     return i;
 }
 
+const LineIndex& LineIndexes::of(int file) {
+    auto it = indexes_.find(file);
+    if (it == indexes_.end())
+        it = indexes_.emplace(file, LineIndex(scene_.files[std::size_t(file)].text)).first;
+    return it->second;
+}
+
+std::string formulaText(const Field& field) {
+    std::string source;
+    for (std::size_t i = 0; i < field.value.strings.size(); ++i) {
+        if (i) source += '\n';
+        source += field.value.strings[i];
+    }
+    return source;
+}
+
+FilePos formulaTextPosition(const Field& field, std::size_t offset, LineIndexes& lines) {
+    const FieldValue& v = field.value;
+    std::size_t i = 0, start = 0;
+    // The string the offset falls in: each is followed by one joining newline.
+    while (i + 1 < v.strings.size() && start + v.strings[i].size() + 1 <= offset) {
+        start += v.strings[i].size() + 1;
+        ++i;
+    }
+    if (i >= v.stringOrigins.size() || v.stringOrigins[i].file < 0) return field.where;
+    const StringOrigin& origin = v.stringOrigins[i];
+    const std::size_t within = std::min(offset - start, v.strings[i].size());
+    return lines.of(origin.file).position(fileOffsetOf(lines.text(origin.file), origin, within));
+}
+
 } // namespace fl::scene

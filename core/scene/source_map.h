@@ -4,6 +4,8 @@
 // definition "..." is reported where the student typed it).
 #include "scene.h"
 
+#include <map>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,5 +28,23 @@ class LineIndex {
 // attributes; both inside an MFString in an XML attribute).
 std::size_t fileOffsetOf(std::string_view fileText, const StringOrigin& origin,
                          std::size_t decodedOffset);
+
+// The line indexes of a scene's files, made when first asked for.
+class LineIndexes {
+  public:
+    explicit LineIndexes(const Scene& scene) : scene_(scene) {}
+    const LineIndex& of(int file);
+    std::string_view text(int file) const { return scene_.files[std::size_t(file)].text; }
+
+  private:
+    const Scene& scene_;
+    std::map<int, LineIndex> indexes_;
+};
+
+// A formula field's text as it is compiled: its strings joined by newlines.
+std::string formulaText(const Field& field);
+// Where in its file the character at `offset` of that text was written (the
+// field's own position when its strings are not from a file).
+FilePos formulaTextPosition(const Field& field, std::size_t offset, LineIndexes& lines);
 
 } // namespace fl::scene
