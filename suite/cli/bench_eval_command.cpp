@@ -1,86 +1,83 @@
 // `functionlab bench eval`: the evaluator benchmark table (bench/eval_table).
-#include "arguments.h"
-#include "commands.h"
-#include "exit_codes.h"
+// It compares with muParser, a peer the product does not link: the table runs
+// in the sibling executable functionlab-bench (bench/functionlab_bench.cpp),
+// which reads the same options from this file's spec. functionlab checks the
+// command line, then hands it on; the output and exit status are the peer's.
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
 
-#include "eval_table.h"
-
-#include <cmath>
-#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
 namespace fl::cli {
 
-namespace {
-const char* kBenchHelp = R"(usage: functionlab bench eval [--json] [--side N] [--seconds S]
-       functionlab bench accuracy FILE|--formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1
-                                  [--json] [--plot OUT.svg] [--resolutions N,N,...]
-                                  [--threads N] [--memory MIB]
-
-eval    evaluates the benchmark formulas over an N^3 grid (default 64) with
-        FunctionLab's batch evaluator, the same formulas hand-written in C++,
-        and muParser, all on one thread; prints nanoseconds per point and the
-        ratios. The engines take turns for at least S seconds (default 0.2)
-        and each reports its best turn.
-        --json prints a list of {"formula", "ns_per_point": {"functionlab",
-        "native", "muparser"}}.
-
-accuracy  sweeps the resolution (default 16,32,64,128,256 cells along the
-        longest side) for the adaptive mesher and for dense marching cubes in
-        the same run, and reports per row: method, resolution, triangles,
-        function evaluations, milliseconds, and the max and mean distance from
-        mesh to true surface as a fraction of the box diagonal (|f|/|grad f|
-        sampled on triangle interiors). FILE: its first implicit or explicit
-        FShape. --json prints a list of {"method", "resolution", "triangles",
-        "evaluations", "ms", "max_error", "mean_error"}; --plot draws error
-        against time (log-log) for both methods as SVG. Resolutions go up to
-        2048; dense marching cubes at 2048 takes about a minute and 2-3 GB
-        for a sphere. The adaptive mesher keeps to its memory budget (--memory,
-        default 2048 MiB) and says when a resolution would exceed it; dense
-        marching cubes has none. --threads: both methods' threads (default
-        one per core).
-)";
+const CommandSpec& benchEvalSpec() {
+    static const CommandSpec spec{
+        .name = "bench eval",
+        .summary = "evaluator speed: FunctionLab vs hand-written C++ vs muParser",
+        .synopsis = {"bench eval [--json] [--side N] [--seconds S]"},
+        .description =
+            "Evaluates the benchmark formulas over an N^3 grid with FunctionLab's batch\n"
+            "evaluator, the same formulas hand-written in C++, and muParser, all on one\n"
+            "thread; prints nanoseconds per point and the ratios. The engines take turns\n"
+            "for at least S seconds and each reports its best turn. The work is done by\n"
+            "the executable functionlab-bench next to functionlab.\n",
+        .options = {{.name = "json",
+                     .help = "print a list of {\"formula\", \"ns_per_point\": {\"functionlab\", "
+                             "\"native\", \"muparser\"}} instead of the table"},
+                    {.name = "side",
+                     .kind = OptionKind::Integer,
+                     .valueName = "N",
+                     .help = "points along each side of the grid",
+                     .defaultValue = "64",
+                     .min = 2,
+                     .max = 512},
+                    {.name = "seconds",
+                     .kind = OptionKind::Number,
+                     .valueName = "S",
+                     .help = "how long the engines take turns, at least",
+                     .defaultValue = "0.2",
+                     .min = 0,
+                     .max = 60}},
+        .exitStatus = "0 measured, 1 functionlab-bench is missing or failed, 2 usage error",
+    };
+    return spec;
 }
 
-int benchCommand(const Args& args) {
-    if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-        std::cout << kBenchHelp;
-        return args.empty() ? kExitUsage : kExitOk;
+namespace {
+
+// The directory of the running executable.
+std::filesystem::path selfDirectory() {
+    char self[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return {};
+    return std::filesystem::path(std::string(self, std::size_t(n))).parent_path();
+}
+
+} // namespace
+
+int benchEvalCommand(const Args& args) {
+    int exit = 0;
+    if (!parseOrExplain(benchEvalSpec(), args, exit, std::cout, std::cerr)) return exit;
+    const std::filesystem::path peer = selfDirectory() / "functionlab-bench";
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(peer, ec) || ::access(peer.c_str(), X_OK) != 0) {
+        std::cerr << "functionlab bench eval: the benchmark executable " << peer.string()
+                  << " is missing; build it with `cmake --build build --target "
+                     "functionlab-bench` (it sits next to functionlab)\n";
+        return kExitDiagnostic;
     }
-    if (args[0] == "accuracy") return benchAccuracyCommand(Args(args.begin() + 1, args.end()));
-    if (args[0] != "eval") {
-        std::cerr << "functionlab bench: unknown benchmark '" << args[0] << "'\n\n" << kBenchHelp;
-        return kExitUsage;
-    }
-    bool json = false;
-    double side = 64;
-    double seconds = 0.2;
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        if (args[i] == "--json") {
-            json = true;
-        } else if ((args[i] == "--side" || args[i] == "--seconds") && i + 1 < args.size()) {
-            // The whole argument must be a number ("12abc" is not 12).
-            double& value = args[i] == "--side" ? side : seconds;
-            if (!parseNumber(args[i + 1], value)) {
-                std::cerr << "functionlab bench eval: " << args[i] << " needs a number, not '"
-                          << args[i + 1] << "'\n";
-                return kExitUsage;
-            }
-            ++i;
-        } else {
-            std::cerr << "functionlab bench eval: unexpected argument '" << args[i] << "'\n\n"
-                      << kBenchHelp;
-            return kExitUsage;
-        }
-    }
-    if (side < 2 || side > 512 || side != std::floor(side) || !(seconds >= 0.0) || seconds > 60.0) {
-        std::cerr << "functionlab bench eval: --side must be a whole number 2..512 and --seconds "
-                     "0..60\n";
-        return kExitUsage;
-    }
-    auto rows = bench::runEvalTable(static_cast<std::size_t>(side), seconds);
-    std::cout << (json ? bench::evalTableJson(rows) : bench::formatEvalTable(rows));
-    return kExitOk;
+    std::vector<std::string> all{peer.string(), "eval"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : all)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::cout.flush();
+    ::execv(peer.c_str(), argv.data()); // returns only when it could not start
+    std::cerr << "functionlab bench eval: cannot run " << peer.string() << "\n";
+    return kExitDiagnostic;
 }
 
 } // namespace fl::cli

@@ -13,20 +13,6 @@
 namespace fl::cli {
 namespace {
 
-const char* kCheckHelp = R"(usage: functionlab check FILE [--plan] [--json]
-
-Loads a scene (.x3d, .x3dv, .wrl and their gzip forms), expands its PROTOs,
-compiles every function definition, and prints each problem as
-  FILE:LINE:COL: error|warning: message (suggestion)
-
-  --plan   also print the effects plan: per node, what depends on time and
-           which tangible effects exist
-  --json   print one JSON object instead: {"file", "loaded", "diagnostics": [...],
-           "plan": {...} (with --plan)}
-
-exit status: 0 the scene loaded (warnings allowed), 1 it did not, 2 usage error
-)";
-
 std::string diagnosticJson(const scene::SceneDiagnostic& d) {
     return "{\"file\":" + jsonString(d.file) + ",\"line\":" + std::to_string(d.pos.line) +
            ",\"column\":" + std::to_string(d.pos.column) +
@@ -36,13 +22,22 @@ std::string diagnosticJson(const scene::SceneDiagnostic& d) {
 }
 
 std::string vectorJson(const std::array<double, 3>& v) {
-    return "[" + jsonNumber(v[0]) + "," + jsonNumber(v[1]) + "," + jsonNumber(v[2]) + "]";
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329)
+    // about literal + std::string chains.
+    std::string out = "[";
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (i) out += ",";
+        out += jsonNumber(v[i]);
+    }
+    return out + "]";
 }
 
 std::string timeVaryingJson(unsigned bits) {
     std::string out = "[";
-    for (std::string_view name : scene::timeVaryingNames(bits))
-        out += (out.size() > 1 ? "," : "") + jsonString(name);
+    for (std::string_view name : scene::timeVaryingNames(bits)) {
+        if (out.size() > 1) out += ",";
+        out += jsonString(name);
+    }
     return out + "]";
 }
 
@@ -75,32 +70,34 @@ std::string planJson(const scene::EffectsPlan& plan) {
 
 } // namespace
 
+const CommandSpec& checkSpec() {
+    static const CommandSpec spec{
+        .name = "check",
+        .summary = "load a scene; diagnostics as FILE:LINE:COL; --plan: what varies, what is "
+                   "tangible",
+        .synopsis = {"check FILE [--plan] [--json]"},
+        .description =
+            "Loads a scene (.x3d, .x3dv, .wrl and their gzip forms), expands its PROTOs,\n"
+            "compiles every function definition, and prints each problem as\n"
+            "  FILE:LINE:COL: error|warning: message (suggestion)\n",
+        .positionals = {{.name = "FILE", .help = "the scene"}},
+        .options = {{.name = "plan",
+                     .help = "also print the effects plan: per node, what depends on time and "
+                             "which tangible effects exist"},
+                    {.name = "json",
+                     .help = "print one JSON object instead: {\"file\", \"loaded\", "
+                             "\"diagnostics\": [...], \"plan\": {...} (with --plan)}"}},
+        .exitStatus = "0 the scene loaded (warnings allowed), 1 it did not, 2 usage error",
+    };
+    return spec;
+}
+
 int checkCommand(const Args& args) {
-    bool json = false, plan = false;
-    std::string file;
-    for (const std::string& a : args) {
-        if (a == "--help" || a == "-h") {
-            std::cout << kCheckHelp;
-            return kExitOk;
-        }
-        if (a == "--json") {
-            json = true;
-        } else if (a == "--plan") {
-            plan = true;
-        } else if (a.starts_with("--")) {
-            std::cerr << "functionlab check: unknown option '" << a << "'\n\n" << kCheckHelp;
-            return kExitUsage;
-        } else if (file.empty()) {
-            file = a;
-        } else {
-            std::cerr << "functionlab check: give one FILE\n\n" << kCheckHelp;
-            return kExitUsage;
-        }
-    }
-    if (file.empty()) {
-        std::cerr << "functionlab check: missing FILE\n\n" << kCheckHelp;
-        return kExitUsage;
-    }
+    int exit = 0;
+    const auto a = parseOrExplain(checkSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    const bool json = a->flag("json"), plan = a->flag("plan");
+    const std::string file = a->positional("FILE");
     scene::ReadResult r = scene::readSceneFile(file);
     if (r.ok()) {
         // Wiring the animation finds what only running it would show
@@ -117,8 +114,10 @@ int checkCommand(const Args& args) {
         out += ",\"loaded\":";
         out += r.ok() ? "true" : "false";
         out += ",\"diagnostics\":[";
-        for (std::size_t i = 0; i < r.diagnostics.size(); ++i)
-            out += (i ? "," : "") + diagnosticJson(r.diagnostics[i]);
+        for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
+            if (i) out += ",";
+            out += diagnosticJson(r.diagnostics[i]);
+        }
         out += "]";
         if (plan && r.ok()) out += ",\"plan\":" + planJson(scene::makeEffectsPlan(*r.scene));
         std::cout << out << "}\n";

@@ -1,19 +1,50 @@
 #pragma once
-// Subcommands of the `functionlab` executable. Each takes the arguments after
-// its own name and returns an exit code (see exit_codes.h).
+// Subcommands of the `functionlab` executable. Each declares its options in
+// the shared table (option_table.h) and takes the arguments after its own
+// name, returning an exit code (see exit_codes.h).
+#include "cli/option_table.h"
+
+#include <iosfwd>
 #include <string>
 #include <vector>
 
 namespace fl::cli {
 
-using Args = std::vector<std::string>;
+const CommandSpec& formulaCheckSpec();
+const CommandSpec& formulaEvalSpec();
+const CommandSpec& checkSpec();
+const CommandSpec& convertSpec();
+const CommandSpec& meshSpec();
+const CommandSpec& renderSpec();
+const CommandSpec& benchEvalSpec();
+const CommandSpec& benchAccuracySpec();
 
-int formulaCommand(const Args& args);
-int benchCommand(const Args& args);
+int formulaCheckCommand(const Args& args);
+int formulaEvalCommand(const Args& args);
 int checkCommand(const Args& args);
 int convertCommand(const Args& args);
 int meshCommand(const Args& args);
 int renderCommand(const Args& args);
+int benchEvalCommand(const Args& args);     // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args); // `bench accuracy`
+
+struct Command {
+    const CommandSpec& (*spec)();
+    int (*run)(const Args& args);
+};
+
+// Every command, in the order `functionlab help` lists them.
+const std::vector<Command>& commands();
+
+// `functionlab ARGS...` for everything but the window: the subcommands,
+// `help [--markdown] [COMMAND]`, `--help`, `--version`. Returns -1 when
+// args[0] is no command (the caller may open it as a scene file).
+int runCommandLine(const Args& args, std::ostream& out, std::ostream& err);
+
+// True for the words runCommandLine knows (commands, help, --version).
+bool isCommandWord(std::string_view word);
+
+// The top-level help, from the table.
+std::string overviewText();
 
 } // namespace fl::cli

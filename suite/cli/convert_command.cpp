@@ -1,6 +1,5 @@
 // `functionlab convert IN OUT`: between X3D XML, ClassicVRML and VRML97 (and
 // their gzip forms), chosen by OUT's extension.
-#include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 
@@ -13,67 +12,48 @@
 #include <iostream>
 
 namespace fl::cli {
-namespace {
 
-const char* kConvertHelp =
-    R"(usage: functionlab convert IN OUT [--no-preview | --preview-resolution N]
-
-Reads the scene IN and writes it to OUT in the encoding OUT's extension names:
-  .x3d   X3D XML          .x3dv  ClassicVRML       .wrl  VRML97
-  add .gz (or use .x3dz, .x3dvz, .wrz) for gzip
-Only fields written in IN are written (defaults stay implicit); PROTOs stay
-PROTOs; unknown nodes and fields are kept. Diagnostics go to stderr as
-FILE:LINE:COL: error|warning: message.
-
-So that other X3D browsers, which know nothing of function nodes, show the
-scene too, a coarse mesh of its function shapes at time 0 is added as one
-plain Group, DEF FunctionLab_Preview, at the end of the scene. FunctionLab
-drops it when it reads the file.
-
-options:
-  --no-preview              leave the preview out
-  --preview-resolution N    cells along each domain box's longest side (default 32)
-
-exit status: 0 written, 1 IN could not be read or OUT not written, 2 usage error
-)";
-
-} // namespace
+const CommandSpec& convertSpec() {
+    static const CommandSpec spec{
+        .name = "convert",
+        .summary = "convert a scene between X3D XML, ClassicVRML and VRML97",
+        .synopsis = {"convert IN OUT [--no-preview | --preview-resolution N]"},
+        .description =
+            "Reads the scene IN and writes it to OUT in the encoding OUT's extension names:\n"
+            "  .x3d   X3D XML          .x3dv  ClassicVRML       .wrl  VRML97\n"
+            "  add .gz (or use .x3dz, .x3dvz, .wrz) for gzip\n"
+            "Only fields written in IN are written (defaults stay implicit); PROTOs stay\n"
+            "PROTOs; unknown nodes and fields are kept. Diagnostics go to stderr as\n"
+            "FILE:LINE:COL: error|warning: message.\n"
+            "\n"
+            "So that other X3D browsers, which know nothing of function nodes, show the\n"
+            "scene too, a coarse mesh of its function shapes at time 0 is added as one\n"
+            "plain Group, DEF FunctionLab_Preview, at the end of the scene. FunctionLab\n"
+            "drops it when it reads the file.\n",
+        .positionals = {{.name = "IN", .help = "the scene to read"},
+                        {.name = "OUT", .help = "the file to write"}},
+        .options = {{.name = "no-preview", .help = "leave the preview out"},
+                    {.name = "preview-resolution",
+                     .kind = OptionKind::Number,
+                     .valueName = "N",
+                     .help = "cells along each domain box's longest side in the preview (a real "
+                             "number)",
+                     .defaultValue = "32",
+                     .min = 2,
+                     .max = 1024}},
+        .exitStatus = "0 written, 1 IN could not be read or OUT not written, 2 usage error",
+    };
+    return spec;
+}
 
 int convertCommand(const Args& args) {
-    std::vector<std::string> files;
-    bool preview = true;
+    int exit = 0;
+    const auto a = parseOrExplain(convertSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    const std::vector<std::string> files{a->positional("IN"), a->positional("OUT")};
+    const bool preview = !a->flag("no-preview");
     mesh::PreviewOptions previewOptions;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "--help" || a == "-h") {
-            std::cout << kConvertHelp;
-            return kExitOk;
-        }
-        if (a == "--no-preview") {
-            preview = false;
-            continue;
-        }
-        if (a == "--preview-resolution") {
-            if (i + 1 >= args.size() || !parseNumber(args[i + 1], previewOptions.resolution) ||
-                previewOptions.resolution < 2 || previewOptions.resolution > 1024) {
-                std::cerr << "functionlab convert: --preview-resolution takes a number from 2 "
-                             "to 1024\n\n"
-                          << kConvertHelp;
-                return kExitUsage;
-            }
-            ++i;
-            continue;
-        }
-        if (a.starts_with("--")) {
-            std::cerr << "functionlab convert: unknown option '" << a << "'\n\n" << kConvertHelp;
-            return kExitUsage;
-        }
-        files.push_back(a);
-    }
-    if (files.size() != 2) {
-        std::cerr << "functionlab convert: give IN and OUT\n\n" << kConvertHelp;
-        return kExitUsage;
-    }
+    previewOptions.resolution = a->number("preview-resolution", 32);
     scene::Encoding encoding;
     bool gzipped = false;
     if (!scene::encodingForPath(files[1], encoding, gzipped)) {

@@ -22,51 +22,33 @@ namespace {
 
 using namespace fl::formula;
 
-const char* kFormulaHelp = R"(usage: functionlab formula check "SRC" [--kind KIND] [--tape] [--json]
-       functionlab formula eval "SRC" --at X,Y,Z [--t T] [--uvw U,V,W]
-                                [--param NAME=VALUE ...] [--kind KIND] [--json]
-
-check   parse and check SRC; print diagnostics with a caret under the column.
-        --tape also prints the compiled tape; --json prints
-        {"ok": bool, "diagnostics": [...]}.
-eval    evaluate SRC at one point; print the value and the gradient (d/dx, d/dy,
-        d/dz; d/du, d/dv, d/dw for --kind parametric).
-        --json prints exactly one JSON object:
-        {"value": number|null, "finite": bool, "gradient": [gx, gy, gz],
-         "diagnostics": [...]}  (null where the value is NaN or infinite)
-
-KIND is generic (default), implicit, parametric, colour or force.
-A formula may start with '-' ("-x^2"); write -- before a formula that starts
-with "--".
-Exit status: 0 evaluated/checked, 1 the formula has errors, 2 usage error.
-)";
-
-bool parseKind(const std::string& s, DefinitionKind& kind) {
-    if (s == "generic")
-        kind = DefinitionKind::Generic;
-    else if (s == "implicit")
-        kind = DefinitionKind::Implicit;
-    else if (s == "parametric")
-        kind = DefinitionKind::Parametric;
-    else if (s == "colour" || s == "color")
-        kind = DefinitionKind::Colour;
-    else if (s == "force")
-        kind = DefinitionKind::Force;
-    else
-        return false;
-    return true;
+// --kind, shared by check and eval.
+OptionSpec kindOption() {
+    return {.name = "kind",
+            .kind = OptionKind::Choice,
+            .valueName = "KIND",
+            .help = "what the formula defines: generic (all of x y z t u v w readable, one "
+                    "value), implicit, parametric, colour (or color) or force",
+            .defaultValue = "generic",
+            .choices = {"generic", "implicit", "parametric", "colour", "color", "force"}};
 }
 
-bool parseTriple(const std::string& s, double out[3]) {
-    std::vector<double> v;
-    if (!parseNumberList(s, v) || v.size() != 3) return false;
-    std::copy(v.begin(), v.end(), out);
-    return true;
+OptionSpec jsonOption(std::string_view help) {
+    return {.name = "json", .kind = OptionKind::Flag, .help = help};
 }
 
-int usage(const std::string& message) {
-    std::cerr << "functionlab formula: " << message << "\n\n" << kFormulaHelp;
-    return kExitUsage;
+PositionalSpec sourceArgument() {
+    return {.name = "SRC",
+            .help = "the formula or script, as one argument; it may start with '-' (\"-x^2\"); "
+                    "write -- before one that starts with \"--\""};
+}
+
+DefinitionKind kindOf(const std::string& s) {
+    if (s == "implicit") return DefinitionKind::Implicit;
+    if (s == "parametric") return DefinitionKind::Parametric;
+    if (s == "colour" || s == "color") return DefinitionKind::Colour;
+    if (s == "force") return DefinitionKind::Force;
+    return DefinitionKind::Generic;
 }
 
 std::string diagnosticsJson(const std::vector<Diagnostic>& diags) {
@@ -90,106 +72,119 @@ void printDiagnostics(const std::vector<Diagnostic>& diags, const std::string& s
         std::cerr << formatDiagnostic(d, src, "formula");
 }
 
-struct Options {
-    std::string source;
-    bool haveSource = false;
-    DefinitionKind kind = DefinitionKind::Generic;
-    bool json = false;
-    bool tape = false;
-    std::optional<std::array<double, 3>> at;
-    std::optional<std::array<double, 3>> uvw;
-    double t = 0.0;
-    std::vector<std::pair<std::string, double>> params;
-};
+} // namespace
 
-// Returns an error message, or empty when the arguments were understood.
-std::string parseOptions(const Args& args, std::size_t first, Options& o) {
-    for (std::size_t i = first; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> std::optional<std::string> {
-            if (i + 1 >= args.size()) return std::nullopt;
-            return args[++i];
-        };
-        if (a == "--json")
-            o.json = true;
-        else if (a == "--tape")
-            o.tape = true;
-        else if (a == "--kind") {
-            auto v = value();
-            if (!v || !parseKind(*v, o.kind))
-                return "--kind needs one of generic, implicit, parametric, colour, force";
-        } else if (a == "--at") {
-            auto v = value();
-            double p[3];
-            if (!v || !parseTriple(*v, p)) return "--at needs three finite numbers: --at X,Y,Z";
-            o.at = std::array<double, 3>{p[0], p[1], p[2]};
-        } else if (a == "--uvw") {
-            auto v = value();
-            double p[3];
-            if (!v || !parseTriple(*v, p)) return "--uvw needs three finite numbers: --uvw U,V,W";
-            o.uvw = std::array<double, 3>{p[0], p[1], p[2]};
-        } else if (a == "--t") {
-            auto v = value();
-            if (!v || !parseNumber(*v, o.t)) return "--t needs a finite number";
-        } else if (a == "--param") {
-            auto v = value();
-            std::size_t eq = v ? v->find('=') : std::string::npos;
-            double num;
-            if (!v || eq == std::string::npos || eq == 0 || !parseNumber(v->substr(eq + 1), num))
-                return "--param needs NAME=VALUE";
-            o.params.emplace_back(v->substr(0, eq), num);
-        } else if (a == "--" && !o.haveSource && i + 1 < args.size()) {
-            o.source = args[++i]; // everything after -- is the formula, even "--x"
-            o.haveSource = true;
-        } else if (a.rfind("--", 0) == 0) {
-            // options start with "--"; a single '-' starts a formula such as "-x^2"
-            return "unknown option '" + a + "'";
-        } else if (!o.haveSource) {
-            o.source = a;
-            o.haveSource = true;
-        } else {
-            return "unexpected argument '" + a + "' (quote the formula as one argument)";
-        }
-    }
-    if (!o.haveSource) return "missing the formula: functionlab formula " + args[0] + " \"SRC\"";
-    return {};
+const CommandSpec& formulaCheckSpec() {
+    static const CommandSpec spec{
+        .name = "formula check",
+        .summary = "check a formula or script; diagnostics with carets",
+        .synopsis = {"formula check \"SRC\" [--kind KIND] [--tape] [--json]"},
+        .description = "Parses and checks SRC and prints each diagnostic as\n"
+                       "  formula:LINE:COL: error|warning: message (suggestion)\n"
+                       "with the source line and a caret under the range.\n",
+        .positionals = {sourceArgument()},
+        .options = {kindOption(),
+                    {.name = "tape", .help = "also print the compiled tape"},
+                    jsonOption("print {\"ok\": bool, \"diagnostics\": [...]} instead")},
+        .exitStatus = "0 checked, 1 the formula has errors, 2 usage error",
+        .positionalsMayStartWithDash = true,
+        .doubleDash = DoubleDash::QuotesNext,
+    };
+    return spec;
 }
 
-int check(const Args& args) {
-    Options o;
-    if (std::string err = parseOptions(args, 1, o); !err.empty()) return usage(err);
+int formulaCheckCommand(const Args& args) {
+    int exit = 0;
+    const auto a = parseOrExplain(formulaCheckSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    const std::string source = a->positional("SRC");
     CompileOptions co;
-    co.kind = o.kind;
-    CompileResult r = compile(o.source, co);
-    if (o.json) {
+    co.kind = kindOf(a->text("kind"));
+    CompileResult r = compile(source, co);
+    if (a->flag("json")) {
         std::cout << "{\"ok\": " << (r.ok() ? "true" : "false")
                   << ", \"diagnostics\": " << diagnosticsJson(r.diagnostics) << "}\n";
     } else {
-        printDiagnostics(r.diagnostics, o.source);
+        printDiagnostics(r.diagnostics, source);
         if (r.ok()) {
             std::cout << "ok: " << r.tape->code.size() << " operations, " << r.tape->registerCount
                       << " registers, outputs:";
             for (const OutputInfo& out : r.tape->outputs)
                 std::cout << " " << out.name;
             std::cout << "\n";
-            if (o.tape) std::cout << r.tape->disassemble();
+            if (a->flag("tape")) std::cout << r.tape->disassemble();
         }
     }
     return r.ok() ? kExitOk : kExitDiagnostic;
 }
 
-int eval(const Args& args) {
-    Options o;
-    if (std::string err = parseOptions(args, 1, o); !err.empty()) return usage(err);
-    bool parametric = o.kind == DefinitionKind::Parametric;
-    if (!parametric && !o.at) return usage("eval needs the point: --at X,Y,Z");
-    if (parametric && !o.uvw) return usage("a parametric definition needs --uvw U,V,W");
+const CommandSpec& formulaEvalSpec() {
+    static const CommandSpec spec{
+        .name = "formula eval",
+        .summary = "evaluate a formula at one point: value and gradient",
+        .synopsis =
+            {"formula eval \"SRC\" --at X,Y,Z [--t T] [--uvw U,V,W] [--param NAME=VALUE ...]\n"
+             "[--kind KIND] [--json]"},
+        .description =
+            "Evaluates SRC at one point and prints each output with its gradient (d/dx,\n"
+            "d/dy, d/dz; d/du, d/dv, d/dw for --kind parametric). --json prints exactly\n"
+            "one JSON object:\n"
+            "  {\"value\": number|null, \"finite\": bool, \"gradient\": [gx, gy, gz],\n"
+            "   \"diagnostics\": [...]}  (null where the value is NaN or infinite)\n",
+        .positionals = {sourceArgument()},
+        .options = {{.name = "at",
+                     .kind = OptionKind::NumberList,
+                     .valueName = "X,Y,Z",
+                     .help = "the point (required unless --kind parametric)",
+                     .count = 3},
+                    {.name = "t",
+                     .kind = OptionKind::Number,
+                     .valueName = "T",
+                     .help = "the time",
+                     .defaultValue = "0"},
+                    {.name = "uvw",
+                     .kind = OptionKind::NumberList,
+                     .valueName = "U,V,W",
+                     .help = "the parameters of a parametric definition (required with --kind "
+                             "parametric)",
+                     .count = 3},
+                    {.name = "param",
+                     .kind = OptionKind::KeyValue,
+                     .valueName = "NAME=VALUE",
+                     .help = "set a `param` the formula declares; give it once per parameter",
+                     .repeatable = true,
+                     .numericValue = true},
+                    kindOption(),
+                    jsonOption("print one JSON object instead")},
+        .exitStatus = "0 evaluated (a NaN or infinite value too, with a warning), 1 the formula "
+                      "has errors, 2 usage error",
+        .positionalsMayStartWithDash = true,
+        .doubleDash = DoubleDash::QuotesNext,
+    };
+    return spec;
+}
+
+int formulaEvalCommand(const Args& args) {
+    int exit = 0;
+    const auto a = parseOrExplain(formulaEvalSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    const std::string source = a->positional("SRC");
+    const DefinitionKind kind = kindOf(a->text("kind"));
+    const bool json = a->flag("json");
+    const std::vector<std::pair<std::string, double>> params = a->keyNumbers("param");
+    const auto at = a->numbers("at"), uvw = a->numbers("uvw");
+    bool parametric = kind == DefinitionKind::Parametric;
+    if (!parametric && !at)
+        return usageError(formulaEvalSpec(), "eval needs the point: --at X,Y,Z", std::cerr);
+    if (parametric && !uvw)
+        return usageError(formulaEvalSpec(), "a parametric definition needs --uvw U,V,W",
+                          std::cerr);
     CompileOptions co;
-    co.kind = o.kind;
-    CompileResult r = compile(o.source, co);
+    co.kind = kind;
+    CompileResult r = compile(source, co);
     std::vector<Diagnostic> diags = r.diagnostics;
     if (r.ok()) {
-        for (const auto& [name, value] : o.params) {
+        for (const auto& [name, value] : params) {
             if (r.tape->paramRegister(name) < 0) {
                 diags.push_back({Severity::Error,
                                  {},
@@ -200,33 +195,33 @@ int eval(const Args& args) {
     }
     bool ok = r.ok() && !hasErrors(diags);
     if (!ok) {
-        if (o.json) {
+        if (json) {
             std::cout << "{\"value\": null, \"finite\": false, \"gradient\": [null, null, null], "
                          "\"diagnostics\": "
                       << diagnosticsJson(diags) << "}\n";
         } else {
-            printDiagnostics(diags, o.source);
+            printDiagnostics(diags, source);
         }
         return kExitDiagnostic;
     }
     const Tape& tape = *r.tape;
     Point p{};
-    if (o.at) {
-        p[0] = (*o.at)[0];
-        p[1] = (*o.at)[1];
-        p[2] = (*o.at)[2];
+    if (at) {
+        p[0] = (*at)[0];
+        p[1] = (*at)[1];
+        p[2] = (*at)[2];
     }
-    if (o.uvw) {
-        p[4] = (*o.uvw)[0];
-        p[5] = (*o.uvw)[1];
-        p[6] = (*o.uvw)[2];
+    if (uvw) {
+        p[4] = (*uvw)[0];
+        p[5] = (*uvw)[1];
+        p[6] = (*uvw)[2];
     }
-    p[3] = o.t;
+    p[3] = a->number("t", 0.0);
     std::array<Input, 3> wrt = parametric ? std::array<Input, 3>{Input::U, Input::V, Input::W}
                                           : std::array<Input, 3>{Input::X, Input::Y, Input::Z};
     GradientEvaluator g(tape, wrt);
     ScalarEvaluator s(tape);
-    for (const auto& [name, value] : o.params) {
+    for (const auto& [name, value] : params) {
         g.parameters().set(name, value);
         s.parameters().set(name, value);
     }
@@ -242,7 +237,7 @@ int eval(const Args& args) {
         finite = finite && std::isfinite(v);
     Dual d = outs[0];
     if (!std::isfinite(value)) d.d = {NAN, NAN, NAN}; // no gradient of an undefined value
-    if (o.json) {
+    if (json) {
         std::cout << "{\"value\": " << jsonNumber(value)
                   << ", \"finite\": " << (finite ? "true" : "false") << ", \"gradient\": ["
                   << jsonNumber(d.d[0]) << ", " << jsonNumber(d.d[1]) << ", " << jsonNumber(d.d[2])
@@ -256,7 +251,7 @@ int eval(const Args& args) {
         }
         std::cout << ", \"diagnostics\": " << diagnosticsJson(diags) << "}\n";
     } else {
-        printDiagnostics(diags, o.source);
+        printDiagnostics(diags, source);
         std::cout.precision(17);
         for (std::size_t i = 0; i < values.size(); ++i) {
             const char* axes = parametric ? "uvw" : "xyz";
@@ -267,18 +262,6 @@ int eval(const Args& args) {
         }
     }
     return kExitOk;
-}
-
-} // namespace
-
-int formulaCommand(const Args& args) {
-    if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-        std::cout << kFormulaHelp;
-        return args.empty() ? kExitUsage : kExitOk;
-    }
-    if (args[0] == "check") return check(args);
-    if (args[0] == "eval") return eval(args);
-    return usage("unknown formula command '" + args[0] + "'");
 }
 
 } // namespace fl::cli

@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 
+#include "field/field_sampler.h"
 #include "formula/compiler.h"
 #include "mesh/error_driven.h"
 #include "mesh/mesh_export.h"
@@ -42,58 +43,6 @@ std::unique_ptr<QGuiApplication> fontsFor(const scene::Scene& scene) {
     return std::make_unique<QGuiApplication>(argc, argv);
 }
 
-const char* kMeshHelp =
-    R"(usage: functionlab mesh FILE -o OUT [--time T] [--error E | --resolution N | --points N]
-       functionlab mesh --formula "SRC" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [options]
-
-Polygonizes the shapes of the scene FILE — implicit and explicit function
-shapes in their domain boxes, parametric curves (as tubes), surfaces and solids
-over their u, v, w ranges, and the standard geometry (Box ... IndexedFaceSet,
-triangle/fan/strip/quad sets, Geometry2D, NURBS, Text in the system's fonts) —
-coloured by their FMaterial or Material and placed by the Transform/FTransform
-nodes above them; or one formula (f >= 0 inside) over a box. Writes OUT in
-the format its extension names: .stl (binary), .obj, .ply (binary), .glb
-(glTF 2.0 binary), .x3d (vertex colours where the format has them). An
-FGeometry with `points` N > 0, or --points, gives a point cloud instead: on an
-implicit surface, through an explicit solid, over a parametric object's
-parameters (.ply, .obj, .glb or .x3d; STL holds only triangles).
-
-options:
-  -o, --output OUT     the file to write
-  --time T             the moment, in scene seconds (default 0); wall-clock nodes
-                       read it as seconds since 1970-01-01 UTC
-  --resolution N       cells along the longest side of each domain box (a real
-                       number; default: each FGeometry's resolution, 64 for --formula)
-  --error E            mesh each shape until its measured error (largest distance
-                       from the surface, on triangle interiors) is at most E times
-                       its box diagonal, e.g. 0.001
-  --points N           about N points per shape instead of a mesh (with --formula:
-                       on the surface; --solid: through the inside)
-  --solid              with --formula and --points: fill the inside (f > 0)
-  --open               leave the mesh open where a shape leaves its box
-                       (default: the box closes it)
-  --threads K          worker threads (default: one per core)
-  --memory MIB         memory budget (default 2048)
-
-Warnings (no sign change, undefined regions, ...) go to stderr; the exit status
-is still 0 when a file was written.
-
-exit status: 0 written, 1 the input could not be read or nothing could be
-written, 2 usage error
-)";
-
-bool parseBox(const std::string& text, mesh::Box3& box) {
-    std::vector<double> v;
-    if (!parseNumberList(text, v) || v.size() != 6) return false;
-    box = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-    return box.valid();
-}
-
-int usage(const std::string& problem) {
-    std::cerr << "functionlab mesh: " << problem << "\n\n" << kMeshHelp;
-    return kExitUsage;
-}
-
 void describe(const std::string& name, const mesh::Mesh& m, const mesh::MeshStats& s,
               double measuredError) {
     if (m.isPointCloud()) {
@@ -113,63 +62,114 @@ void describe(const std::string& name, const mesh::Mesh& m, const mesh::MeshStat
 
 } // namespace
 
+const CommandSpec& meshSpec() {
+    static const CommandSpec spec{
+        .name = "mesh",
+        .summary = "polygonize function shapes; .stl .obj .ply .glb .x3d",
+        .synopsis = {"mesh FILE -o OUT [--time T] [--error E | --resolution N | --points N]",
+                     "mesh --formula \"SRC\" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [--open]\n"
+                     "[--error E | --resolution N | --points N [--solid]]"},
+        .description =
+            "Polygonizes the shapes of the scene FILE — implicit and explicit function\n"
+            "shapes in their domain boxes, parametric curves (as tubes), surfaces and solids\n"
+            "over their u, v, w ranges, and the standard geometry (Box ... IndexedFaceSet,\n"
+            "triangle/fan/strip/quad sets, Geometry2D, NURBS, Text in the system's fonts) —\n"
+            "coloured by their FMaterial or Material and placed by the Transform/FTransform\n"
+            "nodes above them; or one formula (f >= 0 inside) over a box. Writes OUT in\n"
+            "the format its extension names: .stl (binary), .obj, .ply (binary), .glb\n"
+            "(glTF 2.0 binary), .x3d (vertex colours where the format has them). An\n"
+            "FGeometry with `points` N > 0, or --points, gives a point cloud instead: on an\n"
+            "implicit surface, through an explicit solid, over a parametric object's\n"
+            "parameters (.ply, .obj, .glb or .x3d; STL holds only triangles).\n",
+        .positionals = {{.name = "FILE",
+                         .help = "the scene (or give --formula and --box instead)",
+                         .required = false}},
+        .options =
+            {{.name = "output",
+              .shortName = 'o',
+              .kind = OptionKind::Path,
+              .valueName = "OUT",
+              .help = "the file to write (required)"},
+             {.name = "formula",
+              .kind = OptionKind::Text,
+              .valueName = "SRC",
+              .help = "mesh this formula (f >= 0 inside) instead of a scene; needs --box"},
+             {.name = "box",
+              .kind = OptionKind::NumberList,
+              .valueName = "X0,Y0,Z0,X1,Y1,Z1",
+              .help = "the formula's box, max above min on every axis",
+              .count = 6},
+             {.name = "time",
+              .kind = OptionKind::Number,
+              .valueName = "T",
+              .help = "the moment, in scene seconds; wall-clock nodes read it as seconds since "
+                      "1970-01-01 UTC",
+              .defaultValue = "0"},
+             {.name = "resolution",
+              .kind = OptionKind::Number,
+              .valueName = "N",
+              .help = "cells along the longest side of each domain box (a real number; default: "
+                      "each FGeometry's resolution, 64 for --formula)",
+              .min = 0},
+             {.name = "error",
+              .kind = OptionKind::Number,
+              .valueName = "E",
+              .help = "mesh each shape until its measured error (largest distance from the "
+                      "surface, on triangle interiors) is at most E times its box diagonal, e.g. "
+                      "0.001",
+              .min = 0},
+             {.name = "points",
+              .kind = OptionKind::Integer,
+              .valueName = "N",
+              .help = "about N points per shape instead of a mesh (with --formula: on the "
+                      "surface; --solid: through the inside)",
+              .min = 0,
+              .max = 10000000},
+             {.name = "solid", .help = "with --formula and --points: fill the inside (f > 0)"},
+             {.name = "open",
+              .help = "leave the mesh open where a shape leaves its box (default: the box "
+                      "closes it)"},
+             {.name = "threads",
+              .kind = OptionKind::Integer,
+              .valueName = "K",
+              .help = "worker threads (0: one per core)",
+              .defaultValue = "0",
+              .min = 0,
+              .max = 1024},
+             {.name = "memory",
+              .kind = OptionKind::Number,
+              .valueName = "MIB",
+              .help = "memory budget in MiB",
+              .defaultValue = "2048",
+              .min = 0,
+              .minExclusive = true}},
+        .notes = "Warnings (no sign change, undefined regions, ...) go to stderr; the exit status\n"
+                 "is still 0 when a file was written.\n",
+        .exitStatus =
+            "0 written, 1 the input could not be read or nothing could be written, 2 usage error",
+    };
+    return spec;
+}
+
 int meshCommand(const Args& args) {
-    std::string file, formula, output, boxText;
-    double time = 0, resolution = 0, error = 0, memory = 2048, threads = 0, points = 0;
-    bool open = false, solid = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&](const char* what) -> const std::string* {
-            if (i + 1 >= args.size()) return nullptr;
-            (void)what;
-            return &args[++i];
-        };
-        if (a == "--help" || a == "-h") {
-            std::cout << kMeshHelp;
-            return kExitOk;
-        }
-        const std::string* v = nullptr;
-        if (a == "-o" || a == "--output") {
-            if (!(v = value("OUT"))) return usage("-o needs a file name");
-            output = *v;
-        } else if (a == "--formula") {
-            if (!(v = value("SRC"))) return usage("--formula needs the formula");
-            formula = *v;
-        } else if (a == "--box") {
-            if (!(v = value("box"))) return usage("--box needs X0,Y0,Z0,X1,Y1,Z1");
-            boxText = *v;
-        } else if (a == "--time" || a == "--resolution" || a == "--error" || a == "--memory" ||
-                   a == "--threads" || a == "--points") {
-            double d = 0;
-            if (!(v = value("number")) || !parseNumber(*v, d)) return usage(a + " needs a number");
-            (a == "--time"         ? time
-             : a == "--resolution" ? resolution
-             : a == "--error"      ? error
-             : a == "--memory"     ? memory
-             : a == "--points"     ? points
-                                   : threads) = d;
-        } else if (a == "--open") {
-            open = true;
-        } else if (a == "--solid") {
-            solid = true;
-        } else if (a.starts_with("-")) {
-            return usage("unknown option '" + a + "'");
-        } else if (file.empty()) {
-            file = a;
-        } else {
-            return usage("give one scene FILE");
-        }
-    }
+    int exit = 0;
+    const auto a = parseOrExplain(meshSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    auto usage = [](const std::string& problem) {
+        return usageError(meshSpec(), problem, std::cerr);
+    };
+    const std::string file = a->positional("FILE"), formula = a->text("formula"),
+                      output = a->text("output");
+    const double time = a->number("time", 0), resolution = a->number("resolution", 0),
+                 error = a->number("error", 0), memory = a->number("memory", 2048);
+    const std::int64_t threads = a->integer("threads", 0), points = a->integer("points", 0);
+    const bool open = a->flag("open"), solid = a->flag("solid");
     if (output.empty()) return usage("give the output file with -o OUT");
     if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
     if (!mesh::meshFormatForPath(output))
         return usage("cannot tell the format from '" + output +
                      "'; use .stl, .obj, .ply, .glb or .x3d");
     if (resolution && error) return usage("give --resolution or --error, not both");
-    if (resolution < 0 || error < 0 || memory <= 0 || threads < 0)
-        return usage("--resolution, --error, --memory and --threads must be positive");
-    if (points != 0 && !(points >= 1 && points <= 1e7 && points == std::floor(points)))
-        return usage("--points needs a whole number from 1 to 10000000");
     if (points > 0 && (resolution > 0 || error > 0))
         return usage("--points draws points, not a mesh: leave out --resolution and --error");
     if (points > 0 && mesh::meshFormatForPath(output) == mesh::MeshFormat::Stl)
@@ -183,14 +183,16 @@ int meshCommand(const Args& args) {
     mesh::Mesh result;
     bool anything = false;
     if (!formula.empty()) {
-        mesh::ImplicitField field;
-        if (boxText.empty() || !parseBox(boxText, field.box))
-            return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1 with max above min");
+        field::ImplicitField field;
+        const auto box = a->numbers("box");
+        if (!box) return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
+        field.box = {{(*box)[0], (*box)[1], (*box)[2]}, {(*box)[3], (*box)[4], (*box)[5]}};
+        if (!field.box.valid()) return usage("--box needs max above min on every axis");
         auto tape = compileFormulaArgument(formula, formula::DefinitionKind::Implicit);
         if (!tape) return kExitDiagnostic;
         field.tape = std::move(*tape);
         field.t = time;
-        field.boundary = open ? mesh::BoxBoundary::Open : mesh::BoxBoundary::Closed;
+        field.boundary = open ? field::BoxBoundary::Open : field::BoxBoundary::Closed;
         mesh::MeshResult r;
         double measured = -1;
         if (points > 0) {

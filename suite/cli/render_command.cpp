@@ -1,5 +1,4 @@
 // `functionlab render`: one frame of a scene, drawn off screen into a PNG.
-#include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 
@@ -20,34 +19,6 @@
 
 namespace fl::cli {
 namespace {
-
-const char* kRenderHelp =
-    R"(usage: functionlab render FILE -o OUT.png [--time T] [--size WxH] [--viewpoint NAME]
-                          [--resolution N]
-
-Draws one frame of the scene FILE off screen and writes it as an image
-(.png, or .jpg/.bmp by the extension): function shapes meshed at the moment T,
-standard shapes, the scene's lights, Background and the bound Viewpoint.
-
-options:
-  -o, --output OUT      the image to write
-  --time T              the moment, in scene seconds (default 0)
-  --size WxH            the image size in pixels (default 800x600)
-  --viewpoint NAME      a Viewpoint by description or DEF name (default: the
-                        first; a view of the whole scene when there is none)
-  --resolution N        mesh every function shape at N cells along its box
-                        (default: each FGeometry's resolution)
-
-Drawing needs OpenGL 3.3 and so a display; without one, render runs itself
-under xvfb-run when that is installed (Debian: xvfb), else says so.
-
-exit status: 0 written, 1 the scene could not be read or nothing drawn, 2 usage error
-)";
-
-int usage(const std::string& problem) {
-    std::cerr << "functionlab render: " << problem << "\n\n" << kRenderHelp;
-    return kExitUsage;
-}
 
 bool hasDisplay() {
     for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
@@ -74,44 +45,64 @@ void runUnderXvfb(const Args& args) {
 
 } // namespace
 
+const CommandSpec& renderSpec() {
+    static const CommandSpec spec{
+        .name = "render",
+        .summary = "draw one frame of a scene off screen",
+        .synopsis = {"render FILE -o OUT.png [--time T] [--size WxH] [--viewpoint NAME]\n"
+                     "[--resolution N]"},
+        .description =
+            "Draws one frame of the scene FILE off screen and writes it as an image\n"
+            "(.png, or .jpg/.bmp by the extension): function shapes meshed at the moment T,\n"
+            "standard shapes, the scene's lights, Background and the bound Viewpoint.\n",
+        .positionals = {{.name = "FILE", .help = "the scene"}},
+        .options = {{.name = "output",
+                     .shortName = 'o',
+                     .kind = OptionKind::Path,
+                     .valueName = "OUT",
+                     .help = "the image to write (required)"},
+                    {.name = "time",
+                     .kind = OptionKind::Number,
+                     .valueName = "T",
+                     .help = "the moment, in scene seconds",
+                     .defaultValue = "0"},
+                    {.name = "size",
+                     .kind = OptionKind::Size,
+                     .valueName = "WxH",
+                     .help = "the image size in pixels",
+                     .defaultValue = "800x600",
+                     .min = 1,
+                     .max = 16384},
+                    {.name = "viewpoint",
+                     .kind = OptionKind::Text,
+                     .valueName = "NAME",
+                     .help = "a Viewpoint by description or DEF name (default: the first; a view "
+                             "of the whole scene when there is none)"},
+                    {.name = "resolution",
+                     .kind = OptionKind::Number,
+                     .valueName = "N",
+                     .help = "mesh every function shape at N cells along its box (default: each "
+                             "FGeometry's resolution)",
+                     .min = 0}},
+        .notes = "Drawing needs OpenGL 3.3 and so a display; without one, render runs itself\n"
+                 "under xvfb-run when that is installed (Debian: xvfb), else says so.\n",
+        .exitStatus = "0 written, 1 the scene could not be read or nothing drawn, 2 usage error",
+    };
+    return spec;
+}
+
 int renderCommand(const Args& args) {
-    std::string file, output, viewpoint;
-    double time = 0, resolution = 0;
-    int width = 800, height = 600;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> const std::string* {
-            return i + 1 < args.size() ? &args[++i] : nullptr;
-        };
-        const std::string* v = nullptr;
-        if (a == "--help" || a == "-h") {
-            std::cout << kRenderHelp;
-            return kExitOk;
-        } else if (a == "-o" || a == "--output") {
-            if (!(v = value())) return usage("-o needs a file name");
-            output = *v;
-        } else if (a == "--viewpoint") {
-            if (!(v = value())) return usage("--viewpoint needs a name");
-            viewpoint = *v;
-        } else if (a == "--time" || a == "--resolution") {
-            double d = 0;
-            if (!(v = value()) || !parseNumber(*v, d)) return usage(a + " needs a number");
-            (a == "--time" ? time : resolution) = d;
-        } else if (a == "--size") {
-            if (!(v = value()) || std::sscanf(v->c_str(), "%dx%d", &width, &height) != 2 ||
-                width < 1 || height < 1 || width > 16384 || height > 16384)
-                return usage("--size needs WxH, e.g. 800x600 (at most 16384 each)");
-        } else if (a.starts_with("-")) {
-            return usage("unknown option '" + a + "'");
-        } else if (file.empty()) {
-            file = a;
-        } else {
-            return usage("give one scene FILE");
-        }
-    }
-    if (file.empty()) return usage("give the scene FILE");
+    int exit = 0;
+    const auto a = parseOrExplain(renderSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    auto usage = [](const std::string& problem) {
+        return usageError(renderSpec(), problem, std::cerr);
+    };
+    const std::string file = a->positional("FILE"), output = a->text("output"),
+                      viewpoint = a->text("viewpoint");
+    const double time = a->number("time", 0), resolution = a->number("resolution", 0);
+    const auto [width, height] = a->size("size").value_or(std::pair{800, 600});
     if (output.empty()) return usage("give the image to write with -o OUT.png");
-    if (resolution < 0) return usage("--resolution must be positive");
     const QByteArray format =
         QFileInfo(QString::fromStdString(output)).suffix().toLower().toLatin1();
     if (!QImageWriter::supportedImageFormats().contains(format))

@@ -34,3 +34,23 @@ run(2 bench eval --side 8.5)
 expect_match("${ERR}" "whole number")
 run(2 bench eval --side 1)
 run(2 bench eval --seconds nan)
+
+# The benchmark runs in functionlab-bench (it links muParser; functionlab does
+# not). It reads the same options, so its usage errors are the same.
+run(0 bench eval --help)
+expect_match("${OUT}" "--side N")
+execute_process(COMMAND ${BENCH} eval --side 12abc RESULT_VARIABLE code ERROR_VARIABLE err)
+if(NOT code EQUAL 2 OR NOT err MATCHES "--side needs a number, not '12abc'")
+  message(FATAL_ERROR "functionlab-bench eval --side 12abc: exit ${code}: ${err}")
+endif()
+# Without functionlab-bench beside it, bench eval says so and exits 1.
+file(REMOVE_RECURSE ${OUT_DIR}/alone)
+file(MAKE_DIRECTORY ${OUT_DIR}/alone)
+file(COPY ${FUNCTIONLAB} DESTINATION ${OUT_DIR}/alone)
+get_filename_component(exe ${FUNCTIONLAB} NAME)
+execute_process(COMMAND ${OUT_DIR}/alone/${exe} bench eval --side 8 --seconds 0
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 1 OR NOT err MATCHES "functionlab-bench is missing")
+  message(FATAL_ERROR "without functionlab-bench: exit ${code}: ${err}")
+endif()
+file(REMOVE_RECURSE ${OUT_DIR}/alone)
