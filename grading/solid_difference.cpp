@@ -1,0 +1,94 @@
+#include "solid_difference.h"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace fl::grading {
+namespace {
+
+bool inside(double f) {
+    return f > 0;
+}
+
+// Both intervals one side of zero, the same side.
+bool sameSide(const formula::Interval& p, const formula::Interval& q) {
+    if (p.empty() || q.empty() || p.nan || q.nan) return false;
+    return (p.lo > 0 && q.lo > 0) || (p.hi <= 0 && q.hi <= 0);
+}
+
+} // namespace
+
+SolidComparison compareSolids(const field::ImplicitField& a, const field::ImplicitField& b,
+                              const field::ImplicitField* activity, Budget& budget,
+                              const CompareOptions& options) {
+    // Compared inside the box, without the box's own faces: both would carry
+    // them, and every cell on a face would look undecided.
+    field::ImplicitField openA = a, openB = b;
+    openA.boundary = openB.boundary = field::BoxBoundary::Open;
+    openB.box = openA.box;
+    field::FieldSampler fa(openA), fb(openB);
+    std::optional<field::FieldSampler> active;
+    std::optional<field::ImplicitField> openActivity;
+    if (activity) {
+        openActivity = *activity;
+        openActivity->boundary = field::BoxBoundary::Open;
+        openActivity->box = openA.box;
+        active.emplace(*openActivity);
+    }
+    SolidComparison out;
+    struct Cell {
+        field::Box3 box;
+        int depth;
+    };
+    std::vector<Cell> stack{{openA.box, 0}};
+    while (!stack.empty()) {
+        const Cell cell = stack.back();
+        stack.pop_back();
+        if (!budget.spend(active ? 3 : 2)) return out; // Unknown
+        if (active) {
+            const formula::Interval g = active->interval(cell.box.lo, cell.box.hi);
+            if (g.empty() || (!g.nan && g.hi <= 0)) continue; // equal here
+        }
+        const formula::Interval ia = fa.interval(cell.box.lo, cell.box.hi);
+        const formula::Interval ib = fb.interval(cell.box.lo, cell.box.hi);
+        if (sameSide(ia, ib)) continue;
+        // Look for a witness at the centre (and, at the top, the corners).
+        std::vector<field::Vec3> points;
+        const field::Vec3 mid = field::scaled(field::plus(cell.box.lo, cell.box.hi), 0.5);
+        points.push_back(mid);
+        if (cell.depth == 0)
+            for (int c = 0; c < 8; ++c)
+                points.push_back({c & 1 ? cell.box.hi[0] : cell.box.lo[0],
+                                  c & 2 ? cell.box.hi[1] : cell.box.lo[1],
+                                  c & 4 ? cell.box.hi[2] : cell.box.lo[2]});
+        for (const field::Vec3& p : points) {
+            if (!budget.spend(2)) return out;
+            const double va = fa.value(p), vb = fb.value(p);
+            if (std::isfinite(va) && std::isfinite(vb) && inside(va) != inside(vb)) {
+                out.result = Sameness::Different;
+                out.witness = p;
+                out.witnessA = va;
+                out.witnessB = vb;
+                return out;
+            }
+        }
+        if (cell.depth >= options.maxDepth) {
+            ++out.unresolvedCells;
+            continue;
+        }
+        // Halve every side; the children are visited in a fixed order.
+        for (int c = 7; c >= 0; --c) {
+            Cell child{cell.box, cell.depth + 1};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double m = 0.5 * (cell.box.lo[k] + cell.box.hi[k]);
+                (c >> k & 1 ? child.box.lo[k] : child.box.hi[k]) = m;
+            }
+            stack.push_back(child);
+        }
+    }
+    out.result = Sameness::Same;
+    return out;
+}
+
+} // namespace fl::grading

@@ -1,0 +1,55 @@
+#pragma once
+// Do two fields show the same solid in a box? The sign of f (f > 0 inside)
+// compared cell by cell: the interval evaluator proves cells where both
+// have one sign (or where an `activity` field shows they are equal), sample
+// points look for a witness where they differ, and undecided cells are
+// halved down to a depth. Deterministic (a fixed order) and bounded (an
+// evaluation budget shared by a whole submission).
+#include "field/field_sampler.h"
+
+#include <cstddef>
+#include <optional>
+
+namespace fl::grading {
+
+// Evaluations (points and intervals) a check may still spend.
+struct Budget {
+    std::size_t left = 2'000'000;
+    bool exceeded = false;
+    bool spend(std::size_t n) {
+        if (left < n) {
+            exceeded = true;
+            left = 0;
+            return false;
+        }
+        left -= n;
+        return true;
+    }
+};
+
+enum class Sameness : std::uint8_t {
+    Same,      // proven: the sign agrees everywhere in the box (to the depth)
+    Different, // a witness point where one is inside and the other not
+    Unknown,   // the budget ran out first
+};
+
+struct SolidComparison {
+    Sameness result = Sameness::Unknown;
+    field::Vec3 witness{};             // with Different
+    double witnessA = 0, witnessB = 0; // the two values there
+    std::size_t unresolvedCells = 0;   // at the finest depth, neither proven nor witnessed
+};
+
+struct CompareOptions {
+    int maxDepth = 9; // cells down to 1/512 of the box's sides
+    int samplesPerCell = 1;
+};
+
+// `a` and `b` share the box (a's); `activity`, when given, is > 0 only where
+// a and b may differ at all (elsewhere they are equal): cells where its
+// interval stays <= 0 are the same without looking further.
+SolidComparison compareSolids(const field::ImplicitField& a, const field::ImplicitField& b,
+                              const field::ImplicitField* activity, Budget& budget,
+                              const CompareOptions& options = {});
+
+} // namespace fl::grading
