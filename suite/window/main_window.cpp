@@ -2,20 +2,26 @@
 
 #include "code_editor.h"
 #include "examples.h"
+#include "examples_dock.h"
 #include "find_bar.h"
+#include "issues_dock.h"
 #include "level_of_detail_control.h"
 #include "live_parser.h"
 #include "mesh/mesh_export.h"
 #include "mesh/scene_meshing.h"
 #include "mesh_geometry.h"
+#include "parameters_dock.h"
 #include "picking.h"
 #include "scene/field_access.h"
 #include "scene/gzip.h"
 #include "scene/scene_reader.h"
 #include "scene_player.h"
+#include "scene_text_dock.h"
+#include "scene_tree_dock.h"
 #include "scene_widget.h"
 #include "text_outliner.h"
 #include "timeline_bar.h"
+#include "viewpoint_box.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -28,13 +34,11 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSaveFile>
-#include <QSet>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -83,9 +87,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), editor_(new editor::CodeEditor), find_(new editor::FindBar(editor_)),
       parser_(new editor::LiveParser(this)), view_(new viewer::SceneWidget),
       player_(new viewer::ScenePlayer(nullptr, this)), timeline_(new TimelineBar(player_)),
-      issues_(new QListWidget), tree_(new QTreeWidget), examples_(new QListWidget),
-      parameters_(new QWidget), parameterForm_(new QFormLayout(parameters_)),
-      viewpoints_(new QComboBox), recentMenu_(nullptr), triangles_(new QLabel),
+      viewpoints_(new ViewpointBox), recentMenu_(nullptr), triangles_(new QLabel),
       meshTime_(new QLabel), frameRate_(new QLabel), timeLabel_(new QLabel) {
     setWindowTitle(QStringLiteral("FunctionLab"));
     setCentralWidget(view_);
@@ -111,15 +113,6 @@ MainWindow::MainWindow(QWidget* parent)
     connect(player_, &viewer::ScenePlayer::timeChanged, this, [this](double s) {
         timeline_->showTime(s);
         timeLabel_->setText(QStringLiteral("t = %1 s").arg(s, 0, 'f', 2));
-    });
-    connect(issues_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        editor_->goTo(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
-    });
-    connect(issues_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
-        editor_->goTo(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
-    });
-    connect(tree_, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
-        editor_->goTo(item->data(0, Qt::UserRole).toInt(), item->data(0, Qt::UserRole + 1).toInt());
     });
 
     recoveryTimer_.setSingleShot(true);
@@ -180,43 +173,53 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() = default;
 
+void MainWindow::dockPanel(Panel* panel, bool tabbed) {
+    panel->setParent(this);
+    Panel* beside = nullptr; // the last panel added on that side
+    for (Panel* p : panels_)
+        if (p->area() == panel->area()) beside = p;
+    addDockWidget(panel->area(), panel);
+    if (tabbed && beside) tabifyDockWidget(beside, panel);
+    panels_.push_back(panel);
+}
+
+QListWidget* MainWindow::issues() const {
+    return issues_->list();
+}
+
+QTreeWidget* MainWindow::sceneTree() const {
+    return tree_->tree();
+}
+
+QWidget* MainWindow::parametersPanel() const {
+    return parameters_;
+}
+
+QListWidget* MainWindow::examples() const {
+    return examples_->list();
+}
+
 void MainWindow::buildDocks() {
-    auto dock = [this](const QString& title, const char* name, QWidget* w,
-                       Qt::DockWidgetArea area) {
-        auto* d = new QDockWidget(title, this);
-        d->setObjectName(QString::fromLatin1(name));
-        d->setWidget(w);
-        addDockWidget(area, d);
-        return d;
-    };
-    auto* editorPanel = new QWidget;
-    auto* column = new QVBoxLayout(editorPanel);
-    column->setContentsMargins(0, 0, 0, 0);
-    column->addWidget(editor_, 1);
-    column->addWidget(find_);
-    dock(tr("Scene text"), "editor", editorPanel, Qt::LeftDockWidgetArea)->setMinimumWidth(420);
-    auto* issuesDock = dock(tr("Issues"), "issues", issues_, Qt::BottomDockWidgetArea);
+    addPanel(new SceneTextDock(editor_, find_));
+    issues_ = addPanel(new IssuesDock);
     // A few lines tall: sized once the window has its layout (a saved state wins).
-    QTimer::singleShot(0, this, [this, issuesDock] {
+    QTimer::singleShot(0, this, [this] {
         if (!QSettings().contains(QStringLiteral("window/state")))
-            resizeDocks({issuesDock}, {110}, Qt::Vertical);
+            resizeDocks({issues_}, {110}, Qt::Vertical);
     });
-    tree_->setHeaderLabels({tr("Node"), tr("DEF")});
-    auto* treeDock = dock(tr("Scene tree"), "tree", tree_, Qt::RightDockWidgetArea);
-    auto* paramDock = dock(tr("Parameters"), "parameters", parameters_, Qt::RightDockWidgetArea);
-    auto* exampleDock = dock(tr("Examples"), "examples", examples_, Qt::RightDockWidgetArea);
-    tabifyDockWidget(treeDock, exampleDock);
-    tabifyDockWidget(exampleDock, paramDock);
-    exampleDock->raise();
-    parameterForm_->addRow(new QLabel(tr("The scene's formulas have no `param` to adjust.")));
-    for (const Example& e : listExamples()) {
-        auto* item = new QListWidgetItem(e.title, examples_);
-        item->setToolTip(e.description);
-        item->setData(Qt::UserRole, e.path);
-    }
-    connect(examples_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        if (maybeKeepChanges()) openFile(item->data(Qt::UserRole).toString());
+    tree_ = addPanel(new SceneTreeDock);
+    examples_ = addPanel(new ExamplesDock, true);
+    parameters_ = addPanel(new ParametersDock, true);
+    examples_->raise();
+
+    auto goTo = [this](int line, int column) { editor_->goTo(line, column); };
+    connect(issues_, &IssuesDock::issueActivated, this, goTo);
+    connect(tree_, &SceneTreeDock::nodeActivated, this, goTo);
+    connect(examples_, &ExamplesDock::exampleChosen, this, [this](const QString& path) {
+        if (maybeKeepChanges()) openFile(path);
     });
+    connect(parameters_, &ParametersDock::valuesChanged, player_,
+            [this](const ParametersDock::Values& values) { player_->setParameters(values); });
 }
 
 void MainWindow::buildMenus() {
@@ -311,8 +314,8 @@ void MainWindow::buildMenus() {
     connect(cut, &QCheckBox::toggled, this, applyCut);
     connect(cutAxis, &QComboBox::currentIndexChanged, this, applyCut);
     connect(cutAt, &QSlider::valueChanged, this, applyCut);
-    connect(viewpoints_, &QComboBox::activated, this,
-            [this](int index) { view_->bindViewpoint(viewpoints_->itemData(index).toInt()); });
+    connect(viewpoints_, &ViewpointBox::viewpointChosen, view_,
+            [this](int index) { view_->bindViewpoint(index); });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About FunctionLab"), this, [this] {
@@ -473,15 +476,7 @@ void MainWindow::fillRecentMenu() {
 
 void MainWindow::parsed(const editor::ParseOutcome& outcome) {
     editor_->setDiagnostics(outcome.inThisFile);
-    issues_->clear();
-    for (const auto& d : outcome.all) {
-        auto* item =
-            new QListWidgetItem(QString::fromStdString(scene::formatSceneDiagnostic(d)), issues_);
-        item->setData(Qt::UserRole, d.pos.line);
-        item->setData(Qt::UserRole + 1, d.pos.column);
-        item->setForeground(d.severity == scene::Severity::Error ? QColor(Qt::red)
-                                                                 : palette().color(QPalette::Text));
-    }
+    issues_->showDiagnostics(outcome.all);
     if (!outcome.scene)
         statusBar()->showMessage(tr("The text has errors: the view shows the last good scene"));
     else
@@ -490,10 +485,10 @@ void MainWindow::parsed(const editor::ParseOutcome& outcome) {
 
 void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     scene_ = scene;
-    fillSceneTree(*scene);
-    fillParameters(*scene);
+    for (Panel* panel : panels_)
+        panel->showScene(*scene);
     timeline_->setSpan(timelineSpan(*scene));
-    player_->setParameters(parameterValues_);
+    player_->setParameters(parameters_->values());
     lod_->clear();
     view_->setMarker(std::nullopt); // it marked a point of the old shapes
     player_->setScene(scene);
@@ -513,15 +508,8 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
                           (types.front() == "WALK" || types.front() == "FLY");
         (walk ? walkAction_ : examineAction_)->trigger();
     }
-    const QStringList before = view_->viewpointNames();
     view_->setMeshes(meshes);
-    const QStringList names = view_->viewpointNames();
-    if (names != before || viewpoints_->count() == 0) {
-        viewpoints_->clear();
-        for (int i = 0; i < names.size(); ++i)
-            viewpoints_->addItem(names[i], i);
-        viewpoints_->addItem(tr("Whole scene"), -1);
-    }
+    viewpoints_->showViewpoints(view_->viewpointNames());
     double ms = 0;
     for (const auto& s : meshes->shapes)
         ms += s.stats.milliseconds;
@@ -533,78 +521,6 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
     }
 }
 
-void MainWindow::fillSceneTree(const scene::Scene& scene) {
-    tree_->clear();
-    // A node met again (USE) is a leaf naming it: a DEF/USE graph never
-    // multiplies into an exponential tree. At most kMaxItems items.
-    constexpr int kMaxItems = 20000;
-    int items = 0;
-    QSet<const scene::Node*> shown;
-    std::function<void(const scene::Node*, QTreeWidgetItem*, int)> add =
-        [&](const scene::Node* n, QTreeWidgetItem* parent, int depth) {
-            if (!n || depth > 64 || items >= kMaxItems) return;
-            ++items;
-            auto* item = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(tree_);
-            const bool again = shown.contains(n);
-            item->setText(0, again ? QStringLiteral("USE ") + QString::fromStdString(n->defName)
-                                   : QString::fromStdString(n->type));
-            item->setText(1, QString::fromStdString(n->defName));
-            item->setData(0, Qt::UserRole, n->where.line);
-            item->setData(0, Qt::UserRole + 1, n->where.column);
-            if (again) return;
-            shown.insert(n);
-            for (const scene::Field& f : n->fields)
-                for (const scene::Node* c : f.value.nodes)
-                    add(c, item, depth + 1);
-        };
-    for (const scene::Node* root : scene.roots)
-        add(root, nullptr, 0);
-    tree_->expandToDepth(1);
-}
-
-void MainWindow::fillParameters(const scene::Scene& scene) {
-    while (parameterForm_->rowCount() > 0)
-        parameterForm_->removeRow(0);
-    const auto params = mesh::sceneParameters(scene);
-    // Values the sliders had for names still there are kept.
-    std::vector<std::pair<std::string, double>> kept;
-    for (const auto& p : params)
-        for (const auto& [name, v] : parameterValues_)
-            if (name == p.name) kept.emplace_back(name, v);
-    parameterValues_ = kept;
-    if (params.empty()) {
-        parameterForm_->addRow(new QLabel(tr("The scene's formulas have no `param` to adjust.")));
-        return;
-    }
-    for (const formula::ParameterInfo& p : params) {
-        const double lo = p.hasRange ? p.lo : std::min(0.0, 2 * p.defaultValue);
-        const double hi = p.hasRange ? p.hi : std::max(1.0, 2 * p.defaultValue);
-        double value = p.defaultValue;
-        for (const auto& [name, v] : parameterValues_)
-            if (name == p.name) value = v;
-        auto* slider = new QSlider(Qt::Horizontal);
-        slider->setObjectName(QString::fromStdString("param-" + p.name));
-        slider->setRange(0, 1000);
-        slider->setValue(hi > lo ? int(std::lround((value - lo) / (hi - lo) * 1000)) : 0);
-        auto* label = new QLabel(QString::number(value, 'g', 4));
-        auto* row = new QWidget;
-        auto* layout = new QHBoxLayout(row);
-        layout->setContentsMargins(0, 0, 0, 0);
-        layout->addWidget(slider, 1);
-        layout->addWidget(label);
-        parameterForm_->addRow(QString::fromStdString(p.name), row);
-        connect(slider, &QSlider::valueChanged, this, [this, name = p.name, lo, hi, label](int v) {
-            const double value = lo + (hi - lo) * v / 1000.0;
-            label->setText(QString::number(value, 'g', 4));
-            bool found = false;
-            for (auto& [n, x] : parameterValues_)
-                if (n == name) x = value, found = true;
-            if (!found) parameterValues_.emplace_back(name, value);
-            player_->setParameters(parameterValues_);
-        });
-    }
-}
-
 void MainWindow::exportMesh() {
     if (!scene_) return problem(tr("There is no scene to export yet: fix the errors listed first"));
     const QString path = QFileDialog::getSaveFileName(
@@ -613,7 +529,7 @@ void MainWindow::exportMesh() {
     if (path.isEmpty()) return;
     mesh::SceneMeshOptions o;
     o.sceneSeconds = player_->sceneSeconds();
-    o.parameters = parameterValues_;
+    o.parameters = parameters_->values();
     o.text = viewer::qtTextOutliner();
     const mesh::SceneMeshes meshes = mesh::meshScene(*scene_, o);
     std::string error;

@@ -8,13 +8,12 @@
 #include <QTimer>
 
 #include <memory>
+#include <vector>
 
 class QLabel;
 class QListWidget;
 class QTreeWidget;
-class QComboBox;
 class QMenu;
-class QFormLayout;
 class QAction;
 
 namespace fl::scene {
@@ -37,7 +36,13 @@ class ScenePlayer;
 
 namespace fl::suite {
 
+class ExamplesDock;
+class IssuesDock;
+class Panel;
+class ParametersDock;
+class SceneTreeDock;
 class TimelineBar;
+class ViewpointBox;
 
 class MainWindow : public QMainWindow {
   public:
@@ -64,12 +69,23 @@ class MainWindow : public QMainWindow {
     viewer::SceneWidget* view() const { return view_; }
     viewer::ScenePlayer* player() const { return player_; }
     editor::LiveParser* parser() const { return parser_; }
-    QListWidget* issues() const { return issues_; }
-    QTreeWidget* sceneTree() const { return tree_; }
+    QListWidget* issues() const;
+    QTreeWidget* sceneTree() const;
     TimelineBar* timeline() const { return timeline_; }
-    QWidget* parametersPanel() const { return parameters_; }
-    QListWidget* examples() const { return examples_; }
+    QWidget* parametersPanel() const;
+    QListWidget* examples() const;
     const viewer::LevelOfDetail& levelOfDetail() const { return *lod_; }
+    // The window's panels, in the order they were added.
+    const std::vector<Panel*>& panels() const { return panels_; }
+
+    // Docks a panel on its side (tabbed with the panels already there when
+    // `tabbed`) and hands it every scene the window shows from now on. One
+    // line per panel: the assignment, haptics and classroom panels plug in so.
+    template <class P>
+    P* addPanel(P* panel, bool tabbed = false) {
+        dockPanel(panel, tabbed);
+        return panel;
+    }
 
   protected:
     void closeEvent(QCloseEvent* event) override;
@@ -77,6 +93,7 @@ class MainWindow : public QMainWindow {
   private:
     void buildMenus();
     void buildDocks();
+    void dockPanel(Panel* panel, bool tabbed);
     void openDialog();
     bool save();
     bool saveAs();
@@ -90,8 +107,6 @@ class MainWindow : public QMainWindow {
     void parsed(const editor::ParseOutcome& outcome);
     void sceneChanged(std::shared_ptr<const scene::Scene> scene);
     void meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds);
-    void fillSceneTree(const scene::Scene& scene);
-    void fillParameters(const scene::Scene& scene);
     void writeRecovery();
 
     QString recoveryPath() const;
@@ -102,12 +117,12 @@ class MainWindow : public QMainWindow {
     viewer::SceneWidget* view_;
     viewer::ScenePlayer* player_;
     TimelineBar* timeline_;
-    QListWidget* issues_;
-    QTreeWidget* tree_;
-    QListWidget* examples_;
-    QWidget* parameters_;
-    QFormLayout* parameterForm_;
-    QComboBox* viewpoints_;
+    std::vector<Panel*> panels_;
+    IssuesDock* issues_ = nullptr;
+    SceneTreeDock* tree_ = nullptr;
+    ExamplesDock* examples_ = nullptr;
+    ParametersDock* parameters_ = nullptr;
+    ViewpointBox* viewpoints_;
     QAction *examineAction_ = nullptr, *walkAction_ = nullptr;
     bool firstFrameOfScene_ = true;
     bool lodPending_ = false;
@@ -121,7 +136,6 @@ class MainWindow : public QMainWindow {
     bool prompts_ = true;
     std::size_t framesAtLastRate_ = 0;
     std::shared_ptr<const scene::Scene> scene_;
-    std::vector<std::pair<std::string, double>> parameterValues_;
 };
 
 } // namespace fl::suite

@@ -3,6 +3,7 @@
 #include "main_window.h"
 #include "mesh_geometry.h"
 #include "navigation.h"
+#include "panel.h"
 #include "picking.h"
 #include "picture_measures.h"
 #include "scene_player.h"
@@ -165,6 +166,37 @@ class WindowTest : public QObject {
                 reach = std::max({reach, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
         QVERIFY2(std::abs(reach - 0.5f) < 0.02f, qPrintable(QString::number(reach)));
         save(screenshot(w), "window-formula-fixed");
+    }
+
+    void aPanelPlugsInWithOneLineAndSeesEveryScene() {
+        // The window is assembled from panels; a new one (an assignment,
+        // haptics or classroom panel) is one class and one addPanel line.
+        struct Counting : suite::Panel {
+            Counting()
+                : Panel(QStringLiteral("Counting"), QStringLiteral("counting"),
+                        Qt::RightDockWidgetArea) {}
+            void showScene(const scene::Scene& scene) override {
+                ++scenes;
+                roots = int(scene.roots.size());
+            }
+            int scenes = 0;
+            int roots = -1;
+        };
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        QStringList names;
+        for (suite::Panel* p : w.panels())
+            names << p->objectName();
+        QCOMPARE(names, (QStringList{"editor", "issues", "tree", "examples", "parameters"}));
+        auto* counting = w.addPanel(new Counting, true);
+        QCOMPARE(w.dockWidgetArea(counting), Qt::RightDockWidgetArea);
+        QVERIFY(!w.tabifiedDockWidgets(counting).isEmpty());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.newScene();
+        QVERIFY(settle(w));
+        QCOMPARE(counting->scenes, 1);
+        QCOMPARE(counting->roots, 2); // the new scene's Viewpoint and FShape
     }
 
     void aParameterSliderReshapesTheObject() {

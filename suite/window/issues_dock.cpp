@@ -1,0 +1,33 @@
+#include "issues_dock.h"
+
+#include "scene/scene_diagnostic.h"
+
+#include <QListWidget>
+
+namespace fl::suite {
+
+IssuesDock::IssuesDock(QWidget* parent)
+    : Panel(tr("Issues"), QStringLiteral("issues"), Qt::BottomDockWidgetArea, parent),
+      list_(new QListWidget) {
+    setWidget(list_);
+    auto activated = [this](QListWidgetItem* item) {
+        Q_EMIT issueActivated(item->data(Qt::UserRole).toInt(),
+                              item->data(Qt::UserRole + 1).toInt());
+    };
+    connect(list_, &QListWidget::itemActivated, this, activated);
+    connect(list_, &QListWidget::itemClicked, this, activated);
+}
+
+void IssuesDock::showDiagnostics(const std::vector<scene::SceneDiagnostic>& diagnostics) {
+    list_->clear();
+    for (const auto& d : diagnostics) {
+        auto* item =
+            new QListWidgetItem(QString::fromStdString(scene::formatSceneDiagnostic(d)), list_);
+        item->setData(Qt::UserRole, d.pos.line);
+        item->setData(Qt::UserRole + 1, d.pos.column);
+        item->setForeground(d.severity == scene::Severity::Error ? QColor(Qt::red)
+                                                                 : palette().color(QPalette::Text));
+    }
+}
+
+} // namespace fl::suite

@@ -1,0 +1,13 @@
+#include "panel.h"
+
+namespace fl::suite {
+
+Panel::Panel(const QString& title, const QString& objectName, Qt::DockWidgetArea area,
+             QWidget* parent)
+    : QDockWidget(title, parent), area_(area) {
+    setObjectName(objectName);
+}
+
+void Panel::showScene(const scene::Scene&) {}
+
+} // namespace fl::suite

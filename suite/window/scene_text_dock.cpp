@@ -1,0 +1,21 @@
+#include "scene_text_dock.h"
+
+#include "code_editor.h"
+#include "find_bar.h"
+
+#include <QVBoxLayout>
+
+namespace fl::suite {
+
+SceneTextDock::SceneTextDock(editor::CodeEditor* editor, editor::FindBar* find, QWidget* parent)
+    : Panel(tr("Scene text"), QStringLiteral("editor"), Qt::LeftDockWidgetArea, parent) {
+    auto* panel = new QWidget;
+    auto* column = new QVBoxLayout(panel);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(editor, 1);
+    column->addWidget(find);
+    setWidget(panel);
+    setMinimumWidth(420);
+}
+
+} // namespace fl::suite
