@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace fl::grading {
@@ -17,7 +18,34 @@ bool sameSide(const formula::Interval& p, const formula::Interval& q) {
     return (p.lo > 0 && q.lo > 0) || (p.hi <= 0 && q.hi <= 0);
 }
 
+bool sameOperand(const formula::Operand& a, const formula::Operand& b) {
+    return a.reg == b.reg && (a.reg >= 0 || std::memcmp(&a.value, &b.value, sizeof a.value) == 0);
+}
+
+bool sameTape(const formula::Tape& a, const formula::Tape& b) {
+    if (a.code.size() != b.code.size() || a.outputs.size() != b.outputs.size()) return false;
+    for (std::size_t i = 0; i < a.code.size(); ++i) {
+        const formula::Instruction &p = a.code[i], &q = b.code[i];
+        if (p.op != q.op || p.out != q.out || !sameOperand(p.a, q.a) || !sameOperand(p.b, q.b) ||
+            !sameOperand(p.c, q.c) || p.imm0 != q.imm0 || p.imm1 != q.imm1)
+            return false;
+    }
+    for (std::size_t i = 0; i < a.outputs.size(); ++i)
+        if (!sameOperand(a.outputs[i].value, b.outputs[i].value)) return false;
+    return true;
+}
+
 } // namespace
+
+bool identicalFields(const field::ImplicitField& a, const field::ImplicitField& b) {
+    if (a.t != b.t || a.parameters != b.parameters || a.box.lo != b.box.lo ||
+        a.box.hi != b.box.hi || a.boundary != b.boundary ||
+        a.displacement.has_value() != b.displacement.has_value() || !sameTape(a.tape, b.tape))
+        return false;
+    return !a.displacement || (sameTape(a.displacement->tape, b.displacement->tape) &&
+                               a.displacement->componentBox.lo == b.displacement->componentBox.lo &&
+                               a.displacement->componentBox.hi == b.displacement->componentBox.hi);
+}
 
 SolidComparison compareSolids(const field::ImplicitField& a, const field::ImplicitField& b,
                               const field::ImplicitField* activity, Budget& budget,
@@ -42,10 +70,11 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
         int depth;
     };
     std::vector<Cell> stack{{openA.box, 0}};
+    const std::size_t stopAt = budget.left > options.cap ? budget.left - options.cap : 0;
     while (!stack.empty()) {
         const Cell cell = stack.back();
         stack.pop_back();
-        if (!budget.spend(active ? 3 : 2)) return out; // Unknown
+        if (budget.left <= stopAt || !budget.spend(active ? 3 : 2)) return out; // Unknown
         if (active) {
             const formula::Interval g = active->interval(cell.box.lo, cell.box.hi);
             if (g.empty() || (!g.nan && g.hi <= 0)) continue; // equal here

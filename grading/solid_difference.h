@@ -42,8 +42,15 @@ struct SolidComparison {
 
 struct CompareOptions {
     int maxDepth = 9; // cells down to 1/512 of the box's sides
-    int samplesPerCell = 1;
+    // Evaluations one comparison may spend of the budget: a change that is
+    // not found by then is not claimed (Unknown), and the next question is
+    // asked. Two equal fields whose equality the intervals cannot see (a
+    // term multiplied by zero) would otherwise take the whole budget.
+    std::size_t cap = 200'000;
 };
+
+// The same field, instruction for instruction (then the same solid).
+bool identicalFields(const field::ImplicitField& a, const field::ImplicitField& b);
 
 // `a` and `b` share the box (a's); `activity`, when given, is > 0 only where
 // a and b may differ at all (elsewhere they are equal): cells where its

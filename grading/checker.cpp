@@ -1,0 +1,104 @@
+#include "checker.h"
+
+#include "checks.h"
+#include "submission_view.h"
+
+#include "scene/scene_reader.h"
+
+#include <filesystem>
+
+namespace fl::grading {
+namespace {
+
+RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Budget& budget) {
+    switch (r.kind) {
+    case RequirementKind::ImplicitSurface:
+    case RequirementKind::ExplicitSolid:
+    case RequirementKind::Parametric:
+        return checkShapeKind(view, r, budget);
+    case RequirementKind::SetOperations:
+        return checkSetOperations(view, r, budget);
+    case RequirementKind::Morphing:
+        return checkMorphing(view, r, budget);
+    case RequirementKind::Animation:
+        return checkAnimation(view, r);
+    case RequirementKind::LevelOfDetail:
+        return checkLevelOfDetail(view, r);
+    case RequirementKind::FunctionColour:
+        return checkFunctionColour(view, r);
+    }
+    return {r.id, r.kind, false, 0, r.points, "unknown requirement", {}};
+}
+
+// The scene file a submission folder holds: the one scene at its top.
+std::string sceneIn(const std::filesystem::path& folder, std::string& problem) {
+    std::vector<std::filesystem::path> scenes;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = e.path().filename().string();
+        for (const char* ext :
+             {".x3d", ".x3dv", ".wrl", ".x3d.gz", ".x3dv.gz", ".wrl.gz", ".x3dz", ".x3dvz", ".wrz"})
+            if (name.size() > std::string(ext).size() && name.ends_with(ext) &&
+                e.is_regular_file(ec))
+                scenes.push_back(e.path());
+    }
+    std::sort(scenes.begin(), scenes.end());
+    scenes.erase(std::unique(scenes.begin(), scenes.end()), scenes.end());
+    if (scenes.size() == 1) return scenes.front().string();
+    problem = scenes.empty() ? "the folder holds no scene file (.x3d, .x3dv, .wrl or their gzip "
+                               "forms)"
+                             : "the folder holds " + std::to_string(scenes.size()) +
+                                   " scene files; a submission has one at its top";
+    return {};
+}
+
+} // namespace
+
+CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>& requirements,
+                       const CheckOptions& options) {
+    CheckReport report;
+    report.gradable = true;
+    Budget budget{options.budget};
+    const SubmissionView view(scene, options.moments);
+    for (const Requirement& r : requirements) {
+        report.requirements.push_back(checkOne(view, r, budget));
+        report.score += report.requirements.back().points;
+        report.maxScore += r.points;
+    }
+    report.budgetExceeded = budget.exceeded;
+    if (budget.exceeded)
+        report.diagnostics.push_back(
+            {scene::Severity::Warning,
+             scene.pathOf(0),
+             {1, 1},
+             "the checker's budget of " + std::to_string(options.budget) +
+                 " evaluations ran out: what it could not judge is not counted",
+             "simplify the definitions, or ask your instructor"});
+    return report;
+}
+
+CheckReport checkSubmission(const std::string& path, const std::vector<Requirement>& requirements,
+                            const CheckOptions& options) {
+    std::string file = path, problem;
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) file = sceneIn(path, problem);
+    CheckReport report;
+    if (file.empty()) {
+        report.diagnostics.push_back({scene::Severity::Error, path, {1, 1}, problem, {}});
+        return report;
+    }
+    scene::ReadResult read = scene::readSceneFile(file);
+    if (!read.ok()) {
+        report.diagnostics = read.diagnostics;
+        for (const Requirement& r : requirements)
+            report.maxScore += r.points;
+        return report;
+    }
+    report = checkScene(*read.scene, requirements, options);
+    // The reader's warnings go with the verdict: they are what a student fixes next.
+    report.diagnostics.insert(report.diagnostics.begin(), read.diagnostics.begin(),
+                              read.diagnostics.end());
+    return report;
+}
+
+} // namespace fl::grading

@@ -1,0 +1,39 @@
+#pragma once
+// The checker: one submission against an assignment's automatic
+// requirements. Deterministic — the same scene and checker version give the
+// same verdict, bit for bit — and bounded: one evaluation budget for the
+// whole submission, reported when it runs out, never a hang.
+#include "requirement.h"
+
+#include "scene/scene.h"
+#include "scene/scene_diagnostic.h"
+
+#include <string>
+#include <vector>
+
+namespace fl::grading {
+
+// Bumped whenever a verdict may change: the gradebook records it.
+inline constexpr const char* kCheckerVersion = "1";
+
+struct CheckOptions {
+    std::size_t budget = 4'000'000; // evaluations for the whole submission
+    int moments = 9;                // of the scene's time judged
+};
+
+struct CheckReport {
+    bool gradable = false;
+    std::vector<RequirementResult> requirements; // in the assignment's order
+    double score = 0, maxScore = 0;
+    bool budgetExceeded = false;
+    std::vector<scene::SceneDiagnostic> diagnostics; // why not gradable; checker notes
+};
+
+CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>& requirements,
+                       const CheckOptions& options = {});
+
+// A scene file (gzip forms too) or a folder holding one: read, then checked.
+CheckReport checkSubmission(const std::string& path, const std::vector<Requirement>& requirements,
+                            const CheckOptions& options = {});
+
+} // namespace fl::grading

@@ -1,0 +1,117 @@
+// Shape kinds: a shown implicit surface, explicit solid or parametric object
+// — one that really shows something in its box — and continuous level of
+// detail.
+#include "checks.h"
+
+#include "scene/field_access.h"
+#include "scene/function_kinds.h"
+
+#include <cmath>
+
+namespace fl::grading {
+namespace {
+
+using scene::GeometryType;
+
+std::optional<GeometryType> typeOf(const mesh::ShapeMesh& s) {
+    if (!s.geometry || s.geometry->type != "FGeometry") return std::nullopt;
+    return scene::geometryTypeNamed(scene::stringField(*s.geometry, "type"));
+}
+
+// Signs of f on a 9 x 9 x 9 grid of its box: (some inside, some outside).
+std::pair<bool, bool> signsOf(const field::ImplicitField& f, Budget& budget) {
+    field::ImplicitField open = f;
+    open.boundary = field::BoxBoundary::Open;
+    field::FieldSampler s(open);
+    bool in = false, out = false;
+    constexpr int n = 9;
+    for (int i = 0; i < n && !(in && out); ++i)
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                if (!budget.spend(1)) return {in, out};
+                const field::Vec3 p{f.box.lo[0] + f.box.size(0) * (i + 0.5) / n,
+                                    f.box.lo[1] + f.box.size(1) * (j + 0.5) / n,
+                                    f.box.lo[2] + f.box.size(2) * (k + 0.5) / n};
+                const double v = s.value(p);
+                if (!std::isfinite(v)) continue;
+                (v > 0 ? in : out) = true;
+            }
+    return {in, out};
+}
+
+std::string definitionOf(const mesh::ShapeMesh& s) {
+    if (!s.geometry) return {};
+    const scene::Field* f = s.geometry->field("definition");
+    return f ? shortened(scene::formulaText(*f)) : std::string{};
+}
+
+} // namespace
+
+RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& r, Budget& budget) {
+    RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
+    const GeometryType wanted = r.kind == RequirementKind::ImplicitSurface ? GeometryType::Implicit
+                                : r.kind == RequirementKind::ExplicitSolid
+                                    ? GeometryType::Explicit
+                                    : GeometryType::Parametric;
+    std::string near; // a shape of the kind that shows nothing
+    for (const mesh::SceneMeshes& frame : view.frames())
+        for (const mesh::ShapeMesh& s : frame.shapes) {
+            if (typeOf(s) != wanted || !SubmissionView::visible(s)) continue;
+            bool shows = false;
+            if (wanted == GeometryType::Parametric) {
+                shows = !s.mesh.empty();
+            } else if (s.field) {
+                const auto [in, outside] = signsOf(*s.field, budget);
+                // A surface needs both sides; a solid, some inside.
+                shows = wanted == GeometryType::Implicit ? in && outside : in;
+            }
+            const std::string name = SubmissionView::nameOf(*s.shape);
+            if (!shows) {
+                if (near.empty())
+                    near = name + " is " + std::string(scene::geometryTypeName(wanted)) +
+                           " but shows nothing in its box: " +
+                           (wanted == GeometryType::Implicit   ? "f does not change sign there"
+                            : wanted == GeometryType::Explicit ? "f > 0 nowhere there"
+                                                               : "it has no points");
+                continue;
+            }
+            out.met = true;
+            out.points = r.points;
+            out.evidence = name + ": " + std::string(scene::geometryTypeName(wanted)) + " `" +
+                           definitionOf(s) + "`";
+            out.locations.push_back(view.locationOf(*s.geometry, "definition"));
+            return out;
+        }
+    const char* what = wanted == GeometryType::Implicit   ? "an implicit surface f(x,y,z,t) = 0"
+                       : wanted == GeometryType::Explicit ? "an explicit (FRep) solid f >= 0"
+                                                          : "a parametric curve, surface or solid";
+    out.evidence = near.empty() ? std::string("no shape shown is ") + what +
+                                      ": add an FShape "
+                                      "whose FGeometry has type '" +
+                                      std::string(scene::geometryTypeName(wanted)) + "'"
+                                : near;
+    return out;
+}
+
+RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requirement& r) {
+    RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
+    for (const mesh::ShapeMesh& s : view.frames().front().shapes) {
+        if (!typeOf(s) || !SubmissionView::visible(s)) continue;
+        const auto range = scene::numbersField(*s.geometry, "lodRange");
+        if (!scene::boolField(*s.geometry, "lod") || range.size() != 2 || !(range[0] < range[1]))
+            continue;
+        out.met = true;
+        out.points = r.points;
+        out.evidence = SubmissionView::nameOf(*s.shape) +
+                       ": continuous level of detail from resolution " +
+                       std::to_string(int(range[0])) + " to " + std::to_string(int(range[1]));
+        out.locations.push_back(
+            view.locationOf(*s.geometry, s.geometry->field("lodRange") ? "lodRange" : "lod"));
+        return out;
+    }
+    out.evidence = "no function shape is drawn with continuous level of detail: set lod TRUE "
+                   "and lodRange to the coarsest and finest resolution (e.g. lodRange 8 128)";
+    return out;
+}
+
+} // namespace fl::grading

@@ -1,0 +1,52 @@
+#pragma once
+// A submission as the checker sees it: the scene shown at a few moments by
+// the one clock (meshScene decides what is shown — Switch choices, PROTOs
+// never instantiated, Inline — and gives each function shape its field
+// exactly as drawn), and the way back from a node or an instruction to the
+// file, line and column a student wrote it at.
+#include "requirement.h"
+
+#include "mesh/scene_meshing.h"
+#include "scene/scene.h"
+#include "scene/source_map.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fl::grading {
+
+class SubmissionView {
+  public:
+    // `moments`: how many moments of the scene's time are judged (evenly
+    // over its longest cycle; one when nothing varies with time).
+    SubmissionView(const scene::Scene& scene, int moments = 9);
+
+    const scene::Scene& scene() const { return scene_; }
+    const std::vector<double>& moments() const { return moments_; } // scene seconds
+    const std::vector<mesh::SceneMeshes>& frames() const { return frames_; }
+
+    // Is this shape shown at all? Fully transparent and without physics: no.
+    static bool visible(const mesh::ShapeMesh& shape);
+
+    Location locationOf(const scene::Node& node) const;
+    Location locationOf(const scene::Node& node, std::string_view field) const;
+    // An instruction of a shape's field: where its text was written, and the text.
+    Location locationOf(const mesh::ShapeMesh& shape, std::int32_t origin) const;
+    std::string textOf(const mesh::ShapeMesh& shape, std::int32_t origin) const;
+    // The text a field's instruction came from (ShapeMesh::texts), or null.
+    const mesh::DefinitionText* textSource(const mesh::ShapeMesh& shape, std::int32_t origin) const;
+    // "FShape BALL" or "the FShape at line 12".
+    static std::string nameOf(const scene::Node& node);
+
+  private:
+    const scene::Scene& scene_;
+    std::vector<double> moments_;
+    std::vector<mesh::SceneMeshes> frames_;
+    mutable scene::LineIndexes lines_;
+};
+
+// A formula shortened for a message: one line, at most `limit` characters.
+std::string shortened(std::string text, std::size_t limit = 60);
+
+} // namespace fl::grading
