@@ -43,6 +43,39 @@ std::string boxText(const field::Box3& b) {
     return s;
 }
 
+// Where the operator of a set operation written as an expression is: the
+// last & | \ outside parentheses, | first (it binds loosest). 0 (the
+// expression's start) for min(...), max(...) and the R-functions.
+std::size_t operatorOffset(const std::string& written) {
+    // Parentheses round the whole expression are not its structure.
+    std::size_t from = 0, to = written.size();
+    while (to - from >= 2 && written[from] == '(' && written[to - 1] == ')') {
+        int depth = 0;
+        bool wraps = true;
+        for (std::size_t i = from; i + 1 < to && wraps; ++i) {
+            depth += written[i] == '(' ? 1 : written[i] == ')' ? -1 : 0;
+            wraps = depth > 0;
+        }
+        if (!wraps) break;
+        ++from;
+        --to;
+    }
+    const std::string text = written.substr(from, to - from);
+    std::size_t best = 0;
+    int depth = 0, rank = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+        if (depth != 0) continue;
+        const int r = c == '|' ? 2 : (c == '&' || c == '\\') ? 1 : 0;
+        if (r > 0 && r >= rank) {
+            rank = r;
+            best = from + i;
+        }
+    }
+    return best;
+}
+
 // "(5 - x*x)" reads as "5 - x*x" in a sentence; "(a) + (b)" keeps its own.
 std::string withoutOuterParentheses(std::string text) {
     while (text.size() >= 2 && text.front() == '(' && text.back() == ')') {
@@ -111,8 +144,10 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
                 if (fresh) {
                     order.push_back(key);
                     f.kind = op.kind;
-                    f.where = text->field == "operation" ? view.locationOf(*text->node, "operation")
-                                                         : view.locationOf(s, origin);
+                    f.where =
+                        text->field == "operation"
+                            ? view.locationOf(*text->node, "operation")
+                            : view.locationOf(s, origin, operatorOffset(view.textOf(s, origin)));
                     f.text =
                         text->field == "operation"
                             ? "the " + SubmissionView::nameOf(*text->node) + "'s " +
@@ -153,8 +188,8 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
         out.locations.push_back(live[i]->where);
     }
     if (!out.met) {
-        text += " (" + std::to_string(r.minimum) + " of " + std::to_string(r.minimumKinds) +
-                " kinds needed)";
+        text += " (" + std::to_string(r.minimum) + " operations of at least " +
+                std::to_string(r.minimumKinds) + " kinds are needed)";
         for (const Found* f : dead) {
             text += ". Not counted: " + f->why + " (line " + std::to_string(f->where.line) + ")";
             out.locations.push_back(f->where);

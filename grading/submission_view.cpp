@@ -71,13 +71,15 @@ const mesh::DefinitionText* SubmissionView::textSource(const mesh::ShapeMesh& sh
     return &shape.texts[std::size_t(source)];
 }
 
-Location SubmissionView::locationOf(const mesh::ShapeMesh& shape, std::int32_t origin) const {
+Location SubmissionView::locationOf(const mesh::ShapeMesh& shape, std::int32_t origin,
+                                    std::size_t within) const {
     const mesh::DefinitionText* text = textSource(shape, origin);
     if (!text || !text->node) return shape.shape ? locationOf(*shape.shape) : Location{};
     const scene::Field* field = text->node->field(text->field);
     if (!field || field->value.strings.empty()) return locationOf(*text->node, text->field);
     const formula::SourceRange& r = shape.field->tape.origins[std::size_t(origin)];
-    const scene::FilePos pos = scene::formulaTextPosition(*field, r.begin.offset, lines_);
+    const scene::FilePos pos = scene::formulaTextPosition(
+        *field, std::min(r.begin.offset + within, std::max(r.end.offset, r.begin.offset)), lines_);
     const int file =
         field->value.stringOrigins.empty() ? field->file : field->value.stringOrigins.front().file;
     return {scene_.pathOf(file >= 0 ? file : text->node->file), pos.line, pos.column};

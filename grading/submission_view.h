@@ -32,7 +32,10 @@ class SubmissionView {
     Location locationOf(const scene::Node& node) const;
     Location locationOf(const scene::Node& node, std::string_view field) const;
     // An instruction of a shape's field: where its text was written, and the text.
-    Location locationOf(const mesh::ShapeMesh& shape, std::int32_t origin) const;
+    // `within`: that many bytes into the instruction's text (an operator
+    // inside its expression).
+    Location locationOf(const mesh::ShapeMesh& shape, std::int32_t origin,
+                        std::size_t within = 0) const;
     std::string textOf(const mesh::ShapeMesh& shape, std::int32_t origin) const;
     // The text a field's instruction came from (ShapeMesh::texts), or null.
     const mesh::DefinitionText* textSource(const mesh::ShapeMesh& shape, std::int32_t origin) const;

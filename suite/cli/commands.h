@@ -18,6 +18,7 @@ const CommandSpec& meshSpec();
 const CommandSpec& renderSpec();
 const CommandSpec& benchEvalSpec();
 const CommandSpec& benchAccuracySpec();
+const CommandSpec& gradeCheckSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -27,6 +28,7 @@ int meshCommand(const Args& args);
 int renderCommand(const Args& args);
 int benchEvalCommand(const Args& args);     // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args); // `bench accuracy`
+int gradeCheckCommand(const Args& args);    // `grade check`
 
 struct Command {
     const CommandSpec& (*spec)();

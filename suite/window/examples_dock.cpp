@@ -1,5 +1,6 @@
 #include "examples_dock.h"
 
+#include "catalogue.h"
 #include "examples.h"
 
 #include <QListWidget>
@@ -10,10 +11,11 @@ ExamplesDock::ExamplesDock(QWidget* parent, const QString& folder)
     : Panel(tr("Examples"), QStringLiteral("examples"), Qt::RightDockWidgetArea, parent),
       list_(new QListWidget) {
     setWidget(list_);
-    for (const Example& e : listExamples(folder.isEmpty() ? examplesFolder() : folder)) {
-        auto* item = new QListWidgetItem(e.title, list_);
-        item->setToolTip(e.description);
-        item->setData(Qt::UserRole, e.path);
+    const QString from = folder.isEmpty() ? examplesFolder() : folder;
+    for (const courseware::ExampleScene& e : courseware::listExamples(from.toStdString())) {
+        auto* item = new QListWidgetItem(QString::fromStdString(e.title), list_);
+        item->setToolTip(QString::fromStdString(e.description));
+        item->setData(Qt::UserRole, QString::fromStdString(e.path.string()));
     }
     connect(list_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         Q_EMIT exampleChosen(item->data(Qt::UserRole).toString());

@@ -1,0 +1,64 @@
+#pragma once
+// A lab assignment: a folder courseware/assignments/ID/ whose manifest.json
+// (schema "functionlab-assignment/1", docs/assignments.md) names the title,
+// the instructions (Markdown), starter scenes, the automatic requirements the
+// checker judges, manual rubric items, a due date with a late policy, and the
+// reference solutions the tests grade. Checked on load: every problem is
+// reported as manifest.json:LINE:COL with what to write instead.
+#include "requirement.h"
+
+#include "scene/scene_diagnostic.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fl::courseware {
+
+inline constexpr const char* kAssignmentSchema = "functionlab-assignment/1";
+
+struct RubricItem {
+    std::string id;
+    std::string description;
+    double points = 0;
+};
+
+// Late work loses `deductionPercent` of its score for every started
+// `everyHours` past the due time, never more than down to `floorPercent`.
+struct LatePolicy {
+    double deductionPercent = 0;
+    double everyHours = 24;
+    double floorPercent = 0;
+    // The factor a score is multiplied by, `hoursLate` after the due time.
+    double factor(double hoursLate) const;
+};
+
+struct Assignment {
+    std::filesystem::path folder;
+    std::string id;
+    std::string title;
+    std::filesystem::path instructions; // Markdown
+    std::vector<std::filesystem::path> starters;
+    std::vector<std::filesystem::path> solutions;
+    std::optional<std::string> due; // ISO 8601 UTC, "2026-12-14T23:59:00Z"
+    LatePolicy late;
+    std::vector<grading::Requirement> requirements;
+    std::vector<RubricItem> rubric;
+
+    double automaticPoints() const;
+    double manualPoints() const;
+};
+
+struct AssignmentLoad {
+    std::optional<Assignment> assignment; // present exactly when there are no errors
+    std::vector<scene::SceneDiagnostic> diagnostics;
+};
+
+// `folder` holds manifest.json.
+AssignmentLoad loadAssignment(const std::filesystem::path& folder);
+// The manifest's text (tests and fuzzing); paths resolve against `folder`.
+AssignmentLoad parseAssignment(const std::string& manifestText, const std::filesystem::path& folder,
+                               const std::string& manifestName = "manifest.json");
+
+} // namespace fl::courseware

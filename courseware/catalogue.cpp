@@ -1,0 +1,90 @@
+#include "catalogue.h"
+
+#include "scene/field_access.h"
+#include "scene/scene_reader.h"
+
+#include <algorithm>
+
+namespace fl::courseware {
+namespace {
+
+std::string titleOf(const scene::Scene& s, std::string fallback, std::string& description) {
+    std::string title;
+    for (const scene::Node* root : s.roots)
+        if (const scene::Node* n = scene::effectiveNode(root); n && n->type == "WorldInfo") {
+            title = scene::stringField(*n, "title");
+            break;
+        }
+    for (const auto& [name, content] : s.meta) {
+        if (name == "description") description = content;
+        if (name == "title" && title.empty()) title = content;
+    }
+    return title.empty() ? fallback : title;
+}
+
+} // namespace
+
+std::filesystem::path coursewareFolder() {
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const auto installed = exe.parent_path() / ".." / "share" / "functionlab" / "courseware";
+        if (std::filesystem::is_directory(installed, ec))
+            return std::filesystem::weakly_canonical(installed, ec);
+    }
+    return FUNCTIONLAB_COURSEWARE_DIR;
+}
+
+std::vector<ExampleScene> listExamples(const std::filesystem::path& folder) {
+    std::vector<ExampleScene> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec))
+        if (e.path().extension() == ".x3d" && e.is_regular_file(ec)) {
+            ExampleScene x;
+            x.path = e.path();
+            x.title = x.path.filename().string();
+            const scene::ReadResult r = scene::readSceneFile(x.path);
+            if (r.scene) x.title = titleOf(*r.scene, x.title, x.description);
+            out.push_back(std::move(x));
+        }
+    std::sort(out.begin(), out.end(),
+              [](const ExampleScene& a, const ExampleScene& b) { return a.path < b.path; });
+    return out;
+}
+
+std::vector<AssignmentLoad> listAssignments(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> folders;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec))
+        if (e.is_directory(ec) && std::filesystem::exists(e.path() / "manifest.json", ec))
+            folders.push_back(e.path());
+    std::sort(folders.begin(), folders.end());
+    std::vector<AssignmentLoad> out;
+    for (const auto& f : folders)
+        out.push_back(loadAssignment(f));
+    return out;
+}
+
+AssignmentLoad findAssignment(const std::string& idOrFolder) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(idOrFolder, ec)) return loadAssignment(idOrFolder);
+    const bool plainId =
+        !idOrFolder.empty() && std::all_of(idOrFolder.begin(), idOrFolder.end(), [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+        });
+    const auto folder = coursewareFolder() / "assignments" / idOrFolder;
+    if (plainId && std::filesystem::is_directory(folder, ec)) return loadAssignment(folder);
+    AssignmentLoad load;
+    std::string known;
+    for (const AssignmentLoad& a : listAssignments())
+        if (a.assignment) known += (known.empty() ? "" : ", ") + a.assignment->id;
+    load.diagnostics.push_back(
+        {scene::Severity::Error,
+         idOrFolder,
+         {1, 1},
+         "no assignment '" + idOrFolder + "' (neither an id nor a folder)",
+         known.empty() ? "" : "the assignments that come with FunctionLab: " + known});
+    return load;
+}
+
+} // namespace fl::courseware

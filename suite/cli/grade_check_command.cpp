@@ -1,0 +1,158 @@
+// `functionlab grade check --assignment ID|DIR SUBMISSION [--json]`: one
+// submission against an assignment's automatic requirements. Tools outside
+// this repository read its JSON; its fields and exit codes are a contract
+// (docs/grading.md).
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/json.h"
+
+#include "catalogue.h"
+#include "checker.h"
+
+#include <iostream>
+
+namespace fl::cli {
+namespace {
+
+std::string diagnosticJson(const scene::SceneDiagnostic& d) {
+    std::string out = "{\"file\":";
+    out += jsonString(d.file);
+    out += ",\"line\":" + std::to_string(d.pos.line);
+    out += ",\"column\":" + std::to_string(d.pos.column);
+    out += ",\"severity\":";
+    out += jsonString(formula::severityName(d.severity));
+    out += ",\"message\":";
+    out += jsonString(d.message);
+    out += ",\"suggestion\":";
+    out += jsonString(d.suggestion);
+    return out + "}";
+}
+
+std::string reportJson(const std::string& assignment, const grading::CheckReport& r,
+                       double manualMax) {
+    std::string out = "{\"assignment\":";
+    out += jsonString(assignment);
+    out += ",\"gradable\":";
+    out += r.gradable ? "true" : "false";
+    out += ",\"score\":" + jsonNumber(r.score);
+    out += ",\"max_score\":" + jsonNumber(r.maxScore);
+    out += ",\"checker_version\":";
+    out += jsonString(grading::kCheckerVersion);
+    out += ",\"requirements\":[";
+    for (std::size_t i = 0; i < r.requirements.size(); ++i) {
+        const grading::RequirementResult& q = r.requirements[i];
+        if (i) out += ",";
+        out += "{\"id\":";
+        out += jsonString(q.id);
+        out += ",\"met\":";
+        out += q.met ? "true" : "false";
+        out += ",\"points\":" + jsonNumber(q.points);
+        out += ",\"max_points\":" + jsonNumber(q.maxPoints);
+        out += ",\"evidence\":";
+        out += jsonString(q.evidence);
+        out += ",\"locations\":[";
+        for (std::size_t k = 0; k < q.locations.size(); ++k) {
+            if (k) out += ",";
+            out += "{\"file\":";
+            out += jsonString(q.locations[k].file);
+            out += ",\"line\":" + std::to_string(q.locations[k].line);
+            out += ",\"column\":" + std::to_string(q.locations[k].column);
+            out += "}";
+        }
+        out += "]}";
+    }
+    out += "],\"manual_max\":" + jsonNumber(manualMax);
+    out += ",\"budget_exceeded\":";
+    out += r.budgetExceeded ? "true" : "false";
+    out += ",\"diagnostics\":[";
+    for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
+        if (i) out += ",";
+        out += diagnosticJson(r.diagnostics[i]);
+    }
+    return out + "]}";
+}
+
+void reportText(const grading::CheckReport& r, const courseware::Assignment& a, std::ostream& out,
+                std::ostream& err) {
+    for (const auto& d : r.diagnostics)
+        err << scene::formatSceneDiagnostic(d) << "\n";
+    if (!r.gradable) {
+        out << "not gradable: the scene could not be read (see above)\n";
+        return;
+    }
+    out << a.title << "\n";
+    for (const auto& q : r.requirements) {
+        out << (q.met ? "  [x] " : "  [ ] ") << q.id << " (" << jsonNumber(q.points) << "/"
+            << jsonNumber(q.maxPoints) << "): " << q.evidence << "\n";
+        for (const auto& l : q.locations)
+            out << "        " << l.file << ":" << l.line << ":" << l.column << "\n";
+    }
+    out << "score " << jsonNumber(r.score) << " of " << jsonNumber(r.maxScore)
+        << " (automatic; rubric items worth " << jsonNumber(a.manualPoints())
+        << " more are graded by your instructor)\n";
+}
+
+} // namespace
+
+const CommandSpec& gradeCheckSpec() {
+    static const CommandSpec spec{
+        .name = "grade check",
+        .summary = "check one submission against an assignment's requirements",
+        .synopsis = {"grade check --assignment ID|DIR SUBMISSION [--json]"},
+        .description = "Reads SUBMISSION (a scene file, gzip forms too, or a folder holding one)\n"
+                       "and judges each automatic requirement of the assignment — by analysing\n"
+                       "and evaluating the scene as it is shown, so an operation that cannot\n"
+                       "change the result does not count — with the evidence for it or the\n"
+                       "reason it is not met, located as FILE:LINE:COL.\n",
+        .positionals = {{.name = "SUBMISSION", .help = "a scene file or a folder holding one"}},
+        .options = {{.name = "assignment",
+                     .kind = OptionKind::Text,
+                     .valueName = "ID|DIR",
+                     .help = "the assignment: an id of courseware/assignments (implicit-fantasies) "
+                             "or the folder of its manifest.json"},
+                    {.name = "json",
+                     .help =
+                         "print exactly one JSON object: {\"assignment\", \"gradable\", \"score\", "
+                         "\"max_score\", \"checker_version\", \"requirements\": [{\"id\", \"met\", "
+                         "\"points\", \"max_points\", \"evidence\", \"locations\": [{\"file\", "
+                         "\"line\", \"column\"}]}], \"manual_max\", \"budget_exceeded\", "
+                         "\"diagnostics\": [...]}"}},
+        .notes = "score and max_score count the automatic requirements; the rubric items\n"
+                 "(manual_max points) are scored in the gradebook. The same submission and\n"
+                 "checker version always give the same verdict.\n",
+        .exitStatus = "0 graded (whatever the score), 1 not gradable (the assignment or the "
+                      "submission could not be read; located diagnostics), 2 usage error",
+    };
+    return spec;
+}
+
+int gradeCheckCommand(const Args& args) {
+    int exit = 0;
+    const auto a = parseOrExplain(gradeCheckSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    if (!a->given("assignment"))
+        return usageError(gradeCheckSpec(), "--assignment ID|DIR is required", std::cerr);
+    const std::string id = a->text("assignment");
+    const courseware::AssignmentLoad load = courseware::findAssignment(id);
+    if (!load.assignment) {
+        if (a->flag("json")) {
+            grading::CheckReport none;
+            none.diagnostics = load.diagnostics;
+            std::cout << reportJson(id, none, 0) << "\n";
+        } else {
+            for (const auto& d : load.diagnostics)
+                std::cerr << scene::formatSceneDiagnostic(d) << "\n";
+        }
+        return kExitDiagnostic;
+    }
+    const courseware::Assignment& assignment = *load.assignment;
+    grading::CheckReport r =
+        grading::checkSubmission(a->positional("SUBMISSION"), assignment.requirements);
+    if (a->flag("json"))
+        std::cout << reportJson(assignment.id, r, assignment.manualPoints()) << "\n";
+    else
+        reportText(r, assignment, std::cout, std::cerr);
+    return r.gradable ? kExitOk : kExitDiagnostic;
+}
+
+} // namespace fl::cli

@@ -1,0 +1,73 @@
+# `functionlab grade check` as tools outside this repository call it: the
+# JSON fields and exit codes of docs/grading.md.
+# Invoked by CTest: cmake -DFUNCTIONLAB=path -DCOURSEWARE=dir -DOUT_DIR=dir -P cli_grade_test.cmake
+
+include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
+
+function(expect_json_equal json expected)
+  string(JSON actual GET "${json}" ${ARGN})
+  if(NOT actual STREQUAL expected)
+    message(FATAL_ERROR "JSON ${ARGN}: expected '${expected}', got '${actual}' in ${json}")
+  endif()
+endfunction()
+
+set(lab ${COURSEWARE}/assignments/implicit-fantasies)
+file(MAKE_DIRECTORY ${OUT_DIR})
+
+# The reference solution: graded, full marks, every requirement in order.
+run(0 grade check --assignment implicit-fantasies ${lab}/solution/fantasy.x3d --json)
+expect_json_equal("${OUT}" "implicit-fantasies" assignment)
+expect_json_equal("${OUT}" "ON" gradable)
+expect_json_equal("${OUT}" "100" score)
+expect_json_equal("${OUT}" "100" max_score)
+expect_json_equal("${OUT}" "20" manual_max)
+set(ids implicit explicit parametric set-operations morphing animation level-of-detail colour)
+set(i 0)
+foreach(id IN LISTS ids)
+  expect_json_equal("${OUT}" "${id}" requirements ${i} id)
+  expect_json_equal("${OUT}" "ON" requirements ${i} met)
+  string(JSON line GET "${OUT}" requirements ${i} locations 0 line)
+  if(line LESS 1)
+    message(FATAL_ERROR "requirement ${id}: no located evidence")
+  endif()
+  math(EXPR i "${i} + 1")
+endforeach()
+
+# By folder too; a folder holding the submission; the gzip form.
+run(0 grade check --assignment ${lab} ${lab}/starter.x3d --json)
+expect_json_equal("${OUT}" "OFF" requirements 0 met)
+expect_json_equal("${OUT}" "ON" requirements 1 met)
+file(MAKE_DIRECTORY ${OUT_DIR}/student)
+file(COPY ${lab}/solution/fantasy.x3d DESTINATION ${OUT_DIR}/student)
+run(0 grade check --assignment implicit-fantasies ${OUT_DIR}/student --json)
+expect_json_equal("${OUT}" "100" score)
+file(READ ${lab}/solution/fantasy.x3d text)
+file(WRITE ${OUT_DIR}/plain.x3d "${text}")
+execute_process(COMMAND gzip -kf ${OUT_DIR}/plain.x3d)
+if(EXISTS ${OUT_DIR}/plain.x3d.gz)
+  run(0 grade check --assignment implicit-fantasies ${OUT_DIR}/plain.x3d.gz --json)
+  expect_json_equal("${OUT}" "100" score)
+endif()
+
+# Text for people: a checklist.
+run(0 grade check --assignment implicit-fantasies ${lab}/starter.x3d)
+expect_match("${OUT}" "\\[ \\] implicit")
+expect_match("${OUT}" "\\[x\\] explicit")
+
+# Not gradable: exit 1, gradable false, located diagnostics.
+file(WRITE ${OUT_DIR}/broken.x3d "<X3D><Scene><FShape>")
+run(1 grade check --assignment implicit-fantasies ${OUT_DIR}/broken.x3d --json)
+expect_json_equal("${OUT}" "OFF" gradable)
+string(JSON line GET "${OUT}" diagnostics 0 line)
+run(1 grade check --assignment no-such-lab ${lab}/starter.x3d --json)
+expect_json_equal("${OUT}" "OFF" gradable)
+run(1 grade check --assignment no-such-lab ${lab}/starter.x3d)
+expect_match("${ERR}" "implicit-fantasies")
+
+# Usage errors: exit 2.
+run(2 grade check ${lab}/starter.x3d)
+run(2 grade check --assignment implicit-fantasies)
+run(2 grade check --assignment implicit-fantasies a b)
+run(2 grade check --assignment implicit-fantasies ${lab}/starter.x3d --bogus)
+run(0 grade check --help)
+expect_match("${OUT}" "--assignment ID\\|DIR")
