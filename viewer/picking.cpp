@@ -100,10 +100,6 @@ Ray rayThroughPixel(const CameraPose& pose, QSize viewport, QPointF pixel) {
     return {pose.position, (farPoint - nearPoint).normalized()};
 }
 
-std::optional<Pick> pick(const scene::Scene&, const mesh::SceneMeshes& meshes, const Ray& ray) {
-    return pick(meshes, ray);
-}
-
 std::optional<Pick> pick(const mesh::SceneMeshes& meshes, const Ray& ray) {
     std::optional<Pick> best;
     for (int k = 0; k < 3; ++k)

@@ -37,9 +37,5 @@ struct Pick {
 };
 
 std::optional<Pick> pick(const mesh::SceneMeshes& meshes, const Ray& ray);
-// The same; the scene is not needed (the meshes carry their fields). Kept
-// until the window's callers move to the form above.
-std::optional<Pick> pick(const scene::Scene& scene, const mesh::SceneMeshes& meshes,
-                         const Ray& ray);
 
 } // namespace fl::viewer

@@ -136,9 +136,9 @@ MainWindow::MainWindow(QWidget* parent)
     // the shape is implicit or explicit.
     connect(view_, &viewer::SceneWidget::clicked, this, [this](QPointF pixel) {
         const auto meshes = view_->meshes();
-        if (!meshes || !meshes->source) return;
-        const auto p = viewer::pick(*meshes->source, *meshes,
-                                    viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
+        if (!meshes) return;
+        const auto p =
+            viewer::pick(*meshes, viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
         if (!p) {
             view_->setMarker(std::nullopt);
             statusBar()->showMessage(tr("Nothing there"), 3000);

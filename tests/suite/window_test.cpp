@@ -308,9 +308,9 @@ class WindowTest : public QObject {
         std::optional<QPoint> head;
         for (int y = 0; y < w.view()->height() && !head; y += 4)
             for (int x = 0; x < w.view()->width() && !head; x += 4) {
-                const auto p = viewer::pick(
-                    *meshes->source, *meshes,
-                    viewer::rayThroughPixel(w.view()->pose(), w.view()->size(), QPointF(x, y)));
+                const auto p =
+                    viewer::pick(*meshes, viewer::rayThroughPixel(w.view()->pose(),
+                                                                  w.view()->size(), QPointF(x, y)));
                 if (p && !p->touchSensors.empty()) head = QPoint(x, y);
             }
         QVERIFY2(head, "no pixel of the view shows a shape under the TouchSensor");
