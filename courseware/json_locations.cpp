@@ -39,32 +39,8 @@ class Scanner {
         if (i_ >= s_.size() || depth > 64) return;
         out_[pointer] = i_;
         const char c = s_[i_];
-        if (c == '{') {
-            ++i_;
-            for (space(); i_ < s_.size() && s_[i_] != '}'; space()) {
-                const std::string key = string();
-                space();
-                if (i_ < s_.size() && s_[i_] == ':') ++i_;
-                value(pointer + "/" + escaped(key), depth + 1);
-                space();
-                if (i_ < s_.size() && s_[i_] == ',')
-                    ++i_;
-                else
-                    break;
-            }
-            ++i_;
-        } else if (c == '[') {
-            ++i_;
-            int index = 0;
-            for (space(); i_ < s_.size() && s_[i_] != ']'; space()) {
-                value(pointer + "/" + std::to_string(index++), depth + 1);
-                space();
-                if (i_ < s_.size() && s_[i_] == ',')
-                    ++i_;
-                else
-                    break;
-            }
-            ++i_;
+        if (c == '{' || c == '[') {
+            members(pointer, depth, c == '{');
         } else if (c == '"') {
             string();
         } else {
@@ -72,6 +48,30 @@ class Scanner {
                    s_[i_] != ',' && s_[i_] != '}' && s_[i_] != ']')
                 ++i_;
         }
+    }
+
+    // The members of an object ("key": value, ...) or the items of an array.
+    void members(const std::string& pointer, int depth, bool object) {
+        const char close = object ? '}' : ']';
+        ++i_;
+        int index = 0;
+        for (space(); i_ < s_.size() && s_[i_] != close; space()) {
+            const std::size_t start = i_;
+            std::string name = std::to_string(index++);
+            if (object) {
+                name = escaped(string());
+                space();
+                if (i_ < s_.size() && s_[i_] == ':') ++i_;
+            }
+            value(pointer + "/" + name, depth + 1);
+            space();
+            if (i_ < s_.size() && s_[i_] == ',')
+                ++i_;
+            else
+                break;
+            if (i_ == start) break; // text Qt would have refused: stop, never spin
+        }
+        ++i_;
     }
 
     std::string_view s_;

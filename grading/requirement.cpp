@@ -1,12 +1,11 @@
 #include "requirement.h"
 
-#include <array>
-#include <utility>
+#include "scene/kind_names.h"
 
 namespace fl::grading {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, RequirementKind>, 8> kKinds{{
+constexpr scene::KindNames<RequirementKind, 8> kKinds{{
     {"implicit-surface", RequirementKind::ImplicitSurface},
     {"explicit-solid", RequirementKind::ExplicitSolid},
     {"parametric", RequirementKind::Parametric},
@@ -20,15 +19,11 @@ constexpr std::array<std::pair<std::string_view, RequirementKind>, 8> kKinds{{
 } // namespace
 
 std::optional<RequirementKind> requirementKindNamed(std::string_view word) {
-    for (const auto& [name, kind] : kKinds)
-        if (name == word) return kind;
-    return std::nullopt;
+    return scene::kindNamed(kKinds, word);
 }
 
 std::string_view requirementKindName(RequirementKind kind) {
-    for (const auto& [name, k] : kKinds)
-        if (k == kind) return name;
-    return "?";
+    return scene::nameOfKind(kKinds, kind);
 }
 
 } // namespace fl::grading

@@ -3,6 +3,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/json.h"
+#include "cli/scene_diagnostic_json.h"
 
 #include "animation/animator.h"
 #include "scene/effects_plan.h"
@@ -12,14 +13,6 @@
 
 namespace fl::cli {
 namespace {
-
-std::string diagnosticJson(const scene::SceneDiagnostic& d) {
-    return "{\"file\":" + jsonString(d.file) + ",\"line\":" + std::to_string(d.pos.line) +
-           ",\"column\":" + std::to_string(d.pos.column) +
-           ",\"severity\":" + jsonString(formula::severityName(d.severity)) +
-           ",\"message\":" + jsonString(d.message) + ",\"suggestion\":" + jsonString(d.suggestion) +
-           "}";
-}
 
 std::string vectorJson(const std::array<double, 3>& v) {
     // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329)
@@ -116,7 +109,7 @@ int checkCommand(const Args& args) {
         out += ",\"diagnostics\":[";
         for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
             if (i) out += ",";
-            out += diagnosticJson(r.diagnostics[i]);
+            out += sceneDiagnosticJson(r.diagnostics[i]);
         }
         out += "]";
         if (plan && r.ok()) out += ",\"plan\":" + planJson(scene::makeEffectsPlan(*r.scene));

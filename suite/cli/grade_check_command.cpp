@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/json.h"
+#include "cli/scene_diagnostic_json.h"
 
 #include "catalogue.h"
 #include "checker.h"
@@ -13,20 +14,6 @@
 
 namespace fl::cli {
 namespace {
-
-std::string diagnosticJson(const scene::SceneDiagnostic& d) {
-    std::string out = "{\"file\":";
-    out += jsonString(d.file);
-    out += ",\"line\":" + std::to_string(d.pos.line);
-    out += ",\"column\":" + std::to_string(d.pos.column);
-    out += ",\"severity\":";
-    out += jsonString(formula::severityName(d.severity));
-    out += ",\"message\":";
-    out += jsonString(d.message);
-    out += ",\"suggestion\":";
-    out += jsonString(d.suggestion);
-    return out + "}";
-}
 
 std::string reportJson(const std::string& assignment, const grading::CheckReport& r,
                        double manualMax) {
@@ -67,7 +54,7 @@ std::string reportJson(const std::string& assignment, const grading::CheckReport
     out += ",\"diagnostics\":[";
     for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
         if (i) out += ",";
-        out += diagnosticJson(r.diagnostics[i]);
+        out += sceneDiagnosticJson(r.diagnostics[i]);
     }
     return out + "]}";
 }

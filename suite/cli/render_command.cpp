@@ -5,13 +5,13 @@
 #include "mesh/scene_meshing.h"
 #include "offscreen_render.h"
 #include "scene/scene_reader.h"
+#include "surface_format.h"
 #include "text_outliner.h"
 
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QImageWriter>
 #include <QSaveFile>
-#include <QSurfaceFormat>
 
 #include <cstdlib>
 #include <iostream>
@@ -119,11 +119,7 @@ int renderCommand(const Args& args) {
                      "xvfb) or run: xvfb-run -a functionlab render ...\n";
         return kExitDiagnostic;
     }
-    QSurfaceFormat format3d;
-    format3d.setVersion(3, 3);
-    format3d.setProfile(QSurfaceFormat::CoreProfile);
-    format3d.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format3d);
+    viewer::useViewerSurfaceFormat();
     int argc = 1;
     char name[] = "functionlab";
     char* argv[] = {name, nullptr};

@@ -3,10 +3,10 @@
 #include "examples.h"
 #include "main_window.h"
 
+#include "surface_format.h"
 #include <QApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QSurfaceFormat>
 
 #include <cstdlib>
 #include <iostream>
@@ -28,12 +28,7 @@ int runWindow(int argc, char** argv, const std::string& file) {
                      "without one, use: functionlab render FILE -o OUT.png\n";
         return 1;
     }
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    format.setSamples(4);
-    QSurfaceFormat::setDefaultFormat(format);
+    viewer::useViewerSurfaceFormat(4);
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("FunctionLab"));
     QApplication::setApplicationName(QStringLiteral("FunctionLab"));

@@ -10,13 +10,6 @@ function(expect_json_null json)
   endif()
 endfunction()
 
-function(expect_json_equal json expected)
-  string(JSON actual GET "${json}" ${ARGN})
-  if(NOT actual STREQUAL expected)
-    message(FATAL_ERROR "JSON ${ARGN}: expected '${expected}', got '${actual}' in ${json}")
-  endif()
-endfunction()
-
 # --help / --version / usage errors
 run(0 --help)
 expect_match("${OUT}" "formula eval")

@@ -4,13 +4,6 @@
 
 include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
 
-function(expect_json_equal json expected)
-  string(JSON actual GET "${json}" ${ARGN})
-  if(NOT actual STREQUAL expected)
-    message(FATAL_ERROR "JSON ${ARGN}: expected '${expected}', got '${actual}' in ${json}")
-  endif()
-endfunction()
-
 set(lab ${COURSEWARE}/assignments/implicit-fantasies)
 file(MAKE_DIRECTORY ${OUT_DIR})
 

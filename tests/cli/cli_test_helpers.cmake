@@ -1,5 +1,6 @@
 # Shared by the command-line tests: run functionlab like a user, check output.
-# run(EXPECTED_EXIT args...) sets OUT and ERR; expect_match(TEXT REGEX).
+# run(EXPECTED_EXIT args...) sets OUT and ERR; expect_match(TEXT REGEX);
+# expect_json_equal(JSON EXPECTED path...).
 
 function(run expected_code)
   execute_process(COMMAND ${FUNCTIONLAB} ${ARGN}
@@ -14,5 +15,12 @@ endfunction()
 function(expect_match text regex)
   if(NOT text MATCHES "${regex}")
     message(FATAL_ERROR "expected output to match '${regex}', got:\n${text}")
+  endif()
+endfunction()
+
+function(expect_json_equal json expected)
+  string(JSON actual GET "${json}" ${ARGN})
+  if(NOT actual STREQUAL expected)
+    message(FATAL_ERROR "JSON ${ARGN}: expected '${expected}', got '${actual}' in ${json}")
   endif()
 endfunction()

@@ -10,6 +10,7 @@
 #include "scene_widget.h"
 #include "timeline_bar.h"
 
+#include "surface_format.h"
 #include <QApplication>
 #include <QCheckBox>
 #include <QDir>
@@ -18,7 +19,6 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QSurfaceFormat>
 #include <QTest>
 #include <QTextBlock>
 #include <QToolButton>
@@ -463,11 +463,7 @@ class WindowTest : public QObject {
 };
 
 int main(int argc, char** argv) {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    fl::viewer::useViewerSurfaceFormat();
     QApplication app(argc, argv);
     WindowTest test;
     return QTest::qExec(&test, argc, argv);

@@ -8,8 +8,8 @@
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"
 
+#include "surface_format.h"
 #include <QApplication>
-#include <QSurfaceFormat>
 #include <gtest/gtest.h>
 
 using namespace fl;
@@ -100,11 +100,7 @@ int main(int argc, char** argv) {
     if (testing::GTEST_FLAG(list_tests)) return RUN_ALL_TESTS();
     if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    fl::viewer::useViewerSurfaceFormat();
     QApplication app(argc, argv);
     return RUN_ALL_TESTS();
 }

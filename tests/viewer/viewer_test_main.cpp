@@ -1,7 +1,7 @@
 // GoogleTest with a QGuiApplication (OpenGL 3.3 core asked for first, as the
 // suite does), so the off-screen tests can draw.
+#include "surface_format.h"
 #include <QGuiApplication>
-#include <QSurfaceFormat>
 #include <gtest/gtest.h>
 
 int main(int argc, char** argv) {
@@ -13,11 +13,7 @@ int main(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
         qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
+    fl::viewer::useViewerSurfaceFormat();
     QGuiApplication app(argc, argv);
     return RUN_ALL_TESTS();
 }
