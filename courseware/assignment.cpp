@@ -3,6 +3,7 @@
 #include "json_locations.h"
 
 #include <QByteArray>
+#include <QCryptographicHash>
 #include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -289,6 +290,24 @@ double Assignment::manualPoints() const {
     for (const auto& r : rubric)
         sum += r.points;
     return sum;
+}
+
+std::string Assignment::rubricHash() const {
+    std::ostringstream text;
+    text.precision(17);
+    for (const auto& r : requirements)
+        text << "requirement\x1f" << r.id << '\x1f' << grading::requirementKindName(r.kind)
+             << '\x1f' << r.points << '\x1f' << r.minimum << '\x1f' << r.minimumKinds << '\n';
+    for (const auto& r : rubric)
+        text << "rubric\x1f" << r.id << '\x1f' << r.points << '\n';
+    return QCryptographicHash::hash(QByteArray::fromStdString(text.str()),
+                                    QCryptographicHash::Sha256)
+        .toHex()
+        .toStdString();
+}
+
+grading::AssignmentRecord Assignment::record() const {
+    return {id, title, automaticPoints(), manualPoints(), rubricHash(), due.value_or("")};
 }
 
 AssignmentLoad parseAssignment(const std::string& manifestText, const std::filesystem::path& folder,

@@ -5,6 +5,7 @@
 // checker judges, manual rubric items, a due date with a late policy, and the
 // reference solutions the tests grade. Checked on load: every problem is
 // reported as manifest.json:LINE:COL with what to write instead.
+#include "gradebook.h"
 #include "requirement.h"
 
 #include "scene/scene_diagnostic.h"
@@ -48,6 +49,12 @@ struct Assignment {
 
     double automaticPoints() const;
     double manualPoints() const;
+    // SHA-256 of what grades are made against (requirements with their
+    // kinds, points and parameters; rubric items): a grade made against an
+    // older rubric is graded again.
+    std::string rubricHash() const;
+    // What the gradebook keeps of it.
+    grading::AssignmentRecord record() const;
 };
 
 struct AssignmentLoad {

@@ -119,6 +119,8 @@ const std::vector<Command>& commands() {
         {benchEvalSpec, benchEvalCommand},
         {benchAccuracySpec, benchAccuracyCommand},
         {gradeCheckSpec, gradeCheckCommand},
+        {gradeBatchSpec, gradeBatchCommand},
+        {gradeExportSpec, gradeExportCommand},
     };
     return all;
 }

@@ -19,6 +19,8 @@ const CommandSpec& renderSpec();
 const CommandSpec& benchEvalSpec();
 const CommandSpec& benchAccuracySpec();
 const CommandSpec& gradeCheckSpec();
+const CommandSpec& gradeBatchSpec();
+const CommandSpec& gradeExportSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -29,6 +31,8 @@ int renderCommand(const Args& args);
 int benchEvalCommand(const Args& args);     // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args); // `bench accuracy`
 int gradeCheckCommand(const Args& args);    // `grade check`
+int gradeBatchCommand(const Args& args);    // `grade batch`
+int gradeExportCommand(const Args& args);   // `grade export`
 
 struct Command {
     const CommandSpec& (*spec)();

@@ -64,3 +64,41 @@ run(2 grade check --assignment implicit-fantasies a b)
 run(2 grade check --assignment implicit-fantasies ${lab}/starter.x3d --bogus)
 run(0 grade check --help)
 expect_match("${OUT}" "--assignment ID\\|DIR")
+
+# A class: graded into a gradebook in isolated children, resumable, exported.
+set(class ${OUT_DIR}/class)
+file(REMOVE_RECURSE ${class} ${OUT_DIR}/gradebook.sqlite ${OUT_DIR}/gradescope)
+file(MAKE_DIRECTORY ${class}/dana)
+file(COPY_FILE ${lab}/solution/fantasy.x3d ${class}/alice.x3d)
+file(COPY_FILE ${lab}/starter.x3d ${class}/bob.x3d)
+file(WRITE ${class}/carol.x3d "<X3D><Scene><FShape>")
+file(COPY_FILE ${lab}/solution/fantasy.x3d ${class}/dana/world.x3d)
+file(WRITE ${OUT_DIR}/roster.csv "id,name,email\nalice,\"Smith, Alice\",alice@example.org\nbob,=HYPERLINK(1),b@example.org\n")
+run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/gradebook.sqlite
+    --roster ${OUT_DIR}/roster.csv --jobs 2 --json)
+expect_json_equal("${OUT}" "3" graded)
+expect_json_equal("${OUT}" "1" not_gradable)
+run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/gradebook.sqlite --json)
+expect_json_equal("${OUT}" "4" skipped)
+expect_json_equal("${OUT}" "0" graded)
+run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
+    --format csv -o ${OUT_DIR}/grades.csv)
+file(READ ${OUT_DIR}/grades.csv csv)
+expect_match("${csv}" "alice,\"Smith, Alice\",alice@example.org,yes,100,100,1,0,,100,")
+expect_match("${csv}" "bob,'=HYPERLINK\\(1\\),")
+expect_match("${csv}" "carol,,,no,0,")
+run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
+    --format canvas -o ${OUT_DIR}/canvas.csv)
+file(READ ${OUT_DIR}/canvas.csv canvas)
+expect_match("${canvas}" "^Student,ID,SIS User ID,SIS Login ID,Section,Implicit Fantasies")
+run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
+    --format moodle -o ${OUT_DIR}/moodle.csv)
+run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
+    --format gradescope -o ${OUT_DIR}/gradescope)
+file(READ ${OUT_DIR}/gradescope/dana/results.json results)
+expect_json_equal("${results}" "100" score)
+run(1 grade export --db ${OUT_DIR}/nothere.sqlite --assignment implicit-fantasies
+    --format csv -o ${OUT_DIR}/x.csv)
+run(2 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
+    --format excel -o ${OUT_DIR}/x.csv)
+run(1 grade batch --assignment implicit-fantasies ${OUT_DIR}/nothere --db ${OUT_DIR}/g.sqlite)

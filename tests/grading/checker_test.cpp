@@ -15,8 +15,8 @@ using namespace fl::grading;
 
 namespace {
 
-const std::string kSolution =
-    std::string(FUNCTIONLAB_COURSEWARE_DIR) + "/assignments/implicit-fantasies/solution/fantasy.x3d";
+const std::string kSolution = std::string(FUNCTIONLAB_COURSEWARE_DIR) +
+                              "/assignments/implicit-fantasies/solution/fantasy.x3d";
 
 std::vector<Requirement> fantasies() {
     using K = RequirementKind;
@@ -37,9 +37,8 @@ const RequirementResult& result(const CheckReport& r, const std::string& id) {
 }
 
 CheckReport checkText(const std::string& x3dv) {
-    auto read = scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n" +
-                                          x3dv,
-                                      "submission.x3dv");
+    auto read = scene::readSceneBytes(
+        "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n" + x3dv, "submission.x3dv");
     EXPECT_TRUE(read.ok());
     return checkScene(*read.scene, fantasies());
 }

@@ -1,0 +1,163 @@
+// `functionlab grade batch --assignment ID DIR --db GRADEBOOK.sqlite [--jobs N]
+// [--roster CSV] [--json]`: a class's submissions, each checked by
+// `functionlab grade check` in its own isolated child process.
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/json.h"
+
+#include "batch_grading.h"
+#include "catalogue.h"
+#include "checker.h"
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace fl::cli {
+namespace {
+
+std::string selfExecutable() {
+    std::error_code ec;
+    const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+    return ec ? std::string("functionlab") : p.string();
+}
+
+} // namespace
+
+const CommandSpec& gradeBatchSpec() {
+    static const CommandSpec spec{
+        .name = "grade batch",
+        .summary = "grade a class's submissions into a SQLite gradebook, isolated and resumable",
+        .synopsis = {"grade batch --assignment ID|DIR DIR --db GRADEBOOK.sqlite [--jobs N] "
+                     "[--roster CSV] [--json]"},
+        .description =
+            "Grades every submission in DIR — a scene file or a folder per student; the\n"
+            "student's id is the name before its first dot — each by `functionlab grade\n"
+            "check` in its own child process with limits (CPU time, memory, output, wall\n"
+            "clock, no files written, no network: bubblewrap when installed, else a network\n"
+            "namespace), so a hostile file costs its own budget, never the batch. Each\n"
+            "result is written to the gradebook as soon as it is in: a killed batch loses no\n"
+            "finished result, and a batch run again skips submissions already graded with\n"
+            "the same content, checker version and rubric.\n",
+        .positionals = {{.name = "DIR", .help = "the folder of submissions"}},
+        .options = {{.name = "assignment",
+                     .kind = OptionKind::Text,
+                     .valueName = "ID|DIR",
+                     .help = "the assignment: an id or the folder of its manifest.json"},
+                    {.name = "db",
+                     .kind = OptionKind::Path,
+                     .valueName = "GRADEBOOK.sqlite",
+                     .help = "the gradebook (created when missing)"},
+                    {.name = "jobs",
+                     .kind = OptionKind::Integer,
+                     .valueName = "N",
+                     .help = "submissions checked at once",
+                     .defaultValue = "2",
+                     .min = 1,
+                     .max = 64},
+                    {.name = "roster",
+                     .kind = OptionKind::Path,
+                     .valueName = "CSV",
+                     .help = "import students first: a CSV whose header names an id column "
+                             "(and name, email)"},
+                    {.name = "time-limit",
+                     .kind = OptionKind::Number,
+                     .valueName = "SECONDS",
+                     .help = "wall clock per submission (CPU time: half of it)",
+                     .defaultValue = "60",
+                     .min = 1,
+                     .max = 3600},
+                    {.name = "json",
+                     .help = "print one JSON object at the end: {\"graded\", \"skipped\", "
+                             "\"not_gradable\", \"failed\", \"problems\": [...]}"}},
+        .notes = "A progress line on a terminal. Results: `functionlab grade export`.\n",
+        .exitStatus = "0 the batch ran (whatever the scores), 1 the assignment, the folder or the "
+                      "gradebook could not be read, 2 usage error",
+    };
+    return spec;
+}
+
+int gradeBatchCommand(const Args& args) {
+    int exit = 0;
+    const auto a = parseOrExplain(gradeBatchSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    if (!a->given("assignment") || !a->given("db"))
+        return usageError(gradeBatchSpec(), "--assignment and --db are required", std::cerr);
+    const courseware::AssignmentLoad load = courseware::findAssignment(a->text("assignment"));
+    for (const auto& d : load.diagnostics)
+        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
+    if (!load.assignment) return kExitDiagnostic;
+    const courseware::Assignment& assignment = *load.assignment;
+    const std::filesystem::path folder = a->positional("DIR");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) {
+        std::cerr << "functionlab grade batch: " << folder.string() << " is not a folder\n";
+        return kExitDiagnostic;
+    }
+    try {
+        grading::Gradebook book(a->text("db"));
+        if (a->given("roster")) {
+            std::ifstream in(a->text("roster"), std::ios::binary);
+            if (!in) {
+                std::cerr << "functionlab grade batch: cannot read " << a->text("roster") << "\n";
+                return kExitDiagnostic;
+            }
+            std::stringstream text;
+            text << in.rdbuf();
+            for (const auto& p : book.importRoster(text.str()))
+                std::cerr << a->text("roster") << ":" << p.line << ":1: error: " << p.message
+                          << "\n";
+        }
+        std::vector<std::string> skipped;
+        const auto submissions = grading::findSubmissions(folder, skipped);
+        for (const std::string& s : skipped)
+            std::cerr << "functionlab grade batch: " << s << "\n";
+        grading::BatchOptions o;
+        o.jobs = int(a->integer("jobs", 2));
+        o.limits.wallSeconds = a->number("time-limit", 60);
+        o.limits.cpuSeconds = o.limits.wallSeconds / 2;
+        o.checkerVersion = grading::kCheckerVersion;
+        o.dueUtc = assignment.due.value_or("");
+        o.lateFactor = [&](double hours) { return assignment.late.factor(hours); };
+        const std::string self = selfExecutable();
+        const std::string manifestFolder = assignment.folder.string();
+        o.command = [&](const grading::BatchSubmission& s) {
+            return std::vector<std::string>{
+                self, "grade", "check", "--assignment", manifestFolder, s.path.string(), "--json"};
+        };
+        const bool terminal = ::isatty(2);
+        o.progress = [&](std::size_t done, std::size_t total, const grading::BatchSubmission& s,
+                         const std::string& outcome) {
+            if (terminal)
+                std::cerr << "\r\033[K[" << done << "/" << total << "] " << s.student << ": "
+                          << outcome << std::flush;
+        };
+        const grading::BatchSummary summary =
+            grading::gradeBatch(book, assignment.record(), submissions, o);
+        if (terminal) std::cerr << "\n";
+        for (const std::string& p : summary.problems)
+            std::cerr << "functionlab grade batch: " << p << "\n";
+        if (a->flag("json")) {
+            std::string out = "{\"graded\":" + std::to_string(summary.graded);
+            out += ",\"skipped\":" + std::to_string(summary.skipped);
+            out += ",\"not_gradable\":" + std::to_string(summary.notGradable);
+            out += ",\"failed\":" + std::to_string(summary.failed);
+            out += ",\"problems\":[";
+            for (std::size_t i = 0; i < summary.problems.size(); ++i) {
+                if (i) out += ",";
+                out += jsonString(summary.problems[i]);
+            }
+            std::cout << out << "]}\n";
+        } else {
+            std::cout << summary.graded << " graded, " << summary.skipped << " unchanged, "
+                      << summary.notGradable << " not gradable, " << summary.failed << " failed\n";
+        }
+    } catch (const grading::SqliteError& e) {
+        std::cerr << "functionlab grade batch: " << a->text("db") << ": " << e.what() << "\n";
+        return kExitDiagnostic;
+    }
+    return kExitOk;
+}
+
+} // namespace fl::cli
