@@ -228,7 +228,7 @@ class ManifestReader {
                     problem(at + "/kind", "unknown kind '" + *kind + "'",
                             "one of implicit-surface, explicit-solid, parametric, "
                             "set-operations, morphing, animation, level-of-detail, "
-                            "function-colour");
+                            "function-colour, tangible");
             }
             if (auto d = text(o, at, "description", true)) r.description = *d;
             if (auto p = number(o, at, "points", 0, 1e6, true)) r.points = *p;

@@ -26,6 +26,8 @@ RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Bud
         return checkLevelOfDetail(view, r);
     case RequirementKind::FunctionColour:
         return checkFunctionColour(view, r);
+    case RequirementKind::Tangible:
+        return checkTangible(view, r);
     }
     return {r.id, r.kind, false, 0, r.points, "unknown requirement", {}};
 }
@@ -71,8 +73,9 @@ CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>
             {scene::Severity::Warning,
              scene.pathOf(0),
              {1, 1},
-             "the checker's budget of " + std::to_string(options.budget) +
-                 " evaluations ran out: what it could not judge is not counted",
+             "the checker's budget of " + std::to_string(options.budget / 1'000'000) +
+                 " million instruction evaluations ran out: what it could not judge is not "
+                 "counted",
              "simplify the definitions, or ask your instructor"});
     return report;
 }

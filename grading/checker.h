@@ -1,7 +1,7 @@
 #pragma once
 // The checker: one submission against an assignment's automatic
 // requirements. Deterministic — the same scene and checker version give the
-// same verdict, bit for bit — and bounded: one evaluation budget for the
+// same verdict, bit for bit — and bounded: one budget of work for the
 // whole submission, reported when it runs out, never a hang.
 #include "requirement.h"
 
@@ -17,8 +17,10 @@ namespace fl::grading {
 inline constexpr const char* kCheckerVersion = "1";
 
 struct CheckOptions {
-    std::size_t budget = 4'000'000; // evaluations for the whole submission
-    int moments = 9;                // of the scene's time judged
+    // Instructions evaluated for the whole submission (about 1-2 s of work):
+    // a point costs its tape's length, an interval four times that.
+    std::size_t budget = 400'000'000;
+    int moments = 9; // of the scene's time judged
 };
 
 struct CheckReport {

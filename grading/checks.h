@@ -15,5 +15,6 @@ RequirementResult checkMorphing(const SubmissionView& view, const Requirement& r
 RequirementResult checkAnimation(const SubmissionView& view, const Requirement& r);
 RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requirement& r);
 RequirementResult checkFunctionColour(const SubmissionView& view, const Requirement& r);
+RequirementResult checkTangible(const SubmissionView& view, const Requirement& r);
 
 } // namespace fl::grading

@@ -25,7 +25,7 @@ std::optional<formula::Tape> activityOf(const formula::Tape& tape, std::size_t i
 
 OperandSign signOver(const field::ImplicitField& f, const formula::Tape& tape, std::size_t index,
                      int which, Budget& budget) {
-    if (!budget.spend(1)) return OperandSign::Mixed;
+    if (!budget.spend(4 * cost(f))) return OperandSign::Mixed;
     // The operand's value: the gap tape's prefix with the operand as output.
     formula::Tape prefix = tape;
     const formula::Instruction op = tape.code[index];

@@ -5,7 +5,7 @@
 namespace fl::grading {
 namespace {
 
-constexpr scene::KindNames<RequirementKind, 8> kKinds{{
+constexpr scene::KindNames<RequirementKind, 9> kKinds{{
     {"implicit-surface", RequirementKind::ImplicitSurface},
     {"explicit-solid", RequirementKind::ExplicitSolid},
     {"parametric", RequirementKind::Parametric},
@@ -14,6 +14,7 @@ constexpr scene::KindNames<RequirementKind, 8> kKinds{{
     {"animation", RequirementKind::Animation},
     {"level-of-detail", RequirementKind::LevelOfDetail},
     {"function-colour", RequirementKind::FunctionColour},
+    {"tangible", RequirementKind::Tangible},
 }};
 
 } // namespace

@@ -21,6 +21,7 @@ enum class RequirementKind : std::uint8_t {
     Animation,       // something shown moves, turns or scales with time
     LevelOfDetail,   // function shapes drawn with continuous level of detail
     FunctionColour,  // a colour defined by a function that varies over the shape or in time
+    Tangible,        // a shown shape with `minimum` kinds of tangible effect (FPhysics)
 };
 
 // The manifest's word for each kind ("implicit-surface", "set-operations" ...).
@@ -32,7 +33,7 @@ struct Requirement {
     RequirementKind kind = RequirementKind::ImplicitSurface;
     std::string description;
     double points = 1;
-    int minimum = 1;      // SetOperations: how many live operations
+    int minimum = 1;      // SetOperations: how many live operations; Tangible: effect kinds
     int minimumKinds = 1; // SetOperations: of how many different kinds
 };
 

@@ -190,10 +190,15 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
     if (!out.met) {
         text += " (" + std::to_string(r.minimum) + " operations of at least " +
                 std::to_string(r.minimumKinds) + " kinds are needed)";
-        for (const Found* f : dead) {
-            text += ". Not counted: " + f->why + " (line " + std::to_string(f->where.line) + ")";
-            out.locations.push_back(f->where);
+        // The first few dead ones, explained; the rest counted.
+        constexpr std::size_t kExplained = 5;
+        for (std::size_t i = 0; i < dead.size() && i < kExplained; ++i) {
+            text += ". Not counted: " + dead[i]->why + " (line " +
+                    std::to_string(dead[i]->where.line) + ")";
+            out.locations.push_back(dead[i]->where);
         }
+        if (dead.size() > kExplained)
+            text += ". " + std::to_string(dead.size() - kExplained) + " more not counted";
     }
     out.evidence = text;
     return out;

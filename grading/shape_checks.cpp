@@ -28,7 +28,7 @@ std::pair<bool, bool> signsOf(const field::ImplicitField& f, Budget& budget) {
     for (int i = 0; i < n && !(in && out); ++i)
         for (int j = 0; j < n; ++j)
             for (int k = 0; k < n; ++k) {
-                if (!budget.spend(1)) return {in, out};
+                if (!budget.spend(cost(f))) return {in, out};
                 const field::Vec3 p{f.box.lo[0] + f.box.size(0) * (i + 0.5) / n,
                                     f.box.lo[1] + f.box.size(1) * (j + 0.5) / n,
                                     f.box.lo[2] + f.box.size(2) * (k + 0.5) / n};
@@ -97,16 +97,18 @@ RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requireme
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
     for (const mesh::ShapeMesh& s : view.frames().front().shapes) {
         if (!typeOf(s) || !SubmissionView::visible(s)) continue;
+        // The default (lod TRUE, 8 to 256) is every shape's: the requirement
+        // asks that the student chose the range.
         const auto range = scene::numbersField(*s.geometry, "lodRange");
-        if (!scene::boolField(*s.geometry, "lod") || range.size() != 2 || !(range[0] < range[1]))
+        if (!s.geometry->field("lodRange") || !scene::boolField(*s.geometry, "lod") ||
+            range.size() != 2 || !(range[0] < range[1]))
             continue;
         out.met = true;
         out.points = r.points;
         out.evidence = SubmissionView::nameOf(*s.shape) +
                        ": continuous level of detail from resolution " +
                        std::to_string(int(range[0])) + " to " + std::to_string(int(range[1]));
-        out.locations.push_back(
-            view.locationOf(*s.geometry, s.geometry->field("lodRange") ? "lodRange" : "lod"));
+        out.locations.push_back(view.locationOf(*s.geometry, "lodRange"));
         return out;
     }
     out.evidence = "no function shape is drawn with continuous level of detail: set lod TRUE "

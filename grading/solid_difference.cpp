@@ -37,6 +37,10 @@ bool sameTape(const formula::Tape& a, const formula::Tape& b) {
 
 } // namespace
 
+std::size_t cost(const field::ImplicitField& f) {
+    return f.tape.code.size() + 1 + (f.displacement ? f.displacement->tape.code.size() + 1 : 0);
+}
+
 bool identicalFields(const field::ImplicitField& a, const field::ImplicitField& b) {
     if (a.t != b.t || a.parameters != b.parameters || a.box.lo != b.box.lo ||
         a.box.hi != b.box.hi || a.boundary != b.boundary ||
@@ -69,12 +73,16 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
         field::Box3 box;
         int depth;
     };
+    const std::size_t costAB = cost(openA) + cost(openB);
+    const std::size_t costActivity = openActivity ? cost(*openActivity) : 0;
     std::vector<Cell> stack{{openA.box, 0}};
     const std::size_t stopAt = budget.left > options.cap ? budget.left - options.cap : 0;
     while (!stack.empty()) {
         const Cell cell = stack.back();
         stack.pop_back();
-        if (budget.left <= stopAt || !budget.spend(active ? 3 : 2)) return out; // Unknown
+        // Two or three intervals, at four times a point's cost.
+        if (budget.left <= stopAt || !budget.spend(4 * (costAB + costActivity)))
+            return out; // Unknown
         if (active) {
             const formula::Interval g = active->interval(cell.box.lo, cell.box.hi);
             if (g.empty() || (!g.nan && g.hi <= 0)) continue; // equal here
@@ -92,7 +100,7 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
                                   c & 2 ? cell.box.hi[1] : cell.box.lo[1],
                                   c & 4 ? cell.box.hi[2] : cell.box.lo[2]});
         for (const field::Vec3& p : points) {
-            if (!budget.spend(2)) return out;
+            if (!budget.spend(costAB)) return out;
             const double va = fa.value(p), vb = fb.value(p);
             if (std::isfinite(va) && std::isfinite(vb) && inside(va) != inside(vb)) {
                 out.result = Sameness::Different;

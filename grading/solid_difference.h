@@ -12,9 +12,11 @@
 
 namespace fl::grading {
 
-// Evaluations (points and intervals) a check may still spend.
+// Work a check may still spend, in instructions evaluated: a point costs
+// its tape's length, an interval four times that (cost() below), so a
+// submission with huge formulas gets fewer evaluations, not more time.
 struct Budget {
-    std::size_t left = 2'000'000;
+    std::size_t left = 400'000'000;
     bool exceeded = false;
     bool spend(std::size_t n) {
         if (left < n) {
@@ -26,6 +28,9 @@ struct Budget {
         return true;
     }
 };
+
+// What one point evaluation of a field costs (its tape and displacement).
+std::size_t cost(const field::ImplicitField& f);
 
 enum class Sameness : std::uint8_t {
     Same,      // proven: the sign agrees everywhere in the box (to the depth)
@@ -42,11 +47,11 @@ struct SolidComparison {
 
 struct CompareOptions {
     int maxDepth = 9; // cells down to 1/512 of the box's sides
-    // Evaluations one comparison may spend of the budget: a change that is
+    // Work one comparison may spend of the budget: a change that is
     // not found by then is not claimed (Unknown), and the next question is
     // asked. Two equal fields whose equality the intervals cannot see (a
     // term multiplied by zero) would otherwise take the whole budget.
-    std::size_t cap = 200'000;
+    std::size_t cap = 20'000'000;
 };
 
 // The same field, instruction for instruction (then the same solid).

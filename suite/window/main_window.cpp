@@ -1,9 +1,11 @@
 #include "main_window.h"
 
+#include "assignment_panel.h"
 #include "code_editor.h"
 #include "examples.h"
 #include "examples_dock.h"
 #include "find_bar.h"
+#include "hand_in.h"
 #include "issues_dock.h"
 #include "level_of_detail_control.h"
 #include "live_parser.h"
@@ -210,10 +212,15 @@ void MainWindow::buildDocks() {
     tree_ = addPanel(new SceneTreeDock);
     examples_ = addPanel(new ExamplesDock, true);
     parameters_ = addPanel(new ParametersDock, true);
+    assignment_ = addPanel(new AssignmentPanel, true);
     examples_->raise();
 
     auto goTo = [this](int line, int column) { editor_->goTo(line, column); };
     connect(issues_, &IssuesDock::issueActivated, this, goTo);
+    connect(assignment_, &AssignmentPanel::locationActivated, this, goTo);
+    connect(assignment_, &AssignmentPanel::starterChosen, this, [this](const QString& path) {
+        if (maybeKeepChanges()) openFile(path);
+    });
     connect(tree_, &SceneTreeDock::nodeActivated, this, goTo);
     connect(examples_, &ExamplesDock::exampleChosen, this, [this](const QString& path) {
         if (maybeKeepChanges()) openFile(path);
@@ -234,6 +241,8 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction(tr("Export &Mesh…"), this, &MainWindow::exportMesh);
     file->addAction(tr("Export &Image…"), this, &MainWindow::exportImage);
+    file->addSeparator();
+    file->addAction(tr("&Hand In…"), this, &MainWindow::handInDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -477,6 +486,7 @@ void MainWindow::fillRecentMenu() {
 void MainWindow::parsed(const editor::ParseOutcome& outcome) {
     editor_->setDiagnostics(outcome.inThisFile);
     issues_->showDiagnostics(outcome.all);
+    textParses_ = outcome.scene != nullptr;
     if (!outcome.scene)
         statusBar()->showMessage(tr("The text has errors: the view shows the last good scene"));
     else
@@ -486,7 +496,7 @@ void MainWindow::parsed(const editor::ParseOutcome& outcome) {
 void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     scene_ = scene;
     for (Panel* panel : panels_)
-        panel->showScene(*scene);
+        panel->sceneChanged(scene);
     timeline_->setSpan(timelineSpan(*scene));
     player_->setParameters(parameters_->values());
     lod_->clear();
@@ -598,6 +608,61 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/state"), saveState());
     if (!isModified()) QFile::remove(recoveryPath());
     event->accept();
+}
+
+void MainWindow::handInDialog() {
+    if (!assignment_->assignment()) {
+        problem(tr("Choose the assignment in the Assignment panel first."));
+        return;
+    }
+    const QString parent = QFileDialog::getExistingDirectory(
+        this, tr("Hand in: where to put the submission"),
+        path_.isEmpty() ? QDir::homePath() : QFileInfo(path_).path());
+    if (parent.isEmpty()) return;
+    const QString name =
+        QStringLiteral("%1-%2")
+            .arg(QFileInfo(path_.isEmpty() ? QStringLiteral("scene") : path_).completeBaseName())
+            .arg(QString::fromStdString(assignment_->assignment()->id));
+    if (handIn(QDir(parent).filePath(name)) && prompts_)
+        QMessageBox::information(
+            this, tr("Handed in"),
+            tr("Your submission is in %1.\n%2")
+                .arg(QDir(parent).filePath(name), statusBar()->currentMessage()));
+}
+
+bool MainWindow::handIn(const QString& folder) {
+    const courseware::Assignment* a = assignment_->assignment();
+    if (!a) {
+        problem(tr("Choose the assignment in the Assignment panel first."));
+        return false;
+    }
+    if (path_.isEmpty()) {
+        problem(tr("Save the scene first: a submission is a scene file and what it uses."));
+        return false;
+    }
+    if (!scene_ || !textParses_) {
+        problem(tr("The scene has errors: fix them (see Issues) before handing in."));
+        return false;
+    }
+    // The last check, on this very text, before it leaves.
+    const grading::CheckReport report = grading::checkScene(*scene_, a->requirements);
+    const courseware::HandIn done = courseware::packSubmission(
+        *scene_, path_.toStdString(), editor_->toPlainText().toStdString(), folder.toStdString());
+    if (!done.ok) {
+        problem(tr("Not handed in: %1")
+                    .arg(QString::fromStdString(done.problems.empty() ? "" : done.problems[0])));
+        return false;
+    }
+    statusBar()->showMessage(tr("Handed in %1 file(s); the checker gives %2 of %3 points%4")
+                                 .arg(done.packed.size())
+                                 .arg(report.score)
+                                 .arg(report.maxScore)
+                                 .arg(done.problems.empty()
+                                          ? QString()
+                                          : tr(" (%1 file(s) not packed: %2)")
+                                                .arg(done.problems.size())
+                                                .arg(QString::fromStdString(done.problems[0]))));
+    return true;
 }
 
 } // namespace fl::suite

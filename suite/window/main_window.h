@@ -41,6 +41,7 @@ class IssuesDock;
 class Panel;
 class ParametersDock;
 class SceneTreeDock;
+class AssignmentPanel;
 class TimelineBar;
 class ViewpointBox;
 
@@ -75,6 +76,10 @@ class MainWindow : public QMainWindow {
     QWidget* parametersPanel() const;
     QListWidget* examples() const;
     const viewer::LevelOfDetail& levelOfDetail() const { return *lod_; }
+    AssignmentPanel* assignmentPanel() const { return assignment_; }
+    // File → Hand in: checks once more, then packs the scene and the files
+    // it uses into `folder` (a new one). False, with lastProblem(), if not.
+    bool handIn(const QString& folder);
     // The window's panels, in the order they were added.
     const std::vector<Panel*>& panels() const { return panels_; }
 
@@ -99,6 +104,7 @@ class MainWindow : public QMainWindow {
     bool saveAs();
     void exportMesh();
     void exportImage();
+    void handInDialog();
     bool maybeKeepChanges(); // false: the user cancelled
     void problem(const QString& text);
     void setPath(const QString& path);
@@ -122,6 +128,8 @@ class MainWindow : public QMainWindow {
     SceneTreeDock* tree_ = nullptr;
     ExamplesDock* examples_ = nullptr;
     ParametersDock* parameters_ = nullptr;
+    AssignmentPanel* assignment_ = nullptr;
+    bool textParses_ = true; // the editor's text, as last parsed, has no errors
     ViewpointBox* viewpoints_;
     QAction *examineAction_ = nullptr, *walkAction_ = nullptr;
     bool firstFrameOfScene_ = true;

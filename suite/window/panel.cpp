@@ -10,4 +10,8 @@ Panel::Panel(const QString& title, const QString& objectName, Qt::DockWidgetArea
 
 void Panel::showScene(const scene::Scene&) {}
 
+void Panel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
+    if (scene) showScene(*scene);
+}
+
 } // namespace fl::suite

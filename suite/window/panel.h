@@ -10,6 +10,8 @@
 // haptics and classroom panels plug in the same way.
 #include <QDockWidget>
 
+#include <memory>
+
 namespace fl::scene {
 struct Scene;
 }
@@ -28,6 +30,10 @@ class Panel : public QDockWidget {
     // The scene the window now shows (a new one after every good edit). Most
     // panels show something of it; the default shows nothing.
     virtual void showScene(const fl::scene::Scene& scene);
+    // The same scene, shared: a panel that works on it off the interface
+    // thread (the assignment checklist) keeps it alive this way. By default
+    // it calls showScene.
+    virtual void sceneChanged(std::shared_ptr<const fl::scene::Scene> scene);
 
   private:
     Qt::DockWidgetArea area_;

@@ -160,3 +160,25 @@ TEST(Manifest, AnIdOrAFolderThatIsNotThereSaysWhichAreThere) {
     EXPECT_NE(load.diagnostics.front().suggestion.find("implicit-fantasies"), std::string::npos);
     EXPECT_FALSE(findAssignment("../../etc").assignment);
 }
+
+// Five labs make a course, each with its own requirements.
+TEST(Assignments, ACourseHasFiveLabs) {
+    std::vector<std::string> ids;
+    for (const AssignmentLoad& a : listAssignments(kAssignments))
+        if (a.assignment) ids.push_back(a.assignment->id);
+    EXPECT_EQ(ids, (std::vector<std::string>{"implicit-fantasies", "implicit-shapes",
+                                             "parametric-colour", "tangible-physics", "time"}));
+}
+
+// Each lab's starter scene is not yet a full-marks solution: there is work to do.
+TEST(Assignments, StartersLeaveWorkToDo) {
+    for (const AssignmentLoad& load : listAssignments(kAssignments)) {
+        ASSERT_TRUE(load.assignment);
+        for (const auto& starter : load.assignment->starters) {
+            const grading::CheckReport r =
+                grading::checkSubmission(starter, load.assignment->requirements);
+            EXPECT_TRUE(r.gradable) << starter;
+            EXPECT_LT(r.score, r.maxScore) << starter;
+        }
+    }
+}

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace fl;
@@ -147,4 +148,29 @@ TEST(Checker, AnUnreadableSubmissionIsNotGradable) {
     EXPECT_EQ(r.maxScore, 100);
     const CheckReport none = checkSubmission(testing::TempDir(), fantasies());
     EXPECT_FALSE(none.gradable);
+}
+
+// The corpus of submissions with known verdicts (tests/grading/submissions).
+TEST(Checker, SubmissionsWithKnownVerdicts) {
+    const std::string folder = FUNCTIONLAB_SUBMISSIONS_DIR;
+    std::ifstream list(folder + "/expected.txt");
+    ASSERT_TRUE(list);
+    std::map<std::string, CheckReport> reports;
+    std::string line;
+    int checked = 0;
+    while (std::getline(list, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream fields(line);
+        std::string file, id, verdict;
+        fields >> file >> id >> verdict;
+        if (!reports.count(file)) reports[file] = checkSubmission(folder + "/" + file, fantasies());
+        const CheckReport& r = reports.at(file);
+        ASSERT_TRUE(r.gradable) << file;
+        EXPECT_EQ(result(r, id).met, verdict == "met")
+            << file << " " << id << ": " << result(r, id).evidence;
+        ++checked;
+    }
+    EXPECT_GE(checked, 16);
+    EXPECT_TRUE(reports.at("hostile_huge.x3dv").budgetExceeded ||
+                result(reports.at("hostile_huge.x3dv"), "set-operations").met);
 }

@@ -1,3 +1,4 @@
+#include "assignment_panel.h"
 #include "code_editor.h"
 #include "live_parser.h"
 #include "main_window.h"
@@ -14,6 +15,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QDir>
+#include <QFileInfo>
 #include <QListWidget>
 #include <QPainter>
 #include <QSlider>
@@ -187,7 +189,8 @@ class WindowTest : public QObject {
         QStringList names;
         for (suite::Panel* p : w.panels())
             names << p->objectName();
-        QCOMPARE(names, (QStringList{"editor", "issues", "tree", "examples", "parameters"}));
+        QCOMPARE(names,
+                 (QStringList{"editor", "issues", "tree", "examples", "parameters", "assignment"}));
         auto* counting = w.addPanel(new Counting, true);
         QCOMPARE(w.dockWidgetArea(counting), Qt::RightDockWidgetArea);
         QVERIFY(!w.tabifiedDockWidgets(counting).isEmpty());
@@ -277,10 +280,11 @@ class WindowTest : public QObject {
 
     void clickingTheFanStartsItsBlades() {
         // TouchSensor SWITCH -> touchTime -> TimeSensor SPIN.startTime ->
-        // OrientationInterpolator ROTOR -> the blades' Transform.
+        // OrientationInterpolator ROTOR -> the blades' Transform. A view wide
+        // enough for the whole fan, whatever the docks beside it take.
         suite::MainWindow w;
         w.setPromptsEnabled(false);
-        w.resize(1280, 800);
+        w.resize(1600, 900);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.openFile(examplePath("fan.x3d")));
@@ -444,6 +448,32 @@ class WindowTest : public QObject {
         QVERIFY(settle(w));
         QVERIFY(w.issues()->count() >= 1);
         QFile::remove(junk);
+    }
+
+    void handingInPacksTheSceneAfterALastCheck() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        const QString lab = QStringLiteral(FUNCTIONLAB_COURSEWARE_DIR
+                                           "/assignments/implicit-fantasies/solution/fantasy.x3d");
+        QVERIFY(w.openFile(lab));
+        QVERIFY(settle(w));
+        const QString out = QDir::temp().filePath(QStringLiteral("functionlab-handin-test"));
+        QDir(out).removeRecursively();
+        QVERIFY(!w.handIn(out)); // no assignment chosen yet
+        QVERIFY(w.lastProblem().contains(QStringLiteral("Assignment panel")));
+        QVERIFY(w.assignmentPanel()->choose(QStringLiteral("implicit-fantasies")));
+        QVERIFY(w.handIn(out));
+        QVERIFY(QFileInfo::exists(out + QStringLiteral("/fantasy.x3d")));
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("100 of 100")));
+        QVERIFY(!w.handIn(out)); // not into a folder that holds something
+        // A text with errors is not handed in.
+        w.editor()->setPlainText(w.editor()->toPlainText().replace(
+            QStringLiteral("ball = 0.8^2"), QStringLiteral("ball = 0.8^^2")));
+        QVERIFY(settle(w));
+        QDir(out).removeRecursively();
+        QVERIFY(!w.handIn(out));
+        QVERIFY(w.lastProblem().contains(QStringLiteral("errors")));
+        QDir(out).removeRecursively();
     }
 
     void savingWritesTheTextAndClearsTheModifiedMark() {

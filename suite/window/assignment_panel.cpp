@@ -1,0 +1,191 @@
+#include "assignment_panel.h"
+
+#include "catalogue.h"
+
+#include <QComboBox>
+#include <QFile>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTextBrowser>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <initializer_list>
+
+namespace fl::suite {
+namespace {
+
+QString points(double p) {
+    return QString::number(p, 'g', 6);
+}
+
+} // namespace
+
+AssignmentPanel::AssignmentPanel(QWidget* parent, const QString& folder)
+    : Panel(tr("Assignment"), QStringLiteral("assignment"), Qt::RightDockWidgetArea, parent),
+      choice_(new QComboBox), instructions_(new QTextBrowser), checklist_(new QTreeWidget),
+      status_(new QLabel), starter_(new QPushButton(tr("Start from the starter scene"))) {
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->addWidget(choice_);
+    layout->addWidget(instructions_, 2);
+    layout->addWidget(starter_);
+    layout->addWidget(checklist_, 3);
+    layout->addWidget(status_);
+    setWidget(box);
+    checklist_->setColumnCount(2);
+    checklist_->setHeaderLabels({tr("Requirement"), tr("Why")});
+    checklist_->header()->setStretchLastSection(true);
+    checklist_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    checklist_->setWordWrap(true);
+    checklist_->setRootIsDecorated(false);
+    instructions_->setOpenExternalLinks(false);
+    status_->setWordWrap(true);
+    // Long titles must not widen the dock (and shrink the view) on their own.
+    choice_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    choice_->setMinimumContentsLength(16);
+    for (QWidget* w : std::initializer_list<QWidget*>{instructions_, checklist_, status_})
+        w->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
+    box->setMinimumWidth(200);
+
+    assignments_ = folder.isEmpty() ? courseware::listAssignments()
+                                    : courseware::listAssignments(folder.toStdString());
+    choice_->addItem(tr("(no assignment)"));
+    for (const courseware::AssignmentLoad& a : assignments_)
+        choice_->addItem(a.assignment ? QString::fromStdString(a.assignment->title)
+                                      : tr("(a broken manifest)"));
+    connect(choice_, &QComboBox::currentIndexChanged, this, [this](int index) {
+        current_ = index - 1;
+        showAssignment();
+    });
+    connect(starter_, &QPushButton::clicked, this, [this] {
+        if (const courseware::Assignment* a = assignment(); a && !a->starters.empty())
+            Q_EMIT starterChosen(QString::fromStdString(a->starters.front().string()));
+    });
+    connect(checklist_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+        const int line = item->data(0, Qt::UserRole).toInt();
+        if (line > 0) Q_EMIT locationActivated(line, item->data(0, Qt::UserRole + 1).toInt());
+    });
+    showAssignment();
+}
+
+AssignmentPanel::~AssignmentPanel() {
+    *alive_ = false;
+    if (worker_.joinable()) worker_.join();
+}
+
+const courseware::Assignment* AssignmentPanel::assignment() const {
+    if (current_ < 0 || std::size_t(current_) >= assignments_.size()) return nullptr;
+    const auto& a = assignments_[std::size_t(current_)].assignment;
+    return a ? &*a : nullptr;
+}
+
+bool AssignmentPanel::choose(const QString& id) {
+    for (std::size_t i = 0; i < assignments_.size(); ++i)
+        if (assignments_[i].assignment && assignments_[i].assignment->id == id.toStdString()) {
+            choice_->setCurrentIndex(int(i) + 1);
+            return true;
+        }
+    return false;
+}
+
+bool AssignmentPanel::checking() const {
+    std::lock_guard lock(mutex_);
+    return working_ || pending_;
+}
+
+void AssignmentPanel::showAssignment() {
+    checklist_->clear();
+    report_.reset();
+    const courseware::Assignment* a = assignment();
+    starter_->setEnabled(a && !a->starters.empty());
+    if (!a) {
+        instructions_->setMarkdown(
+            current_ < 0 ? tr("Choose an assignment to see its instructions and a checklist of "
+                              "its requirements as you edit.")
+                         : tr("This assignment's manifest has errors; see `functionlab grade "
+                              "check --assignment` for where."));
+        status_->clear();
+        return;
+    }
+    QFile file(QString::fromStdString(a->instructions.string()));
+    instructions_->setMarkdown(file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll())
+                                                              : tr("(no instructions)"));
+    for (const grading::Requirement& r : a->requirements) {
+        auto* item = new QTreeWidgetItem(checklist_, {QString::fromStdString(r.id), {}});
+        item->setToolTip(0, QString::fromStdString(r.description));
+        item->setText(1, QString::fromStdString(r.description));
+    }
+    if (scene_) check(scene_);
+}
+
+void AssignmentPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
+    scene_ = std::move(scene);
+    if (assignment()) check(scene_);
+}
+
+void AssignmentPanel::check(std::shared_ptr<const scene::Scene> scene) {
+    std::lock_guard lock(mutex_);
+    if (working_) {
+        pending_ = std::move(scene); // only the newest counts
+        return;
+    }
+    working_ = true;
+    if (worker_.joinable()) worker_.join();
+    status_->setText(tr("checking…"));
+    const std::vector<grading::Requirement> requirements = assignment()->requirements;
+    worker_ = std::thread([this, scene, requirements, alive = alive_] {
+        grading::CheckReport report = grading::checkScene(*scene, requirements);
+        QMetaObject::invokeMethod(
+            this,
+            [this, report = std::move(report), scene, alive] {
+                if (!*alive) return;
+                std::shared_ptr<const scene::Scene> next;
+                {
+                    std::lock_guard lock(mutex_);
+                    working_ = false;
+                    next = std::move(pending_);
+                    pending_.reset();
+                }
+                if (scene == scene_) showReport(report);
+                if (next && assignment()) check(next);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void AssignmentPanel::showReport(const grading::CheckReport& report) {
+    report_ = report;
+    const std::string mainFile = scene_ ? scene_->pathOf(0) : std::string{};
+    for (int i = 0; i < checklist_->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = checklist_->topLevelItem(i);
+        if (std::size_t(i) >= report.requirements.size()) break;
+        const grading::RequirementResult& r = report.requirements[std::size_t(i)];
+        item->setText(0, QStringLiteral("%1 %2  (%3/%4)")
+                             .arg(r.met ? QStringLiteral("✔") : QStringLiteral("✘"))
+                             .arg(QString::fromStdString(r.id))
+                             .arg(points(r.points))
+                             .arg(points(r.maxPoints)));
+        item->setForeground(0, r.met ? QColor(0x2e, 0x7d, 0x32) : QColor(0xc6, 0x28, 0x28));
+        item->setText(1, QString::fromStdString(r.evidence));
+        item->setToolTip(1, QString::fromStdString(r.evidence));
+        // The first place in the scene text itself (not in an Inline file).
+        item->setData(0, Qt::UserRole, 0);
+        for (const grading::Location& l : r.locations)
+            if (l.file == mainFile) {
+                item->setData(0, Qt::UserRole, l.line);
+                item->setData(0, Qt::UserRole + 1, l.column);
+                break;
+            }
+    }
+    status_->setText(report.gradable
+                         ? tr("%1 of %2 points from the checker; your instructor grades %3 more")
+                               .arg(points(report.score))
+                               .arg(points(report.maxScore))
+                               .arg(points(assignment() ? assignment()->manualPoints() : 0))
+                         : tr("the scene cannot be graded yet: fix the errors in Issues"));
+    Q_EMIT checked();
+}
+
+} // namespace fl::suite

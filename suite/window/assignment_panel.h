@@ -1,0 +1,79 @@
+#pragma once
+// The Assignment panel: pick a lab, read its instructions, and watch a live
+// checklist of its requirements as you edit — the same checker `functionlab
+// grade check` runs, on a worker thread (only the newest scene is checked;
+// the interface never waits). Each requirement says why it is met or what
+// is missing; activating one jumps to its place in the scene text.
+#include "panel.h"
+
+#include "assignment.h"
+#include "checker.h"
+
+#include <QPointer>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTextBrowser;
+class QTreeWidget;
+
+namespace fl::suite {
+
+class AssignmentPanel : public Panel {
+    Q_OBJECT
+  public:
+    // `folder`: where the assignments are (the courseware's by default).
+    explicit AssignmentPanel(QWidget* parent = nullptr, const QString& folder = {});
+    ~AssignmentPanel() override;
+
+    const courseware::Assignment* assignment() const;
+    bool choose(const QString& id); // false when there is no such assignment
+    // The last report for the newest scene (none while checking or before).
+    const std::optional<grading::CheckReport>& report() const { return report_; }
+    bool checking() const;
+
+    QTreeWidget* checklist() const { return checklist_; }
+    QTextBrowser* instructions() const { return instructions_; }
+    QLabel* status() const { return status_; }
+
+  public Q_SLOTS:
+    void sceneChanged(std::shared_ptr<const fl::scene::Scene> scene) override;
+
+  Q_SIGNALS:
+    // A requirement's place in the scene text (line and column from 1).
+    void locationActivated(int line, int column);
+    // "Start from the starter": the scene to open.
+    void starterChosen(const QString& path);
+    // A new report is shown.
+    void checked();
+
+  private:
+    void showAssignment();
+    void check(std::shared_ptr<const scene::Scene> scene);
+    void showReport(const grading::CheckReport& report);
+
+    std::vector<courseware::AssignmentLoad> assignments_;
+    int current_ = -1;
+    QComboBox* choice_;
+    QTextBrowser* instructions_;
+    QTreeWidget* checklist_;
+    QLabel* status_;
+    QPushButton* starter_;
+    std::shared_ptr<const scene::Scene> scene_;
+    std::optional<grading::CheckReport> report_;
+
+    // One check at a time on a worker; a newer scene waits as `pending_`.
+    mutable std::mutex mutex_;
+    std::thread worker_;
+    bool working_ = false;
+    std::shared_ptr<const scene::Scene> pending_;
+    std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+};
+
+} // namespace fl::suite
