@@ -169,7 +169,10 @@ BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,
     auto worker = [&] {
         for (std::size_t i = next++; i < jobs.size(); i = next++) {
             const Job& job = jobs[i];
+            const auto started = std::chrono::steady_clock::now();
             const ChildResult r = runIsolated(options.command(*job.submission), options.limits);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             GradeRecord g;
             g.student = job.submission->student;
             g.assignment = assignment.id;
@@ -185,6 +188,7 @@ BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,
             if (failure.empty() && !gradeFromCheckJson(r.out, g))
                 failure = "the checker gave no verdict (exit " + std::to_string(r.exitCode) + ")";
             std::lock_guard guard(lock);
+            summary.secondsPerSubmission.push_back(seconds);
             std::string outcome;
             if (!failure.empty()) {
                 // Recorded as not gradable: the student sees why; a run

@@ -41,7 +41,8 @@ struct BatchOptions {
 
 struct BatchSummary {
     std::size_t graded = 0, skipped = 0, notGradable = 0, failed = 0;
-    std::vector<std::string> problems; // "alice: the checker ran out of time (60 s)"
+    std::vector<std::string> problems;        // "alice: the checker ran out of time (60 s)"
+    std::vector<double> secondsPerSubmission; // wall time of each child, as it finished
 };
 
 BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,

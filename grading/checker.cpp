@@ -5,19 +5,21 @@
 
 #include "scene/scene_reader.h"
 
+#include <chrono>
 #include <filesystem>
 
 namespace fl::grading {
 namespace {
 
-RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Budget& budget) {
+RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Budget& budget,
+                           const CompareOptions& compare) {
     switch (r.kind) {
     case RequirementKind::ImplicitSurface:
     case RequirementKind::ExplicitSolid:
     case RequirementKind::Parametric:
         return checkShapeKind(view, r, budget);
     case RequirementKind::SetOperations:
-        return checkSetOperations(view, r, budget);
+        return checkSetOperations(view, r, budget, compare);
     case RequirementKind::Morphing:
         return checkMorphing(view, r, budget);
     case RequirementKind::Animation:
@@ -61,9 +63,16 @@ CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>
     CheckReport report;
     report.gradable = true;
     Budget budget{options.budget};
+    using Clock = std::chrono::steady_clock;
+    auto started = Clock::now();
     const SubmissionView view(scene, options.moments);
+    report.viewMilliseconds =
+        std::chrono::duration<double, std::milli>(Clock::now() - started).count();
     for (const Requirement& r : requirements) {
-        report.requirements.push_back(checkOne(view, r, budget));
+        started = Clock::now();
+        report.requirements.push_back(checkOne(view, r, budget, options.compare));
+        report.requirementMilliseconds.push_back(
+            std::chrono::duration<double, std::milli>(Clock::now() - started).count());
         report.score += report.requirements.back().points;
         report.maxScore += r.points;
     }

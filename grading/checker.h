@@ -4,6 +4,7 @@
 // same verdict, bit for bit — and bounded: one budget of work for the
 // whole submission, reported when it runs out, never a hang.
 #include "requirement.h"
+#include "solid_difference.h"
 
 #include "scene/scene.h"
 #include "scene/scene_diagnostic.h"
@@ -21,6 +22,8 @@ struct CheckOptions {
     // a point costs its tape's length, an interval four times that.
     std::size_t budget = 400'000'000;
     int moments = 9; // of the scene's time judged
+    // How finely solids are compared (`bench grading` varies it).
+    CompareOptions compare;
 };
 
 struct CheckReport {
@@ -29,6 +32,10 @@ struct CheckReport {
     double score = 0, maxScore = 0;
     bool budgetExceeded = false;
     std::vector<scene::SceneDiagnostic> diagnostics; // why not gradable; checker notes
+    // Wall time of each requirement's check and of showing the scene, in ms:
+    // measurements for `bench grading`, never part of a verdict or its JSON.
+    std::vector<double> requirementMilliseconds;
+    double viewMilliseconds = 0;
 };
 
 CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>& requirements,

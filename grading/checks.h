@@ -10,7 +10,7 @@ namespace fl::grading {
 
 RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& r, Budget& budget);
 RequirementResult checkSetOperations(const SubmissionView& view, const Requirement& r,
-                                     Budget& budget);
+                                     Budget& budget, const CompareOptions& compare = {});
 RequirementResult checkMorphing(const SubmissionView& view, const Requirement& r, Budget& budget);
 RequirementResult checkAnimation(const SubmissionView& view, const Requirement& r);
 RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requirement& r);

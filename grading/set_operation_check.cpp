@@ -120,7 +120,7 @@ std::string deadReason(const SubmissionView& view, const mesh::ShapeMesh& s,
 } // namespace
 
 RequirementResult checkSetOperations(const SubmissionView& view, const Requirement& r,
-                                     Budget& budget) {
+                                     Budget& budget, const CompareOptions& compare) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
     std::map<OperationKey, Found> found;
     std::vector<OperationKey> order; // as first met, for stable messages
@@ -160,7 +160,7 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
                     }))
                     continue;
                 f.judgedIn.push_back(s.field);
-                const OperationVerdict v = judgeOperation(*s.field, op, budget);
+                const OperationVerdict v = judgeOperation(*s.field, op, budget, compare);
                 if (v.counts)
                     f.live = true;
                 else if (f.why.empty())

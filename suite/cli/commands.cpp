@@ -118,6 +118,7 @@ const std::vector<Command>& commands() {
         {renderSpec, renderCommand},
         {benchEvalSpec, benchEvalCommand},
         {benchAccuracySpec, benchAccuracyCommand},
+        {benchGradingSpec, benchGradingCommand},
         {gradeCheckSpec, gradeCheckCommand},
         {gradeBatchSpec, gradeBatchCommand},
         {gradeExportSpec, gradeExportCommand},

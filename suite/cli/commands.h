@@ -18,6 +18,7 @@ const CommandSpec& meshSpec();
 const CommandSpec& renderSpec();
 const CommandSpec& benchEvalSpec();
 const CommandSpec& benchAccuracySpec();
+const CommandSpec& benchGradingSpec();
 const CommandSpec& gradeCheckSpec();
 const CommandSpec& gradeBatchSpec();
 const CommandSpec& gradeExportSpec();
@@ -30,6 +31,7 @@ int meshCommand(const Args& args);
 int renderCommand(const Args& args);
 int benchEvalCommand(const Args& args);     // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args); // `bench accuracy`
+int benchGradingCommand(const Args& args);  // `bench grading`
 int gradeCheckCommand(const Args& args);    // `grade check`
 int gradeBatchCommand(const Args& args);    // `grade batch`
 int gradeExportCommand(const Args& args);   // `grade export`

@@ -102,3 +102,14 @@ run(1 grade export --db ${OUT_DIR}/nothere.sqlite --assignment implicit-fantasie
 run(2 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
     --format excel -o ${OUT_DIR}/x.csv)
 run(1 grade batch --assignment implicit-fantasies ${OUT_DIR}/nothere --db ${OUT_DIR}/g.sqlite)
+
+# The grading benchmark runs end to end on a tiny class (figures: docs/grading.md).
+run(0 bench grading --submissions 3 --jobs 1 --work ${OUT_DIR}/bench --json)
+string(JSON n GET "${OUT}" submissions)
+if(NOT n EQUAL 3)
+  message(FATAL_ERROR "bench grading graded ${n} submissions, not 3")
+endif()
+string(JSON rows LENGTH "${OUT}" requirements)
+if(NOT rows EQUAL 8)
+  message(FATAL_ERROR "bench grading timed ${rows} requirements, not 8")
+endif()

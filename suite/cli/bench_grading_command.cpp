@@ -1,0 +1,74 @@
+// `functionlab bench grading`: a generated class graded as a batch, and what
+// the checker's time goes to (bench/grading_bench.h).
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+
+#include "grading_bench.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace fl::cli {
+
+const CommandSpec& benchGradingSpec() {
+    static const CommandSpec spec{
+        .name = "bench grading",
+        .summary = "grade a generated class of submissions; time per submission and requirement",
+        .synopsis = {"bench grading [--submissions N] [--jobs N] [--work DIR] [--json]"},
+        .description =
+            "Generates a class for implicit-fantasies — variants of the reference solution\n"
+            "(constants moved, an operation made dead, everything hidden), starters, other\n"
+            "labs' solutions, truncated files and hostile formulas — grades it as `grade\n"
+            "batch` does (isolated processes, --jobs at once), then measures in-process the\n"
+            "checker's time per requirement and, over the first 40 submissions, what the\n"
+            "solid comparison's depth costs in time and changes in verdicts.\n",
+        .options = {{.name = "submissions",
+                     .kind = OptionKind::Integer,
+                     .valueName = "N",
+                     .help = "the size of the class",
+                     .defaultValue = "200",
+                     .min = 1,
+                     .max = 100000},
+                    {.name = "jobs",
+                     .kind = OptionKind::Integer,
+                     .valueName = "N",
+                     .help = "submissions graded at once",
+                     .defaultValue = "2",
+                     .min = 1,
+                     .max = 64},
+                    {.name = "work",
+                     .kind = OptionKind::Path,
+                     .valueName = "DIR",
+                     .help = "where the class and its gradebook are written (default: a folder "
+                             "in the system's temporary directory)"},
+                    {.name = "json", .help = "print one JSON object instead of the tables"}},
+        .exitStatus = "0 measured, 1 the class could not be written or graded, 2 usage error",
+    };
+    return spec;
+}
+
+int benchGradingCommand(const Args& args) {
+    int exit = 0;
+    const auto a = parseOrExplain(benchGradingSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    bench::GradingBenchOptions o;
+    o.submissions = int(a->integer("submissions", 200));
+    o.jobs = int(a->integer("jobs", 2));
+    o.work = a->given("work")
+                 ? std::filesystem::path(a->text("work"))
+                 : std::filesystem::temp_directory_path() / "functionlab-bench-grading";
+    std::error_code ec;
+    o.functionlab = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+    try {
+        std::filesystem::create_directories(o.work);
+        const bench::GradingBenchResult r = bench::runGradingBench(o);
+        std::cout << (a->flag("json") ? bench::gradingBenchJson(r) + "\n"
+                                      : bench::gradingBenchText(r));
+    } catch (const std::exception& e) {
+        std::cerr << "functionlab bench grading: " << e.what() << "\n";
+        return kExitDiagnostic;
+    }
+    return kExitOk;
+}
+
+} // namespace fl::cli
