@@ -177,6 +177,7 @@ BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,
             g.student = job.submission->student;
             g.assignment = assignment.id;
             g.contentHash = job.hash;
+            g.path = job.submission->path.string();
             g.submittedAt = modifiedUtc(job.submission->path);
             g.hoursLate = hoursBetween(options.dueUtc, g.submittedAt);
             g.lateFactor = options.lateFactor ? options.lateFactor(g.hoursLate) : 1.0;

@@ -165,6 +165,12 @@ void Gradebook::migrate() {
         db_.execute("PRAGMA user_version = 1");
         t.commit();
     }
+    if (schemaVersion() < 2) { // 2: where each submission was found (grade similar reads it)
+        SqliteDatabase::Transaction t(db_);
+        db_.execute("ALTER TABLE submissions ADD COLUMN path TEXT NOT NULL DEFAULT ''");
+        db_.execute("PRAGMA user_version = 2");
+        t.commit();
+    }
 }
 
 std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
@@ -262,12 +268,14 @@ void Gradebook::recordGrade(const GradeRecord& g) {
     SqliteDatabase::Transaction t(db_);
     addStudent({g.student, "", ""});
     db_.prepare("INSERT INTO submissions(student_id, assignment_id, content_hash, submitted_at, "
-                "hours_late) VALUES(?1, ?2, ?3, ?4, ?5) ON CONFLICT DO NOTHING")
+                "hours_late, path) VALUES(?1, ?2, ?3, ?4, ?5, ?6) ON CONFLICT DO UPDATE SET "
+                "path = ?6")
         .bind(1, g.student)
         .bind(2, g.assignment)
         .bind(3, g.contentHash)
         .bind(4, g.submittedAt)
         .bind(5, g.hoursLate)
+        .bind(6, g.path)
         .run();
     auto find = db_.prepare("SELECT id FROM submissions WHERE student_id = ?1 AND "
                             "assignment_id = ?2 AND content_hash = ?3");
@@ -314,7 +322,8 @@ std::vector<GradeRecord> Gradebook::latestGrades(const std::string& assignment) 
     auto s = db_.prepare(
         "SELECT g.id, s.student_id, s.content_hash, s.submitted_at, s.hours_late, "
         "g.checker_version, g.rubric_hash, g.gradable, g.score, g.max_score, g.late_factor, "
-        "g.graded_at, g.diagnostics FROM grades g JOIN submissions s ON g.submission_id = s.id "
+        "g.graded_at, g.diagnostics, s.path FROM grades g JOIN submissions s ON "
+        "g.submission_id = s.id "
         "WHERE s.assignment_id = ?1 AND g.id = (SELECT MAX(g2.id) FROM grades g2 JOIN "
         "submissions s2 ON g2.submission_id = s2.id WHERE s2.student_id = s.student_id AND "
         "s2.assignment_id = ?1) ORDER BY s.student_id");
@@ -336,6 +345,7 @@ std::vector<GradeRecord> Gradebook::latestGrades(const std::string& assignment) 
         g.lateFactor = s.number(10);
         g.gradedAt = s.text(11);
         g.diagnostics = s.text(12);
+        g.path = s.text(13);
         results.bind(1, s.integer(0));
         while (results.step()) {
             RequirementResult r;

@@ -15,7 +15,7 @@
 
 namespace fl::grading {
 
-inline constexpr int kGradebookSchemaVersion = 1;
+inline constexpr int kGradebookSchemaVersion = 2;
 
 struct Student {
     std::string id; // the roster's (a login, a number); submissions are named by it
@@ -37,6 +37,7 @@ struct GradeRecord {
     std::string assignment;
     std::string contentHash; // of the submission (submission_hash.h)
     std::string submittedAt; // ISO 8601 UTC
+    std::string path;        // where the batch found it (schema 2)
     double hoursLate = 0;
     std::string checkerVersion;
     std::string rubricHash;

@@ -122,6 +122,7 @@ const std::vector<Command>& commands() {
         {gradeCheckSpec, gradeCheckCommand},
         {gradeBatchSpec, gradeBatchCommand},
         {gradeExportSpec, gradeExportCommand},
+        {gradeSimilarSpec, gradeSimilarCommand},
     };
     return all;
 }

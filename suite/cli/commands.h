@@ -22,6 +22,7 @@ const CommandSpec& benchGradingSpec();
 const CommandSpec& gradeCheckSpec();
 const CommandSpec& gradeBatchSpec();
 const CommandSpec& gradeExportSpec();
+const CommandSpec& gradeSimilarSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -35,6 +36,7 @@ int benchGradingCommand(const Args& args);  // `bench grading`
 int gradeCheckCommand(const Args& args);    // `grade check`
 int gradeBatchCommand(const Args& args);    // `grade batch`
 int gradeExportCommand(const Args& args);   // `grade export`
+int gradeSimilarCommand(const Args& args);  // `grade similar`
 
 struct Command {
     const CommandSpec& (*spec)();

@@ -97,6 +97,15 @@ run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantas
     --format gradescope -o ${OUT_DIR}/gradescope)
 file(READ ${OUT_DIR}/gradescope/dana/results.json results)
 expect_json_equal("${results}" "100" score)
+# alice and dana handed in the same solution; bob the starter, which is subtracted.
+run(0 grade similar --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies --json)
+expect_json_equal("${OUT}" "alice" 0 first)
+expect_json_equal("${OUT}" "dana" 0 second)
+expect_json_equal("${OUT}" "1" 0 similarity)
+string(JSON pairs LENGTH "${OUT}")
+if(NOT pairs EQUAL 1)
+  message(FATAL_ERROR "grade similar found ${pairs} pairs, not 1: ${OUT}")
+endif()
 run(1 grade export --db ${OUT_DIR}/nothere.sqlite --assignment implicit-fantasies
     --format csv -o ${OUT_DIR}/x.csv)
 run(2 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies
