@@ -160,3 +160,23 @@ TEST(GradeExport, FormulasAreEscapedAndQuotesDoubled) {
     EXPECT_NE(text.str().find("\"score\": 50"), std::string::npos) << text.str();
     EXPECT_NE(text.str().find("\"name\": \"implicit\""), std::string::npos);
 }
+
+// A gradebook written by schema 1 (no submission paths) is migrated on open,
+// its grades kept.
+TEST(Gradebook, SchemaOneIsMigrated) {
+    const std::string path = freshPath("migrate");
+    {
+        Gradebook book(path);
+        book.registerAssignment(lab());
+        book.recordGrade(grade("ann", "h", 70));
+    }
+    // Back to what schema 1 wrote: no path column, user_version 1.
+    raw(path, "ALTER TABLE submissions DROP COLUMN path; PRAGMA user_version = 1");
+    Gradebook book(path);
+    EXPECT_EQ(book.schemaVersion(), 2);
+    const auto grades = book.latestGrades("lab");
+    ASSERT_EQ(grades.size(), 1u);
+    EXPECT_EQ(grades[0].score, 70);
+    EXPECT_EQ(grades[0].path, "");
+    EXPECT_TRUE(book.verifyChain().intact);
+}
