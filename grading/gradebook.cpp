@@ -244,6 +244,15 @@ void Gradebook::registerAssignment(const AssignmentRecord& a) {
         .run();
 }
 
+std::vector<AssignmentRecord> Gradebook::assignments() {
+    std::vector<AssignmentRecord> out;
+    auto s = db_.prepare("SELECT id, title, max_automatic, max_manual, rubric_hash, due FROM "
+                         "assignments ORDER BY id");
+    while (s.step())
+        out.push_back({s.text(0), s.text(1), s.number(2), s.number(3), s.text(4), s.text(5)});
+    return out;
+}
+
 bool Gradebook::hasGrade(const std::string& student, const std::string& assignment,
                          const std::string& contentHash, const std::string& checkerVersion,
                          const std::string& rubricHash) {
@@ -384,6 +393,17 @@ double Gradebook::manualPoints(const std::string& student, const std::string& as
                          "?1 AND assignment_id = ?2");
     s.bind(1, student).bind(2, assignment);
     return s.step() ? s.number(0) : 0;
+}
+
+std::vector<ManualScore> Gradebook::manualScores(const std::string& student,
+                                                 const std::string& assignment) {
+    std::vector<ManualScore> out;
+    auto s = db_.prepare("SELECT item_id, points, comment, grader, at FROM manual_scores WHERE "
+                         "student_id = ?1 AND assignment_id = ?2 ORDER BY item_id");
+    s.bind(1, student).bind(2, assignment);
+    while (s.step())
+        out.push_back({s.text(0), s.number(1), s.text(2), s.text(3), s.text(4)});
+    return out;
 }
 
 void Gradebook::addOverride(const std::string& student, const std::string& assignment, double score,

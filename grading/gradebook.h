@@ -49,6 +49,14 @@ struct GradeRecord {
     std::string diagnostics; // why not gradable, as text
 };
 
+struct ManualScore {
+    std::string item;
+    double points = 0;
+    std::string comment;
+    std::string grader;
+    std::string at;
+};
+
 struct RosterProblem {
     int line = 0;
     std::string message;
@@ -67,6 +75,7 @@ class Gradebook {
     std::vector<Student> students();
 
     void registerAssignment(const AssignmentRecord& a);
+    std::vector<AssignmentRecord> assignments();
 
     // Already graded: this student's submission with this content, by this
     // checker against this rubric (a batch run again skips it).
@@ -83,6 +92,8 @@ class Gradebook {
                         const std::string& grader);
     // Manual points per student for the assignment.
     double manualPoints(const std::string& student, const std::string& assignment);
+    std::vector<ManualScore> manualScores(const std::string& student,
+                                          const std::string& assignment);
     void addOverride(const std::string& student, const std::string& assignment, double score,
                      const std::string& who, const std::string& why);
     std::optional<double> overrideScore(const std::string& student, const std::string& assignment);

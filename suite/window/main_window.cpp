@@ -5,6 +5,7 @@
 #include "examples.h"
 #include "examples_dock.h"
 #include "find_bar.h"
+#include "grading_panel.h"
 #include "hand_in.h"
 #include "issues_dock.h"
 #include "level_of_detail_control.h"
@@ -243,6 +244,9 @@ void MainWindow::buildMenus() {
     file->addAction(tr("Export &Image…"), this, &MainWindow::exportImage);
     file->addSeparator();
     file->addAction(tr("&Hand In…"), this, &MainWindow::handInDialog);
+    QMenu* course = menuBar()->addMenu(tr("&Course"));
+    course->addAction(tr("Open &Gradebook…"), this, &MainWindow::gradebookDialog);
+    course->addAction(tr("&Export Grades…"), this, &MainWindow::exportGradesDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -663,6 +667,56 @@ bool MainWindow::handIn(const QString& folder) {
                                                 .arg(done.problems.size())
                                                 .arg(QString::fromStdString(done.problems[0]))));
     return true;
+}
+
+bool MainWindow::openGradebook(const QString& path, QString* error) {
+    if (!grading_) {
+        grading_ = addPanel(new GradingPanel);
+        connect(grading_, &GradingPanel::openSubmission, this, [this](const QString& where) {
+            QString file = where;
+            if (QFileInfo(where).isDir()) // a folder submission: the scene at its top
+                for (const QFileInfo& f : QDir(where).entryInfoList(QDir::Files, QDir::Name))
+                    if (f.fileName().contains(QStringLiteral(".x3d")) ||
+                        f.fileName().contains(QStringLiteral(".wrl")))
+                        file = f.filePath();
+            if (maybeKeepChanges()) openFile(file);
+        });
+    }
+    QString why;
+    if (!grading_->openGradebook(path, {}, &why)) {
+        problem(tr("Cannot open the gradebook %1: %2").arg(path, why));
+        if (error) *error = why;
+        return false;
+    }
+    grading_->show();
+    grading_->raise();
+    return true;
+}
+
+void MainWindow::gradebookDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open a gradebook"), QString(),
+                                                      tr("Gradebooks (*.sqlite *.db);;All (*)"));
+    if (!path.isEmpty()) openGradebook(path);
+}
+
+void MainWindow::exportGradesDialog() {
+    if (!grading_) {
+        problem(tr("Open a gradebook first (Course → Open Gradebook)."));
+        return;
+    }
+    QString filter;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export grades"), QString(),
+        tr("Canvas CSV (*.csv);;Moodle CSV (*.csv);;Full CSV (*.csv);;Gradescope folder (*)"),
+        &filter);
+    if (path.isEmpty()) return;
+    const grading::ExportFormat format =
+        filter.startsWith(QStringLiteral("Canvas"))       ? grading::ExportFormat::Canvas
+        : filter.startsWith(QStringLiteral("Moodle"))     ? grading::ExportFormat::Moodle
+        : filter.startsWith(QStringLiteral("Gradescope")) ? grading::ExportFormat::Gradescope
+                                                          : grading::ExportFormat::Csv;
+    QString why;
+    if (!grading_->exportTo(path, format, &why)) problem(tr("Not exported: %1").arg(why));
 }
 
 } // namespace fl::suite

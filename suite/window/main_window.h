@@ -42,6 +42,7 @@ class Panel;
 class ParametersDock;
 class SceneTreeDock;
 class AssignmentPanel;
+class GradingPanel;
 class TimelineBar;
 class ViewpointBox;
 
@@ -77,6 +78,9 @@ class MainWindow : public QMainWindow {
     QListWidget* examples() const;
     const viewer::LevelOfDetail& levelOfDetail() const { return *lod_; }
     AssignmentPanel* assignmentPanel() const { return assignment_; }
+    // The instructor's grading panel (made when a gradebook is first opened).
+    GradingPanel* gradingPanel() const { return grading_; }
+    bool openGradebook(const QString& path, QString* error = nullptr);
     // File → Hand in: checks once more, then packs the scene and the files
     // it uses into `folder` (a new one). False, with lastProblem(), if not.
     bool handIn(const QString& folder);
@@ -105,6 +109,8 @@ class MainWindow : public QMainWindow {
     void exportMesh();
     void exportImage();
     void handInDialog();
+    void gradebookDialog();
+    void exportGradesDialog();
     bool maybeKeepChanges(); // false: the user cancelled
     void problem(const QString& text);
     void setPath(const QString& path);
@@ -129,6 +135,7 @@ class MainWindow : public QMainWindow {
     ExamplesDock* examples_ = nullptr;
     ParametersDock* parameters_ = nullptr;
     AssignmentPanel* assignment_ = nullptr;
+    GradingPanel* grading_ = nullptr;
     bool textParses_ = true; // the editor's text, as last parsed, has no errors
     ViewpointBox* viewpoints_;
     QAction *examineAction_ = nullptr, *walkAction_ = nullptr;

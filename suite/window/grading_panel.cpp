@@ -1,0 +1,306 @@
+#include "grading_panel.h"
+
+#include "catalogue.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace fl::suite {
+namespace {
+
+QString number(double v) {
+    return QString::number(v, 'g', 6);
+}
+
+QString graderName() {
+    const char* user = std::getenv("USER");
+    return user && *user ? QString::fromUtf8(user) : QStringLiteral("instructor");
+}
+
+} // namespace
+
+GradingPanel::GradingPanel(QWidget* parent)
+    : Panel(tr("Grading"), QStringLiteral("grading"), Qt::BottomDockWidgetArea, parent),
+      assignments_(new QComboBox), table_(new QTableWidget), evidence_(new QTextBrowser),
+      rubric_(new QFormLayout), rubricBox_(new QWidget), override_(new QDoubleSpinBox),
+      overrideWhy_(new QLineEdit), summary_(new QLabel) {
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    auto* top = new QHBoxLayout;
+    top->addWidget(new QLabel(tr("Assignment:")));
+    top->addWidget(assignments_, 1);
+    top->addWidget(summary_, 2);
+    layout->addLayout(top);
+    auto* split = new QSplitter;
+    split->addWidget(table_);
+    auto* details = new QWidget;
+    auto* detailsLayout = new QVBoxLayout(details);
+    detailsLayout->addWidget(evidence_, 2);
+    rubricBox_->setLayout(rubric_);
+    detailsLayout->addWidget(rubricBox_);
+    auto* save = new QPushButton(tr("Save rubric scores"));
+    detailsLayout->addWidget(save);
+    auto* overrideRow = new QHBoxLayout;
+    override_->setRange(0, 1e6);
+    override_->setDecimals(2);
+    overrideWhy_->setPlaceholderText(tr("why (kept with the override)"));
+    overrideRow->addWidget(new QLabel(tr("Override:")));
+    overrideRow->addWidget(override_);
+    overrideRow->addWidget(overrideWhy_, 1);
+    auto* setOverride = new QPushButton(tr("Set"));
+    overrideRow->addWidget(setOverride);
+    detailsLayout->addLayout(overrideRow);
+    auto* open = new QPushButton(tr("Open the submission in the viewer"));
+    detailsLayout->addWidget(open);
+    split->addWidget(details);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    layout->addWidget(split, 1);
+    setWidget(box);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->verticalHeader()->hide();
+
+    connect(assignments_, &QComboBox::currentIndexChanged, this, [this] { fillTable(); });
+    connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
+        const auto rows = table_->selectionModel()->selectedRows();
+        student_ = rows.isEmpty() ? QString() : table_->item(rows.front().row(), 0)->text();
+        showStudent();
+    });
+    connect(save, &QPushButton::clicked, this, [this] { saveManualScores(); });
+    connect(setOverride, &QPushButton::clicked, this, [this] { saveOverride(); });
+    connect(open, &QPushButton::clicked, this, [this] {
+        if (const grading::GradeRecord* g = gradeOf(student_); g && !g->path.empty())
+            Q_EMIT openSubmission(QString::fromStdString(g->path));
+    });
+}
+
+bool GradingPanel::openGradebook(const QString& path, const QString& assignmentId, QString* error) {
+    try {
+        book_ = std::make_unique<grading::Gradebook>(path.toStdString());
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    const QSignalBlocker quiet(assignments_);
+    assignments_->clear();
+    for (const grading::AssignmentRecord& a : book_->assignments())
+        assignments_->addItem(QString::fromStdString(a.title), QString::fromStdString(a.id));
+    if (assignments_->count() == 0) {
+        if (error) *error = tr("the gradebook has no assignment yet: run functionlab grade batch");
+        return false;
+    }
+    const int at = assignmentId.isEmpty() ? 0 : assignments_->findData(assignmentId);
+    assignments_->setCurrentIndex(std::max(0, at));
+    fillTable();
+    return true;
+}
+
+const grading::GradeRecord* GradingPanel::gradeOf(const QString& student) const {
+    for (const grading::GradeRecord& g : grades_)
+        if (QString::fromStdString(g.student) == student) return &g;
+    return nullptr;
+}
+
+void GradingPanel::fillTable() {
+    if (!book_) return;
+    const std::string id = assignments_->currentData().toString().toStdString();
+    for (const grading::AssignmentRecord& a : book_->assignments())
+        if (a.id == id) record_ = a;
+    const courseware::AssignmentLoad load = courseware::findAssignment(id);
+    assignment_ = load.assignment;
+    grades_ = book_->latestGrades(id);
+    std::vector<std::string> requirementIds;
+    if (assignment_)
+        for (const grading::Requirement& r : assignment_->requirements)
+            requirementIds.push_back(r.id);
+    else if (!grades_.empty())
+        for (const grading::RequirementResult& r : grades_.front().requirements)
+            requirementIds.push_back(r.id);
+    QStringList headers{tr("student"), tr("name")};
+    for (const std::string& r : requirementIds)
+        headers << QString::fromStdString(r);
+    headers << tr("automatic") << tr("late") << tr("manual") << tr("override") << tr("final");
+    table_->clear();
+    table_->setColumnCount(int(headers.size()));
+    table_->setHorizontalHeaderLabels(headers);
+    table_->setRowCount(int(grades_.size()));
+    std::map<std::string, grading::Student> names;
+    for (grading::Student& s : book_->students())
+        names[s.id] = std::move(s);
+    double sum = 0;
+    for (std::size_t row = 0; row < grades_.size(); ++row) {
+        const grading::GradeRecord& g = grades_[row];
+        int column = 0;
+        auto cell = [&](const QString& text, const QString& tip = {}) {
+            auto* item = new QTableWidgetItem(text);
+            item->setToolTip(tip);
+            table_->setItem(int(row), column++, item);
+            return item;
+        };
+        cell(QString::fromStdString(g.student));
+        cell(QString::fromStdString(names.count(g.student) ? names.at(g.student).name : ""));
+        for (const std::string& id : requirementIds) {
+            const grading::RequirementResult* found = nullptr;
+            for (const auto& r : g.requirements)
+                if (r.id == id) found = &r;
+            QTableWidgetItem* item =
+                cell(found ? (found->met ? QStringLiteral("✔ ") : QStringLiteral("✘ ")) +
+                                 number(found->points)
+                           : QStringLiteral("–"),
+                     found ? QString::fromStdString(found->evidence) : QString());
+            if (found)
+                item->setForeground(found->met ? QColor(0x2e, 0x7d, 0x32)
+                                               : QColor(0xc6, 0x28, 0x28));
+        }
+        cell(g.gradable ? number(g.score) : tr("not gradable"),
+             QString::fromStdString(g.diagnostics));
+        cell(g.lateFactor < 1 ? QStringLiteral("×") + number(g.lateFactor) : QString());
+        cell(number(book_->manualPoints(g.student, g.assignment)));
+        const auto o = book_->overrideScore(g.student, g.assignment);
+        cell(o ? number(*o) : QString());
+        const double final = book_->finalScore(g);
+        sum += final;
+        cell(number(final));
+    }
+    table_->resizeColumnsToContents();
+    summary_->setText(
+        tr("%1 students; mean final score %2 of %3")
+            .arg(grades_.size())
+            .arg(grades_.empty() ? QStringLiteral("–") : number(sum / double(grades_.size())))
+            .arg(number(record_.maxAutomatic + record_.maxManual)));
+    if (!student_.isEmpty()) selectStudent(student_);
+    showStudent();
+}
+
+void GradingPanel::selectStudent(const QString& id) {
+    for (int row = 0; row < table_->rowCount(); ++row)
+        if (table_->item(row, 0)->text() == id) {
+            table_->selectRow(row);
+            student_ = id;
+            showStudent();
+            return;
+        }
+}
+
+void GradingPanel::showStudent() {
+    // Rebuild the rubric editors for this student.
+    while (rubric_->rowCount() > 0)
+        rubric_->removeRow(0);
+    editors_.clear();
+    const grading::GradeRecord* g = gradeOf(student_);
+    if (!g || !book_) {
+        evidence_->setPlainText(tr("Select a student."));
+        return;
+    }
+    QString text =
+        QStringLiteral("<b>%1</b> — submitted %2, graded %3 by checker %4<br/>")
+            .arg(student_.toHtmlEscaped(), QString::fromStdString(g->submittedAt),
+                 QString::fromStdString(g->gradedAt), QString::fromStdString(g->checkerVersion));
+    if (!g->gradable)
+        text += QStringLiteral("<p style='color:#c62828'>%1</p>")
+                    .arg(QString::fromStdString(g->diagnostics).toHtmlEscaped());
+    for (const grading::RequirementResult& r : g->requirements)
+        text += QStringLiteral("<p><b style='color:%1'>%2 %3</b> (%4/%5): %6</p>")
+                    .arg(r.met ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"),
+                         r.met ? QStringLiteral("✔") : QStringLiteral("✘"),
+                         QString::fromStdString(r.id), number(r.points), number(r.maxPoints),
+                         QString::fromStdString(r.evidence).toHtmlEscaped());
+    evidence_->setHtml(text);
+    const auto scores = book_->manualScores(g->student, g->assignment);
+    if (assignment_)
+        for (const courseware::RubricItem& item : assignment_->rubric) {
+            auto* points = new QDoubleSpinBox;
+            points->setRange(0, item.points);
+            points->setDecimals(1);
+            auto* comment = new QLineEdit;
+            comment->setPlaceholderText(tr("comment for the student"));
+            for (const grading::ManualScore& s : scores)
+                if (s.item == item.id) {
+                    points->setValue(s.points);
+                    comment->setText(QString::fromStdString(s.comment));
+                }
+            auto* row = new QWidget;
+            auto* rowLayout = new QHBoxLayout(row);
+            rowLayout->setContentsMargins(0, 0, 0, 0);
+            rowLayout->addWidget(points);
+            rowLayout->addWidget(comment, 1);
+            rubric_->addRow(QStringLiteral("%1 (of %2)")
+                                .arg(QString::fromStdString(item.id), number(item.points)),
+                            row);
+            row->setToolTip(QString::fromStdString(item.description));
+            editors_.push_back({QString::fromStdString(item.id), points, comment});
+        }
+    const auto o = book_->overrideScore(g->student, g->assignment);
+    override_->setValue(o.value_or(0));
+}
+
+QDoubleSpinBox* GradingPanel::rubricPoints(const QString& item) const {
+    for (const RubricEditor& e : editors_)
+        if (e.item == item) return e.points;
+    return nullptr;
+}
+
+QLineEdit* GradingPanel::rubricComment(const QString& item) const {
+    for (const RubricEditor& e : editors_)
+        if (e.item == item) return e.comment;
+    return nullptr;
+}
+
+void GradingPanel::saveManualScores() {
+    const grading::GradeRecord* g = gradeOf(student_);
+    if (!g || !book_) return;
+    for (const RubricEditor& e : editors_)
+        book_->setManualScore(g->student, g->assignment, e.item.toStdString(), e.points->value(),
+                              e.comment->text().toStdString(), graderName().toStdString());
+    fillTable();
+}
+
+bool GradingPanel::saveOverride(QString* error) {
+    const grading::GradeRecord* g = gradeOf(student_);
+    if (!g || !book_) return false;
+    if (overrideWhy_->text().trimmed().isEmpty()) {
+        if (error) *error = tr("an override needs a reason");
+        overrideWhy_->setFocus();
+        return false;
+    }
+    book_->addOverride(g->student, g->assignment, override_->value(), graderName().toStdString(),
+                       overrideWhy_->text().toStdString());
+    overrideWhy_->clear();
+    fillTable();
+    return true;
+}
+
+bool GradingPanel::exportTo(const QString& path, grading::ExportFormat format, QString* error) {
+    if (!book_) return false;
+    try {
+        if (format == grading::ExportFormat::Gradescope) {
+            grading::exportGradescope(*book_, record_, path.toStdString());
+            return true;
+        }
+        std::ofstream out(path.toStdString(), std::ios::binary);
+        out << grading::exportCsvText(*book_, record_, format);
+        if (!out) throw std::runtime_error("cannot write " + path.toStdString());
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    return true;
+}
+
+} // namespace fl::suite

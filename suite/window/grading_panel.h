@@ -1,0 +1,81 @@
+#pragma once
+// The instructor's Grading panel: a class's gradebook as a table — students
+// by requirements, automatic, manual, override and final scores — and, for
+// the selected student, each requirement's evidence, the rubric items to
+// score with comments, an override with its reason, and the submission to
+// open in the viewer. Everything is written to the SQLite gradebook as it
+// is entered (a batch may write beside it: WAL); exports from the same file.
+#include "panel.h"
+
+#include "assignment.h"
+#include "grade_export.h"
+#include "gradebook.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QLineEdit;
+class QTableWidget;
+class QTextBrowser;
+
+namespace fl::suite {
+
+class GradingPanel : public Panel {
+    Q_OBJECT
+  public:
+    explicit GradingPanel(QWidget* parent = nullptr);
+
+    // Opens a gradebook and shows `assignmentId` (or its first assignment).
+    // False, with `error`, when it cannot be read.
+    bool openGradebook(const QString& path, const QString& assignmentId = {},
+                       QString* error = nullptr);
+    QTableWidget* table() const { return table_; }
+    // The student whose details are shown (empty: none selected).
+    QString selectedStudent() const { return student_; }
+    void selectStudent(const QString& id);
+    // The details' editors: one per rubric item, and the override.
+    QDoubleSpinBox* rubricPoints(const QString& item) const;
+    QLineEdit* rubricComment(const QString& item) const;
+    QDoubleSpinBox* overrideScore() const { return override_; }
+    QLineEdit* overrideReason() const { return overrideWhy_; }
+    // Writes what the editors hold for the selected student.
+    void saveManualScores();
+    bool saveOverride(QString* error = nullptr);
+    bool exportTo(const QString& path, grading::ExportFormat format, QString* error = nullptr);
+
+  Q_SIGNALS:
+    void openSubmission(const QString& path);
+
+  private:
+    void fillTable();
+    void showStudent();
+    const grading::GradeRecord* gradeOf(const QString& student) const;
+
+    std::unique_ptr<grading::Gradebook> book_;
+    std::optional<courseware::Assignment> assignment_; // from the courseware, when found
+    grading::AssignmentRecord record_;
+    std::vector<grading::GradeRecord> grades_;
+    QString student_;
+
+    QComboBox* assignments_;
+    QTableWidget* table_;
+    QTextBrowser* evidence_;
+    QFormLayout* rubric_;
+    QWidget* rubricBox_;
+    QDoubleSpinBox* override_;
+    QLineEdit* overrideWhy_;
+    QLabel* summary_;
+    struct RubricEditor {
+        QString item;
+        QDoubleSpinBox* points;
+        QLineEdit* comment;
+    };
+    std::vector<RubricEditor> editors_;
+};
+
+} // namespace fl::suite
