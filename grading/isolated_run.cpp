@@ -64,7 +64,7 @@ ChildResult runIsolated(const std::vector<std::string>& command, const Isolation
         if (null >= 0) ::dup2(null, 0);
         limit(RLIMIT_CPU, rlim_t(std::ceil(limits.cpuSeconds)));
         limit(RLIMIT_AS, rlim_t(limits.memoryBytes));
-        limit(RLIMIT_FSIZE, 0); // writes no files
+        limit(RLIMIT_FSIZE, rlim_t(limits.fileBytes)); // 0: writes no files
         limit(RLIMIT_CORE, 0);
         if (limits.noNetwork && bwrap.empty()) {
             // Without bubblewrap: a network namespace of its own, if allowed.

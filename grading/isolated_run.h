@@ -15,6 +15,7 @@ struct IsolationLimits {
     std::size_t memoryBytes = std::size_t(2) << 30;
     double wallSeconds = 60;
     std::size_t outputBytes = std::size_t(8) << 20; // stdout and stderr each
+    std::size_t fileBytes = 0;                      // the largest file it may write (0: none)
     bool noNetwork = true;
 };
 

@@ -7,9 +7,7 @@
 #include <cmath>
 
 namespace fl::grading {
-namespace {
 
-// The longest cycle of anything timed in the scene: the span judged.
 double longestCycle(const scene::Scene& scene) {
     double longest = 0;
     for (const scene::Scene* s : scene::scenesShownBy(scene))
@@ -20,8 +18,6 @@ double longestCycle(const scene::Scene& scene) {
         });
     return std::clamp(longest, 0.0, 600.0);
 }
-
-} // namespace
 
 SubmissionView::SubmissionView(const scene::Scene& scene, int moments)
     : scene_(scene), lines_(scene) {

@@ -49,6 +49,10 @@ class SubmissionView {
     mutable scene::LineIndexes lines_;
 };
 
+// The longest cycleInterval of anything timed in the scene (0: none), at most
+// 600 s: the span of time a checker or a report looks at.
+double longestCycle(const scene::Scene& scene);
+
 // A formula shortened for a message: one line, at most `limit` characters.
 std::string shortened(std::string text, std::size_t limit = 60);
 

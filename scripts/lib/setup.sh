@@ -83,7 +83,9 @@ install_missing_packages() {
 # npm, pinned by tests/interop/package-lock.json and installed under
 # $BUILD_DIR/interop-tools. A tool that cannot be installed is reported and
 # its tests skip, saying so; the rest of the suite does not depend on them.
-TEST_TOOL_PACKAGES=(view3dscene assimp-utils)
+# view3dscene and assimp open our exports (tests/interop); chromium shows the
+# grading reports as a student's browser would (tests/cli, grade report).
+TEST_TOOL_PACKAGES=(view3dscene assimp-utils chromium)
 
 install_test_tools() {
   command -v dpkg-query >/dev/null 2>&1 || { log "not Debian: interop tools not installed"; return 0; }

@@ -123,6 +123,7 @@ const std::vector<Command>& commands() {
         {gradeBatchSpec, gradeBatchCommand},
         {gradeExportSpec, gradeExportCommand},
         {gradeSimilarSpec, gradeSimilarCommand},
+        {gradeReportSpec, gradeReportCommand},
     };
     return all;
 }

@@ -23,6 +23,7 @@ const CommandSpec& gradeCheckSpec();
 const CommandSpec& gradeBatchSpec();
 const CommandSpec& gradeExportSpec();
 const CommandSpec& gradeSimilarSpec();
+const CommandSpec& gradeReportSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -37,6 +38,7 @@ int gradeCheckCommand(const Args& args);    // `grade check`
 int gradeBatchCommand(const Args& args);    // `grade batch`
 int gradeExportCommand(const Args& args);   // `grade export`
 int gradeSimilarCommand(const Args& args);  // `grade similar`
+int gradeReportCommand(const Args& args);   // `grade report`
 
 struct Command {
     const CommandSpec& (*spec)();
