@@ -34,28 +34,6 @@ RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Bud
     return {r.id, r.kind, false, 0, r.points, "unknown requirement", {}};
 }
 
-// The scene file a submission folder holds: the one scene at its top.
-std::string sceneIn(const std::filesystem::path& folder, std::string& problem) {
-    std::vector<std::filesystem::path> scenes;
-    std::error_code ec;
-    for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
-        const std::string name = e.path().filename().string();
-        for (const char* ext :
-             {".x3d", ".x3dv", ".wrl", ".x3d.gz", ".x3dv.gz", ".wrl.gz", ".x3dz", ".x3dvz", ".wrz"})
-            if (name.size() > std::string(ext).size() && name.ends_with(ext) &&
-                e.is_regular_file(ec))
-                scenes.push_back(e.path());
-    }
-    std::sort(scenes.begin(), scenes.end());
-    scenes.erase(std::unique(scenes.begin(), scenes.end()), scenes.end());
-    if (scenes.size() == 1) return scenes.front().string();
-    problem = scenes.empty() ? "the folder holds no scene file (.x3d, .x3dv, .wrl or their gzip "
-                               "forms)"
-                             : "the folder holds " + std::to_string(scenes.size()) +
-                                   " scene files; a submission has one at its top";
-    return {};
-}
-
 } // namespace
 
 CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>& requirements,
@@ -89,11 +67,34 @@ CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>
     return report;
 }
 
+std::string sceneFileOf(const std::filesystem::path& submission, std::string* problem) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(submission, ec)) return submission.string();
+    const std::filesystem::path& folder = submission;
+    std::vector<std::filesystem::path> scenes;
+    for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = e.path().filename().string();
+        for (const char* ext :
+             {".x3d", ".x3dv", ".wrl", ".x3d.gz", ".x3dv.gz", ".wrl.gz", ".x3dz", ".x3dvz", ".wrz"})
+            if (name.size() > std::string(ext).size() && name.ends_with(ext) &&
+                e.is_regular_file(ec))
+                scenes.push_back(e.path());
+    }
+    std::sort(scenes.begin(), scenes.end());
+    scenes.erase(std::unique(scenes.begin(), scenes.end()), scenes.end());
+    if (scenes.size() == 1) return scenes.front().string();
+    if (!problem) return {};
+    *problem = scenes.empty() ? "the folder holds no scene file (.x3d, .x3dv, .wrl or their gzip "
+                                "forms)"
+                              : "the folder holds " + std::to_string(scenes.size()) +
+                                    " scene files; a submission has one at its top";
+    return {};
+}
+
 CheckReport checkSubmission(const std::string& path, const std::vector<Requirement>& requirements,
                             const CheckOptions& options) {
-    std::string file = path, problem;
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) file = sceneIn(path, problem);
+    std::string problem;
+    const std::string file = sceneFileOf(path, &problem);
     CheckReport report;
     if (file.empty()) {
         report.diagnostics.push_back({scene::Severity::Error, path, {1, 1}, problem, {}});

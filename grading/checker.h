@@ -9,6 +9,7 @@
 #include "scene/scene.h"
 #include "scene/scene_diagnostic.h"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,11 @@ struct CheckReport {
 
 CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>& requirements,
                        const CheckOptions& options = {});
+
+// The scene file of a submission: the file itself, or the one scene at the
+// top of a submission folder (none, with `problem`, when there is none or
+// more than one).
+std::string sceneFileOf(const std::filesystem::path& submission, std::string* problem = nullptr);
 
 // A scene file (gzip forms too) or a folder holding one: read, then checked.
 CheckReport checkSubmission(const std::string& path, const std::vector<Requirement>& requirements,

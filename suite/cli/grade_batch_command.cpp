@@ -3,6 +3,7 @@
 // `functionlab grade check` in its own isolated child process.
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/grade_options.h"
 #include "cli/json.h"
 
 #include "batch_grading.h"
@@ -41,14 +42,8 @@ const CommandSpec& gradeBatchSpec() {
             "finished result, and a batch run again skips submissions already graded with\n"
             "the same content, checker version and rubric.\n",
         .positionals = {{.name = "DIR", .help = "the folder of submissions"}},
-        .options = {{.name = "assignment",
-                     .kind = OptionKind::Text,
-                     .valueName = "ID|DIR",
-                     .help = "the assignment: an id or the folder of its manifest.json"},
-                    {.name = "db",
-                     .kind = OptionKind::Path,
-                     .valueName = "GRADEBOOK.sqlite",
-                     .help = "the gradebook (created when missing)"},
+        .options = {assignmentOption(),
+                    gradebookOption("the gradebook (created when missing)"),
                     {.name = "jobs",
                      .kind = OptionKind::Integer,
                      .valueName = "N",
@@ -84,11 +79,8 @@ int gradeBatchCommand(const Args& args) {
     if (!a) return exit;
     if (!a->given("assignment") || !a->given("db"))
         return usageError(gradeBatchSpec(), "--assignment and --db are required", std::cerr);
-    const courseware::AssignmentLoad load = courseware::findAssignment(a->text("assignment"));
-    for (const auto& d : load.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!load.assignment) return kExitDiagnostic;
-    const courseware::Assignment& assignment = *load.assignment;
+    const auto assignment = assignmentOrExplain(a->text("assignment"), std::cerr);
+    if (!assignment) return kExitDiagnostic;
     const std::filesystem::path folder = a->positional("DIR");
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec)) {
@@ -118,10 +110,10 @@ int gradeBatchCommand(const Args& args) {
         o.limits.wallSeconds = a->number("time-limit", 60);
         o.limits.cpuSeconds = o.limits.wallSeconds / 2;
         o.checkerVersion = grading::kCheckerVersion;
-        o.dueUtc = assignment.due.value_or("");
-        o.lateFactor = [&](double hours) { return assignment.late.factor(hours); };
+        o.dueUtc = assignment->due.value_or("");
+        o.lateFactor = [&](double hours) { return assignment->late.factor(hours); };
         const std::string self = selfExecutable();
-        const std::string manifestFolder = assignment.folder.string();
+        const std::string manifestFolder = assignment->folder.string();
         o.command = [&](const grading::BatchSubmission& s) {
             return std::vector<std::string>{
                 self, "grade", "check", "--assignment", manifestFolder, s.path.string(), "--json"};
@@ -134,7 +126,7 @@ int gradeBatchCommand(const Args& args) {
                           << outcome << std::flush;
         };
         const grading::BatchSummary summary =
-            grading::gradeBatch(book, assignment.record(), submissions, o);
+            grading::gradeBatch(book, assignment->record(), submissions, o);
         if (terminal) std::cerr << "\n";
         for (const std::string& p : summary.problems)
             std::cerr << "functionlab grade batch: " << p << "\n";

@@ -4,6 +4,7 @@
 // (docs/grading.md).
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/grade_options.h"
 #include "cli/json.h"
 #include "cli/scene_diagnostic_json.h"
 
@@ -92,11 +93,7 @@ const CommandSpec& gradeCheckSpec() {
                        "change the result does not count — with the evidence for it or the\n"
                        "reason it is not met, located as FILE:LINE:COL.\n",
         .positionals = {{.name = "SUBMISSION", .help = "a scene file or a folder holding one"}},
-        .options = {{.name = "assignment",
-                     .kind = OptionKind::Text,
-                     .valueName = "ID|DIR",
-                     .help = "the assignment: an id of courseware/assignments (implicit-fantasies) "
-                             "or the folder of its manifest.json"},
+        .options = {assignmentOption(),
                     {.name = "json",
                      .help =
                          "print exactly one JSON object: {\"assignment\", \"gradable\", \"score\", "

@@ -2,6 +2,7 @@
 // canvas|moodle|gradescope|csv -o OUT`: a class's grades for an LMS.
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/grade_options.h"
 
 #include "catalogue.h"
 #include "grade_export.h"
@@ -25,14 +26,8 @@ const CommandSpec& gradeExportSpec() {
             "folder OUT/STUDENT/results.json in the autograder's format, one test per\n"
             "requirement; csv: every figure and requirement. Cells a spreadsheet would run\n"
             "as formulas are escaped.\n",
-        .options = {{.name = "db",
-                     .kind = OptionKind::Path,
-                     .valueName = "GRADEBOOK.sqlite",
-                     .help = "the gradebook"},
-                    {.name = "assignment",
-                     .kind = OptionKind::Text,
-                     .valueName = "ID|DIR",
-                     .help = "the assignment: an id or the folder of its manifest.json"},
+        .options = {gradebookOption("the gradebook"),
+                    assignmentOption(),
                     {.name = "format",
                      .kind = OptionKind::Choice,
                      .valueName = "FORMAT",
@@ -56,19 +51,13 @@ int gradeExportCommand(const Args& args) {
     if (!a->given("db") || !a->given("assignment") || !a->given("format") || !a->given("output"))
         return usageError(gradeExportSpec(), "--db, --assignment, --format and -o are required",
                           std::cerr);
-    const courseware::AssignmentLoad load = courseware::findAssignment(a->text("assignment"));
-    for (const auto& d : load.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!load.assignment) return kExitDiagnostic;
+    const auto assignment = assignmentOrExplain(a->text("assignment"), std::cerr);
+    if (!assignment) return kExitDiagnostic;
     const std::string db = a->text("db"), out = a->text("output"), format = a->text("format");
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(db, ec)) {
-        std::cerr << "functionlab grade export: no gradebook " << db << "\n";
-        return kExitDiagnostic;
-    }
+    if (!gradebookExists("grade export", db, std::cerr)) return kExitDiagnostic;
     try {
         grading::Gradebook book(db);
-        const grading::AssignmentRecord record = load.assignment->record();
+        const grading::AssignmentRecord record = assignment->record();
         if (format == "gradescope") {
             grading::exportGradescope(book, record, out);
             return kExitOk;

@@ -3,8 +3,10 @@
 // pictures drawn by `functionlab render` in child processes.
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/grade_options.h"
 
 #include "catalogue.h"
+#include "checker.h"
 #include "grade_report.h"
 #include "isolated_run.h"
 #include "submission_view.h"
@@ -16,22 +18,6 @@
 #include <iostream>
 
 namespace fl::cli {
-namespace {
-
-// The scene file of a submission (a folder holds one at its top).
-std::string sceneFileOf(const std::string& submission) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(submission, ec)) return submission;
-    for (const auto& e : std::filesystem::directory_iterator(submission, ec)) {
-        const std::string name = e.path().filename().string();
-        if (name.find(".x3d") != std::string::npos || name.find(".wrl") != std::string::npos)
-            return e.path().string();
-    }
-    return submission;
-}
-
-} // namespace
-
 const CommandSpec& gradeReportSpec() {
     static const CommandSpec spec{
         .name = "grade report",
@@ -44,14 +30,8 @@ const CommandSpec& gradeReportSpec() {
             "the reason it is not met and the places, rubric comments, and pictures of\n"
             "the submission drawn off screen by `functionlab render` — at two moments when\n"
             "something in it moves. Text from submissions is escaped.\n",
-        .options = {{.name = "db",
-                     .kind = OptionKind::Path,
-                     .valueName = "GRADEBOOK.sqlite",
-                     .help = "the gradebook"},
-                    {.name = "assignment",
-                     .kind = OptionKind::Text,
-                     .valueName = "ID|DIR",
-                     .help = "the assignment: an id or the folder of its manifest.json"},
+        .options = {gradebookOption("the gradebook"),
+                    assignmentOption(),
                     {.name = "output",
                      .shortName = 'o',
                      .kind = OptionKind::Path,
@@ -70,15 +50,10 @@ int gradeReportCommand(const Args& args) {
     if (!a) return exit;
     if (!a->given("db") || !a->given("assignment") || !a->given("output"))
         return usageError(gradeReportSpec(), "--db, --assignment and -o are required", std::cerr);
-    const courseware::AssignmentLoad load = courseware::findAssignment(a->text("assignment"));
-    for (const auto& d : load.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!load.assignment) return kExitDiagnostic;
+    const auto assignment = assignmentOrExplain(a->text("assignment"), std::cerr);
+    if (!assignment) return kExitDiagnostic;
+    if (!gradebookExists("grade report", a->text("db"), std::cerr)) return kExitDiagnostic;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(a->text("db"), ec)) {
-        std::cerr << "functionlab grade report: no gradebook " << a->text("db") << "\n";
-        return kExitDiagnostic;
-    }
     const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
     grading::ReportOptions o;
     if (!a->flag("no-pictures")) {
@@ -95,13 +70,13 @@ int gradeReportCommand(const Args& args) {
             char time[32];
             std::snprintf(time, sizeof time, "%g", seconds);
             const grading::ChildResult r =
-                grading::runIsolated({self, "render", sceneFileOf(submission), "-o", png.string(),
-                                      "--size", "320x240", "--time", time},
+                grading::runIsolated({self, "render", grading::sceneFileOf(submission), "-o",
+                                      png.string(), "--size", "320x240", "--time", time},
                                      l);
             return r.exitCode == 0 && std::filesystem::is_regular_file(png);
         };
         o.moments = [](const std::string& submission) {
-            const scene::ReadResult r = scene::readSceneFile(sceneFileOf(submission));
+            const scene::ReadResult r = scene::readSceneFile(grading::sceneFileOf(submission));
             if (!r.ok() || scene::makeEffectsPlan(*r.scene).timeVarying == scene::kStatic)
                 return std::vector<double>{0};
             const double cycle = grading::longestCycle(*r.scene);
@@ -111,10 +86,10 @@ int gradeReportCommand(const Args& args) {
     try {
         grading::Gradebook book(a->text("db"));
         std::vector<std::string> ids;
-        for (const grading::Requirement& r : load.assignment->requirements)
+        for (const grading::Requirement& r : assignment->requirements)
             ids.push_back(r.id);
         const grading::ReportResult r =
-            grading::writeReport(book, load.assignment->record(), ids, a->text("output"), o);
+            grading::writeReport(book, assignment->record(), ids, a->text("output"), o);
         std::cout << r.pages.size() << " pages, " << r.pictures << " pictures"
                   << (r.picturesFailed ? ", " + std::to_string(r.picturesFailed) + " not drawn"
                                        : std::string{})

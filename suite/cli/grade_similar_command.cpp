@@ -4,9 +4,11 @@
 // the starter scene already has subtracted (grading/similarity.h).
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/grade_options.h"
 #include "cli/json.h"
 
 #include "catalogue.h"
+#include "checker.h"
 #include "gradebook.h"
 #include "similarity.h"
 
@@ -30,14 +32,8 @@ const CommandSpec& gradeSimilarSpec() {
             "assignment's starter scene has. Prints the pairs whose similarity (shared over\n"
             "all, from 0 to 1) reaches the threshold, most similar first. A pair is a place\n"
             "to look, not a verdict.\n",
-        .options = {{.name = "db",
-                     .kind = OptionKind::Path,
-                     .valueName = "GRADEBOOK.sqlite",
-                     .help = "the gradebook grade batch wrote"},
-                    {.name = "assignment",
-                     .kind = OptionKind::Text,
-                     .valueName = "ID|DIR",
-                     .help = "the assignment: an id or the folder of its manifest.json"},
+        .options = {gradebookOption("the gradebook grade batch wrote"),
+                    assignmentOption(),
                     {.name = "threshold",
                      .kind = OptionKind::Number,
                      .valueName = "S",
@@ -60,33 +56,21 @@ int gradeSimilarCommand(const Args& args) {
     if (!a) return exit;
     if (!a->given("db") || !a->given("assignment"))
         return usageError(gradeSimilarSpec(), "--db and --assignment are required", std::cerr);
-    const courseware::AssignmentLoad load = courseware::findAssignment(a->text("assignment"));
-    for (const auto& d : load.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!load.assignment) return kExitDiagnostic;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(a->text("db"), ec)) {
-        std::cerr << "functionlab grade similar: no gradebook " << a->text("db") << "\n";
-        return kExitDiagnostic;
-    }
+    const auto assignment = assignmentOrExplain(a->text("assignment"), std::cerr);
+    if (!assignment) return kExitDiagnostic;
+    if (!gradebookExists("grade similar", a->text("db"), std::cerr)) return kExitDiagnostic;
     try {
         grading::Gradebook book(a->text("db"));
         grading::ModelFingerprint starter;
-        for (const auto& s : load.assignment->starters)
+        for (const auto& s : assignment->starters)
             if (auto r = scene::readSceneFile(s); r.ok()) {
                 const auto f = grading::modelFingerprint(*r.scene);
                 starter.insert(f.begin(), f.end());
             }
         std::vector<grading::Fingerprinted> models;
-        for (const grading::GradeRecord& g : book.latestGrades(load.assignment->id)) {
+        for (const grading::GradeRecord& g : book.latestGrades(assignment->id)) {
             if (!g.gradable || g.path.empty()) continue;
-            std::string file = g.path;
-            if (std::filesystem::is_directory(file, ec))
-                for (const auto& e : std::filesystem::directory_iterator(file, ec))
-                    if (e.path().string().find(".x3d") != std::string::npos ||
-                        e.path().string().find(".wrl") != std::string::npos)
-                        file = e.path().string();
-            const scene::ReadResult r = scene::readSceneFile(file);
+            const scene::ReadResult r = scene::readSceneFile(grading::sceneFileOf(g.path));
             if (!r.ok()) continue;
             models.push_back(
                 {g.student, grading::without(grading::modelFingerprint(*r.scene), starter)});

@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "assignment_panel.h"
+#include "checker.h"
 #include "code_editor.h"
 #include "examples.h"
 #include "examples_dock.h"
@@ -673,13 +674,8 @@ bool MainWindow::openGradebook(const QString& path, QString* error) {
     if (!grading_) {
         grading_ = addPanel(new GradingPanel);
         connect(grading_, &GradingPanel::openSubmission, this, [this](const QString& where) {
-            QString file = where;
-            if (QFileInfo(where).isDir()) // a folder submission: the scene at its top
-                for (const QFileInfo& f : QDir(where).entryInfoList(QDir::Files, QDir::Name))
-                    if (f.fileName().contains(QStringLiteral(".x3d")) ||
-                        f.fileName().contains(QStringLiteral(".wrl")))
-                        file = f.filePath();
-            if (maybeKeepChanges()) openFile(file);
+            const QString file = QString::fromStdString(grading::sceneFileOf(where.toStdString()));
+            if (maybeKeepChanges()) openFile(file.isEmpty() ? where : file);
         });
     }
     QString why;
