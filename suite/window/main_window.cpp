@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "accuracy_panel.h"
 #include "assignment_panel.h"
 #include "checker.h"
 #include "code_editor.h"
@@ -215,11 +216,18 @@ void MainWindow::buildDocks() {
     examples_ = addPanel(new ExamplesDock, true);
     parameters_ = addPanel(new ParametersDock, true);
     assignment_ = addPanel(new AssignmentPanel, true);
+    accuracy_ = addPanel(new AccuracyPanel, true);
     examples_->raise();
 
     auto goTo = [this](int line, int column) { editor_->goTo(line, column); };
     connect(issues_, &IssuesDock::issueActivated, this, goTo);
     connect(assignment_, &AssignmentPanel::locationActivated, this, goTo);
+    // The Accuracy panel's choice: this shape at that resolution, now.
+    connect(accuracy_, &AccuracyPanel::resolutionChosen, this,
+            [this](const scene::Node* geometry, double resolution) {
+                chosenResolutions_[geometry] = resolution;
+                player_->setResolutions(chosenResolutions_);
+            });
     connect(assignment_, &AssignmentPanel::starterChosen, this, [this](const QString& path) {
         if (maybeKeepChanges()) openFile(path);
     });

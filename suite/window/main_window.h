@@ -8,6 +8,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 class QLabel;
@@ -17,6 +18,7 @@ class QMenu;
 class QAction;
 
 namespace fl::scene {
+struct Node;
 struct Scene;
 }
 namespace fl::mesh {
@@ -41,6 +43,7 @@ class IssuesDock;
 class Panel;
 class ParametersDock;
 class SceneTreeDock;
+class AccuracyPanel;
 class AssignmentPanel;
 class GradingPanel;
 class TimelineBar;
@@ -135,6 +138,8 @@ class MainWindow : public QMainWindow {
     ExamplesDock* examples_ = nullptr;
     ParametersDock* parameters_ = nullptr;
     AssignmentPanel* assignment_ = nullptr;
+    AccuracyPanel* accuracy_ = nullptr;
+    std::unordered_map<const scene::Node*, double> chosenResolutions_; // by the Accuracy panel
     GradingPanel* grading_ = nullptr;
     bool textParses_ = true; // the editor's text, as last parsed, has no errors
     ViewpointBox* viewpoints_;

@@ -189,8 +189,8 @@ class WindowTest : public QObject {
         QStringList names;
         for (suite::Panel* p : w.panels())
             names << p->objectName();
-        QCOMPARE(names,
-                 (QStringList{"editor", "issues", "tree", "examples", "parameters", "assignment"}));
+        QCOMPARE(names, (QStringList{"editor", "issues", "tree", "examples", "parameters",
+                                     "assignment", "accuracy"}));
         auto* counting = w.addPanel(new Counting, true);
         QCOMPARE(w.dockWidgetArea(counting), Qt::RightDockWidgetArea);
         QVERIFY(!w.tabifiedDockWidgets(counting).isEmpty());

@@ -1,0 +1,169 @@
+#include "accuracy_chart.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QToolTip>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl::suite {
+namespace {
+
+const QColor kAdaptive(0x1c, 0x7e, 0xd6), kDense(0x86, 0x8e, 0x96);
+
+} // namespace
+
+AccuracyChart::AccuracyChart(QWidget* parent) : QWidget(parent) {
+    setMouseTracking(true);
+    setMinimumSize(260, 200);
+}
+
+void AccuracyChart::setRows(std::vector<bench::AccuracyRow> rows) {
+    rows_ = std::move(rows);
+    // Whole decades round everything measured (time at least 0.01 ms, error at least 1e-7).
+    double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+    for (const bench::AccuracyRow& r : rows_) {
+        const double x = std::log10(std::max(r.ms, 0.01)),
+                     y = std::log10(std::max(r.maxError, 1e-7));
+        xmin = std::min(xmin, x), xmax = std::max(xmax, x);
+        ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+    }
+    if (!rows_.empty()) {
+        xLo_ = std::floor(xmin), xHi_ = std::max(std::ceil(xmax), xLo_ + 1);
+        yLo_ = std::floor(ymin), yHi_ = std::max(std::ceil(ymax), yLo_ + 1);
+    }
+    update();
+}
+
+void AccuracyChart::setOperatingResolution(double resolution) {
+    operating_ = resolution;
+    update();
+}
+
+QString AccuracyChart::xLabel() const {
+    return tr("time per mesh (ms, log scale)");
+}
+
+QString AccuracyChart::yLabel() const {
+    return tr("max error (of the box diagonal, log scale)");
+}
+
+QRectF AccuracyChart::plotArea() const {
+    return QRectF(64, 14, std::max(40, width() - 80), std::max(40, height() - 56));
+}
+
+QPointF AccuracyChart::pointOf(std::size_t i) const {
+    const bench::AccuracyRow& r = rows_[i];
+    const QRectF a = plotArea();
+    const double x = (std::log10(std::max(r.ms, 0.01)) - xLo_) / (xHi_ - xLo_);
+    const double y = (std::log10(std::max(r.maxError, 1e-7)) - yLo_) / (yHi_ - yLo_);
+    return {a.left() + x * a.width(), a.bottom() - y * a.height()};
+}
+
+int AccuracyChart::rowAt(QPointF pixel) const {
+    int best = -1;
+    double nearest = 8;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const double d = QLineF(pointOf(i), pixel).length();
+        if (d <= nearest) {
+            nearest = d;
+            best = int(i);
+        }
+    }
+    return best;
+}
+
+void AccuracyChart::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.fillRect(rect(), palette().base());
+    const QRectF a = plotArea();
+    p.setPen(palette().text().color());
+    p.drawRect(a);
+    // Decade ticks and labels.
+    QFont small = font();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    p.setFont(small);
+    for (double d = xLo_; d <= xHi_ + 1e-9; d += 1) {
+        const double x = a.left() + (d - xLo_) / (xHi_ - xLo_) * a.width();
+        p.drawLine(QPointF(x, a.bottom()), QPointF(x, a.bottom() + 4));
+        p.drawText(QRectF(x - 30, a.bottom() + 5, 60, 14), Qt::AlignHCenter,
+                   QString::number(std::pow(10.0, d), 'g', 3));
+    }
+    for (double d = yLo_; d <= yHi_ + 1e-9; d += 1) {
+        const double y = a.bottom() - (d - yLo_) / (yHi_ - yLo_) * a.height();
+        p.drawLine(QPointF(a.left() - 4, y), QPointF(a.left(), y));
+        p.drawText(QRectF(0, y - 7, a.left() - 6, 14), Qt::AlignRight | Qt::AlignVCenter,
+                   QStringLiteral("1e%1").arg(int(d)));
+    }
+    p.drawText(QRectF(a.left(), height() - 16, a.width(), 14), Qt::AlignHCenter, xLabel());
+    p.save();
+    p.translate(10, a.center().y());
+    p.rotate(-90);
+    p.drawText(QRectF(-a.height() / 2, -8, a.height(), 14), Qt::AlignHCenter, yLabel());
+    p.restore();
+    // One line per method, in resolution order.
+    for (const auto& [method, colour] :
+         {std::pair<std::string, QColor>{"dense", kDense}, {"adaptive", kAdaptive}}) {
+        QPainterPath line;
+        bool first = true;
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            if (rows_[i].method != method) continue;
+            const QPointF q = pointOf(i);
+            first ? line.moveTo(q) : line.lineTo(q);
+            first = false;
+        }
+        p.setPen(QPen(colour, 2));
+        p.setBrush(Qt::NoBrush);
+        p.drawPath(line);
+        p.setBrush(colour);
+        for (std::size_t i = 0; i < rows_.size(); ++i)
+            if (rows_[i].method == method) p.drawEllipse(pointOf(i), 3.5, 3.5);
+    }
+    // The operating point: the adaptive row nearest the resolution in use.
+    int now = -1;
+    for (std::size_t i = 0; i < rows_.size(); ++i)
+        if (rows_[i].method == "adaptive" &&
+            (now < 0 || std::abs(rows_[i].resolution - operating_) <
+                            std::abs(rows_[std::size_t(now)].resolution - operating_)))
+            now = int(i);
+    if (now >= 0 && operating_ > 0) {
+        p.setPen(QPen(QColor(0xe0, 0x31, 0x31), 2));
+        p.setBrush(Qt::NoBrush);
+        const QPointF q = pointOf(std::size_t(now));
+        p.drawEllipse(q, 8, 8);
+        p.drawText(q + QPointF(10, -8), tr("now (%1)").arg(rows_[std::size_t(now)].resolution));
+    }
+    // The legend.
+    p.setPen(kAdaptive);
+    p.drawText(QPointF(a.right() - 150, a.top() + 14), tr("● adaptive (ours)"));
+    p.setPen(kDense);
+    p.drawText(QPointF(a.right() - 150, a.top() + 28), tr("● dense marching cubes"));
+}
+
+void AccuracyChart::mouseMoveEvent(QMouseEvent* event) {
+    const int i = rowAt(event->position());
+    if (i < 0) {
+        QToolTip::hideText();
+        return;
+    }
+    const bench::AccuracyRow& r = rows_[std::size_t(i)];
+    QToolTip::showText(event->globalPosition().toPoint(),
+                       tr("%1 at resolution %2\n%3 triangles, %4 evaluations\n%5 ms, max error %6")
+                           .arg(QString::fromStdString(r.method))
+                           .arg(r.resolution)
+                           .arg(r.triangles)
+                           .arg(r.evaluations)
+                           .arg(r.ms, 0, 'g', 3)
+                           .arg(r.maxError, 0, 'g', 3),
+                       this);
+}
+
+void AccuracyChart::mousePressEvent(QMouseEvent* event) {
+    const int i = rowAt(event->position());
+    if (i >= 0) Q_EMIT resolutionChosen(rows_[std::size_t(i)].resolution);
+}
+
+} // namespace fl::suite

@@ -1,0 +1,187 @@
+#include "accuracy_panel.h"
+
+#include "mesh/scene_meshing.h"
+#include "scene/field_access.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace fl::suite {
+
+std::vector<double> AccuracyPanel::sweepResolutions() {
+    return {8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256};
+}
+
+AccuracyPanel::AccuracyPanel(QWidget* parent)
+    : Panel(tr("Accuracy"), QStringLiteral("accuracy"), Qt::RightDockWidgetArea, parent),
+      shapes_(new QComboBox), chart_(new AccuracyChart), progress_(new QProgressBar),
+      measure_(new QPushButton(tr("Measure"))), cancel_(new QPushButton(tr("Cancel"))),
+      target_(new QLineEdit), status_(new QLabel) {
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    auto* top = new QHBoxLayout;
+    top->addWidget(shapes_, 1);
+    top->addWidget(measure_);
+    top->addWidget(cancel_);
+    layout->addLayout(top);
+    layout->addWidget(chart_, 1);
+    layout->addWidget(progress_);
+    auto* targetRow = new QHBoxLayout;
+    targetRow->addWidget(new QLabel(tr("Target error:")));
+    target_->setPlaceholderText(tr("e.g. 0.001 of the diagonal"));
+    targetRow->addWidget(target_, 1);
+    layout->addLayout(targetRow);
+    status_->setWordWrap(true);
+    layout->addWidget(status_);
+    shapes_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    shapes_->setMinimumContentsLength(12);
+    setWidget(box);
+    cancel_->setEnabled(false);
+    progress_->setRange(0, int(sweepResolutions().size()));
+    progress_->setValue(0);
+    connect(measure_, &QPushButton::clicked, this, [this] { measure(); });
+    connect(cancel_, &QPushButton::clicked, this, [this] { cancel(); });
+    connect(chart_, &AccuracyChart::resolutionChosen, this, [this](double r) { choose(r); });
+    connect(target_, &QLineEdit::returnPressed, this, [this] {
+        bool ok = false;
+        const double t = target_->text().toDouble(&ok);
+        if (!ok || !(t > 0)) {
+            status_->setText(tr("a target error is a positive number, e.g. 0.001"));
+            return;
+        }
+        if (!chooseTargetError(t))
+            status_->setText(
+                tr("no measured resolution reaches %1: measure, or aim higher").arg(t));
+    });
+    connect(shapes_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        chart_->setRows({});
+        if (i >= 0 && std::size_t(i) < candidates_.size())
+            chart_->setOperatingResolution(candidates_[std::size_t(i)].resolution);
+    });
+}
+
+AccuracyPanel::~AccuracyPanel() {
+    *alive_ = false;
+    stop_ = true;
+    if (worker_.joinable()) worker_.join();
+}
+
+void AccuracyPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
+    cancel();
+    scene_ = std::move(scene);
+    candidates_.clear();
+    const QSignalBlocker quiet(shapes_);
+    shapes_->clear();
+    chart_->setRows({});
+    // The function shapes as meshed (coarsely: only their fields are wanted).
+    mesh::SceneMeshOptions o;
+    o.useFileResolution = false;
+    o.mesh.resolution = 4;
+    o.mesh.threads = 1;
+    o.standardShapes = false;
+    o.placeInScene = false;
+    const mesh::SceneMeshes meshes = mesh::meshScene(*scene_, o);
+    for (const mesh::ShapeMesh& s : meshes.shapes) {
+        if (!s.field || !s.shape) continue;
+        const scene::Node* key = s.geometry ? s.geometry : s.shape;
+        const double resolution =
+            s.geometry ? scene::numberField(*s.geometry, "resolution", 0, 32) : 32;
+        const QString name = QString::fromStdString(s.shape->defName.empty()
+                                                        ? s.shape->type + " at line " +
+                                                              std::to_string(s.shape->where.line)
+                                                        : s.shape->type + " " + s.shape->defName);
+        candidates_.push_back({key, name, s.field, resolution});
+        shapes_->addItem(name);
+    }
+    if (!candidates_.empty()) chart_->setOperatingResolution(candidates_.front().resolution);
+    status_->setText(candidates_.empty()
+                         ? tr("no implicit or explicit shape to measure in this scene")
+                         : tr("Measure: how far each mesh is from the true surface, and what it "
+                              "costs"));
+}
+
+bool AccuracyPanel::measuring() const {
+    return running_;
+}
+
+void AccuracyPanel::cancel() {
+    stop_ = true;
+    if (worker_.joinable()) worker_.join();
+    stop_ = false;
+}
+
+void AccuracyPanel::measure() {
+    cancel();
+    const int index = shapes_->currentIndex();
+    if (index < 0 || std::size_t(index) >= candidates_.size()) return;
+    const auto field = candidates_[std::size_t(index)].field;
+    chart_->setRows({});
+    progress_->setValue(0);
+    measure_->setEnabled(false);
+    cancel_->setEnabled(true);
+    status_->setText(tr("measuring…"));
+    running_ = true;
+    worker_ = std::thread([this, field, alive = alive_] {
+        std::vector<bench::AccuracyRow> rows;
+        bench::SweepOptions o;
+        o.threads = 1; // the interface keeps a core
+        int done = 0;
+        for (double r : sweepResolutions()) {
+            if (stop_) break;
+            const auto more = bench::runAccuracySweep(*field, {r}, o);
+            rows.insert(rows.end(), more.begin(), more.end());
+            ++done;
+            QMetaObject::invokeMethod(
+                this,
+                [this, rows, done, alive] {
+                    if (!*alive) return;
+                    chart_->setRows(rows);
+                    progress_->setValue(done);
+                },
+                Qt::QueuedConnection);
+        }
+        const bool stopped = stop_;
+        QMetaObject::invokeMethod(
+            this,
+            [this, rows, stopped, alive] {
+                if (!*alive) return;
+                running_ = false;
+                measure_->setEnabled(true);
+                cancel_->setEnabled(false);
+                chart_->setRows(rows);
+                status_->setText(stopped ? tr("cancelled")
+                                         : QString::fromStdString(bench::accuracySummary(rows)));
+                Q_EMIT measured();
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+bool AccuracyPanel::chooseTargetError(double target) {
+    double best = 0;
+    for (const bench::AccuracyRow& r : chart_->rows())
+        if (r.method == "adaptive" && r.maxError <= target && (best == 0 || r.resolution < best))
+            best = r.resolution;
+    if (best == 0) return false;
+    choose(best);
+    return true;
+}
+
+void AccuracyPanel::choose(double resolution) {
+    const int index = shapes_->currentIndex();
+    if (index < 0 || std::size_t(index) >= candidates_.size()) return;
+    Candidate& c = candidates_[std::size_t(index)];
+    c.resolution = resolution;
+    chart_->setOperatingResolution(resolution);
+    status_->setText(tr("%1 is meshed at resolution %2 now").arg(c.name).arg(resolution));
+    Q_EMIT resolutionChosen(c.geometry, resolution);
+}
+
+} // namespace fl::suite
