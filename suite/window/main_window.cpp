@@ -24,6 +24,7 @@
 #include "scene_text_dock.h"
 #include "scene_tree_dock.h"
 #include "scene_widget.h"
+#include "screen_error_meter.h"
 #include "text_outliner.h"
 #include "timeline_bar.h"
 #include "viewpoint_box.h"
@@ -48,6 +49,7 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QToolBar>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -93,7 +95,8 @@ MainWindow::MainWindow(QWidget* parent)
       parser_(new editor::LiveParser(this)), view_(new viewer::SceneWidget),
       player_(new viewer::ScenePlayer(nullptr, this)), timeline_(new TimelineBar(player_)),
       viewpoints_(new ViewpointBox), recentMenu_(nullptr), triangles_(new QLabel),
-      meshTime_(new QLabel), frameRate_(new QLabel), timeLabel_(new QLabel) {
+      meshTime_(new QLabel), frameRate_(new QLabel), timeLabel_(new QLabel),
+      screenError_(new QLabel), errorMeter_(new ScreenErrorMeter(this)) {
     setWindowTitle(QStringLiteral("FunctionLab"));
     setCentralWidget(view_);
     buildDocks();
@@ -104,8 +107,9 @@ MainWindow::MainWindow(QWidget* parent)
     timeBar->addWidget(timeline_);
     addToolBar(Qt::BottomToolBarArea, timeBar);
 
-    for (QLabel* l : {triangles_, meshTime_, frameRate_, timeLabel_})
+    for (QLabel* l : {triangles_, meshTime_, screenError_, frameRate_, timeLabel_})
         statusBar()->addPermanentWidget(l);
+    connect(errorMeter_, &ScreenErrorMeter::measured, screenError_, &QLabel::setText);
 
     connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
         parser_->setText(editor_->toPlainText(), path_);
@@ -209,8 +213,11 @@ void MainWindow::buildDocks() {
     issues_ = addPanel(new IssuesDock);
     // A few lines tall: sized once the window has its layout (a saved state wins).
     QTimer::singleShot(0, this, [this] {
-        if (!QSettings().contains(QStringLiteral("window/state")))
+        if (!QSettings().contains(QStringLiteral("window/state"))) {
             resizeDocks({issues_}, {110}, Qt::Vertical);
+            // The panels on the right start narrow: the view comes first.
+            resizeDocks({examples_}, {300}, Qt::Horizontal);
+        }
     });
     tree_ = addPanel(new SceneTreeDock);
     examples_ = addPanel(new ExamplesDock, true);
@@ -218,6 +225,14 @@ void MainWindow::buildDocks() {
     assignment_ = addPanel(new AssignmentPanel, true);
     accuracy_ = addPanel(new AccuracyPanel, true);
     examples_->raise();
+    // Tabbed docks must not widen their side to fit every tab's title: the
+    // view would shrink with each panel added. Their tab bars scroll.
+    QTimer::singleShot(0, this, [this] {
+        for (QTabBar* bar : findChildren<QTabBar*>()) {
+            bar->setUsesScrollButtons(true);
+            bar->setElideMode(Qt::ElideRight);
+        }
+    });
 
     auto goTo = [this](int line, int column) { editor_->goTo(line, column); };
     connect(issues_, &IssuesDock::issueActivated, this, goTo);
@@ -345,6 +360,10 @@ void MainWindow::buildMenus() {
                            tr("FunctionLab %1: function-defined 3D objects for teaching.")
                                .arg(QCoreApplication::applicationVersion()));
     });
+}
+
+QString MainWindow::screenErrorText() const {
+    return screenError_->text();
 }
 
 bool MainWindow::busy() const {
@@ -538,6 +557,7 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
         ms += s.stats.milliseconds;
     triangles_->setText(tr("%1 triangles").arg(view_->triangleCount()));
     meshTime_->setText(tr("meshed in %1 ms").arg(ms, 0, 'f', 0));
+    errorMeter_->measure(meshes);
     if (lodPending_) { // the first frame of a scene is at the file's resolutions
         lodPending_ = false;
         lodTimer_.start();

@@ -20,7 +20,7 @@ class QAction;
 namespace fl::scene {
 struct Node;
 struct Scene;
-}
+} // namespace fl::scene
 namespace fl::mesh {
 struct SceneMeshes;
 }
@@ -44,6 +44,7 @@ class Panel;
 class ParametersDock;
 class SceneTreeDock;
 class AccuracyPanel;
+class ScreenErrorMeter;
 class AssignmentPanel;
 class GradingPanel;
 class TimelineBar;
@@ -66,6 +67,7 @@ class MainWindow : public QMainWindow {
     bool isModified() const;
     // Parsing, meshing or about to re-mesh for the level of detail.
     bool busy() const;
+    QString screenErrorText() const; // the status bar's accuracy figure
     // Tests turn off the dialogs (unsaved-changes questions, message boxes).
     void setPromptsEnabled(bool on) { prompts_ = on; }
     QString lastProblem() const { return lastProblem_; }
@@ -149,6 +151,8 @@ class MainWindow : public QMainWindow {
     std::shared_ptr<const scene::Scene> lodScene_; // the scene whose first frame the LOD saw
     QMenu* recentMenu_;
     QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
+    QLabel* screenError_; // the measured max error of what is on screen
+    ScreenErrorMeter* errorMeter_;
     QTimer recoveryTimer_, rateTimer_, lodTimer_;
     std::unique_ptr<viewer::LevelOfDetail> lod_;
     QString path_;

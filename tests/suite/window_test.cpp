@@ -476,6 +476,20 @@ class WindowTest : public QObject {
         QDir(out).removeRecursively();
     }
 
+    void theStatusBarSaysHowFarTheMeshIsFromTheSurface() {
+        // Issue 19: next to triangles and milliseconds, the measured max error
+        // of the largest function shape on screen, measured off the UI thread.
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        QVERIFY(w.openFile(examplePath("watermelon.x3d")));
+        QVERIFY(settle(w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.screenErrorText().contains(QStringLiteral("max error")), 20000);
+        const QString text = w.screenErrorText();
+        const double error = text.section(QLatin1Char(' '), 2, 2).toDouble();
+        QVERIFY2(error > 0 && error < 0.05, qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("FShape")));
+    }
+
     void savingWritesTheTextAndClearsTheModifiedMark() {
         suite::MainWindow w;
         w.setPromptsEnabled(false);
