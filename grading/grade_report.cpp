@@ -49,13 +49,13 @@ std::string histogramSvg(const std::vector<double>& percents) {
         const int h = 120 * bins[i] / most, x = 20 + i * 44;
         svg += "<rect x='" + std::to_string(x) + "' y='" + std::to_string(150 - h) +
                "' width='38' height='" + std::to_string(h) + "' fill='#5c7cfa'/>";
-        svg += "<text x='" + std::to_string(x + 19) + "' y='166' font-size='9' "
-               "text-anchor='middle'>" + std::to_string(i * 10) + "–" +
-               std::to_string(i * 10 + 10) + "</text>";
+        svg += "<text x='" + std::to_string(x + 19) +
+               "' y='166' font-size='9' "
+               "text-anchor='middle'>" +
+               std::to_string(i * 10) + "–" + std::to_string(i * 10 + 10) + "</text>";
         if (bins[i])
             svg += "<text x='" + std::to_string(x + 19) + "' y='" + std::to_string(145 - h) +
-                   "' font-size='11' text-anchor='middle'>" + std::to_string(bins[i]) +
-                   "</text>";
+                   "' font-size='11' text-anchor='middle'>" + std::to_string(bins[i]) + "</text>";
     }
     return svg + "<text x='240' y='184' font-size='11' text-anchor='middle'>final score, "
                  "percent of the maximum</text></svg>";

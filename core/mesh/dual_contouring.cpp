@@ -16,7 +16,6 @@
 namespace fl::mesh {
 namespace {
 
-
 constexpr int kB = 8;      // cells along a block's edge
 constexpr int kC = kB + 1; // corners along a block's edge (the far ones shared with the next block)
 constexpr int kCorners = kC * kC * kC;

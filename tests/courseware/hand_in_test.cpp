@@ -48,15 +48,16 @@ FShape { geometry FGeometry { type "explicit" definition "0.5 - x*x - y*y - z*z"
         courseware::packSubmission(*read.scene, work / "world.x3dv", text + "# edited\n", out);
     ASSERT_TRUE(done.ok) << (done.problems.empty() ? "" : done.problems[0]);
     EXPECT_TRUE(done.problems.empty());
-    EXPECT_EQ(done.packed, (std::vector<std::filesystem::path>{
-                               "world.x3dv", "parts/ball.x3dv", "parts/img/wood.png"}));
+    EXPECT_EQ(done.packed, (std::vector<std::filesystem::path>{"world.x3dv", "parts/ball.x3dv",
+                                                               "parts/img/wood.png"}));
     std::ifstream in(out / "world.x3dv");
     const std::string packed((std::istreambuf_iterator<char>(in)), {});
     EXPECT_NE(packed.find("# edited"), std::string::npos) << "the editor's text, not the file's";
     // What grade check reads.
     const auto lab = courseware::findAssignment("implicit-fantasies");
     ASSERT_TRUE(lab.assignment);
-    const grading::CheckReport r = grading::checkSubmission(out.string(), lab.assignment->requirements);
+    const grading::CheckReport r =
+        grading::checkSubmission(out.string(), lab.assignment->requirements);
     EXPECT_TRUE(r.gradable);
     // A folder that holds something is not written into.
     const courseware::HandIn again =

@@ -102,8 +102,7 @@ TEST(Picking, AnImplicitSurfacesNormalFacesTheEyeFromEitherSide) {
     // An explicit solid keeps its outward normal: here, into the cavity.
     const Picked solid = load(R"x(COMPONENT FunctionLab:1
         FShape { geometry FGeometry { type "explicit" definition "x^2 + y^2 + z^2 - 0.5" } })x");
-    const auto box =
-        viewer::pick(solid.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
+    const auto box = viewer::pick(solid.meshes, {{0.1f, 0.1f, 5}, QVector3D(0, 0, -1)});
     ASSERT_TRUE(box);
     EXPECT_NEAR(box->point[2], 1, 1e-6); // the box face closing the solid
     EXPECT_GT(box->normal[2], 0.9);
