@@ -367,7 +367,7 @@ QString MainWindow::screenErrorText() const {
 }
 
 bool MainWindow::busy() const {
-    return parser_->pending() || player_->busy() || lodTimer_.isActive();
+    return parser_->pending() || player_->busy() || lodTimer_.isActive() || errorMeter_->busy();
 }
 
 bool MainWindow::isModified() const {

@@ -65,7 +65,8 @@ class MainWindow : public QMainWindow {
     bool recoverUnsavedWork();
     QString currentPath() const { return path_; }
     bool isModified() const;
-    // Parsing, meshing or about to re-mesh for the level of detail.
+    // Parsing, meshing, about to re-mesh for the level of detail, or
+    // measuring the error of what is on screen.
     bool busy() const;
     QString screenErrorText() const; // the status bar's accuracy figure
     // Tests turn off the dialogs (unsaved-changes questions, message boxes).

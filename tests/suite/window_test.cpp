@@ -115,6 +115,14 @@ class WindowTest : public QObject {
                      qPrintable(path + " looks blank: " + QString::number(frame.width()) + "x" +
                                 QString::number(frame.height())));
             save(screenshot(w), "window-" + QFileInfo(path).completeBaseName());
+            // The status bar's error figure: for every example with a meshed
+            // function shape, and none for the others (the fan's standard shapes).
+            bool functionShape = false;
+            for (const auto& s : w.view()->meshes()->shapes)
+                functionShape = functionShape ||
+                                (s.field && s.mesh.triangleCount() > 0 && !s.mesh.isPointCloud());
+            QTRY_COMPARE_WITH_TIMEOUT(w.screenErrorText().contains(QStringLiteral("max error")),
+                                      functionShape, 20000);
         }
     }
 
