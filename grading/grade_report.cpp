@@ -1,5 +1,7 @@
 #include "grade_report.h"
 
+#include "scene/scene_writer.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -68,7 +70,7 @@ std::string passRateSvg(const std::vector<std::pair<std::string, double>>& rates
     for (std::size_t i = 0; i < rates.size(); ++i) {
         const int y = 5 + 24 * int(i);
         svg += "<text x='150' y='" + std::to_string(y + 15) +
-               "' font-size='12' text-anchor='end'>" + htmlEscaped(rates[i].first) + "</text>";
+               "' font-size='12' text-anchor='end'>" + scene::xmlEscape(rates[i].first) + "</text>";
         svg += "<rect x='158' y='" + std::to_string(y) + "' width='" +
                std::to_string(int(300 * rates[i].second)) +
                "' height='18' fill='#40c057'/><text x='" +
@@ -79,32 +81,6 @@ std::string passRateSvg(const std::vector<std::pair<std::string, double>>& rates
 }
 
 } // namespace
-
-std::string htmlEscaped(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '&':
-            out += "&amp;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&#39;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
 
 ReportResult writeReport(Gradebook& book, const AssignmentRecord& a,
                          const std::vector<std::string>& ids, const std::filesystem::path& folder,
@@ -126,22 +102,23 @@ ReportResult writeReport(Gradebook& book, const AssignmentRecord& a,
             passed[r.id] += r.met ? 1 : 0;
         const std::string page = pageName(g.student) + ".html";
         const std::string name = names.count(g.student) ? names.at(g.student).name : "";
-        rows += "<tr><td><a href='" + page + "'>" + htmlEscaped(g.student) + "</a></td><td>" +
-                htmlEscaped(name) + "</td><td>" + number(final) + "</td><td>" +
+        rows += "<tr><td><a href='" + page + "'>" + scene::xmlEscape(g.student) + "</a></td><td>" +
+                scene::xmlEscape(name) + "</td><td>" + number(final) + "</td><td>" +
                 (g.gradable ? "yes" : "<span class='not'>no</span>") + "</td></tr>\n";
 
         // The student's page.
         std::string html =
             "<!DOCTYPE html><html><head><meta charset='utf-8'><title>" +
-            htmlEscaped(a.title + " — " + g.student) + "</title>" + kStyle +
+            scene::xmlEscape(a.title + " — " + g.student) + "</title>" + kStyle +
             "</head><body><p><a href='index.html'>← the class</a></p><h1>" +
-            htmlEscaped(g.student) + (name.empty() ? "" : " — " + htmlEscaped(name)) + "</h1><p>" +
-            htmlEscaped(a.title) + "</p><p><b>Final score " + number(final) + " of " + number(max) +
-            "</b> (checker " + number(g.score) + " of " + number(g.maxScore) +
-            (g.lateFactor < 1 ? ", late ×" + number(g.lateFactor) : "") + ", rubric " +
-            number(book.manualPoints(g.student, a.id)) + " of " + number(a.maxManual) + ")</p>";
+            scene::xmlEscape(g.student) + (name.empty() ? "" : " — " + scene::xmlEscape(name)) +
+            "</h1><p>" + scene::xmlEscape(a.title) + "</p><p><b>Final score " + number(final) +
+            " of " + number(max) + "</b> (checker " + number(g.score) + " of " +
+            number(g.maxScore) + (g.lateFactor < 1 ? ", late ×" + number(g.lateFactor) : "") +
+            ", rubric " + number(book.manualPoints(g.student, a.id)) + " of " +
+            number(a.maxManual) + ")</p>";
         if (!g.gradable)
-            html += "<p class='not'>Not gradable: " + htmlEscaped(g.diagnostics) + "</p>";
+            html += "<p class='not'>Not gradable: " + scene::xmlEscape(g.diagnostics) + "</p>";
         if (options.render && g.gradable && !g.path.empty()) {
             html += "<p>";
             const std::vector<double> moments =
@@ -163,18 +140,19 @@ ReportResult writeReport(Gradebook& book, const AssignmentRecord& a,
         html += "<table><tr><th>requirement</th><th>points</th><th>why</th></tr>";
         for (const RequirementResult& r : g.requirements) {
             html += "<tr><td class='" + std::string(r.met ? "met" : "not") + "'>" +
-                    (r.met ? "✔ " : "✘ ") + htmlEscaped(r.id) + "</td><td>" + number(r.points) +
-                    "/" + number(r.maxPoints) + "</td><td>" + htmlEscaped(r.evidence);
+                    (r.met ? "✔ " : "✘ ") + scene::xmlEscape(r.id) + "</td><td>" +
+                    number(r.points) + "/" + number(r.maxPoints) + "</td><td>" +
+                    scene::xmlEscape(r.evidence);
             for (const Location& l : r.locations)
                 html += "<br><span class='where'>" +
-                        htmlEscaped(std::filesystem::path(l.file).filename().string()) + ":" +
+                        scene::xmlEscape(std::filesystem::path(l.file).filename().string()) + ":" +
                         std::to_string(l.line) + ":" + std::to_string(l.column) + "</span>";
             html += "</td></tr>";
         }
         html += "</table>";
         for (const ManualScore& m : book.manualScores(g.student, a.id))
-            html += "<p><b>" + htmlEscaped(m.item) + "</b>: " + number(m.points) + " — " +
-                    htmlEscaped(m.comment) + "</p>";
+            html += "<p><b>" + scene::xmlEscape(m.item) + "</b>: " + number(m.points) + " — " +
+                    scene::xmlEscape(m.comment) + "</p>";
         html += "</body></html>\n";
         std::ofstream(folder / page, std::ios::binary) << html;
         result.pages.push_back(folder / page);
@@ -186,9 +164,9 @@ ReportResult writeReport(Gradebook& book, const AssignmentRecord& a,
     for (double p : percents)
         mean += p;
     const std::string index =
-        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>" + htmlEscaped(a.title) +
-        " — the class</title>" + kStyle + "</head><body><h1>" + htmlEscaped(a.title) + "</h1><p>" +
-        std::to_string(grades.size()) + " students; mean final score " +
+        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>" + scene::xmlEscape(a.title) +
+        " — the class</title>" + kStyle + "</head><body><h1>" + scene::xmlEscape(a.title) +
+        "</h1><p>" + std::to_string(grades.size()) + " students; mean final score " +
         number(grades.empty() ? 0 : std::round(mean / double(grades.size()))) + "% of " +
         number(max) + " points.</p><h2>Score distribution</h2>" + histogramSvg(percents) +
         "<h2>Pass rate per requirement</h2>" + passRateSvg(rates) +

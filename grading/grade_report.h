@@ -3,8 +3,8 @@
 // requirement met or not, with its evidence or reason and the places, and
 // pictures of the submission: two moments when it moves) and the class
 // summary (score distribution, pass rate per requirement, as inline SVG).
-// Every text from a submission is escaped: a student's file cannot write
-// into the page.
+// Every text from a submission is escaped (scene::xmlEscape): a student's
+// file cannot write into the page.
 #include "gradebook.h"
 
 #include <filesystem>
@@ -32,7 +32,5 @@ struct ReportResult {
 ReportResult writeReport(Gradebook& book, const AssignmentRecord& assignment,
                          const std::vector<std::string>& requirementIds,
                          const std::filesystem::path& folder, const ReportOptions& options);
-
-std::string htmlEscaped(const std::string& text);
 
 } // namespace fl::grading

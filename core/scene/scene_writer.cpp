@@ -13,17 +13,6 @@ std::string formatNumber(double v) {
     return ec == std::errc() ? std::string(buf, p) : std::string("0");
 }
 
-namespace {
-
-std::string quoteClassic(std::string_view s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
 std::string xmlEscape(std::string_view s) {
     std::string out;
     for (char c : s) {
@@ -57,6 +46,17 @@ std::string xmlEscape(std::string_view s) {
         }
     }
     return out;
+}
+
+namespace {
+
+std::string quoteClassic(std::string_view s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
 }
 
 std::string element(const FieldValue& v, FieldType single, std::size_t index, bool xml) {

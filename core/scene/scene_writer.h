@@ -20,4 +20,9 @@ bool encodingForPath(const std::string& path, Encoding& encoding, bool& gzipped)
 // Shortest text that reads back as exactly the same double.
 std::string formatNumber(double v);
 
+// Text as an X3D XML attribute value holds it: & < > ' " escaped, and the
+// line breaks and tabs attribute normalization would fold, as character
+// references. Valid in HTML5 text and attributes as well (grade reports).
+std::string xmlEscape(std::string_view s);
+
 } // namespace fl::scene
