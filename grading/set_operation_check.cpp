@@ -43,24 +43,29 @@ std::string boxText(const field::Box3& b) {
     return s;
 }
 
+// How many pairs of parentheses wrap the whole of `text` ("((a) & b)": 1).
+std::size_t wrappingParentheses(const std::string& text) {
+    std::size_t n = 0;
+    while (text.size() >= 2 * n + 2 && text[n] == '(' && text[text.size() - 1 - n] == ')') {
+        int depth = 0;
+        bool wraps = true;
+        for (std::size_t i = n; i + 1 + n < text.size() && wraps; ++i) {
+            depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+            wraps = depth > 0;
+        }
+        if (!wraps) break;
+        ++n;
+    }
+    return n;
+}
+
 // Where the operator of a set operation written as an expression is: the
 // last & | \ outside parentheses, | first (it binds loosest). 0 (the
 // expression's start) for min(...), max(...) and the R-functions.
 std::size_t operatorOffset(const std::string& written) {
     // Parentheses round the whole expression are not its structure.
-    std::size_t from = 0, to = written.size();
-    while (to - from >= 2 && written[from] == '(' && written[to - 1] == ')') {
-        int depth = 0;
-        bool wraps = true;
-        for (std::size_t i = from; i + 1 < to && wraps; ++i) {
-            depth += written[i] == '(' ? 1 : written[i] == ')' ? -1 : 0;
-            wraps = depth > 0;
-        }
-        if (!wraps) break;
-        ++from;
-        --to;
-    }
-    const std::string text = written.substr(from, to - from);
+    const std::size_t from = wrappingParentheses(written);
+    const std::string text = written.substr(from, written.size() - 2 * from);
     std::size_t best = 0;
     int depth = 0, rank = 0;
     for (std::size_t i = 0; i < text.size(); ++i) {
@@ -77,18 +82,9 @@ std::size_t operatorOffset(const std::string& written) {
 }
 
 // "(5 - x*x)" reads as "5 - x*x" in a sentence; "(a) + (b)" keeps its own.
-std::string withoutOuterParentheses(std::string text) {
-    while (text.size() >= 2 && text.front() == '(' && text.back() == ')') {
-        int depth = 0;
-        bool wraps = true;
-        for (std::size_t i = 0; i + 1 < text.size() && wraps; ++i) {
-            depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
-            wraps = depth > 0;
-        }
-        if (!wraps) break;
-        text = text.substr(1, text.size() - 2);
-    }
-    return text;
+std::string withoutOuterParentheses(const std::string& text) {
+    const std::size_t n = wrappingParentheses(text);
+    return text.substr(n, text.size() - 2 * n);
 }
 
 std::string operandText(const SubmissionView& view, const mesh::ShapeMesh& s,

@@ -22,7 +22,8 @@ double longestCycle(const scene::Scene& scene) {
 SubmissionView::SubmissionView(const scene::Scene& scene, int moments)
     : scene_(scene), lines_(scene) {
     const scene::EffectsPlan plan = scene::makeEffectsPlan(scene);
-    const double span = longestCycle(scene) > 0 ? longestCycle(scene) : 1;
+    const double cycle = longestCycle(scene);
+    const double span = cycle > 0 ? cycle : 1;
     const int count = plan.timeVarying == scene::kStatic ? 1 : std::max(2, moments);
     for (int i = 0; i < count; ++i)
         // Evenly over the cycle, the end left out (a loop's end is its start).
