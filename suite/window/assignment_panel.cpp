@@ -25,7 +25,13 @@ QString points(double p) {
 AssignmentPanel::AssignmentPanel(QWidget* parent, const QString& folder)
     : Panel(tr("Assignment"), QStringLiteral("assignment"), Qt::RightDockWidgetArea, parent),
       choice_(new QComboBox), instructions_(new QTextBrowser), checklist_(new QTreeWidget),
-      status_(new QLabel), starter_(new QPushButton(tr("Start from the starter scene"))) {
+      status_(new QLabel), starter_(new QPushButton(tr("Start from the starter scene"))),
+      checker_(
+          this, [](const Check& c) { return grading::checkScene(*c.scene, c.requirements); },
+          [this](const Check& c, grading::CheckReport report) {
+              // A report of a scene or an assignment since replaced is not shown.
+              if (c.scene == scene_ && c.assignment == current_) showReport(report);
+          }) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     layout->addWidget(choice_);
@@ -70,11 +76,6 @@ AssignmentPanel::AssignmentPanel(QWidget* parent, const QString& folder)
     showAssignment();
 }
 
-AssignmentPanel::~AssignmentPanel() {
-    *alive_ = false;
-    if (worker_.joinable()) worker_.join();
-}
-
 const courseware::Assignment* AssignmentPanel::assignment() const {
     if (current_ < 0 || std::size_t(current_) >= assignments_.size()) return nullptr;
     const auto& a = assignments_[std::size_t(current_)].assignment;
@@ -91,8 +92,7 @@ bool AssignmentPanel::choose(const QString& id) {
 }
 
 bool AssignmentPanel::checking() const {
-    std::lock_guard lock(mutex_);
-    return working_ || pending_;
+    return checker_.busy();
 }
 
 void AssignmentPanel::showAssignment() {
@@ -126,33 +126,8 @@ void AssignmentPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
 }
 
 void AssignmentPanel::check(std::shared_ptr<const scene::Scene> scene) {
-    std::lock_guard lock(mutex_);
-    if (working_) {
-        pending_ = std::move(scene); // only the newest counts
-        return;
-    }
-    working_ = true;
-    if (worker_.joinable()) worker_.join();
     status_->setText(tr("checking…"));
-    const std::vector<grading::Requirement> requirements = assignment()->requirements;
-    worker_ = std::thread([this, scene, requirements, alive = alive_] {
-        grading::CheckReport report = grading::checkScene(*scene, requirements);
-        QMetaObject::invokeMethod(
-            this,
-            [this, report = std::move(report), scene, alive] {
-                if (!*alive) return;
-                std::shared_ptr<const scene::Scene> next;
-                {
-                    std::lock_guard lock(mutex_);
-                    working_ = false;
-                    next = std::move(pending_);
-                    pending_.reset();
-                }
-                if (scene == scene_) showReport(report);
-                if (next && assignment()) check(next);
-            },
-            Qt::QueuedConnection);
-    });
+    checker_.request({std::move(scene), current_, assignment()->requirements});
 }
 
 void AssignmentPanel::showReport(const grading::CheckReport& report) {

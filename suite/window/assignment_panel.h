@@ -9,12 +9,10 @@
 #include "assignment.h"
 #include "checker.h"
 
-#include <QPointer>
+#include "newest_only_worker.h"
 
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <thread>
 #include <vector>
 
 class QComboBox;
@@ -30,7 +28,6 @@ class AssignmentPanel : public Panel {
   public:
     // `folder`: where the assignments are (the courseware's by default).
     explicit AssignmentPanel(QWidget* parent = nullptr, const QString& folder = {});
-    ~AssignmentPanel() override;
 
     const courseware::Assignment* assignment() const;
     bool choose(const QString& id); // false when there is no such assignment
@@ -68,12 +65,13 @@ class AssignmentPanel : public Panel {
     std::shared_ptr<const scene::Scene> scene_;
     std::optional<grading::CheckReport> report_;
 
-    // One check at a time on a worker; a newer scene waits as `pending_`.
-    mutable std::mutex mutex_;
-    std::thread worker_;
-    bool working_ = false;
-    std::shared_ptr<const scene::Scene> pending_;
-    std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+    // One check at a time on a worker, the newest scene next.
+    struct Check {
+        std::shared_ptr<const scene::Scene> scene;
+        int assignment; // current_ when asked
+        std::vector<grading::Requirement> requirements;
+    };
+    NewestOnlyWorker<Check, grading::CheckReport> checker_;
 };
 
 } // namespace fl::suite

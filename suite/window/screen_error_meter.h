@@ -6,11 +6,11 @@
 // waits.
 #include "mesh/scene_meshing.h"
 
+#include "newest_only_worker.h"
+
 #include <QObject>
 
 #include <memory>
-#include <mutex>
-#include <thread>
 
 namespace fl::suite {
 
@@ -18,23 +18,18 @@ class ScreenErrorMeter : public QObject {
     Q_OBJECT
   public:
     explicit ScreenErrorMeter(QObject* parent = nullptr);
-    ~ScreenErrorMeter() override;
 
-    void measure(std::shared_ptr<const mesh::SceneMeshes> frame);
-    bool busy() const;
+    void measure(std::shared_ptr<const mesh::SceneMeshes> frame) {
+        worker_.request(std::move(frame));
+    }
+    bool busy() const { return worker_.busy(); }
 
   Q_SIGNALS:
     // "max error 1.2e-03 of the diagonal (FShape MELON)"; empty: nothing to measure.
     void measured(const QString& text);
 
   private:
-    void start(std::shared_ptr<const mesh::SceneMeshes> frame);
-
-    mutable std::mutex mutex_;
-    std::thread worker_;
-    bool working_ = false;
-    std::shared_ptr<const mesh::SceneMeshes> pending_;
-    std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+    NewestOnlyWorker<std::shared_ptr<const mesh::SceneMeshes>, QString> worker_;
 };
 
 } // namespace fl::suite

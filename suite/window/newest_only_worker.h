@@ -1,0 +1,82 @@
+#pragma once
+// One job at a time on a worker thread, for panels that compute from the
+// scene or a frame without making the interface wait: a request while a job
+// runs becomes the one pending request (a newer one replaces it — stale work
+// is dropped, never queued), and each result is handed to `done` on the
+// owner's thread. Destroying the worker waits for the running job; a result
+// that arrives after the owner is gone is dropped.
+#include <QMetaObject>
+#include <QObject>
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace fl::suite {
+
+template <class Input, class Result>
+class NewestOnlyWorker {
+  public:
+    NewestOnlyWorker(QObject* owner, std::function<Result(const Input&)> work,
+                     std::function<void(const Input&, Result)> done)
+        : owner_(owner), work_(std::move(work)), done_(std::move(done)) {}
+    ~NewestOnlyWorker() {
+        *alive_ = false;
+        if (thread_.joinable()) thread_.join();
+    }
+    NewestOnlyWorker(const NewestOnlyWorker&) = delete;
+    NewestOnlyWorker& operator=(const NewestOnlyWorker&) = delete;
+
+    void request(Input input) {
+        std::lock_guard lock(mutex_);
+        if (working_) {
+            pending_ = std::move(input);
+            return;
+        }
+        working_ = true;
+        start(std::move(input));
+    }
+
+    // Working, or a request waiting.
+    bool busy() const {
+        std::lock_guard lock(mutex_);
+        return working_ || pending_.has_value();
+    }
+
+  private:
+    // Called with the mutex held, or from the owner's thread after a job.
+    void start(Input input) {
+        if (thread_.joinable()) thread_.join(); // the last job has ended
+        thread_ = std::thread([this, input = std::move(input), alive = alive_]() mutable {
+            Result result = work_(input);
+            QMetaObject::invokeMethod(
+                owner_,
+                [this, input = std::move(input), result = std::move(result), alive]() mutable {
+                    if (!*alive) return;
+                    std::optional<Input> next;
+                    {
+                        std::lock_guard lock(mutex_);
+                        next = std::move(pending_);
+                        pending_.reset();
+                        working_ = next.has_value();
+                    }
+                    done_(input, std::move(result));
+                    if (next) start(std::move(*next));
+                },
+                Qt::QueuedConnection);
+        });
+    }
+
+    QObject* owner_;
+    std::function<Result(const Input&)> work_;
+    std::function<void(const Input&, Result)> done_;
+    mutable std::mutex mutex_;
+    std::thread thread_;
+    bool working_ = false;
+    std::optional<Input> pending_;
+    std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+};
+
+} // namespace fl::suite
