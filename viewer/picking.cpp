@@ -119,12 +119,14 @@ std::optional<Pick> pick(const mesh::SceneMeshes& meshes, const Ray& ray) {
     const double far = std::max({std::abs(double(ray.origin.x())), std::abs(double(ray.origin.y())),
                                  std::abs(double(ray.origin.z()))});
     if (far * 2.3e-16 > 1e-3 * std::max(reach, 1e-6)) return best;
-    for (const mesh::ShapeMesh& s : meshes.shapes) {
+    for (std::size_t i = 0; i < meshes.shapes.size(); ++i) {
+        const mesh::ShapeMesh& s = meshes.shapes[i];
         if (!s.error.empty()) continue;
         std::optional<Pick> p = onFunction(s, ray);
         if (!p) p = onTriangles(s, ray);
         if (p && (!best || p->distance < best->distance)) {
             best = p;
+            best->shapeIndex = i;
             best->touchSensors = s.touchSensors;
         }
     }

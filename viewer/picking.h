@@ -31,6 +31,7 @@ struct Pick {
     std::array<double, 3> normal{}; // unit, outward (an implicit surface: towards the eye)
     double distance = 0;            // along the ray
     std::string shape;              // the ShapeMesh's name
+    std::size_t shapeIndex = 0;     // which of the SceneMeshes' shapes
     bool onFunction = false;        // found on f = 0 (else on a triangle)
     // The TouchSensors a click here triggers (the ShapeMesh's).
     std::vector<const scene::Node*> touchSensors;

@@ -179,7 +179,10 @@ bool SceneWidget::eventFilter(QObject* watched, QEvent* event) {
         const QPoint p = e->position().toPoint();
         const QPoint d = p - lastMouse_;
         lastMouse_ = p;
-        if (!e->buttons()) return false;
+        if (!e->buttons()) {
+            Q_EMIT hovered(e->position());
+            return false;
+        }
         if (navigation_ == Navigation::Walk)
             pose_ = look(pose_, float(d.x()) * 0.005f, -float(d.y()) * 0.005f);
         else if (e->buttons() & Qt::LeftButton)

@@ -66,6 +66,9 @@ class SceneWidget : public QWidget {
     void navigationBound(fl::viewer::SceneWidget::Navigation n);
     // A click (press and release without dragging) at this pixel of the view.
     void clicked(QPointF pixel);
+    // The mouse moved over the view with no button pressed (a window may ask
+    // what is under it: the status bar's error figure follows the cursor).
+    void hovered(QPointF pixel);
 
   protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

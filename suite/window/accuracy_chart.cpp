@@ -42,6 +42,11 @@ void AccuracyChart::setOperatingResolution(double resolution) {
     update();
 }
 
+void AccuracyChart::setLevelOfDetailRange(double coarsest, double finest) {
+    lod_ = {coarsest, finest};
+    update();
+}
+
 QString AccuracyChart::xLabel() const {
     return tr("time per mesh (ms, log scale)");
 }
@@ -104,6 +109,24 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
     p.rotate(-90);
     p.drawText(QRectF(-a.height() / 2, -8, a.height(), 14), Qt::AlignHCenter, yLabel());
     p.restore();
+    // The level of detail's range: a band under the adaptive points it may use.
+    if (lod_.second > 0) {
+        QPainterPath band;
+        bool first = true;
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            const bench::AccuracyRow& r = rows_[i];
+            if (r.method != "adaptive" || r.resolution < lod_.first || r.resolution > lod_.second)
+                continue;
+            first ? band.moveTo(pointOf(i)) : band.lineTo(pointOf(i));
+            first = false;
+        }
+        if (!first) {
+            p.setPen(QPen(QColor(0xf0, 0xa0, 0x20, 110), 14, Qt::SolidLine, Qt::RoundCap,
+                          Qt::RoundJoin));
+            p.setBrush(Qt::NoBrush);
+            p.drawPath(band);
+        }
+    }
     // One line per method, in resolution order.
     for (const auto& [method, colour] :
          {std::pair<std::string, QColor>{"dense", kDense}, {"adaptive", kAdaptive}}) {
@@ -141,6 +164,11 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
     p.drawText(QPointF(a.right() - 150, a.top() + 14), tr("● adaptive (ours)"));
     p.setPen(kDense);
     p.drawText(QPointF(a.right() - 150, a.top() + 28), tr("● dense marching cubes"));
+    if (lod_.second > 0) {
+        p.setPen(QColor(0xc0, 0x78, 0x10));
+        p.drawText(QPointF(a.right() - 150, a.top() + 42),
+                   tr("▬ level of detail %1–%2").arg(lod_.first).arg(lod_.second));
+    }
 }
 
 void AccuracyChart::mouseMoveEvent(QMouseEvent* event) {

@@ -2,12 +2,14 @@
 // What accuracy costs in time, drawn: measured max error (a fraction of the
 // box diagonal) against milliseconds per mesh, both on log scales, one line
 // per method (the adaptive mesher, dense marching cubes). The operating
-// point — the resolution the view uses now — is ringed; hovering a point
+// point — the resolution the view uses now — is ringed, the level of
+// detail's range is a band along the adaptive line; hovering a point
 // says its resolution, triangles and evaluations; clicking one chooses it.
 #include "accuracy_sweep.h"
 
 #include <QWidget>
 
+#include <utility>
 #include <vector>
 
 namespace fl::suite {
@@ -21,6 +23,10 @@ class AccuracyChart : public QWidget {
     const std::vector<bench::AccuracyRow>& rows() const { return rows_; }
     void setOperatingResolution(double resolution);
     double operatingResolution() const { return operating_; }
+    // The level of detail's range (coarsest, finest), drawn as a band along
+    // the adaptive curve; {0, 0}: the shape has no level of detail.
+    void setLevelOfDetailRange(double coarsest, double finest);
+    std::pair<double, double> levelOfDetailRange() const { return lod_; }
 
     // Where row `i` is drawn (for tests and the mouse), and its row under a pixel.
     QPointF pointOf(std::size_t i) const;
@@ -41,6 +47,7 @@ class AccuracyChart : public QWidget {
 
     std::vector<bench::AccuracyRow> rows_;
     double operating_ = 0;
+    std::pair<double, double> lod_{0, 0};
     double xLo_ = 0, xHi_ = 1, yLo_ = -4, yHi_ = 0; // decades (log10)
 };
 

@@ -11,6 +11,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fl::suite {
@@ -19,11 +20,18 @@ std::vector<double> AccuracyPanel::sweepResolutions() {
     return {8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256};
 }
 
+void AccuracyPanel::setResolutions(std::vector<double> resolutions) {
+    cancel();
+    resolutions_ = std::move(resolutions);
+    progress_->setRange(0, int(resolutions_.size()));
+}
+
 AccuracyPanel::AccuracyPanel(QWidget* parent)
     : Panel(tr("Accuracy"), QStringLiteral("accuracy"), Qt::RightDockWidgetArea, parent),
       shapes_(new QComboBox), chart_(new AccuracyChart), progress_(new QProgressBar),
       measure_(new QPushButton(tr("Measure"))), cancel_(new QPushButton(tr("Cancel"))),
-      target_(new QLineEdit), status_(new QLabel) {
+      write_(new QPushButton(tr("Write into the scene"))), target_(new QLineEdit),
+      status_(new QLabel) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;
@@ -37,17 +45,22 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
     targetRow->addWidget(new QLabel(tr("Target error:")));
     target_->setPlaceholderText(tr("e.g. 0.001 of the diagonal"));
     targetRow->addWidget(target_, 1);
+    targetRow->addWidget(write_);
     layout->addLayout(targetRow);
+    write_->setToolTip(tr("Make the chosen resolution part of the scene text (resolution, and "
+                          "the finest end of lodRange): undo with Ctrl+Z in the editor"));
+    write_->setEnabled(false);
     status_->setWordWrap(true);
     layout->addWidget(status_);
     shapes_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     shapes_->setMinimumContentsLength(12);
     setWidget(box);
     cancel_->setEnabled(false);
-    progress_->setRange(0, int(sweepResolutions().size()));
+    progress_->setRange(0, int(resolutions_.size()));
     progress_->setValue(0);
     connect(measure_, &QPushButton::clicked, this, [this] { measure(); });
     connect(cancel_, &QPushButton::clicked, this, [this] { cancel(); });
+    connect(write_, &QPushButton::clicked, this, [this] { writeChoice(); });
     connect(chart_, &AccuracyChart::resolutionChosen, this, [this](double r) { choose(r); });
     connect(target_, &QLineEdit::returnPressed, this, [this] {
         bool ok = false;
@@ -62,8 +75,12 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
     });
     connect(shapes_, &QComboBox::currentIndexChanged, this, [this](int i) {
         chart_->setRows({});
-        if (i >= 0 && std::size_t(i) < candidates_.size())
-            chart_->setOperatingResolution(candidates_[std::size_t(i)].resolution);
+        write_->setEnabled(false);
+        if (i >= 0 && std::size_t(i) < candidates_.size()) {
+            const Candidate& c = candidates_[std::size_t(i)];
+            chart_->setOperatingResolution(c.resolution);
+            chart_->setLevelOfDetailRange(c.lodRange.first, c.lodRange.second);
+        }
     });
 }
 
@@ -93,14 +110,26 @@ void AccuracyPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
         const scene::Node* key = s.geometry ? s.geometry : s.shape;
         const double resolution =
             s.geometry ? scene::numberField(*s.geometry, "resolution", 0, 32) : 32;
+        std::pair<double, double> lod{0, 0};
+        if (s.geometry && scene::boolField(*s.geometry, "lod")) {
+            const auto range = scene::numbersField(*s.geometry, "lodRange");
+            lod = range.size() == 2 ? std::pair{range[0], range[1]} : std::pair{8.0, 256.0};
+        }
+        const bool written = s.geometry && s.geometry->file == 0 && !s.geometry->inProtoBody &&
+                             !s.geometry->instance;
         const QString name = QString::fromStdString(s.shape->defName.empty()
                                                         ? s.shape->type + " at line " +
                                                               std::to_string(s.shape->where.line)
                                                         : s.shape->type + " " + s.shape->defName);
-        candidates_.push_back({key, name, s.field, resolution});
+        candidates_.push_back({key, name, s.field, resolution, written, lod});
         shapes_->addItem(name);
     }
-    if (!candidates_.empty()) chart_->setOperatingResolution(candidates_.front().resolution);
+    write_->setEnabled(false);
+    if (!candidates_.empty()) {
+        chart_->setOperatingResolution(candidates_.front().resolution);
+        chart_->setLevelOfDetailRange(candidates_.front().lodRange.first,
+                                      candidates_.front().lodRange.second);
+    }
     status_->setText(candidates_.empty()
                          ? tr("no implicit or explicit shape to measure in this scene")
                          : tr("Measure: how far each mesh is from the true surface, and what it "
@@ -128,12 +157,12 @@ void AccuracyPanel::measure() {
     cancel_->setEnabled(true);
     status_->setText(tr("measuring…"));
     running_ = true;
-    worker_ = std::thread([this, field, alive = alive_] {
+    worker_ = std::thread([this, field, resolutions = resolutions_, alive = alive_] {
         std::vector<bench::AccuracyRow> rows;
         bench::SweepOptions o;
         o.threads = 1; // the interface keeps a core
         int done = 0;
-        for (double r : sweepResolutions()) {
+        for (double r : resolutions) {
             if (stop_) break;
             const auto more = bench::runAccuracySweep(*field, {r}, o);
             rows.insert(rows.end(), more.begin(), more.end());
@@ -181,7 +210,39 @@ void AccuracyPanel::choose(double resolution) {
     c.resolution = resolution;
     chart_->setOperatingResolution(resolution);
     status_->setText(tr("%1 is meshed at resolution %2 now").arg(c.name).arg(resolution));
+    write_->setEnabled(c.written);
     Q_EMIT resolutionChosen(c.geometry, resolution);
+}
+
+void AccuracyPanel::writeChoice() {
+    const int index = shapes_->currentIndex();
+    if (index < 0 || std::size_t(index) >= candidates_.size()) return;
+    const Candidate& c = candidates_[std::size_t(index)];
+    if (c.written) Q_EMIT writeRequested(c.geometry, c.resolution);
+}
+
+std::vector<scene::TextEdit> AccuracyPanel::resolutionEdits(const scene::Scene& scene,
+                                                            const scene::Node& geometry,
+                                                            double resolution, std::string* why) {
+    const auto number = [](double v) { return QString::number(v, 'g', 6).toStdString(); };
+    std::vector<scene::TextEdit> edits;
+    const auto r =
+        scene::setNumbersFieldEdit(scene, geometry, "resolution", number(resolution), why);
+    if (!r) return {};
+    edits.push_back(*r);
+    if (scene::boolField(geometry, "lod")) {
+        const auto range = scene::numbersField(geometry, "lodRange");
+        const double coarsest = std::min(range.size() == 2 ? range[0] : 8.0, resolution);
+        const auto l = scene::setNumbersFieldEdit(scene, geometry, "lodRange",
+                                                  number(coarsest) + " " + number(resolution), why);
+        if (!l) return {};
+        edits.push_back(*l);
+    }
+    // Later offsets first, so earlier ones stay valid; two fields added at one
+    // place keep their order.
+    std::stable_sort(edits.begin(), edits.end(),
+                     [](const auto& a, const auto& b) { return a.offset > b.offset; });
+    return edits;
 }
 
 } // namespace fl::suite

@@ -5,11 +5,14 @@
 // code (bench/accuracy_sweep.h) — runs on a worker thread, cancellable, with
 // progress, and is drawn as error against time (AccuracyChart). The shape's
 // resolution now is ringed; clicking a point, or typing a target error,
-// chooses the resolution the view meshes the shape at.
+// chooses the resolution the view meshes the shape at; "Write into the
+// scene" makes that choice part of the scene text (resolution, and the
+// level of detail's finest resolution).
 #include "accuracy_chart.h"
 #include "panel.h"
 
 #include "field/field_sampler.h"
+#include "scene/field_text_edit.h"
 
 #include <atomic>
 #include <memory>
@@ -36,8 +39,10 @@ class AccuracyPanel : public Panel {
     explicit AccuracyPanel(QWidget* parent = nullptr);
     ~AccuracyPanel() override;
 
-    // The resolutions a sweep measures.
+    // The resolutions a sweep measures (by default 8 to 256).
     static std::vector<double> sweepResolutions();
+    void setResolutions(std::vector<double> resolutions);
+    const std::vector<double>& resolutions() const { return resolutions_; }
 
     void measure(); // starts a sweep of the chosen shape (cancels one running)
     void cancel();
@@ -46,7 +51,20 @@ class AccuracyPanel : public Panel {
     // box diagonal), as measured; false when no measured resolution reaches it.
     bool chooseTargetError(double target);
 
+    // The edits of the scene's text that make `resolution` the FGeometry's
+    // written choice: its `resolution`, and where it has `lod TRUE` a
+    // `lodRange` whose finest end is that resolution (near the camera the
+    // shape is meshed at the chosen accuracy and never finer; far away the
+    // level of detail may coarsen it). In descending offset order, to apply
+    // one after the other. Empty, with `why`, when the node cannot be edited
+    // in the text.
+    static std::vector<scene::TextEdit> resolutionEdits(const scene::Scene& scene,
+                                                        const scene::Node& geometry,
+                                                        double resolution, std::string* why);
+    void writeChoice(); // asks the window to write the current choice
+
     AccuracyChart* chart() const { return chart_; }
+    QPushButton* writeButton() const { return write_; }
     QComboBox* shapes() const { return shapes_; }
     QLabel* status() const { return status_; }
 
@@ -57,6 +75,8 @@ class AccuracyPanel : public Panel {
     // Mesh this FGeometry at this resolution (the window tells the player).
     void resolutionChosen(const fl::scene::Node* geometry, double resolution);
     void measured(); // a sweep finished (or was cancelled)
+    // Write this FGeometry's chosen resolution into the scene text.
+    void writeRequested(const fl::scene::Node* geometry, double resolution);
 
   private:
     struct Candidate {
@@ -64,15 +84,18 @@ class AccuracyPanel : public Panel {
         QString name;
         std::shared_ptr<const field::ImplicitField> field;
         double resolution;
+        bool written;                       // a FGeometry of the scene file: it can be edited
+        std::pair<double, double> lodRange; // {0, 0}: no level of detail
     };
     void choose(double resolution);
 
     std::shared_ptr<const scene::Scene> scene_;
+    std::vector<double> resolutions_ = sweepResolutions();
     std::vector<Candidate> candidates_;
     QComboBox* shapes_;
     AccuracyChart* chart_;
     QProgressBar* progress_;
-    QPushButton *measure_, *cancel_;
+    QPushButton *measure_, *cancel_, *write_;
     QLineEdit* target_;
     QLabel* status_;
 

@@ -50,6 +50,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabBar>
+#include <QTextCursor>
 #include <QToolBar>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -170,7 +171,21 @@ MainWindow::MainWindow(QWidget* parent)
         const auto meshes = view_->meshes();
         if (meshes && meshes->source == scene_ &&
             lod_->update(*meshes, view_->pose(), view_->size()))
-            player_->setResolutions(lod_->resolutions());
+            playResolutions();
+    });
+    // The status bar's error figure follows the shape under the resting cursor.
+    hoverTimer_.setSingleShot(true);
+    hoverTimer_.setInterval(200);
+    connect(view_, &viewer::SceneWidget::hovered, this, [this](QPointF pixel) {
+        hoverPixel_ = pixel;
+        hoverTimer_.start();
+    });
+    connect(&hoverTimer_, &QTimer::timeout, this, [this] {
+        const auto meshes = view_->meshes();
+        if (!meshes || meshes->source != scene_) return;
+        const auto p = viewer::pick(
+            *meshes, viewer::rayThroughPixel(view_->pose(), view_->size(), hoverPixel_));
+        errorMeter_->focusOn(p ? meshes->shapes[p->shapeIndex].shape : nullptr);
     });
 
     QSettings settings;
@@ -241,8 +256,9 @@ void MainWindow::buildDocks() {
     connect(accuracy_, &AccuracyPanel::resolutionChosen, this,
             [this](const scene::Node* geometry, double resolution) {
                 chosenResolutions_[geometry] = resolution;
-                player_->setResolutions(chosenResolutions_);
+                playResolutions();
             });
+    connect(accuracy_, &AccuracyPanel::writeRequested, this, &MainWindow::writeResolution);
     connect(assignment_, &AssignmentPanel::starterChosen, this, [this](const QString& path) {
         if (maybeKeepChanges()) openFile(path);
     });
@@ -532,8 +548,50 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     timeline_->setSpan(timelineSpan(*scene));
     player_->setParameters(parameters_->values());
     lod_->clear();
+    chosenResolutions_.clear(); // they name the old scene's nodes
+    errorMeter_->focusOn(nullptr);
     view_->setMarker(std::nullopt); // it marked a point of the old shapes
     player_->setScene(scene);
+}
+
+void MainWindow::playResolutions() {
+    // The level of detail's resolutions, but a shape whose resolution was
+    // chosen in the Accuracy panel keeps that choice.
+    auto resolutions = lod_->resolutions();
+    for (const auto& [geometry, resolution] : chosenResolutions_)
+        resolutions[geometry] = resolution;
+    player_->setResolutions(std::move(resolutions));
+}
+
+bool MainWindow::writeResolution(const scene::Node* geometry, double resolution) {
+    // The edits are offsets into the text the scene was read from: only when
+    // that is still the editor's text.
+    const std::string text = editor_->toPlainText().toStdString();
+    if (!scene_ || scene_->files.empty() || scene_->files[0].text != text || !geometry) {
+        problem(tr("The text changed since it was last read: wait for it to parse, then write "
+                   "the resolution again."));
+        return false;
+    }
+    std::string why;
+    const auto edits = AccuracyPanel::resolutionEdits(*scene_, *geometry, resolution, &why);
+    if (edits.empty()) {
+        problem(tr("The resolution cannot be written into the text: %1")
+                    .arg(QString::fromStdString(why)));
+        return false;
+    }
+    // One undoable step in the editor; offsets in bytes become characters.
+    QTextCursor cursor(editor_->document());
+    cursor.beginEditBlock();
+    for (const scene::TextEdit& e : edits) {
+        const auto at = QString::fromUtf8(text.data(), qsizetype(e.offset)).size();
+        const auto end = QString::fromUtf8(text.data(), qsizetype(e.offset + e.length)).size();
+        cursor.setPosition(int(at));
+        cursor.setPosition(int(end), QTextCursor::KeepAnchor);
+        cursor.insertText(QString::fromStdString(e.text));
+    }
+    cursor.endEditBlock();
+    statusBar()->showMessage(tr("resolution %1 written into the scene").arg(resolution), 5000);
+    return true;
 }
 
 void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double) {

@@ -5,6 +5,7 @@
 // frame rate and t. Every file operation reports problems in the window,
 // never by crashing, and unsaved text is kept in a recovery file.
 #include <QMainWindow>
+#include <QPointF>
 #include <QTimer>
 
 #include <memory>
@@ -90,6 +91,11 @@ class MainWindow : public QMainWindow {
     // File → Hand in: checks once more, then packs the scene and the files
     // it uses into `folder` (a new one). False, with lastProblem(), if not.
     bool handIn(const QString& folder);
+    // Writes the Accuracy panel's choice of resolution for `geometry` into
+    // the editor's text (one undoable edit). False, with lastProblem(), if not.
+    bool writeResolution(const scene::Node* geometry, double resolution);
+    ScreenErrorMeter* errorMeter() const { return errorMeter_; }
+    AccuracyPanel* accuracyPanel() const { return accuracy_; }
     // The window's panels, in the order they were added.
     const std::vector<Panel*>& panels() const { return panels_; }
 
@@ -126,6 +132,7 @@ class MainWindow : public QMainWindow {
     void sceneChanged(std::shared_ptr<const scene::Scene> scene);
     void meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds);
     void writeRecovery();
+    void playResolutions(); // the level of detail's, with the Accuracy panel's choices
 
     QString recoveryPath() const;
 
@@ -154,7 +161,8 @@ class MainWindow : public QMainWindow {
     QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
     QLabel* screenError_; // the measured max error of what is on screen
     ScreenErrorMeter* errorMeter_;
-    QTimer recoveryTimer_, rateTimer_, lodTimer_;
+    QTimer recoveryTimer_, rateTimer_, lodTimer_, hoverTimer_;
+    QPointF hoverPixel_;
     std::unique_ptr<viewer::LevelOfDetail> lod_;
     QString path_;
     QString lastProblem_;

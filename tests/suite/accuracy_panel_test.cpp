@@ -5,14 +5,18 @@
 // cancelled. A screenshot is saved to look at.
 #include "accuracy_panel.h"
 
+#include "scene/field_access.h"
 #include "scene/scene_reader.h"
 
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+
+#include <functional>
 
 using namespace fl;
 
@@ -65,6 +69,51 @@ class AccuracyPanelTest : public QObject {
         panel.chooseTargetError(rows[rows.size() - 2].maxError); // adaptive at 256
         QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
         QVERIFY(panel.grab().save(FUNCTIONLAB_SCREENSHOT_DIR "/accuracy-panel.png"));
+    }
+
+    void theLevelOfDetailRangeIsMarkedAndTheChoiceWritten() {
+        suite::AccuracyPanel panel;
+        const auto scene = watermelon();
+        panel.sceneChanged(scene);
+        // The watermelon's FGeometry has the default `lod TRUE` over 8..256.
+        QCOMPARE(panel.chart()->levelOfDetailRange(), (std::pair<double, double>{8, 256}));
+        QVERIFY(!panel.writeButton()->isEnabled()); // nothing chosen yet
+        panel.setResolutions({16, 32});
+        QSignalSpy done(&panel, &suite::AccuracyPanel::measured);
+        panel.measure();
+        QVERIFY(done.wait(60000));
+        QCOMPARE(panel.chart()->rows().size(), std::size_t(4));
+        QVERIFY(panel.chooseTargetError(1.0));
+        QVERIFY(panel.writeButton()->isEnabled());
+        QSignalSpy write(&panel, &suite::AccuracyPanel::writeRequested);
+        panel.writeButton()->click();
+        QCOMPARE(write.count(), 1);
+        QCOMPARE(write.first().at(1).toDouble(), 16.0);
+        // The edits: resolution 16, lodRange ending at 16; read back, they are the file's.
+        const auto* geometry =
+            static_cast<const scene::Node*>(write.first().at(0).value<const scene::Node*>());
+        QVERIFY(geometry);
+        std::string why;
+        const auto edits = suite::AccuracyPanel::resolutionEdits(*scene, *geometry, 16, &why);
+        QVERIFY2(edits.size() == 2, why.c_str());
+        std::string text = scene->files[0].text;
+        for (const auto& e : edits)
+            text = scene::applied(text, e);
+        const scene::ReadResult again = scene::readSceneBytes(text, "watermelon.x3d");
+        QVERIFY(again.ok());
+        const scene::Node* g = nullptr;
+        std::function<void(const scene::Node*)> find = [&](const scene::Node* n) {
+            if (!n || g) return;
+            if (n->type == "FGeometry") g = n;
+            for (const auto& f : n->fields)
+                for (const scene::Node* c : f.value.nodes)
+                    find(c);
+        };
+        for (const scene::Node* n : again.scene->roots)
+            find(n);
+        QVERIFY(g);
+        QCOMPARE(scene::numberField(*g, "resolution"), 16.0);
+        QCOMPARE(scene::numbersField(*g, "lodRange"), (std::vector<double>{8, 16}));
     }
 
     void aSweepCanBeCancelled() {

@@ -1,3 +1,5 @@
+#include "accuracy_chart.h"
+#include "accuracy_panel.h"
 #include "assignment_panel.h"
 #include "code_editor.h"
 #include "live_parser.h"
@@ -9,15 +11,19 @@
 #include "picture_measures.h"
 #include "scene_player.h"
 #include "scene_widget.h"
+#include "screen_error_meter.h"
 #include "timeline_bar.h"
 
 #include "surface_format.h"
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
 #include <QListWidget>
 #include <QPainter>
+#include <QPushButton>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -123,6 +129,26 @@ class WindowTest : public QObject {
                                 (s.field && s.mesh.triangleCount() > 0 && !s.mesh.isPointCloud());
             QTRY_COMPARE_WITH_TIMEOUT(w.screenErrorText().contains(QStringLiteral("max error")),
                                       functionShape, 20000);
+            // The Accuracy panel: every implicit or explicit shape listed, and
+            // a (short) sweep of the first drawn, with the operating point.
+            suite::AccuracyPanel* accuracy = w.accuracyPanel();
+            const bool listed = accuracy->shapes()->count() > 0;
+            bool implicitShape = false;
+            for (const auto& s : w.view()->meshes()->shapes)
+                implicitShape = implicitShape || (s.field && s.shape);
+            QCOMPARE(listed, implicitShape);
+            if (!listed) continue;
+            accuracy->setResolutions({8, 16});
+            QSignalSpy swept(accuracy, &suite::AccuracyPanel::measured);
+            accuracy->measure();
+            QVERIFY2(swept.wait(60000), qPrintable(path));
+            QCOMPARE(accuracy->chart()->rows().size(), std::size_t(4));
+            QVERIFY(accuracy->chart()->operatingResolution() > 0);
+            for (const auto& r : accuracy->chart()->rows())
+                QVERIFY2(r.triangles > 0 && std::isfinite(r.maxError),
+                         qPrintable(path + " at " + QString::number(r.resolution)));
+            accuracy->raise();
+            save(accuracy->grab().toImage(), "accuracy-" + QFileInfo(path).completeBaseName());
         }
     }
 
@@ -496,6 +522,90 @@ class WindowTest : public QObject {
         const double error = text.section(QLatin1Char(' '), 2, 2).toDouble();
         QVERIFY2(error > 0 && error < 0.05, qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("FShape")));
+    }
+
+    void theErrorFigureFollowsTheShapeUnderTheCursor() {
+        // The implicit gallery has several shapes: resting the cursor on one
+        // names it in the status bar; over empty space, the largest again.
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("implicit_gallery.x3d")));
+        QVERIFY(settle(w));
+        QTRY_VERIFY_WITH_TIMEOUT(w.screenErrorText().contains(QStringLiteral("max error")), 20000);
+        const auto meshes = w.view()->meshes();
+        // A pixel over some shape that is not the largest: scan the view.
+        const QSize size = w.view()->size();
+        std::optional<QPointF> over;
+        const scene::Node* target = nullptr;
+        std::size_t largest = 0;
+        for (const auto& s : meshes->shapes)
+            if (s.field) largest = std::max(largest, s.mesh.triangleCount());
+        for (int y = 10; y < size.height() && !over; y += 20)
+            for (int x = 10; x < size.width() && !over; x += 20) {
+                const auto p = viewer::pick(
+                    *meshes, viewer::rayThroughPixel(w.view()->pose(), size, QPointF(x, y)));
+                if (!p) continue;
+                const auto& s = meshes->shapes[p->shapeIndex];
+                if (s.field && s.shape && !s.shape->defName.empty() &&
+                    s.mesh.triangleCount() < largest) {
+                    over = QPointF(x, y);
+                    target = s.shape;
+                }
+            }
+        QVERIFY2(over, "no smaller named function shape on screen");
+        Q_EMIT w.view()->hovered(*over);
+        QTRY_COMPARE_WITH_TIMEOUT(w.errorMeter()->focus(), target, 5000);
+        const QString name = QString::fromStdString(target->defName);
+        QTRY_VERIFY_WITH_TIMEOUT(w.screenErrorText().contains(name), 20000);
+        // Over nothing: the largest again.
+        Q_EMIT w.view()->hovered(QPointF(1, 1));
+        QTRY_VERIFY_WITH_TIMEOUT(w.errorMeter()->focus() == nullptr, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.screenErrorText().contains(name), 20000);
+    }
+
+    void theAccuracyPanelsChoiceOutlivesTheLevelOfDetailAndIsWritten() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("watermelon.x3d")));
+        QVERIFY(settle(w));
+        auto shown = [&] {
+            for (const auto& s : w.view()->meshes()->shapes)
+                if (s.functionGeometry) return s.resolution;
+            return 0.0;
+        };
+        suite::AccuracyPanel* accuracy = w.accuracyPanel();
+        accuracy->setResolutions({12, 20});
+        QSignalSpy swept(accuracy, &suite::AccuracyPanel::measured);
+        accuracy->measure();
+        QVERIFY(swept.wait(60000));
+        QVERIFY(accuracy->chooseTargetError(1.0)); // the coarsest: 12
+        QVERIFY(settle(w));
+        QCOMPARE(shown(), 12.0);
+        // The camera comes close: the level of detail would refine; the choice stays.
+        for (int step = 0; step < 12; ++step) {
+            w.view()->setPose(viewer::zoom(w.view()->pose(), 0.25f));
+            QTest::qWait(60);
+        }
+        QVERIFY(settle(w));
+        QCOMPARE(shown(), 12.0);
+        // Written into the text: one undoable edit; the scene read again says so.
+        const QString before = w.editor()->toPlainText();
+        QVERIFY(!w.writeResolution(nullptr, 12)); // no shape: refused, said why
+        QVERIFY(!w.lastProblem().isEmpty());
+        accuracy->writeButton()->click();
+        const QString after = w.editor()->toPlainText();
+        QVERIFY2(after.contains(QStringLiteral("resolution='12'")), qPrintable(after.left(4000)));
+        QVERIFY(after.contains(QStringLiteral("lodRange='8 12'")));
+        QVERIFY(settle(w));
+        QCOMPARE(w.issues()->count(), 0);
+        w.editor()->undo();
+        QCOMPARE(w.editor()->toPlainText(), before);
     }
 
     void savingWritesTheTextAndClearsTheModifiedMark() {
