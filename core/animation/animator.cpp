@@ -474,6 +474,16 @@ double Animator::time(const Node& node) const {
     return it == impl_->times.end() ? 0.0 : it->second;
 }
 
+FunctionTiming Animator::timing(const Node& node) const {
+    FunctionTiming out;
+    out.window = impl_->windowOf(node);
+    const FieldValue span = impl_->value(node, "timeSpan");
+    if (span.numbers.size() > 0) out.spanStart = span.numbers[0];
+    if (span.numbers.size() > 1) out.spanEnd = span.numbers[1];
+    out.base = parseTimeBase(scene::stringField(node, "timeBase")).value_or(TimeBase::Scene);
+    return out;
+}
+
 const std::vector<FieldChange>& Animator::changes() const {
     return impl_->changes;
 }

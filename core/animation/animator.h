@@ -12,6 +12,7 @@
 #include "clock.h"
 #include "scene/field_source.h"
 #include "scene/scene.h"
+#include "time_window.h"
 
 #include <cstddef>
 #include <memory>
@@ -24,6 +25,18 @@ namespace fl::animation {
 struct FieldChange {
     const scene::Node* node = nullptr;
     std::string field; // the field's own name ("rotation", not "set_rotation")
+};
+
+// A function node's timing as the clock holds it now (events included): its
+// t at any later moment, without the animator — what the haptic servo thread
+// evaluates at each tick between two snapshots of the scene.
+struct FunctionTiming {
+    TimeWindow window;
+    double spanStart = 0, spanEnd = 1;
+    TimeBase base = TimeBase::Scene;
+    double at(const Instant& now) const {
+        return functionTime(window, spanStart, spanEnd, now.nanosecondsOn(base));
+    }
 };
 
 struct AnimatorLimits {
@@ -67,6 +80,7 @@ class Animator final : public scene::FieldSource {
     bool holdsEventValues(const scene::Node& node) const override;
     // A function node's t at the last tick (timeSpan[0] before the first).
     double time(const scene::Node& functionNode) const;
+    FunctionTiming timing(const scene::Node& functionNode) const;
     // Fields set since the last tick or send began, each once.
     const std::vector<FieldChange>& changes() const;
     std::size_t eventsDelivered() const; // in the last timestamp

@@ -124,6 +124,7 @@ const std::vector<Command>& commands() {
         {gradeExportSpec, gradeExportCommand},
         {gradeSimilarSpec, gradeSimilarCommand},
         {gradeReportSpec, gradeReportCommand},
+        {hapticsProbeSpec, hapticsProbeCommand},
     };
     return all;
 }

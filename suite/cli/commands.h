@@ -24,6 +24,7 @@ const CommandSpec& gradeBatchSpec();
 const CommandSpec& gradeExportSpec();
 const CommandSpec& gradeSimilarSpec();
 const CommandSpec& gradeReportSpec();
+const CommandSpec& hapticsProbeSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -39,6 +40,7 @@ int gradeBatchCommand(const Args& args);    // `grade batch`
 int gradeExportCommand(const Args& args);   // `grade export`
 int gradeSimilarCommand(const Args& args);  // `grade similar`
 int gradeReportCommand(const Args& args);   // `grade report`
+int hapticsProbeCommand(const Args& args);  // `haptics probe`
 
 struct Command {
     const CommandSpec& (*spec)();

@@ -1,0 +1,92 @@
+#pragma once
+// The force at one servo tick (DESIGN §6; docs/haptics.md, "How forces are
+// made"): the tool point against every tangible shape of the snapshot.
+//
+// - Surfaces (shapes with FFriction or FTension): a proxy kept on f = 0
+//   (Salisbury & Tarr). Contact begins where the segment from the tool's
+//   last position to this one first meets the solid (field::marchToSurface:
+//   interval-checked, so no tunnelling through shells thinner than a tick's
+//   motion); in contact the tool is projected onto the tangent plane at the
+//   proxy, the proxy moves towards it as far as the friction cone allows
+//   (radius friction × depth), and Newton steps put it back on f = 0. The
+//   force is a spring from the tool to the proxy. Where the gradient
+//   vanishes (a cone's apex) the last good normal stands in; where there is
+//   none, the proxy stays.
+// - FTension: when the spring (not the damping) pushes back harder than
+//   that (N), the tool pops through; inside, the inside acts and the
+//   surface lets the tool out freely.
+// - FDensity: viscous drag inside, density (clamped to [0, 1]) times the
+//   device's damping.
+// - FForce: the field (N), evaluated only inside its shape.
+// Every effect is read through its own domain box (field::componentView) at
+// its own t (the one clock's timing at the tick's moment). A value that is
+// not finite makes that effect contribute nothing that tick, and is reported
+// once with its location.
+#include "device/haptic_device.h"
+#include "tangible_scene.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace fl::haptics {
+
+enum class ContactKind : std::uint8_t { None, Surface, Inside };
+std::string_view contactName(ContactKind kind); // "none", "surface", "inside"
+
+struct ToolSample {
+    field::Vec3 position{}; // scene coordinates
+    field::Vec3 velocity{}; // scene units per second
+    animation::Instant moment;
+};
+
+struct ForceSample {
+    field::Vec3 force{}; // N, along the scene's axes: what the device applies to the hand
+    field::Vec3 proxy{}; // the surface proxy in contact, else the tool
+    ContactKind contact = ContactKind::None;
+};
+
+struct ForceSettings {
+    double stiffness = 0;      // N per scene unit of spring between tool and proxy
+    double damping = 0;        // N·s per scene unit at density 1
+    double contactDamping = 0; // N·s per scene unit along a surface's normal
+};
+// Half the device's stiffness, its full damping inside, and on surfaces
+// K·T (twice the least damping that keeps a wall sampled every T = 1/rate
+// passive: Colgate & Brown), capped by the device's damping.
+ForceSettings settingsFor(const DeviceLimits& limits, double rateHz);
+
+class ForceModel {
+  public:
+    explicit ForceModel(ForceSettings settings);
+    ~ForceModel();
+    ForceModel(const ForceModel&) = delete;
+    ForceModel& operator=(const ForceModel&) = delete;
+
+    // A new snapshot (on the servo thread, between ticks). Contact with a
+    // shape that is still there — the same FShape node — is kept, so a
+    // snapshot of a moving surface pushes the proxy out, not through.
+    void setScene(std::shared_ptr<const TangibleScene> scene);
+    const TangibleScene* scene() const { return scene_.get(); }
+
+    ForceSample tick(const ToolSample& tool);
+
+    // Problems found so far, each said once ("FDensity (f.x3d:12:3) is not
+    // a number at (0.1, 0.2, 0.3): it adds nothing there").
+    const std::vector<std::string>& reports() const { return reports_; }
+
+  private:
+    struct ShapeState;
+    void report(const std::string& key, const std::string& text);
+
+    ForceSettings settings_;
+    std::shared_ptr<const TangibleScene> scene_;
+    std::vector<std::unique_ptr<ShapeState>> states_;
+    std::vector<std::string> reports_;
+    std::set<std::string> reported_;
+};
+
+} // namespace fl::haptics
