@@ -1,0 +1,148 @@
+#include "device/device_enumeration.h"
+
+#include "device/libusb_falcon_transport.h"
+#include "device/usb_products.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace fl::haptics {
+
+namespace {
+
+std::string hexId(std::uint16_t id) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%04x", id);
+    return text;
+}
+
+void appendJsonString(std::string& out, std::string_view text) {
+    out += '"';
+    for (unsigned char c : text) {
+        switch (c) {
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        default:
+            if (c < 0x20) {
+                char escaped[8];
+                std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+                out += escaped;
+            } else {
+                out += char(c);
+            }
+        }
+    }
+    out += '"';
+}
+
+} // namespace
+
+std::string_view kindName(DeviceKind kind) {
+    return kind == DeviceKind::NovintFalcon ? "falcon" : "spacemouse";
+}
+
+DeviceListing listDevices() {
+    DeviceListing listing;
+    std::string note;
+    for (auto& m : spacemouse::findSpaceMice(&note)) {
+        DeviceEntry e;
+        e.kind = DeviceKind::SpaceMouse;
+        e.name = m.name;
+        e.vendorId = m.vendorId;
+        e.productId = m.productId;
+        e.path = m.path;
+        e.accessible = m.accessible;
+        e.message = m.problem;
+        listing.devices.push_back(std::move(e));
+    }
+    if (!note.empty()) listing.notes.push_back("SpaceMouse: " + note);
+    note.clear();
+    for (auto& f : falcon::findFalcons(&note)) {
+        DeviceEntry e;
+        e.kind = DeviceKind::NovintFalcon;
+        e.name = "Novint Falcon";
+        e.vendorId = kFtdiVendorId;
+        e.productId = kFalconProductId;
+        e.path = f.location;
+        e.accessible = f.accessible;
+        e.message = f.problem;
+        listing.devices.push_back(std::move(e));
+    }
+    if (!note.empty()) listing.notes.push_back("Novint Falcon: " + note);
+    return listing;
+}
+
+std::unique_ptr<HapticDevice> openDevice(const DeviceEntry& entry, const OpenOptions& options,
+                                         std::string* error) {
+    if (entry.kind == DeviceKind::SpaceMouse)
+        return spacemouse::HidapiSpaceMouse::open(entry.path, entry.name, options.spaceMouse,
+                                                  error);
+    auto transport = falcon::LibusbFalconTransport::open(entry.path, error);
+    if (!transport) return nullptr;
+    return falcon::startFalcon(std::move(transport), options.falconFirmware,
+                               options.firmwareAttempts, error);
+}
+
+std::string formatDeviceListing(const DeviceListing& listing) {
+    std::string out;
+    if (listing.devices.empty()) out += "No haptic devices found.\n";
+    std::size_t nameWidth = 0;
+    std::size_t pathWidth = 0;
+    for (const DeviceEntry& e : listing.devices) {
+        nameWidth = std::max(nameWidth, e.name.size());
+        pathWidth = std::max(pathWidth, e.path.size());
+    }
+    for (const DeviceEntry& e : listing.devices) {
+        std::string line = e.name + std::string(nameWidth - e.name.size() + 2, ' ');
+        line += hexId(e.vendorId) + ":" + hexId(e.productId) + "  ";
+        line += e.path + std::string(pathWidth - e.path.size() + 2, ' ');
+        line += e.accessible ? "ready" : "not accessible";
+        out += line + "\n";
+        if (!e.accessible && !e.message.empty()) out += "  " + e.message + "\n";
+    }
+    for (const std::string& note : listing.notes)
+        out += "(" + note + ")\n";
+    return out;
+}
+
+std::string deviceListingJson(const DeviceListing& listing) {
+    std::string out = "{\"devices\": [";
+    for (std::size_t i = 0; i < listing.devices.size(); ++i) {
+        const DeviceEntry& e = listing.devices[i];
+        out += i ? ", {" : "{";
+        out += "\"kind\": ";
+        appendJsonString(out, kindName(e.kind));
+        out += ", \"name\": ";
+        appendJsonString(out, e.name);
+        out += ", \"vendor_id\": \"0x" + hexId(e.vendorId) + "\"";
+        out += ", \"product_id\": \"0x" + hexId(e.productId) + "\"";
+        out += ", \"path\": ";
+        appendJsonString(out, e.path);
+        out += std::string(", \"accessible\": ") + (e.accessible ? "true" : "false");
+        out += ", \"message\": ";
+        appendJsonString(out, e.message);
+        out += "}";
+    }
+    out += "], \"notes\": [";
+    for (std::size_t i = 0; i < listing.notes.size(); ++i) {
+        if (i) out += ", ";
+        appendJsonString(out, listing.notes[i]);
+    }
+    out += "]}";
+    return out;
+}
+
+} // namespace fl::haptics
