@@ -3,6 +3,7 @@
 #include "field/domain_mapping.h"
 #include "field/ray_march.h"
 #include "formula/eval_scalar.h"
+#include "triangle_bvh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -131,6 +132,59 @@ void ForceModel::report(const std::string& key, const std::string& text) {
     if (reported_.insert(key).second) reports_.push_back(text);
 }
 
+// The god-object against triangles (Zilles & Salisbury): the proxy goes
+// towards the tool until a front face stops it, then slides on up to three
+// faces' planes; friction holds it within its cone.
+template <class Friction>
+void ForceModel::polygonStep(ShapeState& s, const Vec3& tool, Friction friction) {
+    const TriangleBvh& bvh = *s.shape->triangles;
+    const double eps = 1e-9 * std::max(bvh.bounds().diagonal(), 1e-300);
+    if (s.contact == ContactKind::Inside) {
+        if (!bvh.contains(tool)) s.contact = ContactKind::None; // out again, freely
+        return;
+    }
+    if (s.contact == ContactKind::None) {
+        const auto hit = bvh.firstHit(s.lastTool, tool);
+        if (!hit || !hit->frontFacing) return;
+        s.contact = ContactKind::Surface;
+        s.proxy = field::along(hit->point, hit->normal, eps);
+        s.lastNormal = hit->normal;
+        s.hasNormal = true;
+    }
+    // Towards the tool until a front face stops the proxy; the rest of the
+    // way projected onto that face's plane; up to three faces a tick.
+    const Vec3 from = s.proxy;
+    Vec3 goal = tool, proxy = s.proxy, normal = s.lastNormal;
+    bool free = true;
+    for (int constraint = 0; constraint < 3; ++constraint) {
+        const auto hit = bvh.firstHit(proxy, goal);
+        if (!hit || !hit->frontFacing) {
+            proxy = goal;
+            break;
+        }
+        free = false;
+        const Vec3 at = field::along(hit->point, hit->normal, eps);
+        const Vec3 rest = field::minus(goal, at);
+        goal = field::along(goal, hit->normal, -field::dot(rest, hit->normal));
+        proxy = at;
+        normal = hit->normal;
+    }
+    if (free) { // nothing between the proxy and the tool: out of contact
+        s.contact = ContactKind::None;
+        s.proxy = tool;
+        return;
+    }
+    s.lastNormal = normal;
+    // The friction cone: within μ · depth of where it was, the proxy stays;
+    // beyond, it follows to the cone's edge.
+    const double depth = field::dot(field::minus(proxy, tool), normal);
+    const Vec3 moved = field::minus(proxy, from);
+    const double length = field::length(moved);
+    const double radius = friction(from) * std::max(depth, 0.0);
+    if (length <= radius) return;
+    s.proxy = radius > 0 ? field::along(proxy, moved, -radius / length) : proxy;
+}
+
 ForceSample ForceModel::tick(const ToolSample& tool) {
     ForceSample out;
     out.proxy = tool.position;
@@ -150,7 +204,8 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
             for (std::size_t i = 0; i < shape.effects.size(); ++i) {
                 const EffectField& e = shape.effects[i];
                 if (e.kind != kind) continue;
-                const auto v = field::componentView(p, shape.container, e.componentBox);
+                const auto v = field::componentView(shape.effectFrame.point(p), shape.geometryBox,
+                                                    e.componentBox);
                 const double t = e.timing.at(tool.moment);
                 const formula::Point point{v[0], v[1], v[2], t, v[3], v[4], v[5]};
                 s.evaluators[i].evaluateAll(point, values);
@@ -168,9 +223,11 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
             return false;
         };
 
+        const bool polygons = shape.triangles != nullptr;
+        const bool within =
+            polygons ? shape.triangles->contains(tool3) : shape.container.contains(tool3);
         const formula::Dual here =
-            s.sampler ? solid(*s.sampler, tool3)
-                      : formula::Dual{shape.container.contains(tool3) ? 1.0 : -1.0};
+            s.sampler && !polygons ? solid(*s.sampler, tool3) : formula::Dual{within ? 1.0 : -1.0};
         if (!std::isfinite(here.v)) {
             report(shape.name + "f", shape.name + ": its function is not a number at " +
                                          pointText(tool.position) +
@@ -179,7 +236,12 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
             continue;
         }
         Vec3 surfaceForce{};
-        if (shape.surface) {
+        if (shape.surface && polygons) {
+            polygonStep(s, tool3, [&](const Vec3& at) {
+                double f[3];
+                return effectAt(scene::TangibleKind::Friction, at, f) ? std::max(f[0], 0.0) : 0.0;
+            });
+        } else if (shape.surface) {
             if (s.contact == ContactKind::None) {
                 field::MarchOptions o;
                 o.limit = 1; // the segment from the last tool position to this one
@@ -258,40 +320,38 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
                             s.proxy = p; // else the proxy stays: no surface to slide on here
                     }
                 }
-                if (s.contact == ContactKind::Surface) {
-                    surfaceForce =
-                        field::scaled(field::minus(shape.toScene.point(s.proxy), tool.position),
-                                      settings_.stiffness);
-                    const double pressing = field::length(surfaceForce); // the spring alone
-                    // Damping along the normal, moving in or out: a sampled spring
-                    // gives back energy unless b > K·T/2 (Colgate & Brown).
-                    if (s.hasNormal && settings_.contactDamping > 0) {
-                        const field::Vec3 n = shape.toScene.vector(s.lastNormal);
-                        const double nn = field::dot(n, n);
-                        if (nn > 0)
-                            surfaceForce = field::minus(
-                                surfaceForce,
-                                field::scaled(n, settings_.contactDamping *
-                                                     field::dot(tool.velocity, n) / nn));
-                    }
-                    if (double tension[3];
-                        effectAt(scene::TangibleKind::Tension, s.proxy, tension) &&
-                        tension[0] >= 0 && pressing > tension[0]) {
-                        s.contact = ContactKind::Inside; // popped through
-                        surfaceForce = {};
-                    }
-                }
             }
         } else {
             s.contact = here.v >= 0 ? ContactKind::Inside : ContactKind::None;
         }
+        if (shape.surface && s.contact == ContactKind::Surface) {
+            surfaceForce = field::scaled(field::minus(shape.toScene.point(s.proxy), tool.position),
+                                         settings_.stiffness);
+            const double pressing = field::length(surfaceForce); // the spring alone
+            // Damping along the normal, moving in or out: a sampled spring
+            // gives back energy unless b > K·T/2 (Colgate & Brown).
+            if (s.hasNormal && settings_.contactDamping > 0) {
+                const field::Vec3 n = shape.toScene.vector(s.lastNormal);
+                const double nn = field::dot(n, n);
+                if (nn > 0)
+                    surfaceForce = field::minus(
+                        surfaceForce, field::scaled(n, settings_.contactDamping *
+                                                           field::dot(tool.velocity, n) / nn));
+            }
+            if (double tension[3]; effectAt(scene::TangibleKind::Tension, s.proxy, tension) &&
+                                   tension[0] >= 0 && pressing > tension[0]) {
+                s.contact = ContactKind::Inside; // popped through
+                surfaceForce = {};
+            }
+        }
         s.lastTool = tool3;
+        const bool inside = here.v >= 0;
 
         if (s.contact == ContactKind::Surface) {
             total = field::plus(total, surfaceForce);
             if (!surfaceFound) out.proxy = shape.toScene.point(s.proxy);
             surfaceFound = true;
-        } else if (s.contact == ContactKind::Inside && here.v >= 0) {
+        } else if (s.contact == ContactKind::Inside && inside) {
             insideFound = true;
             if (double d[3]; effectAt(scene::TangibleKind::Density, tool3, d)) {
                 const double b = std::clamp(d[0], 0.0, 1.0) * settings_.damping;

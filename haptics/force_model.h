@@ -12,6 +12,9 @@
 //   force is a spring from the tool to the proxy. Where the gradient
 //   vanishes (a cone's apex) the last good normal stands in; where there is
 //   none, the proxy stays.
+// - Polygon contact (standard shapes, collision "polygonal"): a god-object
+//   against the triangles the viewer draws (TriangleBvh), sliding on up to
+//   three faces, with the same friction cone.
 // - FTension: when the spring (not the damping) pushes back harder than
 //   that (N), the tool pops through; inside, the inside acts and the
 //   surface lets the tool out freely.
@@ -80,6 +83,8 @@ class ForceModel {
 
   private:
     struct ShapeState;
+    template <class Friction>
+    void polygonStep(ShapeState& s, const field::Vec3& tool, Friction friction);
     void report(const std::string& key, const std::string& text);
 
     ForceSettings settings_;

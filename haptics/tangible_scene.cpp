@@ -3,6 +3,7 @@
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 
+#include <optional>
 #include <unordered_map>
 
 namespace fl::haptics {
@@ -15,19 +16,118 @@ const EffectField* TangibleShape::effect(scene::TangibleKind kind) const {
 
 namespace {
 
-// The shapes' fields as the viewer meshes them: the same walk, the same clock,
-// no triangles worth the name (resolution 4: only the fields are kept).
-mesh::SceneMeshes fieldsAt(const scene::Scene& scene, const animation::Animator& clock,
-                           const animation::Instant& moment) {
+bool polygonal(const scene::Node* geometry) {
+    return geometry && geometry->type == "FGeometry" &&
+           scene::stringField(*geometry, "collision") == "polygonal";
+}
+
+// The shapes as the viewer meshes them: the same walk, the same clock. Function
+// shapes felt by their function need no triangles worth the name (resolution
+// 4: only their fields are kept); those with collision "polygonal" are meshed
+// at their own resolution, and standard shapes as the viewer draws them.
+mesh::SceneMeshes shapesAt(const scene::Scene& scene, const scene::EffectsPlan& plan,
+                           const animation::Animator& clock, const animation::Instant& moment) {
     mesh::SceneMeshOptions o;
     o.animator = &clock;
     o.instant = moment;
     o.useFileResolution = false;
     o.mesh.resolution = 4;
     o.mesh.threads = 1;
-    o.standardShapes = false;
     o.placeInScene = false;
+    for (const scene::PlanEntry& e : plan.entries) {
+        if (!e.node || e.tangible.empty()) continue;
+        const scene::Node* g = scene::effectiveNode(clock.node(*e.node, "geometry"));
+        if (polygonal(g)) o.resolutions[g] = scene::numberField(*g, "resolution", 0, 32);
+    }
     return mesh::meshScene(scene, o);
+}
+
+// The standard shapes an FShape without geometry lends its physics to: every
+// Shape below the group it is a child of.
+std::unordered_map<const scene::Node*, const scene::PlanEntry*>
+borrowers(const scene::Scene& scene, const scene::EffectsPlan& plan) {
+    std::unordered_map<const scene::Node*, const scene::PlanEntry*> out;
+    for (const scene::PlanEntry& e : plan.entries) {
+        if (!e.node || !e.appliesToSiblings || e.tangible.empty()) continue;
+        const scene::Node* parent = nullptr;
+        scene.forEachNode([&](const scene::Node& n) {
+            for (const scene::Field& f : n.fields)
+                for (const scene::Node* c : f.value.nodes)
+                    if (scene::effectiveNode(c) == e.node) parent = &n;
+        });
+        if (!parent) continue;
+        std::vector<const scene::Node*> todo{parent};
+        std::size_t visits = 0;
+        while (!todo.empty() && ++visits < 100000) {
+            const scene::Node* n = todo.back();
+            todo.pop_back();
+            for (const scene::Field& f : n->fields)
+                for (const scene::Node* c : f.value.nodes) {
+                    const scene::Node* child = scene::effectiveNode(c);
+                    if (!child) continue;
+                    if (child->type == "Shape")
+                        out.emplace(child, &e);
+                    else if (child->type != "FShape")
+                        todo.push_back(child);
+                }
+        }
+    }
+    return out;
+}
+
+EffectField effectOf(const scene::Scene& scene, const animation::Animator& clock,
+                     const scene::TangibleEffect& t, const formula::Tape& tape) {
+    EffectField e;
+    e.kind = t.kind;
+    e.tape = tape;
+    e.componentBox = {t.domainMin, t.domainMax};
+    e.timing = clock.timing(*t.node);
+    e.readsTime = tape.usesInput[std::size_t(formula::Input::T)];
+    e.location = scene.locationOf(*t.node);
+    return e;
+}
+
+bool isSurfaceKind(scene::TangibleKind k) {
+    return k == scene::TangibleKind::Friction || k == scene::TangibleKind::Tension;
+}
+
+} // namespace
+
+namespace {
+
+// A standard shape felt through the physics its group's FShape lends it.
+std::optional<TangibleShape> borrowing(const scene::Scene& scene, const animation::Animator& clock,
+                                       const mesh::ShapeMesh& s, const scene::PlanEntry& lender) {
+    const field::Affine toScene = field::Affine::fromMatrix(s.placement);
+    const auto toShape = toScene.inverse();
+    if (!toShape) return std::nullopt;
+    TangibleShape shape;
+    shape.name = s.name;
+    shape.shape = s.shape;
+    shape.toScene = toScene;
+    shape.toShape = *toShape;
+    auto bvh = std::make_shared<const TriangleBvh>(s.mesh);
+    shape.container = bvh->bounds();
+    shape.triangles = std::move(bvh);
+    // The lender's box, in the scene's coordinates (docs/haptics.md: a group
+    // under a Transform is read as if it had none).
+    shape.effectFrame = toScene;
+    const auto centre = scene::numbersField(*lender.node, "bboxCenter");
+    const auto size = scene::numbersField(*lender.node, "bboxSize");
+    if (centre.size() == 3 && size.size() == 3 && size[0] > 0 && size[1] > 0 && size[2] > 0)
+        shape.geometryBox = {
+            {centre[0] - size[0] / 2, centre[1] - size[1] / 2, centre[2] - size[2] / 2},
+            {centre[0] + size[0] / 2, centre[1] + size[1] / 2, centre[2] + size[2] / 2}};
+    else
+        shape.geometryBox = field::boundsOf(shape.container, toScene);
+    for (const scene::TangibleEffect& t : lender.tangible)
+        if (t.node)
+            if (const formula::Tape* tape = scene.definition(*t.node, "definition")) {
+                shape.effects.push_back(effectOf(scene, clock, t, *tape));
+                shape.surface = shape.surface || isSurfaceKind(t.kind);
+            }
+    if (shape.effects.empty()) return std::nullopt;
+    return shape;
 }
 
 } // namespace
@@ -41,9 +141,22 @@ TangibleScene makeTangibleScene(const scene::Scene& scene, const scene::EffectsP
     std::unordered_map<const scene::Node*, const scene::PlanEntry*> tangible;
     for (const scene::PlanEntry& e : plan.entries)
         if (e.node && !e.tangible.empty()) tangible[e.node] = &e;
-    const mesh::SceneMeshes meshes = fieldsAt(scene, clock, moment);
+    const mesh::SceneMeshes meshes = shapesAt(scene, plan, clock, moment);
+    const auto lent = borrowers(scene, plan);
     std::unordered_map<const scene::Node*, bool> placed;
     for (const mesh::ShapeMesh& s : meshes.shapes) {
+        // A standard shape that borrows its group's physics: felt by its triangles.
+        if (const auto b = lent.find(s.shape); b != lent.end()) {
+            if (s.error.empty() && !s.mesh.isPointCloud() && !s.mesh.isLines() &&
+                s.mesh.triangleCount() > 0)
+                if (auto shape = borrowing(scene, clock, s, *b->second)) {
+                    placed[b->second->node] = true;
+                    out.geometryVaries =
+                        out.geometryVaries || (b->second->timeVarying & scene::kTransform);
+                    out.shapes.push_back(std::move(*shape));
+                }
+            continue;
+        }
         const auto it = tangible.find(s.shape);
         if (it == tangible.end()) continue;
         placed[s.shape] = true;
@@ -68,32 +181,25 @@ TangibleScene makeTangibleScene(const scene::Scene& scene, const scene::EffectsP
         shape.shape = s.shape;
         shape.field = s.field;
         shape.container = s.field ? s.field->box : s.domain;
+        shape.geometryBox = shape.container;
+        if (polygonal(s.geometry) && !s.mesh.isPointCloud() && s.mesh.triangleCount() > 0)
+            shape.triangles = std::make_shared<const TriangleBvh>(s.mesh);
         shape.toScene = toScene;
         shape.toShape = *toShape;
         for (const scene::TangibleEffect& t : entry.tangible) {
             if (!t.node) continue;
             const formula::Tape* tape = scene.definition(*t.node, "definition");
             if (!tape) continue; // did not compile: the checker has said why
-            EffectField e;
-            e.kind = t.kind;
-            e.tape = *tape;
-            e.componentBox = {t.domainMin, t.domainMax};
-            e.timing = clock.timing(*t.node);
-            e.readsTime = tape->usesInput[std::size_t(formula::Input::T)];
-            e.location = scene.locationOf(*t.node);
-            shape.surface = shape.surface || t.kind == scene::TangibleKind::Friction ||
-                            t.kind == scene::TangibleKind::Tension;
-            shape.effects.push_back(std::move(e));
+            shape.surface = shape.surface || isSurfaceKind(t.kind);
+            shape.effects.push_back(effectOf(scene, clock, t, *tape));
         }
         if (shape.effects.empty()) continue;
-        if (!shape.field) {
-            // A parametric solid has no f to sign: its inside is its domain box.
-            out.notes.push_back(s.name +
-                                ": a parametric solid: its density and force act in its "
-                                "domain box" +
-                                (shape.surface ? "; its surface needs polygon contact, not "
-                                                 "rendered yet"
-                                               : ""));
+        if (!shape.field && !shape.triangles) {
+            // A parametric solid has no f to sign: without its triangles
+            // (collision "polygonal") its inside is its domain box.
+            out.notes.push_back(s.name + ": a parametric solid without collision \"polygonal\": "
+                                         "its density and force act in its domain box, and its "
+                                         "surface is not felt");
             shape.surface = false;
         }
         out.geometryVaries = out.geometryVaries || (entry.timeVarying & scene::kGeometry) ||
@@ -105,8 +211,7 @@ TangibleScene makeTangibleScene(const scene::Scene& scene, const scene::EffectsP
         if (e.node && !e.tangible.empty() && !placed.count(e.node))
             out.notes.push_back(e.name + " (" + e.location + "): " +
                                 (e.appliesToSiblings
-                                     ? "lends its physics to standard shapes: polygon contact is "
-                                       "not rendered yet"
+                                     ? "lends its physics, but no standard shape is grouped with it"
                                      : "not shown at this moment"));
     return out;
 }

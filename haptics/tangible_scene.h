@@ -14,6 +14,7 @@
 #include "formula/tape.h"
 #include "scene/effects_plan.h"
 #include "scene/scene.h"
+#include "triangle_bvh.h"
 
 #include <memory>
 #include <string>
@@ -37,6 +38,15 @@ struct TangibleShape {
     // parametric solid: then only its inside acts, taken as its domain box.
     std::shared_ptr<const field::ImplicitField> field;
     field::Box3 container; // the shape's coordinates: where its inside is looked for
+    // Polygon contact: the triangles the viewer draws (standard geometry, or
+    // collision "polygonal"), in the shape's coordinates. Null: function contact.
+    std::shared_ptr<const TriangleBvh> triangles;
+    // Where the effects look: the box their domain boxes are mapped from, in
+    // the coordinates `effectFrame` takes the shape's to — the shape's own box
+    // (identity) for a function shape; the lending FShape's box, in the
+    // scene's coordinates, for standard shapes that borrow its physics.
+    field::Box3 geometryBox;
+    field::Affine effectFrame;
     field::Affine toScene; // the shape's coordinates to the scene's
     field::Affine toShape; // and back
     // Touchable as a surface (it has FFriction or FTension); otherwise only

@@ -1,5 +1,6 @@
 // The snapshot the servo loop touches (haptics/tangible_scene.h), on the
 // paper's tangible examples.
+#include "probe.h"
 #include "tangible_scene.h"
 
 #include "scene/scene_reader.h"
@@ -44,11 +45,35 @@ TEST(TangibleScene, TheFansWindIsAForceFieldThatReadsTimeInsideItsBox) {
     const EffectField* f = wind->effect(scene::TangibleKind::Force);
     ASSERT_NE(f, nullptr);
     EXPECT_TRUE(f->readsTime);
-    // The room's FShape lends its surface to standard shapes: said, not hidden.
-    bool noted = false;
+    // A parametric solid with collision "polygonal": its triangles hold it.
+    EXPECT_EQ(wind->field, nullptr);
+    ASSERT_NE(wind->triangles, nullptr);
+    EXPECT_GT(wind->triangles->triangleCount(), 100u);
+    // The room's FShape lends its surface to the carpet, the cabinet and the
+    // fan's parts: each felt by its triangles.
+    std::size_t borrowed = 0;
+    for (const TangibleShape& s : t.shapes)
+        if (s.triangles && s.surface && s.effect(scene::TangibleKind::Friction)) ++borrowed;
+    EXPECT_GE(borrowed, 5u);
     for (const std::string& n : t.notes)
-        noted = noted || n.find("polygon contact") != std::string::npos;
-    EXPECT_TRUE(noted);
+        ADD_FAILURE() << "nothing of the fan should be left out: " << n;
+}
+
+TEST(TangibleScene, TheFansCarpetIsRoughAndItsCabinetSmooth) {
+    // The room's friction: 0.8 below y = 0.05 (the carpet), 0.3 above.
+    const auto scene = example("fan.x3d");
+    ProbeOptions o;
+    o.duration = 0.4;
+    // Down onto the carpet (top at y = 0.02), 0.05 mm in — its tension is
+    // 0.8 N, 0.08 mm of spring — then sideways along it.
+    o.path = {{1.2, 0.3, 0.9}, {1.2, 0.01995, 0.9}, {1.3, 0.01995, 0.9}};
+    auto r = runProbe(*scene, o);
+    ASSERT_TRUE(r);
+    const ProbeTick& end = r->ticks.back();
+    ASSERT_EQ(end.contact, ContactKind::Surface);
+    EXPECT_NEAR(end.proxy[1], 0.02, 1e-6);
+    // The friction cone: the proxy lags 0.8 * 0.05 mm behind the tool.
+    EXPECT_NEAR(end.device[0] - end.proxy[0], 0.8 * 0.00005, 1e-6);
 }
 
 TEST(TangibleScene, TheSharksTailIsTangible) {
