@@ -119,6 +119,7 @@ const std::vector<Command>& commands() {
         {benchEvalSpec, benchEvalCommand},
         {benchAccuracySpec, benchAccuracyCommand},
         {benchGradingSpec, benchGradingCommand},
+        {benchHapticsSpec, benchHapticsCommand},
         {gradeCheckSpec, gradeCheckCommand},
         {gradeBatchSpec, gradeBatchCommand},
         {gradeExportSpec, gradeExportCommand},

@@ -19,6 +19,7 @@ const CommandSpec& renderSpec();
 const CommandSpec& benchEvalSpec();
 const CommandSpec& benchAccuracySpec();
 const CommandSpec& benchGradingSpec();
+const CommandSpec& benchHapticsSpec();
 const CommandSpec& gradeCheckSpec();
 const CommandSpec& gradeBatchSpec();
 const CommandSpec& gradeExportSpec();
@@ -35,6 +36,7 @@ int renderCommand(const Args& args);
 int benchEvalCommand(const Args& args);     // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args); // `bench accuracy`
 int benchGradingCommand(const Args& args);  // `bench grading`
+int benchHapticsCommand(const Args& args);  // `bench haptics`
 int gradeCheckCommand(const Args& args);    // `grade check`
 int gradeBatchCommand(const Args& args);    // `grade batch`
 int gradeExportCommand(const Args& args);   // `grade export`
