@@ -54,8 +54,8 @@ std::string_view kindName(DeviceKind kind) {
     return kind == DeviceKind::NovintFalcon ? "falcon" : "spacemouse";
 }
 
-DeviceListing listDevices() {
-    DeviceListing listing;
+std::vector<DeviceEntry> listDevices(std::vector<std::string>* notes) {
+    std::vector<DeviceEntry> devices;
     std::string note;
     for (auto& m : spacemouse::findSpaceMice(&note)) {
         DeviceEntry e;
@@ -66,9 +66,9 @@ DeviceListing listDevices() {
         e.path = m.path;
         e.accessible = m.accessible;
         e.message = m.problem;
-        listing.devices.push_back(std::move(e));
+        devices.push_back(std::move(e));
     }
-    if (!note.empty()) listing.notes.push_back("SpaceMouse: " + note);
+    if (!note.empty() && notes) notes->push_back("SpaceMouse: " + note);
     note.clear();
     for (auto& f : falcon::findFalcons(&note)) {
         DeviceEntry e;
@@ -79,10 +79,10 @@ DeviceListing listDevices() {
         e.path = f.location;
         e.accessible = f.accessible;
         e.message = f.problem;
-        listing.devices.push_back(std::move(e));
+        devices.push_back(std::move(e));
     }
-    if (!note.empty()) listing.notes.push_back("Novint Falcon: " + note);
-    return listing;
+    if (!note.empty() && notes) notes->push_back("Novint Falcon: " + note);
+    return devices;
 }
 
 std::unique_ptr<HapticDevice> openDevice(const DeviceEntry& entry, const OpenOptions& options,
@@ -96,16 +96,17 @@ std::unique_ptr<HapticDevice> openDevice(const DeviceEntry& entry, const OpenOpt
                                options.firmwareAttempts, error);
 }
 
-std::string formatDeviceListing(const DeviceListing& listing) {
+std::string formatDeviceListing(const std::vector<DeviceEntry>& devices,
+                                const std::vector<std::string>& notes) {
     std::string out;
-    if (listing.devices.empty()) out += "No haptic devices found.\n";
+    if (devices.empty()) out += "No haptic devices found.\n";
     std::size_t nameWidth = 0;
     std::size_t pathWidth = 0;
-    for (const DeviceEntry& e : listing.devices) {
+    for (const DeviceEntry& e : devices) {
         nameWidth = std::max(nameWidth, e.name.size());
         pathWidth = std::max(pathWidth, e.path.size());
     }
-    for (const DeviceEntry& e : listing.devices) {
+    for (const DeviceEntry& e : devices) {
         std::string line = e.name + std::string(nameWidth - e.name.size() + 2, ' ');
         line += hexId(e.vendorId) + ":" + hexId(e.productId) + "  ";
         line += e.path + std::string(pathWidth - e.path.size() + 2, ' ');
@@ -113,15 +114,16 @@ std::string formatDeviceListing(const DeviceListing& listing) {
         out += line + "\n";
         if (!e.accessible && !e.message.empty()) out += "  " + e.message + "\n";
     }
-    for (const std::string& note : listing.notes)
+    for (const std::string& note : notes)
         out += "(" + note + ")\n";
     return out;
 }
 
-std::string deviceListingJson(const DeviceListing& listing) {
+std::string deviceListingJson(const std::vector<DeviceEntry>& devices,
+                              const std::vector<std::string>& notes) {
     std::string out = "{\"devices\": [";
-    for (std::size_t i = 0; i < listing.devices.size(); ++i) {
-        const DeviceEntry& e = listing.devices[i];
+    for (std::size_t i = 0; i < devices.size(); ++i) {
+        const DeviceEntry& e = devices[i];
         out += i ? ", {" : "{";
         out += "\"kind\": ";
         appendJsonString(out, kindName(e.kind));
@@ -137,9 +139,9 @@ std::string deviceListingJson(const DeviceListing& listing) {
         out += "}";
     }
     out += "], \"notes\": [";
-    for (std::size_t i = 0; i < listing.notes.size(); ++i) {
+    for (std::size_t i = 0; i < notes.size(); ++i) {
         if (i) out += ", ";
-        appendJsonString(out, listing.notes[i]);
+        appendJsonString(out, notes[i]);
     }
     out += "]}";
     return out;

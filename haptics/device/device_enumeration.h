@@ -33,14 +33,10 @@ struct DeviceEntry {
     std::string message;
 };
 
-struct DeviceListing {
-    std::vector<DeviceEntry> devices;
-    // Why a whole kind could not be looked for, e.g. "USB is not available
-    // here (libusb: …)"; empty when every back-end could look.
-    std::vector<std::string> notes;
-};
-
-DeviceListing listDevices();
+// Every SpaceMouse and Falcon connected. Where a whole back-end cannot look
+// (no USB access in a container or CI), it finds nothing and, when `notes`
+// is given, appends why: "Novint Falcon: USB is not available here (…)".
+std::vector<DeviceEntry> listDevices(std::vector<std::string>* notes = nullptr);
 
 struct OpenOptions {
     // Novint's firmware, supplied by the user (we never ship it); needed
@@ -56,10 +52,12 @@ std::unique_ptr<HapticDevice> openDevice(const DeviceEntry& entry, const OpenOpt
 
 // The listing for people: one line a device (name, vid:pid, path, "ready"
 // or the problem), the notes, or a line saying nothing was found.
-std::string formatDeviceListing(const DeviceListing& listing);
+std::string formatDeviceListing(const std::vector<DeviceEntry>& devices,
+                                const std::vector<std::string>& notes = {});
 // The listing as one JSON object:
 // {"devices": [{"kind", "name", "vendor_id", "product_id", "path",
 //   "accessible", "message"}], "notes": [...]}; ids as "0x256f" strings.
-std::string deviceListingJson(const DeviceListing& listing);
+std::string deviceListingJson(const std::vector<DeviceEntry>& devices,
+                              const std::vector<std::string>& notes = {});
 
 } // namespace fl::haptics

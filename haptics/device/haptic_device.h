@@ -3,7 +3,9 @@
 // (position, orientation, velocity, buttons) and what it writes (force,
 // torque), with the device's own limits. Back-ends: simulated, replay,
 // hidapi (SpaceMouse, input only) and libusb (Novint Falcon). Positions are
-// in the device's own frame, metres; the servo loop maps them into the scene.
+// in the device's own frame, metres: every back-end puts x to the right, y up
+// and z towards the user, with the origin at its workspace's centre; the
+// servo loop maps them into the scene. (docs/haptics.md, "Devices".)
 //
 // Threading: read() and command() are called by the servo thread only;
 // open() and close() by the thread that owns the device, never while the
