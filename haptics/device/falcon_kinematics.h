@@ -45,6 +45,9 @@ double angleToEncoder(double angle);
 std::optional<field::Vec3> thighAngles(const field::Vec3& position);
 
 // dθ1_i/dp_j at a point (row i: leg i); none where a leg is singular.
+// Checked against finite differences in the tests. (libnifalcon's own
+// Jacobian agrees in x and y; its z column has sin θ2·sin θ2 where the
+// derivative has sin θ2·sin θ3, so its forces along z are off.)
 std::optional<Mat3> angleJacobian(const field::Vec3& position);
 
 // The effector point whose thigh angles are `angles`, by Newton steps from
