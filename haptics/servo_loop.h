@@ -62,6 +62,7 @@ class ServoLoop {
     void start();
     void stop();
     bool running() const { return running_; }
+    double rateHz() const { return options_.rateHz; }
 
     // A new snapshot, from any thread; the loop takes it at its next tick and
     // ramps its forces up again (a changed scene must not jolt the hand).

@@ -225,3 +225,71 @@ void RenderScene::setClipPlane(std::optional<QVector4D> plane) {
 }
 
 } // namespace fl::viewer
+
+namespace fl::viewer {
+
+namespace {
+
+// A unit arrow along +y from the origin: a shaft and a head.
+mesh::Mesh unitArrow() {
+    mesh::Mesh shaft = mesh::cylinderMesh(0.03, 0.8, true, true, true, 12);
+    const mesh::Mesh head = mesh::coneMesh(0.08, 0.2, true, true, 12);
+    for (auto& p : shaft.positions)
+        p[1] += 0.4f;
+    const auto base = std::uint32_t(shaft.positions.size());
+    for (auto p : head.positions) {
+        p[1] += 0.9f;
+        shaft.positions.push_back(p);
+    }
+    shaft.normals.insert(shaft.normals.end(), head.normals.begin(), head.normals.end());
+    for (auto t : head.triangles)
+        shaft.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    shaft.texCoords.clear();
+    shaft.colours.clear();
+    return shaft;
+}
+
+} // namespace
+
+void RenderScene::setTouch(std::optional<Touch> touch) {
+    touchAt_ = touch;
+    if (!toolMark_) {
+        const float r = 0.02f * std::max(bounds_.radius(), 1e-3f);
+        mesh::SurfaceLook plain;
+        plain.lit = false;
+        auto make = [&](const mesh::Mesh& m, std::array<float, 4> colour, const char* name,
+                        Qt3DCore::QTransform*& place) {
+            auto* e = new Qt3DCore::QEntity(root_);
+            e->setObjectName(QString::fromLatin1(name));
+            e->addComponent(makeGeometryRenderer(m, colour, e, DrawAs::Faces));
+            e->addComponent(new SurfaceMaterial(plain, {}, shader_, e));
+            place = new Qt3DCore::QTransform(e);
+            e->addComponent(place);
+            return e;
+        };
+        toolMark_ = make(mesh::sphereMesh(r, 12), {0.2f, 0.45f, 1, 1}, "haptic tool", toolPlace_);
+        proxyMark_ = make(mesh::sphereMesh(0.8 * r, 12), {0.2f, 0.85f, 0.3f, 1}, "haptic proxy",
+                          proxyPlace_);
+        arrowMark_ = make(unitArrow(), {1, 0.55f, 0.1f, 1}, "haptic force", arrowPlace_);
+    }
+    toolMark_->setEnabled(touch.has_value());
+    proxyMark_->setEnabled(touch.has_value());
+    if (!touch) {
+        arrowMark_->setEnabled(false);
+        return;
+    }
+    toolPlace_->setTranslation(touch->tool);
+    proxyPlace_->setTranslation(touch->proxy);
+    const float size = touch->force.length();
+    arrowMark_->setEnabled(size > 1e-6f);
+    if (size <= 1e-6f) return;
+    // From a twentieth of the scene for the least force to a quarter at the
+    // device's maximum: any force is seen, a larger one is longer.
+    const float share = std::min(size / std::max(touch->maxForce, 1e-6f), 1.0f);
+    const float length = std::max(bounds_.radius(), 1e-3f) * (0.1f + 0.4f * share);
+    arrowPlace_->setTranslation(touch->proxy);
+    arrowPlace_->setRotation(QQuaternion::rotationTo(QVector3D(0, 1, 0), touch->force / size));
+    arrowPlace_->setScale3D(QVector3D(length, length, length));
+}
+
+} // namespace fl::viewer

@@ -15,6 +15,10 @@
 #include <memory>
 #include <vector>
 
+namespace Qt3DCore {
+class QTransform;
+}
+
 namespace fl::viewer {
 
 struct Bounds {
@@ -52,6 +56,15 @@ class RenderScene {
     // A small bright ball at a picked point (sized to the scene); nullopt removes it.
     void setMarker(std::optional<QVector3D> at);
     std::optional<QVector3D> marker() const { return markerAt_; }
+    // The haptic tool (blue), its proxy on the surface (green) and the force
+    // on the hand as an arrow from the proxy, longer for more force up to
+    // `maxForce`; nullopt hides them. Cheap to call at every frame.
+    struct Touch {
+        QVector3D tool, proxy, force;
+        float maxForce = 1;
+    };
+    void setTouch(std::optional<Touch> touch);
+    std::optional<Touch> touch() const { return touchAt_; }
 
   private:
     void setLights(const std::vector<mesh::ViewLight>& lights);
@@ -79,6 +92,9 @@ class RenderScene {
     Qt3DCore::QEntity* marker_ = nullptr;
     TextureImages images_;
     std::optional<QVector3D> markerAt_;
+    Qt3DCore::QEntity *toolMark_ = nullptr, *proxyMark_ = nullptr, *arrowMark_ = nullptr;
+    Qt3DCore::QTransform *toolPlace_ = nullptr, *proxyPlace_ = nullptr, *arrowPlace_ = nullptr;
+    std::optional<Touch> touchAt_;
 };
 
 } // namespace fl::viewer

@@ -53,6 +53,9 @@ class SceneWidget : public QWidget {
     void setDrawAs(DrawAs as) { scene_->setDrawAs(as); }
     void setShowDomains(bool on) { scene_->setShowDomains(on); }
     void setMarker(std::optional<QVector3D> at) { scene_->setMarker(at); }
+    // The haptic tool, its proxy and the force arrow (RenderScene::setTouch).
+    void setTouch(std::optional<RenderScene::Touch> touch) { scene_->setTouch(touch); }
+    std::optional<RenderScene::Touch> touch() const { return scene_->touch(); }
     const Bounds& bounds() const { return scene_->bounds(); }
     QWindow* renderWindow() const;
 

@@ -9,6 +9,7 @@
 #include "find_bar.h"
 #include "grading_panel.h"
 #include "hand_in.h"
+#include "haptics_panel.h"
 #include "issues_dock.h"
 #include "level_of_detail_control.h"
 #include "live_parser.h"
@@ -17,6 +18,7 @@
 #include "mesh_geometry.h"
 #include "parameters_dock.h"
 #include "picking.h"
+#include "render_scene.h"
 #include "scene/field_access.h"
 #include "scene/gzip.h"
 #include "scene/scene_reader.h"
@@ -179,6 +181,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(view_, &viewer::SceneWidget::hovered, this, [this](QPointF pixel) {
         hoverPixel_ = pixel;
         hoverTimer_.start();
+        if (haptics_->feeling()) touchAt(pixel);
     });
     connect(&hoverTimer_, &QTimer::timeout, this, [this] {
         const auto meshes = view_->meshes();
@@ -239,6 +242,7 @@ void MainWindow::buildDocks() {
     parameters_ = addPanel(new ParametersDock, true);
     assignment_ = addPanel(new AssignmentPanel, true);
     accuracy_ = addPanel(new AccuracyPanel, true);
+    haptics_ = addPanel(new HapticsPanel, true);
     examples_->raise();
     // Tabbed docks must not widen their side to fit every tab's title: the
     // view would shrink with each panel added. Their tab bars scroll.
@@ -259,6 +263,20 @@ void MainWindow::buildDocks() {
                 playResolutions();
             });
     connect(accuracy_, &AccuracyPanel::writeRequested, this, &MainWindow::writeResolution);
+    // Feeling with the mouse: the tool follows the point under the cursor;
+    // the view draws the tool, the proxy and the force.
+    connect(haptics_, &HapticsPanel::touchChanged, this, [this](std::optional<TouchMarks> m) {
+        if (!m) {
+            view_->setTouch(std::nullopt);
+            return;
+        }
+        auto q = [](const field::Vec3& v) {
+            return QVector3D(float(v[0]), float(v[1]), float(v[2]));
+        };
+        view_->setTouch(
+            viewer::RenderScene::Touch{q(m->tool), q(m->proxy), q(m->force), float(m->maxForce)});
+    });
+    connect(player_, &viewer::ScenePlayer::timeChanged, haptics_, &HapticsPanel::setSceneTime);
     connect(assignment_, &AssignmentPanel::starterChosen, this, [this](const QString& path) {
         if (maybeKeepChanges()) openFile(path);
     });
@@ -383,7 +401,8 @@ QString MainWindow::screenErrorText() const {
 }
 
 bool MainWindow::busy() const {
-    return parser_->pending() || player_->busy() || lodTimer_.isActive() || errorMeter_->busy();
+    return parser_->pending() || player_->busy() || lodTimer_.isActive() || errorMeter_->busy() ||
+           haptics_->busy();
 }
 
 bool MainWindow::isModified() const {
@@ -552,6 +571,17 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     errorMeter_->focusOn(nullptr);
     view_->setMarker(std::nullopt); // it marked a point of the old shapes
     player_->setScene(scene);
+}
+
+void MainWindow::touchAt(QPointF pixel) {
+    const auto meshes = view_->meshes();
+    if (!meshes || meshes->source != scene_) return;
+    const auto p =
+        viewer::pick(*meshes, viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
+    if (p)
+        haptics_->touchAt(p->point, p->normal);
+    else
+        haptics_->touchAt(std::nullopt);
 }
 
 void MainWindow::playResolutions() {

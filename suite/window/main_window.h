@@ -45,6 +45,7 @@ class Panel;
 class ParametersDock;
 class SceneTreeDock;
 class AccuracyPanel;
+class HapticsPanel;
 class ScreenErrorMeter;
 class AssignmentPanel;
 class GradingPanel;
@@ -96,6 +97,9 @@ class MainWindow : public QMainWindow {
     bool writeResolution(const scene::Node* geometry, double resolution);
     ScreenErrorMeter* errorMeter() const { return errorMeter_; }
     AccuracyPanel* accuracyPanel() const { return accuracy_; }
+    HapticsPanel* hapticsPanel() const { return haptics_; }
+    // Feeling with the mouse: the tool to the surface under this pixel.
+    void touchAt(QPointF pixel);
     // The window's panels, in the order they were added.
     const std::vector<Panel*>& panels() const { return panels_; }
 
@@ -149,6 +153,7 @@ class MainWindow : public QMainWindow {
     ParametersDock* parameters_ = nullptr;
     AssignmentPanel* assignment_ = nullptr;
     AccuracyPanel* accuracy_ = nullptr;
+    HapticsPanel* haptics_ = nullptr;
     std::unordered_map<const scene::Node*, double> chosenResolutions_; // by the Accuracy panel
     GradingPanel* grading_ = nullptr;
     bool textParses_ = true; // the editor's text, as last parsed, has no errors

@@ -2,6 +2,7 @@
 #include "accuracy_panel.h"
 #include "assignment_panel.h"
 #include "code_editor.h"
+#include "haptics_panel.h"
 #include "live_parser.h"
 #include "main_window.h"
 #include "mesh_geometry.h"
@@ -606,6 +607,42 @@ class WindowTest : public QObject {
         QCOMPARE(w.issues()->count(), 0);
         w.editor()->undo();
         QCOMPARE(w.editor()->toPlainText(), before);
+    }
+
+    void theMouseFeelsTheWatermelonAndTheViewDrawsTheForce() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("watermelon.x3d")));
+        QVERIFY(settle(w));
+        suite::HapticsPanel* haptics = w.hapticsPanel();
+        QVERIFY(haptics->tangible());
+        haptics->raise();
+        haptics->feelButton()->click();
+        QVERIFY(haptics->feeling());
+        // The cursor rests over the melon's middle: the tool goes there, pressed in.
+        const QPointF middle(w.view()->width() / 2.0, w.view()->height() / 2.0);
+        Q_EMIT w.view()->hovered(middle);
+        QTRY_VERIFY_WITH_TIMEOUT(w.view()->touch().has_value(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.view()->touch()->force.length() > 0, 5000);
+        const auto touch = *w.view()->touch();
+        // The force pushes the tool back out, towards the eye.
+        const QVector3D towardsEye = w.view()->pose().position - touch.proxy;
+        QVERIFY2(QVector3D::dotProduct(touch.force, towardsEye) > 0,
+                 qPrintable(QStringLiteral("force %1 %2 %3")
+                                .arg(touch.force.x())
+                                .arg(touch.force.y())
+                                .arg(touch.force.z())));
+        save(screenshot(w), "window-watermelon-feel");
+        haptics->feelButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.view()->touch().has_value(), 5000);
+        // A scene with nothing tangible: the loop cannot be started.
+        QVERIFY(w.openFile(examplePath("implicit_gallery.x3d")));
+        QVERIFY(settle(w));
+        QVERIFY(!haptics->tangible());
+        QVERIFY(!haptics->feelButton()->isEnabled());
     }
 
     void savingWritesTheTextAndClearsTheModifiedMark() {

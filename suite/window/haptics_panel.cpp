@@ -1,0 +1,193 @@
+#include "haptics_panel.h"
+
+#include "device/device_limits.h"
+#include "pointer_device.h"
+#include "scene/effects_plan.h"
+#include "servo_loop.h"
+#include "tangible_scene.h"
+
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace fl::suite {
+
+namespace {
+
+std::shared_ptr<const haptics::TangibleScene> snapshotOf(const scene::Scene& scene,
+                                                         double seconds) {
+    return std::make_shared<const haptics::TangibleScene>(
+        haptics::makeTangibleScene(scene, seconds));
+}
+
+QString contactText(haptics::ContactKind c) {
+    switch (c) {
+    case haptics::ContactKind::Surface:
+        return HapticsPanel::tr("on the surface");
+    case haptics::ContactKind::Inside:
+        return HapticsPanel::tr("inside");
+    case haptics::ContactKind::None:
+        break;
+    }
+    return HapticsPanel::tr("free");
+}
+
+} // namespace
+
+HapticsPanel::HapticsPanel(QWidget* parent)
+    : Panel(tr("Haptics"), QStringLiteral("haptics"), Qt::RightDockWidgetArea, parent),
+      feel_(new QPushButton(tr("Feel with the mouse"))), depth_(new QSlider(Qt::Horizontal)),
+      deviceName_(new QLabel), status_(new QLabel), contact_(new QLabel), notes_(new QLabel),
+      graph_(new ForceGraph),
+      worker_(
+          this, [](const Request& r) { return snapshotOf(*r.scene, r.seconds); },
+          [this](const Request& r, std::shared_ptr<const haptics::TangibleScene> snapshot) {
+              if (r.scene != scene_) return; // a scene since replaced
+              snapshot_ = snapshot;
+              snapshotSeconds_ = r.seconds;
+              // Shapes that move, or effects that read t: snapshots follow the timeline.
+              geometryVaries_ = snapshot->geometryVaries;
+              for (const auto& shape : snapshot->shapes)
+                  for (const auto& e : shape.effects)
+                      geometryVaries_ = geometryVaries_ || e.readsTime;
+              QStringList notes;
+              for (const std::string& n : snapshot->notes)
+                  notes << QString::fromStdString(n);
+              notes_->setText(notes.join(QLatin1Char('\n')));
+              if (loop_) loop_->setScene(snapshot, false);
+          }) {
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    feel_->setCheckable(true);
+    feel_->setToolTip(tr("Move the mouse over a tangible shape: the tool follows it, pressed "
+                         "into the surface by the depth below"));
+    layout->addWidget(feel_);
+    auto* form = new QFormLayout;
+    depth_->setRange(0, 100);
+    depth_->setValue(1); // 0.02% of the scene: felt on the watermelon's rind, not through it
+    depth_->setToolTip(tr("How far the tool presses into the surface: up to 2% of the scene"));
+    form->addRow(tr("Press:"), depth_);
+    form->addRow(tr("Device:"), deviceName_);
+    form->addRow(tr("Loop:"), status_);
+    form->addRow(tr("Contact:"), contact_);
+    layout->addLayout(form);
+    layout->addWidget(graph_, 1);
+    notes_->setWordWrap(true);
+    layout->addWidget(notes_);
+    setWidget(box);
+    deviceName_->setText(tr("the mouse (no haptic device connected)"));
+    status_->setText(tr("stopped"));
+    feel_->setEnabled(false);
+    connect(feel_, &QPushButton::toggled, this, [this](bool on) { on ? start() : stop(); });
+    refresh_.setInterval(33);
+    connect(&refresh_, &QTimer::timeout, this, &HapticsPanel::refresh);
+}
+
+HapticsPanel::~HapticsPanel() {
+    stop();
+}
+
+bool HapticsPanel::feeling() const {
+    return loop_ && loop_->running();
+}
+
+void HapticsPanel::start() {
+    if (feeling() || !tangible_) return;
+    // The mouse feels like the common desk device: a Novint Falcon's limits.
+    const haptics::DeviceLimits limits = haptics::limitsOf(haptics::DeviceModel::NovintFalcon);
+    device_ = std::make_unique<haptics::PointerDevice>(limits);
+    haptics::ServoOptions o; // the mouse's device frame is the scene's
+    o.rampSeconds = 0.5;     // a mouse has no motors to spare: a short ramp
+    loop_ = std::make_unique<haptics::ServoLoop>(*device_, o);
+    if (snapshot_) loop_->setScene(snapshot_, false);
+    loop_->start();
+    refresh_.start();
+    const QSignalBlocker quiet(feel_);
+    feel_->setChecked(true);
+}
+
+void HapticsPanel::stop() {
+    refresh_.stop();
+    if (loop_) loop_->stop();
+    loop_.reset();
+    device_.reset();
+    status_->setText(tr("stopped"));
+    contact_->clear();
+    const QSignalBlocker quiet(feel_);
+    feel_->setChecked(false);
+    Q_EMIT touchChanged(std::nullopt);
+}
+
+void HapticsPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
+    scene_ = std::move(scene);
+    snapshot_.reset();
+    const scene::EffectsPlan plan = scene::makeEffectsPlan(*scene_);
+    tangible_ = plan.needsHaptics;
+    feel_->setEnabled(tangible_);
+    if (!tangible_) {
+        stop();
+        notes_->setText(tr("Nothing in this scene is tangible, so the haptic loop does not run. "
+                           "Give an FShape an FPhysics with FFriction, FTension, FDensity or "
+                           "FForce to feel it."));
+        return;
+    }
+    notes_->clear();
+    // The scene's size sets how far the mouse's tool presses in.
+    double reach = 1;
+    for (const scene::PlanEntry& e : plan.entries)
+        for (const scene::TangibleEffect& t : e.tangible)
+            for (std::size_t k = 0; k < 3; ++k)
+                reach = std::max(reach, t.domainMax[k] - t.domainMin[k]);
+    sceneSize_ = reach;
+    requestSnapshot();
+}
+
+void HapticsPanel::setSceneTime(double seconds) {
+    seconds_ = seconds;
+    // Shapes that move with time are felt where they are now (20 snapshots a
+    // second at most); effects that read t follow the loop's own clock.
+    if (tangible_ && geometryVaries_ && std::abs(seconds_ - snapshotSeconds_) > 0.05)
+        requestSnapshot();
+}
+
+void HapticsPanel::requestSnapshot() {
+    if (scene_) worker_.request({scene_, seconds_});
+}
+
+void HapticsPanel::touchAt(std::optional<field::Vec3> point, field::Vec3 normal) {
+    if (!device_) return;
+    if (!point) return; // off the shapes: the tool stays where it was
+    const double depth = sceneSize_ * 0.02 * depth_->value() / 100.0;
+    device_->moveTo(field::along(*point, normal, -depth));
+}
+
+void HapticsPanel::refresh() {
+    if (!loop_) return;
+    const haptics::ServoStatus s = loop_->status();
+    const haptics::JitterFigures j = loop_->jitter();
+    status_->setText(tr("%1 Hz, period jitter p99 %2 µs")
+                         .arg(s.measuredRateHz, 0, 'f', 0)
+                         .arg(j.p99, 0, 'f', 0));
+    contact_->setText(
+        tr("%1, %2 N").arg(contactText(s.contact)).arg(field::length(s.force), 0, 'f', 2));
+    const double maxForce = haptics::limitsOf(haptics::DeviceModel::NovintFalcon).maxForce;
+    graph_->setForces(loop_->recentForces(), maxForce, std::size_t(loop_->rateHz()));
+    TouchMarks marks;
+    marks.tool = s.tool;
+    marks.proxy = s.proxy;
+    marks.force = s.force;
+    marks.maxForce = maxForce;
+    marks.contact = s.contact != haptics::ContactKind::None;
+    Q_EMIT touchChanged(marks);
+    QStringList reports;
+    for (const std::string& r : loop_->reports())
+        reports << QString::fromStdString(r);
+    if (!reports.isEmpty()) notes_->setText(reports.join(QLatin1Char('\n')));
+}
+
+} // namespace fl::suite

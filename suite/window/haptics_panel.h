@@ -1,0 +1,96 @@
+#pragma once
+// The Haptics panel (issue 16 §3): feel the scene. It starts the servo loop
+// only when the effects plan says something is tangible; it hands the loop a
+// snapshot of the tangible shapes at the scene's moment (made on a worker,
+// made again as time moves shapes); it shows the device, the loop's rate and
+// jitter, the contact and a live graph of the force. Without a haptic
+// device the mouse stands in: the tool goes to the point under the cursor,
+// pressed a little into the surface, and the view draws the tool, the proxy
+// and the force as an arrow.
+#include "force_graph.h"
+#include "newest_only_worker.h"
+#include "panel.h"
+
+#include "field/vec3.h"
+
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+
+class QLabel;
+class QPushButton;
+class QSlider;
+
+namespace fl::haptics {
+class PointerDevice;
+class ServoLoop;
+struct TangibleScene;
+} // namespace fl::haptics
+
+namespace fl::suite {
+
+// What the view draws of the touch: scene coordinates, newtons.
+struct TouchMarks {
+    field::Vec3 tool{}, proxy{}, force{};
+    double maxForce = 1;
+    bool contact = false;
+};
+
+class HapticsPanel : public Panel {
+    Q_OBJECT
+  public:
+    explicit HapticsPanel(QWidget* parent = nullptr);
+    ~HapticsPanel() override;
+
+    // Starts and stops feeling (the loop with the mouse's device).
+    void start();
+    void stop();
+    bool feeling() const;
+    // Something in the current scene is tangible.
+    bool tangible() const { return tangible_; }
+    // Snapshot work running or waiting.
+    bool busy() const { return worker_.busy(); }
+
+    // The mouse over the view: the point under it on a surface and the
+    // surface's outward normal there (scene coordinates); none: off the shapes.
+    void touchAt(std::optional<field::Vec3> point, field::Vec3 normal = {});
+
+    QPushButton* feelButton() const { return feel_; }
+    QLabel* status() const { return status_; }
+    ForceGraph* graph() const { return graph_; }
+    // Refreshes the status and the graph now (the timer does it 30 times a second).
+    void refresh();
+
+  public Q_SLOTS:
+    void sceneChanged(std::shared_ptr<const fl::scene::Scene> scene) override;
+    // The scene's time (the timeline): shapes that move are snapshotted again.
+    void setSceneTime(double seconds);
+
+  Q_SIGNALS:
+    void touchChanged(std::optional<fl::suite::TouchMarks> marks);
+
+  private:
+    struct Request {
+        std::shared_ptr<const scene::Scene> scene;
+        double seconds = 0;
+    };
+    void requestSnapshot();
+
+    QPushButton* feel_;
+    QSlider* depth_;
+    QLabel *deviceName_, *status_, *contact_, *notes_;
+    ForceGraph* graph_;
+    QTimer refresh_;
+    std::shared_ptr<const scene::Scene> scene_;
+    bool tangible_ = false;
+    bool geometryVaries_ = false;
+    double seconds_ = 0, snapshotSeconds_ = -1;
+    std::unique_ptr<haptics::PointerDevice> device_;
+    std::unique_ptr<haptics::ServoLoop> loop_;
+    std::shared_ptr<const haptics::TangibleScene> snapshot_;
+    double sceneSize_ = 1;
+    NewestOnlyWorker<Request, std::shared_ptr<const haptics::TangibleScene>> worker_;
+};
+
+} // namespace fl::suite
