@@ -21,21 +21,30 @@ void fail(std::string* error, std::string text) {
 
 } // namespace
 
-std::optional<ProbeRun> runProbe(const scene::Scene& scene, const ProbeOptions& options,
-                                 std::string* error) {
+namespace {
+
+bool checkClock(const ProbeOptions& options, std::string* error) {
     if (!(options.rateHz >= 1 && options.rateHz <= 100000)) {
         fail(error, "the servo rate must be between 1 and 100000 Hz");
-        return std::nullopt;
+        return false;
     }
     if (!(options.duration > 0) || !std::isfinite(options.duration) ||
         options.duration * options.rateHz > 1e7) {
         fail(error, "the duration must be positive and at most 10^7 ticks long");
-        return std::nullopt;
+        return false;
     }
     if (!std::isfinite(options.startTime)) {
         fail(error, "the start time must be a number of seconds");
-        return std::nullopt;
+        return false;
     }
+    return true;
+}
+
+} // namespace
+
+std::optional<ProbeRun> runProbe(const scene::Scene& scene, const ProbeOptions& options,
+                                 std::string* error) {
+    if (!checkClock(options, error)) return std::nullopt;
     std::string why;
     auto path = PolylinePath::make(options.path, options.duration, &why);
     if (!path) {
@@ -44,6 +53,14 @@ std::optional<ProbeRun> runProbe(const scene::Scene& scene, const ProbeOptions& 
     }
     SimulatedDevice device;
     device.followPath(std::move(*path));
+    return runOnSimulatedClock(
+        scene, device, [&](double t) { return device.setTime(t); }, options, error);
+}
+
+std::optional<ProbeRun> runOnSimulatedClock(const scene::Scene& scene, HapticDevice& device,
+                                            const std::function<bool(double)>& setTime,
+                                            const ProbeOptions& options, std::string* error) {
+    if (!checkClock(options, error)) return std::nullopt;
     const DeviceLimits limits = device.limits();
     ForceModel model(settingsFor(limits, options.rateHz));
     LimiterSettings ls;
@@ -69,7 +86,7 @@ std::optional<ProbeRun> runProbe(const scene::Scene& scene, const ProbeOptions& 
     run.ticks.reserve(std::size_t(ticks + 1));
     for (std::int64_t k = 0; k <= ticks; ++k) {
         const double time = double(k) / options.rateHz;
-        device.setTime(time);
+        setTime(time);
         // Only a scene that moves is looked at again; effects that read t take
         // the tick's t themselves.
         if (snapshot->geometryVaries && time - lastSnapshot >= options.snapshotInterval) {

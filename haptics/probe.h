@@ -8,6 +8,7 @@
 
 #include "scene/scene.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,15 @@ struct ProbeRun {
 // or rate out of range, more than 10^7 ticks).
 std::optional<ProbeRun> runProbe(const scene::Scene& scene, const ProbeOptions& options,
                                  std::string* error = nullptr);
+
+// The same servo loop on the simulated clock with any device whose clock the
+// caller sets (`setTime(seconds from the start)`): a replayed log (`haptics
+// replay`), a recorder round a simulated device (`haptics record`). The
+// options' path is not used; ticks where the device says nothing are left out.
+std::optional<ProbeRun> runOnSimulatedClock(const scene::Scene& scene, HapticDevice& device,
+                                            const std::function<bool(double)>& setTime,
+                                            const ProbeOptions& options,
+                                            std::string* error = nullptr);
 
 // The run as the one JSON object `--json` prints.
 std::string probeJson(const ProbeRun& run);

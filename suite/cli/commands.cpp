@@ -125,7 +125,10 @@ const std::vector<Command>& commands() {
         {gradeExportSpec, gradeExportCommand},
         {gradeSimilarSpec, gradeSimilarCommand},
         {gradeReportSpec, gradeReportCommand},
+        {hapticsDevicesSpec, hapticsDevicesCommand},
         {hapticsProbeSpec, hapticsProbeCommand},
+        {hapticsRecordSpec, hapticsRecordCommand},
+        {hapticsReplaySpec, hapticsReplayCommand},
     };
     return all;
 }

@@ -26,6 +26,9 @@ const CommandSpec& gradeExportSpec();
 const CommandSpec& gradeSimilarSpec();
 const CommandSpec& gradeReportSpec();
 const CommandSpec& hapticsProbeSpec();
+const CommandSpec& hapticsDevicesSpec();
+const CommandSpec& hapticsRecordSpec();
+const CommandSpec& hapticsReplaySpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -33,16 +36,19 @@ int checkCommand(const Args& args);
 int convertCommand(const Args& args);
 int meshCommand(const Args& args);
 int renderCommand(const Args& args);
-int benchEvalCommand(const Args& args);     // runs the sibling functionlab-bench
-int benchAccuracyCommand(const Args& args); // `bench accuracy`
-int benchGradingCommand(const Args& args);  // `bench grading`
-int benchHapticsCommand(const Args& args);  // `bench haptics`
-int gradeCheckCommand(const Args& args);    // `grade check`
-int gradeBatchCommand(const Args& args);    // `grade batch`
-int gradeExportCommand(const Args& args);   // `grade export`
-int gradeSimilarCommand(const Args& args);  // `grade similar`
-int gradeReportCommand(const Args& args);   // `grade report`
-int hapticsProbeCommand(const Args& args);  // `haptics probe`
+int benchEvalCommand(const Args& args);      // runs the sibling functionlab-bench
+int benchAccuracyCommand(const Args& args);  // `bench accuracy`
+int benchGradingCommand(const Args& args);   // `bench grading`
+int benchHapticsCommand(const Args& args);   // `bench haptics`
+int gradeCheckCommand(const Args& args);     // `grade check`
+int gradeBatchCommand(const Args& args);     // `grade batch`
+int gradeExportCommand(const Args& args);    // `grade export`
+int gradeSimilarCommand(const Args& args);   // `grade similar`
+int gradeReportCommand(const Args& args);    // `grade report`
+int hapticsProbeCommand(const Args& args);   // `haptics probe`
+int hapticsDevicesCommand(const Args& args); // `haptics devices`
+int hapticsRecordCommand(const Args& args);  // `haptics record`
+int hapticsReplayCommand(const Args& args);  // `haptics replay`
 
 struct Command {
     const CommandSpec& (*spec)();
