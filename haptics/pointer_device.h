@@ -16,7 +16,11 @@ class PointerDevice : public HapticDevice {
   public:
     explicit PointerDevice(DeviceLimits limits);
 
-    void moveTo(const field::Vec3& position);
+    // The tool to `position`. The first time, the servo loop first sees it at
+    // `approach` (a point outside the surface): contact is found by the tool
+    // crossing the surface, so a tool that appeared inside would be inside.
+    void moveTo(const field::Vec3& position, std::optional<field::Vec3> approach = std::nullopt);
+    bool placed() const;
     // The force last commanded (what the window draws as an arrow).
     field::Vec3 lastForce() const;
 
@@ -34,6 +38,8 @@ class PointerDevice : public HapticDevice {
     Clock::time_point at_ = Clock::now(), previousAt_ = Clock::now();
     field::Vec3 force_{};
     std::optional<DeviceState> lastRead_; // the servo thread's own
+    std::optional<field::Vec3> approach_; // shown once before the first position
+    bool placed_ = false;
 };
 
 } // namespace fl::haptics

@@ -1,11 +1,13 @@
 #include "haptics_panel.h"
 
+#include "device/device_enumeration.h"
 #include "device/device_limits.h"
 #include "pointer_device.h"
 #include "scene/effects_plan.h"
 #include "servo_loop.h"
 #include "tangible_scene.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -41,9 +43,9 @@ QString contactText(haptics::ContactKind c) {
 
 HapticsPanel::HapticsPanel(QWidget* parent)
     : Panel(tr("Haptics"), QStringLiteral("haptics"), Qt::RightDockWidgetArea, parent),
-      feel_(new QPushButton(tr("Feel with the mouse"))), depth_(new QSlider(Qt::Horizontal)),
-      deviceName_(new QLabel), status_(new QLabel), contact_(new QLabel), notes_(new QLabel),
-      graph_(new ForceGraph),
+      feel_(new QPushButton(tr("Feel"))), rescan_(new QPushButton(tr("Find devices"))),
+      devices_(new QComboBox), depth_(new QSlider(Qt::Horizontal)), status_(new QLabel),
+      contact_(new QLabel), notes_(new QLabel), graph_(new ForceGraph),
       worker_(
           this, [](const Request& r) { return snapshotOf(*r.scene, r.seconds); },
           [this](const Request& r, std::shared_ptr<const haptics::TangibleScene> snapshot) {
@@ -64,15 +66,18 @@ HapticsPanel::HapticsPanel(QWidget* parent)
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     feel_->setCheckable(true);
-    feel_->setToolTip(tr("Move the mouse over a tangible shape: the tool follows it, pressed "
-                         "into the surface by the depth below"));
-    layout->addWidget(feel_);
+    feel_->setToolTip(tr("With the mouse: move it over a tangible shape; the tool follows it, "
+                         "pressed into the surface by the depth below"));
+    auto* top = new QHBoxLayout;
+    top->addWidget(feel_, 1);
+    top->addWidget(rescan_);
+    layout->addLayout(top);
     auto* form = new QFormLayout;
+    form->addRow(tr("Device:"), devices_);
     depth_->setRange(0, 100);
     depth_->setValue(1); // 0.02% of the scene: felt on the watermelon's rind, not through it
     depth_->setToolTip(tr("How far the tool presses into the surface: up to 2% of the scene"));
     form->addRow(tr("Press:"), depth_);
-    form->addRow(tr("Device:"), deviceName_);
     form->addRow(tr("Loop:"), status_);
     form->addRow(tr("Contact:"), contact_);
     layout->addLayout(form);
@@ -80,8 +85,9 @@ HapticsPanel::HapticsPanel(QWidget* parent)
     notes_->setWordWrap(true);
     layout->addWidget(notes_);
     setWidget(box);
-    deviceName_->setText(tr("the mouse (no haptic device connected)"));
     status_->setText(tr("stopped"));
+    connect(rescan_, &QPushButton::clicked, this, &HapticsPanel::findDevices);
+    findDevices();
     feel_->setEnabled(false);
     connect(feel_, &QPushButton::toggled, this, [this](bool on) { on ? start() : stop(); });
     refresh_.setInterval(33);
@@ -96,13 +102,53 @@ bool HapticsPanel::feeling() const {
     return loop_ && loop_->running();
 }
 
+void HapticsPanel::findDevices() {
+    std::vector<std::string> notes;
+    found_ = haptics::listDevices(&notes);
+    const QSignalBlocker quiet(devices_);
+    devices_->clear();
+    devices_->addItem(tr("the mouse (no haptic device)"));
+    for (const haptics::DeviceEntry& d : found_) {
+        devices_->addItem(
+            QString::fromStdString(d.name + (d.accessible ? "" : " — not accessible")));
+        const int row = devices_->count() - 1;
+        devices_->setItemData(row, QString::fromStdString(d.accessible ? d.path : d.message),
+                              Qt::ToolTipRole);
+    }
+    QString why;
+    for (const std::string& n : notes)
+        why += QString::fromStdString(n) + QLatin1Char('\n');
+    devices_->setToolTip(why.trimmed());
+}
+
 void HapticsPanel::start() {
     if (feeling() || !tangible_) return;
-    // The mouse feels like the common desk device: a Novint Falcon's limits.
-    const haptics::DeviceLimits limits = haptics::limitsOf(haptics::DeviceModel::NovintFalcon);
-    device_ = std::make_unique<haptics::PointerDevice>(limits);
-    haptics::ServoOptions o; // the mouse's device frame is the scene's
-    o.rampSeconds = 0.5;     // a mouse has no motors to spare: a short ramp
+    haptics::ServoOptions o;
+    const int choice = devices_->currentIndex();
+    if (choice <= 0 || std::size_t(choice) > found_.size()) {
+        // The mouse feels like the common desk device: a Novint Falcon's
+        // limits; its device frame is the scene's; a short ramp.
+        auto pointer = std::make_unique<haptics::PointerDevice>(
+            haptics::limitsOf(haptics::DeviceModel::NovintFalcon));
+        pointer_ = pointer.get();
+        device_ = std::move(pointer);
+        o.rampSeconds = 0.5;
+    } else {
+        std::string error;
+        device_ = haptics::openDevice(found_[std::size_t(choice - 1)], {}, &error);
+        if (!device_) {
+            notes_->setText(QString::fromStdString(error));
+            const QSignalBlocker quiet(feel_);
+            feel_->setChecked(false);
+            return;
+        }
+        pointer_ = nullptr;
+        // The device's workspace onto the tangible shapes' box.
+        const double radius = std::max(device_->limits().workspaceRadius, 1e-3);
+        o.workspace.centre = field::scaled(field::plus(tangibleBox_.lo, tangibleBox_.hi), 0.5);
+        o.workspace.scale = 0.5 * tangibleBox_.diagonal() / radius;
+    }
+    maxForce_ = std::max(device_->limits().maxForce, 1.0);
     loop_ = std::make_unique<haptics::ServoLoop>(*device_, o);
     if (snapshot_) loop_->setScene(snapshot_, false);
     loop_->start();
@@ -115,6 +161,7 @@ void HapticsPanel::stop() {
     refresh_.stop();
     if (loop_) loop_->stop();
     loop_.reset();
+    pointer_ = nullptr;
     device_.reset();
     status_->setText(tr("stopped"));
     contact_->clear();
@@ -137,13 +184,17 @@ void HapticsPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
         return;
     }
     notes_->clear();
-    // The scene's size sets how far the mouse's tool presses in.
-    double reach = 1;
+    // The tangible effects' boxes: how far the mouse's tool presses in, and
+    // where a device's workspace goes.
+    tangibleBox_ = {{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
     for (const scene::PlanEntry& e : plan.entries)
         for (const scene::TangibleEffect& t : e.tangible)
-            for (std::size_t k = 0; k < 3; ++k)
-                reach = std::max(reach, t.domainMax[k] - t.domainMin[k]);
-    sceneSize_ = reach;
+            for (std::size_t k = 0; k < 3; ++k) {
+                tangibleBox_.lo[k] = std::min(tangibleBox_.lo[k], t.domainMin[k]);
+                tangibleBox_.hi[k] = std::max(tangibleBox_.hi[k], t.domainMax[k]);
+            }
+    if (!tangibleBox_.valid()) tangibleBox_ = {{-1, -1, -1}, {1, 1, 1}};
+    sceneSize_ = tangibleBox_.longestSide();
     requestSnapshot();
 }
 
@@ -160,10 +211,12 @@ void HapticsPanel::requestSnapshot() {
 }
 
 void HapticsPanel::touchAt(std::optional<field::Vec3> point, field::Vec3 normal) {
-    if (!device_) return;
-    if (!point) return; // off the shapes: the tool stays where it was
+    if (!pointer_) return; // a real device moves itself
+    if (!point) return;    // off the shapes: the tool stays where it was
     const double depth = sceneSize_ * 0.02 * depth_->value() / 100.0;
-    device_->moveTo(field::along(*point, normal, -depth));
+    // The first touch comes from outside, along the normal.
+    pointer_->moveTo(field::along(*point, normal, -depth),
+                     field::along(*point, normal, 0.01 * sceneSize_));
 }
 
 void HapticsPanel::refresh() {
@@ -175,7 +228,7 @@ void HapticsPanel::refresh() {
                          .arg(j.p99, 0, 'f', 0));
     contact_->setText(
         tr("%1, %2 N").arg(contactText(s.contact)).arg(field::length(s.force), 0, 'f', 2));
-    const double maxForce = haptics::limitsOf(haptics::DeviceModel::NovintFalcon).maxForce;
+    const double maxForce = maxForce_;
     graph_->setForces(loop_->recentForces(), maxForce, std::size_t(loop_->rateHz()));
     TouchMarks marks;
     marks.tool = s.tool;

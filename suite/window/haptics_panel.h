@@ -11,20 +11,25 @@
 #include "newest_only_worker.h"
 #include "panel.h"
 
+#include "field/box3.h"
 #include "field/vec3.h"
 
 #include <QTimer>
 
 #include <memory>
 #include <optional>
+#include <vector>
 
+class QComboBox;
 class QLabel;
 class QPushButton;
 class QSlider;
 
 namespace fl::haptics {
+class HapticDevice;
 class PointerDevice;
 class ServoLoop;
+struct DeviceEntry;
 struct TangibleScene;
 } // namespace fl::haptics
 
@@ -43,7 +48,11 @@ class HapticsPanel : public Panel {
     explicit HapticsPanel(QWidget* parent = nullptr);
     ~HapticsPanel() override;
 
-    // Starts and stops feeling (the loop with the mouse's device).
+    // The devices connected, listed again (the mouse is always the first choice).
+    void findDevices();
+    QComboBox* devices() const { return devices_; }
+    // Starts and stops feeling: the loop with the chosen device (the mouse's
+    // stand-in, or a connected device mapped onto the scene's tangible box).
     void start();
     void stop();
     bool feeling() const;
@@ -78,15 +87,21 @@ class HapticsPanel : public Panel {
     void requestSnapshot();
 
     QPushButton* feel_;
+    QPushButton* rescan_;
+    QComboBox* devices_;
     QSlider* depth_;
-    QLabel *deviceName_, *status_, *contact_, *notes_;
+    QLabel *status_, *contact_, *notes_;
     ForceGraph* graph_;
     QTimer refresh_;
     std::shared_ptr<const scene::Scene> scene_;
     bool tangible_ = false;
     bool geometryVaries_ = false;
     double seconds_ = 0, snapshotSeconds_ = -1;
-    std::unique_ptr<haptics::PointerDevice> device_;
+    std::vector<haptics::DeviceEntry> found_;
+    std::unique_ptr<haptics::HapticDevice> device_; // the one the loop runs
+    haptics::PointerDevice* pointer_ = nullptr;     // device_, when it is the mouse's
+    double maxForce_ = 1;
+    field::Box3 tangibleBox_;
     std::unique_ptr<haptics::ServoLoop> loop_;
     std::shared_ptr<const haptics::TangibleScene> snapshot_;
     double sceneSize_ = 1;
