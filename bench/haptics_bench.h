@@ -9,7 +9,11 @@
 //   function and for its triangles at several mesh resolutions.
 // - The real-time loop at 1 kHz: the period's jitter percentiles, with the
 //   machine's load as it is (reported, never asserted).
+#include "field/field_sampler.h"
+
+#include <atomic>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +47,22 @@ struct HapticsBenchResult {
 };
 
 HapticsBenchResult runHapticsBench(const HapticsBenchOptions& options);
+
+// What accuracy costs in time, for touch, on one shape: the tool walks `path`
+// (the shape's coordinates) at 1 kHz, felt by the function ("function") and by
+// its triangles at each resolution ("polygons at R"); each row's tick cost
+// and contact error. `onRow` hears each row as it is measured; `cancel` stops
+// between rows. The Accuracy panel's touch curve and `bench haptics` share it.
+std::vector<TickCost> touchSweep(const field::ImplicitField& field,
+                                 const std::vector<field::Vec3>& path,
+                                 const std::vector<double>& resolutions, int passes,
+                                 const std::atomic<bool>* cancel = nullptr,
+                                 const std::function<void(const TickCost&)>& onRow = {},
+                                 std::vector<std::string>* notes = nullptr);
+// A path for it on any shape: points just under its surface (a fraction of
+// the box diagonal deep), where rays from the box's faces and corners towards
+// its middle meet it, after an approach from outside.
+std::vector<field::Vec3> pathUnderSurface(const field::ImplicitField& field, double depth = 2e-4);
 std::string hapticsBenchText(const HapticsBenchResult& r);
 std::string hapticsBenchJson(const HapticsBenchResult& r);
 

@@ -174,6 +174,12 @@ void ForceModel::polygonStep(ShapeState& s, const Vec3& tool, Friction friction)
         s.proxy = tool;
         return;
     }
+    // Sliding on a face's plane past the face's edge (a convex surface) leaves
+    // the proxy above the surface: back onto it along the line to the tool.
+    if (const auto hit = bvh.firstHit(proxy, tool); hit && hit->frontFacing) {
+        proxy = field::along(hit->point, hit->normal, eps);
+        normal = hit->normal;
+    }
     s.lastNormal = normal;
     // The friction cone: within μ · depth of where it was, the proxy stays;
     // beyond, it follows to the cone's edge.

@@ -9,15 +9,40 @@
 #include <cmath>
 
 namespace fl::suite {
-namespace {
+ChartCurves ChartCurves::meshing() {
+    ChartCurves c;
+    c.xLabel = AccuracyChart::tr("time per mesh (ms, log scale)");
+    c.yLabel = AccuracyChart::tr("max error (of the box diagonal, log scale)");
+    c.timeUnit = QStringLiteral("ms");
+    c.lines = {{"dense", AccuracyChart::tr("● dense marching cubes"), QColor(0x86, 0x8e, 0x96)},
+               {"adaptive", AccuracyChart::tr("● adaptive (ours)"), QColor(0x1c, 0x7e, 0xd6)}};
+    c.operatingMethod = c.bandMethod = "adaptive";
+    return c;
+}
 
-const QColor kAdaptive(0x1c, 0x7e, 0xd6), kDense(0x86, 0x8e, 0x96);
-
-} // namespace
+ChartCurves ChartCurves::touch() {
+    ChartCurves c;
+    c.xLabel = AccuracyChart::tr("time per force tick (µs, p50, log scale)");
+    // The mean: a path's few ticks at sharp edges would make the max say little.
+    c.yLabel = AccuracyChart::tr("mean contact error (of the diagonal, log scale)");
+    c.timeUnit = QStringLiteral("µs");
+    c.xFloor = 0.01;
+    c.yFloor = 1e-17; // touching the function is exact to rounding
+    c.lines = {
+        {"polygons", AccuracyChart::tr("● polygon contact (its mesh)"), QColor(0xe0, 0x8a, 0x1c)},
+        {"function", AccuracyChart::tr("● function contact (ours)"), QColor(0x2a, 0xa0, 0x4a)}};
+    c.operatingMethod = "polygons";
+    return c;
+}
 
 AccuracyChart::AccuracyChart(QWidget* parent) : QWidget(parent) {
     setMouseTracking(true);
     setMinimumSize(260, 200);
+}
+
+void AccuracyChart::setCurves(ChartCurves curves) {
+    curves_ = std::move(curves);
+    setRows({});
 }
 
 void AccuracyChart::setRows(std::vector<bench::AccuracyRow> rows) {
@@ -25,8 +50,8 @@ void AccuracyChart::setRows(std::vector<bench::AccuracyRow> rows) {
     // Whole decades round everything measured (time at least 0.01 ms, error at least 1e-7).
     double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
     for (const bench::AccuracyRow& r : rows_) {
-        const double x = std::log10(std::max(r.ms, 0.01)),
-                     y = std::log10(std::max(r.maxError, 1e-7));
+        const double x = std::log10(std::max(r.ms, curves_.xFloor)),
+                     y = std::log10(std::max(r.maxError, curves_.yFloor));
         xmin = std::min(xmin, x), xmax = std::max(xmax, x);
         ymin = std::min(ymin, y), ymax = std::max(ymax, y);
     }
@@ -48,11 +73,11 @@ void AccuracyChart::setLevelOfDetailRange(double coarsest, double finest) {
 }
 
 QString AccuracyChart::xLabel() const {
-    return tr("time per mesh (ms, log scale)");
+    return curves_.xLabel;
 }
 
 QString AccuracyChart::yLabel() const {
-    return tr("max error (of the box diagonal, log scale)");
+    return curves_.yLabel;
 }
 
 QRectF AccuracyChart::plotArea() const {
@@ -62,8 +87,8 @@ QRectF AccuracyChart::plotArea() const {
 QPointF AccuracyChart::pointOf(std::size_t i) const {
     const bench::AccuracyRow& r = rows_[i];
     const QRectF a = plotArea();
-    const double x = (std::log10(std::max(r.ms, 0.01)) - xLo_) / (xHi_ - xLo_);
-    const double y = (std::log10(std::max(r.maxError, 1e-7)) - yLo_) / (yHi_ - yLo_);
+    const double x = (std::log10(std::max(r.ms, curves_.xFloor)) - xLo_) / (xHi_ - xLo_);
+    const double y = (std::log10(std::max(r.maxError, curves_.yFloor)) - yLo_) / (yHi_ - yLo_);
     return {a.left() + x * a.width(), a.bottom() - y * a.height()};
 }
 
@@ -115,7 +140,8 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         bool first = true;
         for (std::size_t i = 0; i < rows_.size(); ++i) {
             const bench::AccuracyRow& r = rows_[i];
-            if (r.method != "adaptive" || r.resolution < lod_.first || r.resolution > lod_.second)
+            if (r.method != curves_.bandMethod || r.resolution < lod_.first ||
+                r.resolution > lod_.second)
                 continue;
             first ? band.moveTo(pointOf(i)) : band.lineTo(pointOf(i));
             first = false;
@@ -128,8 +154,9 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         }
     }
     // One line per method, in resolution order.
-    for (const auto& [method, colour] :
-         {std::pair<std::string, QColor>{"dense", kDense}, {"adaptive", kAdaptive}}) {
+    for (const ChartCurves::Line& l : curves_.lines) {
+        const std::string& method = l.method;
+        const QColor& colour = l.colour;
         QPainterPath line;
         bool first = true;
         for (std::size_t i = 0; i < rows_.size(); ++i) {
@@ -148,7 +175,7 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
     // The operating point: the adaptive row nearest the resolution in use.
     int now = -1;
     for (std::size_t i = 0; i < rows_.size(); ++i)
-        if (rows_[i].method == "adaptive" &&
+        if (rows_[i].method == curves_.operatingMethod &&
             (now < 0 || std::abs(rows_[i].resolution - operating_) <
                             std::abs(rows_[std::size_t(now)].resolution - operating_)))
             now = int(i);
@@ -159,14 +186,32 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         p.drawEllipse(q, 8, 8);
         p.drawText(q + QPointF(10, -8), tr("now (%1)").arg(rows_[std::size_t(now)].resolution));
     }
-    // The legend.
-    p.setPen(kAdaptive);
-    p.drawText(QPointF(a.right() - 150, a.top() + 14), tr("● adaptive (ours)"));
-    p.setPen(kDense);
-    p.drawText(QPointF(a.right() - 150, a.top() + 28), tr("● dense marching cubes"));
-    if (lod_.second > 0) {
+    // The legend, in the plot's corner with the fewest points.
+    const bool band = lod_.second > 0 && !curves_.bandMethod.empty();
+    const double legendHeight = 14.0 * double(curves_.lines.size() + (band ? 1 : 0)) + 4;
+    QRectF legend;
+    std::size_t fewest = rows_.size() + 1;
+    for (const QPointF corner : {a.topRight() + QPointF(-176, 2), a.topLeft() + QPointF(6, 2),
+                                 a.bottomRight() + QPointF(-176, -legendHeight - 2),
+                                 a.bottomLeft() + QPointF(6, -legendHeight - 2)}) {
+        const QRectF box(corner, QSizeF(172, legendHeight));
+        std::size_t inside = 0;
+        for (std::size_t i = 0; i < rows_.size(); ++i)
+            inside += box.adjusted(-12, -12, 12, 12).contains(pointOf(i));
+        if (inside < fewest) {
+            fewest = inside;
+            legend = box;
+        }
+    }
+    double legendY = legend.top() + 12;
+    for (auto it = curves_.lines.rbegin(); it != curves_.lines.rend(); ++it) {
+        p.setPen(it->colour);
+        p.drawText(QPointF(legend.left(), legendY), it->legend);
+        legendY += 14;
+    }
+    if (band) {
         p.setPen(QColor(0xc0, 0x78, 0x10));
-        p.drawText(QPointF(a.right() - 150, a.top() + 42),
+        p.drawText(QPointF(legend.left(), legendY),
                    tr("▬ level of detail %1–%2").arg(lod_.first).arg(lod_.second));
     }
 }
@@ -179,12 +224,13 @@ void AccuracyChart::mouseMoveEvent(QMouseEvent* event) {
     }
     const bench::AccuracyRow& r = rows_[std::size_t(i)];
     QToolTip::showText(event->globalPosition().toPoint(),
-                       tr("%1 at resolution %2\n%3 triangles, %4 evaluations\n%5 ms, max error %6")
+                       tr("%1 at resolution %2\n%3 triangles, %4 evaluations\n%5 %6, max error %7")
                            .arg(QString::fromStdString(r.method))
                            .arg(r.resolution)
                            .arg(r.triangles)
                            .arg(r.evaluations)
                            .arg(r.ms, 0, 'g', 3)
+                           .arg(curves_.timeUnit)
                            .arg(r.maxError, 0, 'g', 3),
                        this);
 }

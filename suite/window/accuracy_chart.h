@@ -7,17 +7,43 @@
 // says its resolution, triangles and evaluations; clicking one chooses it.
 #include "accuracy_sweep.h"
 
+#include <QColor>
 #include <QWidget>
 
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace fl::suite {
 
+// What the chart's lines are: each a method of the rows, with its colour and
+// legend; one of them carries the operating point. Meshing (the adaptive
+// mesher against dense marching cubes) is the first kind; touch (function
+// contact against polygon contact, haptics) the second; more costs come the
+// same way.
+struct ChartCurves {
+    QString xLabel, yLabel, timeUnit; // the rows' `ms` field is in timeUnit
+    double xFloor = 0.01;             // the least time shown
+    double yFloor = 1e-7;             // the least error shown
+    struct Line {
+        std::string method;
+        QString legend;
+        QColor colour;
+    };
+    std::vector<Line> lines;
+    std::string operatingMethod; // whose row nearest the operating resolution is ringed
+    std::string bandMethod;      // whose rows within the level of detail's range are banded
+    static ChartCurves meshing();
+    static ChartCurves touch();
+};
+
 class AccuracyChart : public QWidget {
     Q_OBJECT
   public:
     explicit AccuracyChart(QWidget* parent = nullptr);
+
+    void setCurves(ChartCurves curves);
+    const ChartCurves& curves() const { return curves_; }
 
     void setRows(std::vector<bench::AccuracyRow> rows);
     const std::vector<bench::AccuracyRow>& rows() const { return rows_; }
@@ -46,6 +72,7 @@ class AccuracyChart : public QWidget {
     QRectF plotArea() const;
 
     std::vector<bench::AccuracyRow> rows_;
+    ChartCurves curves_ = ChartCurves::meshing();
     double operating_ = 0;
     std::pair<double, double> lod_{0, 0};
     double xLo_ = 0, xHi_ = 1, yLo_ = -4, yHi_ = 0; // decades (log10)

@@ -1,5 +1,6 @@
 #include "accuracy_panel.h"
 
+#include "haptics_bench.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 
@@ -28,14 +29,20 @@ void AccuracyPanel::setResolutions(std::vector<double> resolutions) {
 
 AccuracyPanel::AccuracyPanel(QWidget* parent)
     : Panel(tr("Accuracy"), QStringLiteral("accuracy"), Qt::RightDockWidgetArea, parent),
-      shapes_(new QComboBox), chart_(new AccuracyChart), progress_(new QProgressBar),
-      measure_(new QPushButton(tr("Measure"))), cancel_(new QPushButton(tr("Cancel"))),
-      write_(new QPushButton(tr("Write into the scene"))), target_(new QLineEdit),
-      status_(new QLabel) {
+      shapes_(new QComboBox), costs_(new QComboBox), chart_(new AccuracyChart),
+      progress_(new QProgressBar), measure_(new QPushButton(tr("Measure"))),
+      cancel_(new QPushButton(tr("Cancel"))), write_(new QPushButton(tr("Write into the scene"))),
+      target_(new QLineEdit), status_(new QLabel) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;
     top->addWidget(shapes_, 1);
+    costs_->addItem(tr("meshing"));
+    costs_->addItem(tr("touch"));
+    costs_->setToolTip(tr("What accuracy costs: in time per mesh (the adaptive mesher against "
+                          "dense marching cubes), or in time per force tick (touching the "
+                          "function against touching its triangles)"));
+    top->addWidget(costs_);
     top->addWidget(measure_);
     top->addWidget(cancel_);
     layout->addLayout(top);
@@ -62,6 +69,8 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
     connect(cancel_, &QPushButton::clicked, this, [this] { cancel(); });
     connect(write_, &QPushButton::clicked, this, [this] { writeChoice(); });
     connect(chart_, &AccuracyChart::resolutionChosen, this, [this](double r) { choose(r); });
+    connect(costs_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { setCost(i == 1 ? Cost::Touch : Cost::Meshing); });
     connect(target_, &QLineEdit::returnPressed, this, [this] {
         bool ok = false;
         const double t = target_->text().toDouble(&ok);
@@ -146,6 +155,39 @@ void AccuracyPanel::cancel() {
     stop_ = false;
 }
 
+void AccuracyPanel::setCost(Cost cost) {
+    cancel();
+    cost_ = cost;
+    {
+        const QSignalBlocker quiet(costs_);
+        costs_->setCurrentIndex(cost == Cost::Touch ? 1 : 0);
+    }
+    chart_->setCurves(cost == Cost::Touch ? ChartCurves::touch() : ChartCurves::meshing());
+    status_->setText(cost == Cost::Touch
+                         ? tr("Measure: what touching the shape costs per force tick, by its "
+                              "function and by its triangles, and how far the touch is from the "
+                              "true surface")
+                         : tr("Measure: how far each mesh is from the true surface, and what it "
+                              "costs"));
+}
+
+namespace {
+
+// A touch row as the chart draws it: µs per tick in `ms`, the mean contact
+// error where the chart reads its error (ChartCurves::touch's y label).
+bench::AccuracyRow touchRow(const bench::TickCost& t) {
+    bench::AccuracyRow r;
+    r.method = t.resolution > 0 ? "polygons" : "function";
+    r.resolution = t.resolution;
+    r.triangles = t.triangles;
+    r.ms = t.p50Us;
+    r.maxError = t.meanError;
+    r.meanError = t.meanError;
+    return r;
+}
+
+} // namespace
+
 void AccuracyPanel::measure() {
     cancel();
     const int index = shapes_->currentIndex();
@@ -157,6 +199,48 @@ void AccuracyPanel::measure() {
     cancel_->setEnabled(true);
     status_->setText(tr("measuring…"));
     running_ = true;
+    if (cost_ == Cost::Touch) {
+        // Polygons past 128 take long to build and say nothing new to a hand.
+        std::vector<double> resolutions;
+        for (double r : resolutions_)
+            if (r <= 128) resolutions.push_back(r);
+        progress_->setRange(0, int(resolutions.size()) + 1);
+        worker_ = std::thread([this, field, resolutions, alive = alive_] {
+            std::vector<bench::AccuracyRow> rows;
+            int done = 0;
+            const auto path = bench::pathUnderSurface(*field);
+            bench::touchSweep(*field, path, resolutions, 1, &stop_, [&](const bench::TickCost& t) {
+                rows.push_back(touchRow(t));
+                ++done;
+                QMetaObject::invokeMethod(
+                    this,
+                    [this, rows, done, alive] {
+                        if (!*alive) return;
+                        chart_->setRows(rows);
+                        progress_->setValue(done);
+                    },
+                    Qt::QueuedConnection);
+            });
+            const bool stopped = stop_;
+            const bool felt = !path.empty();
+            QMetaObject::invokeMethod(
+                this,
+                [this, rows, stopped, felt, alive] {
+                    if (!*alive) return;
+                    running_ = false;
+                    measure_->setEnabled(true);
+                    cancel_->setEnabled(false);
+                    chart_->setRows(rows);
+                    status_->setText(stopped ? tr("cancelled")
+                                     : !felt ? tr("no surface to touch was found in the box")
+                                             : touchSummary(rows));
+                    Q_EMIT measured();
+                },
+                Qt::QueuedConnection);
+        });
+        return;
+    }
+    progress_->setRange(0, int(resolutions_.size()));
     worker_ = std::thread([this, field, resolutions = resolutions_, alive = alive_] {
         std::vector<bench::AccuracyRow> rows;
         bench::SweepOptions o;
@@ -193,10 +277,29 @@ void AccuracyPanel::measure() {
     });
 }
 
+QString AccuracyPanel::touchSummary(const std::vector<bench::AccuracyRow>& rows) {
+    const bench::AccuracyRow* function = nullptr;
+    for (const bench::AccuracyRow& r : rows)
+        if (r.method == "function") function = &r;
+    if (!function) return {};
+    QString out = tr("touching the function: %1 µs a tick, mean error %2")
+                      .arg(function->ms, 0, 'g', 3)
+                      .arg(function->maxError, 0, 'e', 1);
+    for (const bench::AccuracyRow& r : rows)
+        if (r.method == "polygons")
+            out += tr("\nits %1 triangles (resolution %2): %3 µs, mean error %4")
+                       .arg(r.triangles)
+                       .arg(r.resolution)
+                       .arg(r.ms, 0, 'g', 3)
+                       .arg(r.maxError, 0, 'e', 1);
+    return out;
+}
+
 bool AccuracyPanel::chooseTargetError(double target) {
     double best = 0;
+    const std::string& method = chart_->curves().operatingMethod;
     for (const bench::AccuracyRow& r : chart_->rows())
-        if (r.method == "adaptive" && r.maxError <= target && (best == 0 || r.resolution < best))
+        if (r.method == method && r.maxError <= target && (best == 0 || r.resolution < best))
             best = r.resolution;
     if (best == 0) return false;
     choose(best);

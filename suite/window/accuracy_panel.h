@@ -41,8 +41,16 @@ class AccuracyPanel : public Panel {
 
     // The resolutions a sweep measures (by default 8 to 256).
     static std::vector<double> sweepResolutions();
+    // The touch sweep's rows in words (the status line after a touch sweep).
+    static QString touchSummary(const std::vector<bench::AccuracyRow>& rows);
     void setResolutions(std::vector<double> resolutions);
     const std::vector<double>& resolutions() const { return resolutions_; }
+
+    // What is measured: meshing (the adaptive mesher against dense marching
+    // cubes) or touch (function contact against polygon contact, per tick).
+    enum class Cost { Meshing, Touch };
+    void setCost(Cost cost);
+    Cost cost() const { return cost_; }
 
     void measure(); // starts a sweep of the chosen shape (cancels one running)
     void cancel();
@@ -93,6 +101,8 @@ class AccuracyPanel : public Panel {
     std::vector<double> resolutions_ = sweepResolutions();
     std::vector<Candidate> candidates_;
     QComboBox* shapes_;
+    QComboBox* costs_;
+    Cost cost_ = Cost::Meshing;
     AccuracyChart* chart_;
     QProgressBar* progress_;
     QPushButton *measure_, *cancel_, *write_;

@@ -116,6 +116,42 @@ class AccuracyPanelTest : public QObject {
         QCOMPARE(scene::numbersField(*g, "lodRange"), (std::vector<double>{8, 16}));
     }
 
+    void touchIsMeasuredTheSameWay() {
+        // The haptics issue's curve, through the same panel: touching the
+        // watermelon's function against touching its triangles.
+        suite::AccuracyPanel panel;
+        panel.resize(560, 520);
+        panel.sceneChanged(watermelon());
+        panel.setCost(suite::AccuracyPanel::Cost::Touch);
+        panel.setResolutions({16, 32, 64});
+        QSignalSpy done(&panel, &suite::AccuracyPanel::measured);
+        panel.measure();
+        QVERIFY(done.wait(120000));
+        const auto& rows = panel.chart()->rows();
+        QCOMPARE(rows.size(), std::size_t(4));
+        QCOMPARE(rows[0].method, std::string("function"));
+        QVERIFY2(rows[0].maxError < 1e-12, qPrintable(QString::number(rows[0].maxError)));
+        for (std::size_t i = 1; i < rows.size(); ++i) {
+            QCOMPARE(rows[i].method, std::string("polygons"));
+            QVERIFY(rows[i].triangles > 0 && rows[i].ms > 0);
+            QVERIFY(rows[i].maxError > rows[0].maxError); // the chart's error: the mean
+        }
+        QVERIFY2(rows.back().maxError < rows[1].maxError,
+                 qPrintable(QStringLiteral("finer triangles touch closer: %1 at 64, %2 at 16")
+                                .arg(rows.back().maxError)
+                                .arg(rows[1].maxError)));
+        QVERIFY(panel.chart()->xLabel().contains(QStringLiteral("µs")));
+        QVERIFY(panel.status()->text().contains(QStringLiteral("touching the function")));
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
+        QVERIFY(panel.grab().save(FUNCTIONLAB_SCREENSHOT_DIR "/accuracy-touch.png"));
+        // Back to meshing: the chart's curves are the mesher's again.
+        panel.setCost(suite::AccuracyPanel::Cost::Meshing);
+        QVERIFY(panel.chart()->xLabel().contains(QStringLiteral("mesh")));
+        QVERIFY(panel.chart()->rows().empty());
+    }
+
     void aSweepCanBeCancelled() {
         suite::AccuracyPanel panel;
         panel.sceneChanged(watermelon());
