@@ -2,6 +2,8 @@
 
 #include "device/device_enumeration.h"
 #include "device/device_limits.h"
+#include "effect_colours.h"
+#include "mesh/scene_meshing.h"
 #include "pointer_device.h"
 #include "scene/effects_plan.h"
 #include "servo_loop.h"
@@ -44,8 +46,8 @@ QString contactText(haptics::ContactKind c) {
 HapticsPanel::HapticsPanel(QWidget* parent)
     : Panel(tr("Haptics"), QStringLiteral("haptics"), Qt::RightDockWidgetArea, parent),
       feel_(new QPushButton(tr("Feel"))), rescan_(new QPushButton(tr("Find devices"))),
-      devices_(new QComboBox), depth_(new QSlider(Qt::Horizontal)), status_(new QLabel),
-      contact_(new QLabel), notes_(new QLabel), graph_(new ForceGraph),
+      devices_(new QComboBox), show_(new QComboBox), depth_(new QSlider(Qt::Horizontal)),
+      status_(new QLabel), contact_(new QLabel), notes_(new QLabel), graph_(new ForceGraph),
       worker_(
           this, [](const Request& r) { return snapshotOf(*r.scene, r.seconds); },
           [this](const Request& r, std::shared_ptr<const haptics::TangibleScene> snapshot) {
@@ -62,6 +64,16 @@ HapticsPanel::HapticsPanel(QWidget* parent)
                   notes << QString::fromStdString(n);
               notes_->setText(notes.join(QLatin1Char('\n')));
               if (loop_) loop_->setScene(snapshot, false);
+              if (colours()) Q_EMIT showOnSurfaceChanged();
+          }),
+      colourer_(
+          this,
+          [](const ColourRequest& r) {
+              return haptics::colouredByEffect(*r.frame, *r.tangible, scene::TangibleKind(r.kind));
+          },
+          [this](const ColourRequest& r, std::shared_ptr<const mesh::SceneMeshes> coloured) {
+              if (!colours() || r.tangible != snapshot_) return; // the choice or scene changed
+              Q_EMIT frameColoured(coloured);
           }) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
@@ -78,6 +90,14 @@ HapticsPanel::HapticsPanel(QWidget* parent)
     depth_->setValue(1); // 0.02% of the scene: felt on the watermelon's rind, not through it
     depth_->setToolTip(tr("How far the tool presses into the surface: up to 2% of the scene"));
     form->addRow(tr("Press:"), depth_);
+    show_->addItem(tr("nothing"));
+    show_->addItem(tr("friction"), int(scene::TangibleKind::Friction));
+    show_->addItem(tr("density"), int(scene::TangibleKind::Density));
+    show_->setToolTip(tr("Colour the tangible surfaces by their friction or density: blue 0, "
+                         "green 0.5, red 1 and more"));
+    form->addRow(tr("Show:"), show_);
+    connect(show_, &QComboBox::currentIndexChanged, this,
+            [this] { Q_EMIT showOnSurfaceChanged(); });
     form->addRow(tr("Loop:"), status_);
     form->addRow(tr("Contact:"), contact_);
     layout->addLayout(form);
@@ -100,6 +120,15 @@ HapticsPanel::~HapticsPanel() {
 
 bool HapticsPanel::feeling() const {
     return loop_ && loop_->running();
+}
+
+bool HapticsPanel::colours() const {
+    return show_->currentIndex() > 0 && snapshot_ != nullptr;
+}
+
+void HapticsPanel::colour(std::shared_ptr<const mesh::SceneMeshes> frame) {
+    if (!colours() || !frame) return;
+    colourer_.request({std::move(frame), snapshot_, show_->currentData().toInt()});
 }
 
 void HapticsPanel::findDevices() {

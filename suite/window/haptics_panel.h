@@ -25,6 +25,10 @@ class QLabel;
 class QPushButton;
 class QSlider;
 
+namespace fl::mesh {
+struct SceneMeshes;
+}
+
 namespace fl::haptics {
 class HapticDevice;
 class PointerDevice;
@@ -59,11 +63,18 @@ class HapticsPanel : public Panel {
     // Something in the current scene is tangible.
     bool tangible() const { return tangible_; }
     // Snapshot work running or waiting.
-    bool busy() const { return worker_.busy(); }
+    bool busy() const { return worker_.busy() || colourer_.busy(); }
 
     // The mouse over the view: the point under it on a surface and the
     // surface's outward normal there (scene coordinates); none: off the shapes.
     void touchAt(std::optional<field::Vec3> point, field::Vec3 normal = {});
+
+    // Friction or density shown as colour on the surfaces (or nothing): the
+    // window hands each frame to colour(); the coloured copy comes back by
+    // frameColoured.
+    QComboBox* showOnSurface() const { return show_; }
+    bool colours() const;
+    void colour(std::shared_ptr<const mesh::SceneMeshes> frame);
 
     QPushButton* feelButton() const { return feel_; }
     QLabel* status() const { return status_; }
@@ -78,6 +89,8 @@ class HapticsPanel : public Panel {
 
   Q_SIGNALS:
     void touchChanged(std::optional<fl::suite::TouchMarks> marks);
+    void frameColoured(std::shared_ptr<const fl::mesh::SceneMeshes> frame);
+    void showOnSurfaceChanged(); // the window shows the frame again, coloured or not
 
   private:
     struct Request {
@@ -89,6 +102,7 @@ class HapticsPanel : public Panel {
     QPushButton* feel_;
     QPushButton* rescan_;
     QComboBox* devices_;
+    QComboBox* show_;
     QSlider* depth_;
     QLabel *status_, *contact_, *notes_;
     ForceGraph* graph_;
@@ -106,6 +120,12 @@ class HapticsPanel : public Panel {
     std::shared_ptr<const haptics::TangibleScene> snapshot_;
     double sceneSize_ = 1;
     NewestOnlyWorker<Request, std::shared_ptr<const haptics::TangibleScene>> worker_;
+    struct ColourRequest {
+        std::shared_ptr<const mesh::SceneMeshes> frame;
+        std::shared_ptr<const haptics::TangibleScene> tangible;
+        int kind = 0; // scene::TangibleKind
+    };
+    NewestOnlyWorker<ColourRequest, std::shared_ptr<const mesh::SceneMeshes>> colourer_;
 };
 
 } // namespace fl::suite

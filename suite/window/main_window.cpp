@@ -277,6 +277,19 @@ void MainWindow::buildDocks() {
             viewer::RenderScene::Touch{q(m->tool), q(m->proxy), q(m->force), float(m->maxForce)});
     });
     connect(player_, &viewer::ScenePlayer::timeChanged, haptics_, &HapticsPanel::setSceneTime);
+    // Friction or density as colour: each frame coloured on the panel's worker.
+    connect(haptics_, &HapticsPanel::showOnSurfaceChanged, this, [this] {
+        if (!shownFrame_) return;
+        if (haptics_->colours())
+            haptics_->colour(shownFrame_);
+        else
+            view_->setMeshes(shownFrame_);
+    });
+    connect(haptics_, &HapticsPanel::frameColoured, this,
+            [this](std::shared_ptr<const mesh::SceneMeshes> coloured) {
+                if (shownFrame_ && coloured->source == shownFrame_->source)
+                    view_->setMeshes(coloured);
+            });
     connect(assignment_, &AssignmentPanel::starterChosen, this, [this](const QString& path) {
         if (maybeKeepChanges()) openFile(path);
     });
@@ -639,6 +652,8 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
         (walk ? walkAction_ : examineAction_)->trigger();
     }
     view_->setMeshes(meshes);
+    shownFrame_ = meshes;
+    if (haptics_->colours()) haptics_->colour(meshes);
     viewpoints_->showViewpoints(view_->viewpointNames());
     double ms = 0;
     for (const auto& s : meshes->shapes)

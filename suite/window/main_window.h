@@ -174,6 +174,7 @@ class MainWindow : public QMainWindow {
     bool prompts_ = true;
     std::size_t framesAtLastRate_ = 0;
     std::shared_ptr<const scene::Scene> scene_;
+    std::shared_ptr<const mesh::SceneMeshes> shownFrame_; // the last frame, uncoloured
 };
 
 } // namespace fl::suite

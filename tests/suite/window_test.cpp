@@ -645,6 +645,33 @@ class WindowTest : public QObject {
         QVERIFY(!haptics->feelButton()->isEnabled());
     }
 
+    void theFansCarpetShowsItsFrictionAsColour() {
+        // The room lends friction 0.8 below y = 0.05 (the carpet), 0.3 above.
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(examplePath("fan.x3d")));
+        QVERIFY(settle(w));
+        suite::HapticsPanel* haptics = w.hapticsPanel();
+        QTRY_VERIFY_WITH_TIMEOUT(!haptics->busy(), 20000);
+        haptics->raise();
+        haptics->showOnSurface()->setCurrentIndex(1); // friction
+        auto carpetColour = [&]() -> std::optional<std::array<float, 4>> {
+            for (const auto& s : w.view()->meshes()->shapes)
+                if (s.name.find("Shape") == 0 && !s.mesh.colours.empty() &&
+                    s.mesh.positions.size() == 24) { // a Box: the carpet is the first
+                    return s.mesh.colours.front();
+                }
+            return std::nullopt;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(carpetColour() && (*carpetColour())[0] > 0.5f, 10000);
+        save(screenshot(w), "window-fan-friction");
+        haptics->showOnSurface()->setCurrentIndex(0);
+        QTRY_VERIFY_WITH_TIMEOUT(!carpetColour() || (*carpetColour())[0] < 0.7f, 10000);
+    }
+
     void savingWritesTheTextAndClearsTheModifiedMark() {
         suite::MainWindow w;
         w.setPromptsEnabled(false);
