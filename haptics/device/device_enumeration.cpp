@@ -2,6 +2,7 @@
 
 #include "device/libusb_falcon_transport.h"
 #include "device/usb_products.h"
+#include "text/json_text.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -14,38 +15,6 @@ std::string hexId(std::uint16_t id) {
     char text[8];
     std::snprintf(text, sizeof text, "%04x", id);
     return text;
-}
-
-void appendJsonString(std::string& out, std::string_view text) {
-    out += '"';
-    for (unsigned char c : text) {
-        switch (c) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        default:
-            if (c < 0x20) {
-                char escaped[8];
-                std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-                out += escaped;
-            } else {
-                out += char(c);
-            }
-        }
-    }
-    out += '"';
 }
 
 } // namespace
@@ -126,22 +95,22 @@ std::string deviceListingJson(const std::vector<DeviceEntry>& devices,
         const DeviceEntry& e = devices[i];
         out += i ? ", {" : "{";
         out += "\"kind\": ";
-        appendJsonString(out, kindName(e.kind));
+        out += text::jsonString(kindName(e.kind));
         out += ", \"name\": ";
-        appendJsonString(out, e.name);
+        out += text::jsonString(e.name);
         out += ", \"vendor_id\": \"0x" + hexId(e.vendorId) + "\"";
         out += ", \"product_id\": \"0x" + hexId(e.productId) + "\"";
         out += ", \"path\": ";
-        appendJsonString(out, e.path);
+        out += text::jsonString(e.path);
         out += std::string(", \"accessible\": ") + (e.accessible ? "true" : "false");
         out += ", \"message\": ";
-        appendJsonString(out, e.message);
+        out += text::jsonString(e.message);
         out += "}";
     }
     out += "], \"notes\": [";
     for (std::size_t i = 0; i < notes.size(); ++i) {
         if (i) out += ", ";
-        appendJsonString(out, notes[i]);
+        out += text::jsonString(notes[i]);
     }
     out += "]}";
     return out;

@@ -3,6 +3,7 @@
 // "Device logs") that `haptics replay` plays back.
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/haptics_options.h"
 
 #include "device/device_enumeration.h"
 #include "device/device_recorder.h"
@@ -10,8 +11,6 @@
 #include "probe.h"
 #include "servo_loop.h"
 #include "tangible_scene.h"
-
-#include "scene/scene_reader.h"
 
 #include <chrono>
 #include <cstdio>
@@ -39,23 +38,9 @@ const CommandSpec& hapticsRecordSpec() {
                      .kind = OptionKind::Path,
                      .valueName = "LOG",
                      .help = "the device log to write"},
-                    {.name = "path",
-                     .kind = OptionKind::Text,
-                     .valueName = "X,Y,Z:X,Y,Z[:...]",
-                     .help = "the simulated tool's polyline in scene coordinates"},
-                    {.name = "duration",
-                     .kind = OptionKind::Number,
-                     .valueName = "S",
-                     .help = "seconds to walk the path",
-                     .defaultValue = "1",
-                     .min = 0,
-                     .max = 10000,
-                     .minExclusive = true},
-                    {.name = "time",
-                     .kind = OptionKind::Number,
-                     .valueName = "T",
-                     .help = "the scene time at the first tick",
-                     .defaultValue = "0"},
+                    hapticsPathOption("the simulated tool's polyline in scene coordinates"),
+                    hapticsDurationOption(),
+                    hapticsTimeOption(),
                     {.name = "device",
                      .kind = OptionKind::Integer,
                      .valueName = "N",
@@ -156,11 +141,9 @@ int hapticsRecordCommand(const Args& args) {
     if (!a->given("out")) return usageError(hapticsRecordSpec(), "--out is required", std::cerr);
     if (a->given("path") == a->given("device"))
         return usageError(hapticsRecordSpec(), "give either --path or --device", std::cerr);
-    scene::ReadResult r = scene::readSceneFile(a->positionals().front());
-    for (const auto& d : r.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!r.ok()) return kExitDiagnostic;
-    return a->given("path") ? recordSimulated(*r.scene, *a) : recordDevice(*r.scene, *a);
+    const auto scene = hapticsSceneOrExplain(a->positionals().front(), std::cerr);
+    if (!scene) return kExitDiagnostic;
+    return a->given("path") ? recordSimulated(*scene, *a) : recordDevice(*scene, *a);
 }
 
 } // namespace fl::cli

@@ -3,11 +3,10 @@
 // simulated clock against a scene — the same forces every time.
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/haptics_options.h"
 
 #include "device/replay_device.h"
 #include "probe.h"
-
-#include "scene/scene_reader.h"
 
 #include <cstdio>
 #include <iostream>
@@ -27,18 +26,8 @@ const CommandSpec& hapticsReplaySpec() {
             "(file:line:column) and why.\n",
         .positionals = {{.name = "FILE", .help = "the scene to touch"},
                         {.name = "LOG", .help = "the device log"}},
-        .options = {{.name = "time",
-                     .kind = OptionKind::Number,
-                     .valueName = "T",
-                     .help = "the scene time at the log's first sample",
-                     .defaultValue = "0"},
-                    {.name = "rate",
-                     .kind = OptionKind::Number,
-                     .valueName = "HZ",
-                     .help = "the servo rate",
-                     .defaultValue = "1000",
-                     .min = 1,
-                     .max = 100000},
+        .options = {hapticsTimeOption("the scene time at the log's first sample"),
+                    hapticsRateOption(),
                     {.name = "json", .help = "print the object `haptics probe --json` prints"}},
         .exitStatus = "0 replayed, 1 the scene or the log could not be read, 2 usage error",
     };
@@ -49,10 +38,8 @@ int hapticsReplayCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(hapticsReplaySpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    scene::ReadResult r = scene::readSceneFile(a->positionals()[0]);
-    for (const auto& d : r.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!r.ok()) return kExitDiagnostic;
+    const auto scene = hapticsSceneOrExplain(a->positionals()[0], std::cerr);
+    if (!scene) return kExitDiagnostic;
     std::string error;
     auto replay = haptics::ReplayDevice::open(a->positionals()[1], &error);
     if (!replay) {
@@ -64,22 +51,10 @@ int hapticsReplayCommand(const Args& args) {
     o.rateHz = a->number("rate", 1000);
     o.duration = std::max(replay->duration(), 1 / o.rateHz);
     const auto run = haptics::runOnSimulatedClock(
-        *r.scene, *replay, [&](double t) { return replay->setTime(t); }, o, &error);
+        *scene, *replay, [&](double t) { return replay->setTime(t); }, o, &error);
     if (!run) return usageError(hapticsReplaySpec(), error, std::cerr);
-    for (const std::string& n : run->notes)
-        std::cerr << "functionlab haptics replay: " << n << "\n";
-    for (const std::string& n : run->reports)
-        std::cerr << "functionlab haptics replay: " << n << "\n";
-    if (a->flag("json")) {
-        std::cout << haptics::probeJson(*run);
-        return kExitOk;
-    }
-    std::printf("%zu ticks at %g Hz from %s\n", run->ticks.size(), run->rateHz,
-                a->positionals()[1].c_str());
-    for (const haptics::ProbeTick& t : run->ticks)
-        std::printf("%10.3f  %10.5f %10.5f %10.5f  %9.4f %9.4f %9.4f %s\n", t.ms, t.device[0],
-                    t.device[1], t.device[2], t.force[0], t.force[1], t.force[2],
-                    std::string(haptics::contactName(t.contact)).c_str());
+    printRunNotes("haptics replay", *run, std::cerr);
+    printRun(*run, a->flag("json"), std::cout);
     return kExitOk;
 }
 

@@ -1,50 +1,10 @@
 #pragma once
 // Minimal JSON writing for command-line output (numbers, strings, arrays).
-#include <cmath>
-#include <cstdio>
-#include <string>
-#include <string_view>
+#include "text/json_text.h"
 
 namespace fl::cli {
 
-inline std::string jsonString(std::string_view s) {
-    std::string out = "\"";
-    for (char c : s) {
-        switch (c) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20) {
-                char buf[8];
-                std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned char>(c));
-                out += buf;
-            } else {
-                out += c;
-            }
-        }
-    }
-    return out + "\"";
-}
-
-// JSON has no NaN or infinity: those become null.
-inline std::string jsonNumber(double v) {
-    if (!std::isfinite(v)) return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+using text::jsonNumber;
+using text::jsonString;
 
 } // namespace fl::cli
