@@ -254,6 +254,7 @@ HapticsBenchResult runHapticsBench(const HapticsBenchOptions& o) {
         const haptics::ServoStatus s = loop.status();
         out.loopRateHz = s.measuredRateHz;
         out.loopTicks = s.ticks;
+        out.realTime = s.realTime;
         out.lateTicks = s.lateTicks;
         out.jitterP50Us = j.p50;
         out.jitterP99Us = j.p99;
@@ -306,11 +307,12 @@ std::string hapticsBenchText(const HapticsBenchResult& r) {
              fmt("%9.0f", double(t.triangles)) + " " + fmt("%8.2f", t.p50Us) + " " +
              fmt("%8.2f", t.p99Us) + " " + fmt("%8.2f", t.p999Us) + "   " +
              fmt("%10.2e", t.meanError) + "   " + fmt("%10.2e", t.maxError) + "\n";
-    s += "\nThe real-time loop: " + fmt("%.1f", r.loopRateHz) + " Hz over " +
-         std::to_string(r.loopTicks) + " ticks (" + std::to_string(r.lateTicks) +
-         " late); period jitter p50 " + fmt("%.1f", r.jitterP50Us) + " µs, p99 " +
-         fmt("%.1f", r.jitterP99Us) + " µs, p99.9 " + fmt("%.1f", r.jitterP999Us) + " µs, max " +
-         fmt("%.1f", r.jitterMaxUs) + " µs\n";
+    s += "\nThe real-time loop" +
+         std::string(r.realTime ? " (real-time priority)" : " (no real-time priority granted)") +
+         ": " + fmt("%.1f", r.loopRateHz) + " Hz over " + std::to_string(r.loopTicks) + " ticks (" +
+         std::to_string(r.lateTicks) + " late); period jitter p50 " + fmt("%.1f", r.jitterP50Us) +
+         " µs, p99 " + fmt("%.1f", r.jitterP99Us) + " µs, p99.9 " + fmt("%.1f", r.jitterP999Us) +
+         " µs, max " + fmt("%.1f", r.jitterMaxUs) + " µs\n";
     for (const std::string& n : r.notes)
         s += "note: " + n + "\n";
     return s;
@@ -323,7 +325,8 @@ std::string hapticsBenchJson(const HapticsBenchResult& r) {
     s += "], \"contact\": [";
     for (std::size_t i = 0; i < r.contact.size(); ++i)
         s += (i ? ", " : "") + rowJson(r.contact[i]);
-    s += "], \"loop\": {\"rate_hz\": " + fmt("%.2f", r.loopRateHz) +
+    s += "], \"loop\": {\"real_time_priority\": " + std::string(r.realTime ? "true" : "false") +
+         ", \"rate_hz\": " + fmt("%.2f", r.loopRateHz) +
          ", \"ticks\": " + std::to_string(r.loopTicks) +
          ", \"late_ticks\": " + std::to_string(r.lateTicks) +
          ", \"jitter_p50_us\": " + fmt("%.2f", r.jitterP50Us) +

@@ -43,6 +43,7 @@ struct HapticsBenchResult {
     double loopRateHz = 0;
     double jitterP50Us = 0, jitterP99Us = 0, jitterP999Us = 0, jitterMaxUs = 0;
     std::size_t loopTicks = 0, lateTicks = 0;
+    bool realTime = false; // the loop's thread got a real-time priority
     std::vector<std::string> notes;
 };
 

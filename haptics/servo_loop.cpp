@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <pthread.h>
+#include <sched.h>
 
 namespace fl::haptics {
 
@@ -73,8 +75,25 @@ std::vector<std::string> ServoLoop::reports() const {
     return reports_;
 }
 
+namespace {
+
+// A real-time priority where the system grants one (a user in the `realtime`
+// group, or with CAP_SYS_NICE); elsewhere the loop runs as it can.
+bool askForRealTime() {
+#ifdef __linux__
+    sched_param p{};
+    p.sched_priority = 20;
+    return pthread_setschedparam(pthread_self(), SCHED_FIFO, &p) == 0;
+#else
+    return false;
+#endif
+}
+
+} // namespace
+
 void ServoLoop::run() {
     using Clock = std::chrono::steady_clock;
+    const bool realTime = askForRealTime();
     const DeviceLimits limits = device_.limits();
     // Stiffness and damping are per scene unit: the workspace scale divides them.
     ForceSettings settings = settingsFor(limits, options_.rateHz);
@@ -92,6 +111,7 @@ void ServoLoop::run() {
 
     const auto period = std::chrono::duration_cast<Clock::duration>(
         std::chrono::duration<double>(1 / options_.rateHz));
+    const auto spinMargin = std::min<Clock::duration>(std::chrono::microseconds(150), period / 4);
     const auto begin = Clock::now();
     auto seconds = [&](Clock::time_point t) {
         return std::chrono::duration<double>(t - begin).count();
@@ -112,7 +132,12 @@ void ServoLoop::run() {
 
     while (!stop_) {
         deadline += period;
-        std::this_thread::sleep_until(deadline);
+        // Sleep until just before the deadline, then spin to it: the kernel
+        // wakes a sleeper tens of microseconds late, a spinning thread is on
+        // time (at the cost of a sliver of one core).
+        std::this_thread::sleep_until(deadline - spinMargin);
+        while (Clock::now() < deadline) {
+        }
         const auto now = Clock::now();
         const bool isLate = now - deadline > period / 2;
         if (ticks > 0) {
@@ -169,6 +194,7 @@ void ServoLoop::run() {
         std::unique_lock lock(publish_, std::try_to_lock);
         if (lock) {
             local.ticks = ticks;
+            local.realTime = realTime;
             local.proxy = f.proxy;
             local.force = sent;
             local.contact = f.contact;

@@ -50,6 +50,7 @@ struct ServoStatus {
     ForceLimiter::Cut cut = ForceLimiter::Cut::None;
     std::uint64_t lateTicks = 0;  // ticks that started over half a period late
     std::uint64_t staleReads = 0; // ticks the device said nothing new
+    bool realTime = false;        // the system granted the thread a real-time priority
 };
 
 class ServoLoop {
