@@ -129,6 +129,7 @@ const std::vector<Command>& commands() {
         {hapticsProbeSpec, hapticsProbeCommand},
         {hapticsRecordSpec, hapticsRecordCommand},
         {hapticsReplaySpec, hapticsReplayCommand},
+        {serveSpec, serveCommand},
     };
     return all;
 }

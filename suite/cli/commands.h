@@ -29,6 +29,7 @@ const CommandSpec& hapticsProbeSpec();
 const CommandSpec& hapticsDevicesSpec();
 const CommandSpec& hapticsRecordSpec();
 const CommandSpec& hapticsReplaySpec();
+const CommandSpec& serveSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -49,6 +50,7 @@ int hapticsProbeCommand(const Args& args);   // `haptics probe`
 int hapticsDevicesCommand(const Args& args); // `haptics devices`
 int hapticsRecordCommand(const Args& args);  // `haptics record`
 int hapticsReplayCommand(const Args& args);  // `haptics replay`
+int serveCommand(const Args& args);          // `serve`
 
 struct Command {
     const CommandSpec& (*spec)();

@@ -1,0 +1,374 @@
+#include "chat_commands.h"
+
+#include "scene/field_access.h"
+#include "scene/node_catalogue.h"
+#include "scene/scene_reader.h"
+#include "scene/scene_writer.h"
+#include "scene/source_map.h"
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <utility>
+
+namespace fl::classroom {
+
+namespace {
+
+constexpr std::string_view kClassShapeName = "CLASS";
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())))
+        s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
+        s.remove_suffix(1);
+    return s;
+}
+
+// The first word of `s` (removed from it).
+std::string_view takeWord(std::string_view& s) {
+    s = trim(s);
+    std::size_t end = 0;
+    while (end < s.size() && !std::isspace(static_cast<unsigned char>(s[end])))
+        ++end;
+    const std::string_view word = s.substr(0, end);
+    s = trim(s.substr(end));
+    return word;
+}
+
+bool parseUnit(std::string_view text, double& out) {
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+    return ec == std::errc{} && end == text.data() + text.size() && out >= 0 && out <= 1;
+}
+
+constexpr std::array kColourNames{
+    std::pair{"red", Colour{1, 0, 0}},        std::pair{"green", Colour{0, 0.8, 0}},
+    std::pair{"blue", Colour{0, 0.3, 1}},     std::pair{"yellow", Colour{1, 0.9, 0}},
+    std::pair{"orange", Colour{1, 0.5, 0}},   std::pair{"purple", Colour{0.6, 0.2, 0.8}},
+    std::pair{"white", Colour{1, 1, 1}},      std::pair{"black", Colour{0, 0, 0}},
+    std::pair{"grey", Colour{0.5, 0.5, 0.5}}, std::pair{"pink", Colour{1, 0.6, 0.75}},
+};
+
+// "red" or "R,G,B" with components in 0..1.
+bool parseColour(std::string_view word, Colour& out) {
+    for (const auto& [name, colour] : kColourNames)
+        if (word == name) {
+            out = colour;
+            return true;
+        }
+    double c[3];
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t comma = word.find(',');
+        if ((i < 2) != (comma != std::string_view::npos)) return false;
+        if (!parseUnit(word.substr(0, comma), c[i])) return false;
+        word = i < 2 ? word.substr(comma + 1) : std::string_view{};
+    }
+    out = {c[0], c[1], c[2]};
+    return true;
+}
+
+std::optional<ShapeOperation> operationNamed(std::string_view word) {
+    if (word == "union") return ShapeOperation::Union;
+    if (word == "intersection") return ShapeOperation::Intersection;
+    if (word == "difference") return ShapeOperation::Difference;
+    return std::nullopt;
+}
+
+ChatCommandParse fail(std::string message) {
+    return {std::nullopt, std::move(message)};
+}
+
+std::string number(double v) {
+    return scene::formatNumber(v);
+}
+
+scene::Node* makeNode(scene::Scene& s, const char* type) {
+    scene::Node* n = s.newNode();
+    n->type = type;
+    n->spec = scene::findNodeSpec(type);
+    return n;
+}
+
+scene::Field& fieldOf(scene::Node& node, std::string_view name, scene::FieldType type) {
+    scene::Field* f = node.field(name);
+    if (!f) {
+        node.fields.push_back({});
+        f = &node.fields.back();
+        f->name = std::string(name);
+    }
+    f->value = {};
+    f->value.type = type;
+    return *f;
+}
+
+void setStrings(scene::Node& node, std::string_view name, std::vector<std::string> strings,
+                scene::FieldType type = scene::FieldType::MFString) {
+    fieldOf(node, name, type).value.strings = std::move(strings);
+}
+
+void setNumbers(scene::Node& node, std::string_view name, std::vector<double> numbers) {
+    fieldOf(node, name, scene::FieldType::SFVec3f).value.numbers = std::move(numbers);
+}
+
+void setNode(scene::Node& node, std::string_view name, scene::Node* child) {
+    fieldOf(node, name, scene::FieldType::SFNode).value.nodes = {child};
+}
+
+bool isShown(const scene::Node& n) {
+    return !n.inProtoBody && n.instance == nullptr;
+}
+
+// The FShape CLASS, else the first FShape written in the scene.
+scene::Node* classShape(scene::Scene& s) {
+    scene::Node* first = nullptr;
+    scene::Node* named = nullptr;
+    s.forEachNode([&](scene::Node& n) {
+        if (n.type != "FShape" || !isShown(n)) return;
+        if (!first) first = &n;
+        if (!named && n.defName == kClassShapeName) named = &n;
+    });
+    return named ? named : first;
+}
+
+scene::Node* childNode(scene::Node& node, std::string_view field) {
+    scene::Field* f = node.field(field);
+    return f && f->value.nodes.size() == 1 ? f->value.nodes[0] : nullptr;
+}
+
+std::string_view operatorOf(ShapeOperation op) {
+    switch (op) {
+    case ShapeOperation::Union:
+        return "|";
+    case ShapeOperation::Intersection:
+        return "&";
+    case ShapeOperation::Difference:
+        return "\\";
+    }
+    return "|";
+}
+
+bool isWordChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// `old OP (tool)`: a plain expression is wrapped whole; a script's final
+// `return EXPR;` becomes `return (EXPR) OP (tool);`.
+std::string combined(const std::string& old, ShapeOperation op, const std::string& tool,
+                     std::string& why) {
+    const std::string_view body = trim(old);
+    const std::string opText(operatorOf(op));
+    if (body.find(';') == std::string_view::npos)
+        return "(" + std::string(body) + ") " + opText + " (" + tool + ")";
+    const std::size_t at = body.rfind("return");
+    const bool isWord = at != std::string_view::npos && (at == 0 || !isWordChar(body[at - 1])) &&
+                        at + 6 < body.size() && !isWordChar(body[at + 6]);
+    const std::string_view tail = isWord ? body.substr(at + 6) : std::string_view{};
+    if (!isWord || tail.empty() || tail.back() != ';' ||
+        tail.find_first_of(";}") != tail.size() - 1) {
+        why = "the class shape's script does not end with `return EXPRESSION;`, so there is "
+              "nothing to combine the new shape with";
+        return {};
+    }
+    const std::string_view expression = trim(tail.substr(0, tail.size() - 1));
+    return std::string(body.substr(0, at)) + "return (" + std::string(expression) + ") " + opText +
+           " (" + tool + ");";
+}
+
+std::string addShape(scene::Scene& s, const ChatCommand& c, std::string& why) {
+    scene::Node* shape = classShape(s);
+    if (!shape) {
+        if (c.operation != ShapeOperation::Union) {
+            why = "the scene has no shape to cut or intersect yet; start with /add FORMULA";
+            return {};
+        }
+        shape = makeNode(s, "FShape");
+        shape->defName = std::string(kClassShapeName);
+        scene::Node* geometry = makeNode(s, "FGeometry");
+        setStrings(*geometry, "type", {"implicit"}, scene::FieldType::SFString);
+        setStrings(*geometry, "definition", {c.formula});
+        setNumbers(*geometry, "domainMin", {-2, -2, -2});
+        setNumbers(*geometry, "domainMax", {2, 2, 2});
+        setNode(*shape, "geometry", geometry);
+        s.roots.push_back(shape);
+        return "ok";
+    }
+    scene::Node* geometry = childNode(*shape, "geometry");
+    if (!geometry || geometry->type != "FGeometry") {
+        why = "the class shape has no FGeometry to change";
+        return {};
+    }
+    const std::string type = scene::stringField(*geometry, "type");
+    if (type == "parametric") {
+        why = "the class shape is parametric; /add combines implicit shapes";
+        return {};
+    }
+    scene::Field* definition = geometry->field("definition");
+    if (!definition || definition->value.strings.empty()) {
+        setStrings(*geometry, "definition", {c.formula});
+        return "ok";
+    }
+    const std::string next = combined(scene::formulaText(*definition), c.operation, c.formula, why);
+    if (next.empty()) return {};
+    setStrings(*geometry, "definition", {next});
+    return "ok";
+}
+
+// The material to paint on: the class shape's parametric FMaterial, made
+// from a standard Material's diffuse colour (or grey) when it has none.
+scene::Node* paintableMaterial(scene::Scene& s, scene::Node& shape, std::string& why) {
+    scene::Node* appearance = childNode(shape, "appearance");
+    scene::Node* material = appearance ? childNode(*appearance, "material") : nullptr;
+    if (material && material->type == "FMaterial") {
+        if (scene::stringField(*material, "type") != "parametric") {
+            why = "the class shape's FMaterial is not parametric (r = ...; g = ...; b = ...;)";
+            return nullptr;
+        }
+        return material;
+    }
+    std::vector<double> base{0.8, 0.8, 0.8};
+    if (material && material->type == "Material")
+        if (auto d = scene::numbersField(*material, "diffuseColor"); d.size() == 3) base = d;
+    if (!appearance || appearance->type != "FAppearance") {
+        appearance = makeNode(s, "FAppearance");
+        setNode(shape, "appearance", appearance);
+    }
+    material = makeNode(s, "FMaterial");
+    setStrings(*material, "type", {"parametric"}, scene::FieldType::SFString);
+    setStrings(*material, "definition",
+               {"r = " + number(base[0]) + ";", "g = " + number(base[1]) + ";",
+                "b = " + number(base[2]) + ";"});
+    // The material's x, y, z are the geometry's when both have the same box.
+    if (scene::Node* geometry = childNode(shape, "geometry");
+        geometry && geometry->spec && geometry->type == "FGeometry") {
+        setNumbers(*material, "domainMin", scene::numbersField(*geometry, "domainMin"));
+        setNumbers(*material, "domainMax", scene::numbersField(*geometry, "domainMax"));
+    }
+    setNode(*appearance, "material", material);
+    return material;
+}
+
+std::string paintShape(scene::Scene& s, const ChatCommand& c, std::string& why) {
+    scene::Node* shape = classShape(s);
+    if (!shape) {
+        why = "the scene has no shape to paint";
+        return {};
+    }
+    scene::Node* material = paintableMaterial(s, *shape, why);
+    if (!material) return {};
+    scene::Field* definition = material->field("definition");
+    std::vector<std::string> lines =
+        definition ? definition->value.strings : std::vector<std::string>{};
+    for (const std::string& line : lines)
+        if (line.find("return") != std::string::npos) {
+            why = "the class shape's colour script returns early; paint is added after it";
+            return {};
+        }
+    lines.push_back("paint = " + number(c.opacity) + " * step(0, " + c.formula + ");");
+    lines.push_back("r = mix(r, " + number(c.colour.r) + ", paint);");
+    lines.push_back("g = mix(g, " + number(c.colour.g) + ", paint);");
+    lines.push_back("b = mix(b, " + number(c.colour.b) + ", paint);");
+    setStrings(*material, "definition", std::move(lines));
+    return "ok";
+}
+
+} // namespace
+
+bool isChatCommand(std::string_view text) {
+    return !text.empty() && text.front() == '/';
+}
+
+std::string chatCommandHelp() {
+    return "Modelling commands (each changes the class shape, the FShape named CLASS or the "
+           "first one):\n"
+           "  /add FORMULA [union|intersection|difference]  combine a shape (f >= 0 inside) "
+           "with the class shape (union when not said)\n"
+           "  /remove FORMULA        cut a shape away (difference)\n"
+           "  /paint COLOUR [N%] FORMULA  paint where the shape meets the object; COLOUR is a "
+           "name (red, green, blue, yellow, orange, purple, white, black, grey, pink) or "
+           "R,G,B in 0..1; N% the tool's opacity (100% when not said)\n"
+           "  /undo                  take back your own last command, if nobody changed the "
+           "scene since\n"
+           "  /save [LABEL]          keep a snapshot of the scene as it is now\n"
+           "  /help                  this list\n"
+           "Example: /add sphere(0.5, 0, 0, 0.4) difference";
+}
+
+ChatCommandParse parseChatCommand(std::string_view text) {
+    if (!isChatCommand(text)) return fail("a command starts with '/'");
+    std::string_view rest = text.substr(1);
+    const std::string_view word = takeWord(rest);
+    ChatCommand c;
+    if (word == "help") {
+        c.kind = ChatCommandKind::Help;
+        return {c, {}};
+    }
+    if (word == "undo" || word == "save") {
+        c.kind = word == "undo" ? ChatCommandKind::Undo : ChatCommandKind::Save;
+        if (c.kind == ChatCommandKind::Undo && !rest.empty())
+            return fail("/undo takes nothing after it");
+        c.label = std::string(rest);
+        return {c, {}};
+    }
+    if (word == "add" || word == "remove") {
+        c.kind = ChatCommandKind::Add;
+        c.operation = word == "add" ? ShapeOperation::Union : ShapeOperation::Difference;
+        if (word == "add") {
+            const std::size_t space = rest.find_last_of(" \t");
+            if (space != std::string_view::npos)
+                if (auto op = operationNamed(trim(rest.substr(space)))) {
+                    c.operation = *op;
+                    rest = trim(rest.substr(0, space));
+                }
+        }
+        if (rest.empty())
+            return fail("/" + std::string(word) + " needs a formula, e.g. /" + std::string(word) +
+                        " sphere(0, 0, 0, 0.5)");
+        c.formula = std::string(rest);
+        return {c, {}};
+    }
+    if (word == "paint") {
+        c.kind = ChatCommandKind::Paint;
+        const std::string_view colour = takeWord(rest);
+        if (!parseColour(colour, c.colour))
+            return fail("/paint COLOUR [N%] FORMULA: '" + std::string(colour) +
+                        "' is no colour name or R,G,B in 0..1");
+        std::string_view probe = rest;
+        if (const std::string_view w = takeWord(probe); !w.empty() && w.back() == '%') {
+            double percent = 0;
+            const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size() - 1, percent);
+            if (ec != std::errc{} || end != w.data() + w.size() - 1 || percent < 0 || percent > 100)
+                return fail("/paint: the opacity '" + std::string(w) + "' is not 0% to 100%");
+            c.opacity = percent / 100;
+            rest = probe;
+        }
+        if (rest.empty())
+            return fail("/paint needs the tool's shape, e.g. /paint red sphere(0, 0, 0, 0.3)");
+        c.formula = std::string(rest);
+        return {c, {}};
+    }
+    return fail("unknown command '/" + std::string(word) + "'; /help lists them");
+}
+
+std::string applyChatCommand(const ChatCommand& command, const std::string& sceneText,
+                             std::string& why) {
+    scene::ReadOptions options;
+    options.followReferences = false;
+    options.compileFunctions = false; // the result is checked in full afterwards
+    scene::ReadResult read = scene::readSceneBytes(sceneText, "scene", options);
+    if (!read.ok()) {
+        why = "the class scene cannot be read";
+        return {};
+    }
+    scene::Scene& s = *read.scene;
+    std::string done;
+    if (command.kind == ChatCommandKind::Add)
+        done = addShape(s, command, why);
+    else if (command.kind == ChatCommandKind::Paint)
+        done = paintShape(s, command, why);
+    else
+        why = "this command does not change the scene";
+    if (done.empty()) return {};
+    return scene::writeScene(s, s.encoding);
+}
+
+} // namespace fl::classroom

@@ -1,0 +1,556 @@
+#include "class_session.h"
+
+#include "scene_policy.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRandomGenerator>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace fl::classroom {
+
+namespace {
+
+QString q(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+QString frame(const QJsonObject& o) {
+    return QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));
+}
+
+QJsonObject typed(MessageType type) {
+    return {{"type", q(nameOf(type))}};
+}
+
+std::int64_t unixMillis() {
+    using namespace std::chrono;
+    return duration_cast<milliseconds>(system_clock::now().time_since_epoch()).count();
+}
+
+std::string randomToken() {
+    static const char* hex = "0123456789abcdef";
+    std::string out;
+    for (int i = 0; i < 4; ++i) {
+        quint32 word = QRandomGenerator::system()->generate();
+        for (int k = 0; k < 8; ++k, word >>= 4)
+            out += hex[word & 15];
+    }
+    return out;
+}
+
+QJsonArray diagnosticsJson(const std::vector<scene::SceneDiagnostic>& diagnostics) {
+    QJsonArray out;
+    for (const scene::SceneDiagnostic& d : diagnostics) {
+        QJsonObject o{{"line", d.pos.line},
+                      {"column", d.pos.column},
+                      {"severity", d.severity == scene::Severity::Error ? "error" : "warning"},
+                      {"message", q(d.message)}};
+        if (!d.suggestion.empty()) o["suggestion"] = q(d.suggestion);
+        out.append(o);
+    }
+    return out;
+}
+
+// Constant-time comparison: the key is not guessed a byte at a time.
+bool sameKey(const std::string& a, const std::string& b) {
+    if (a.size() != b.size()) return false;
+    unsigned char diff = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        diff |= static_cast<unsigned char>(a[i] ^ b[i]);
+    return diff == 0;
+}
+
+} // namespace
+
+ClassSession::ClassSession(ClassConfig config, const Clock& clock, EditLog* log)
+    : config_(std::move(config)), clock_(clock), log_(log),
+      lock_(config_.limits.leaseMillis, config_.limits.disconnectGraceMillis),
+      failedJoins_(config_.limits.maxFailedJoins, config_.limits.failedJoinWindow) {
+    if (log_)
+        if (auto latest = log_->latest()) {
+            version_ = latest->version;
+            scene_ = std::move(latest->scene);
+            return;
+        }
+    const SceneCheck check = checkClassroomScene(config_.initialScene, config_.limits);
+    if (!check.ok) {
+        std::string why = "the class scene cannot be used";
+        for (const auto& d : check.diagnostics)
+            if (d.severity == scene::Severity::Error) {
+                why += ": " + scene::formatSceneDiagnostic(d);
+                break;
+            }
+        throw std::runtime_error(why);
+    }
+    Out ignored;
+    if (!commit(nullptr, config_.initialScene, EditKind::Start, ignored))
+        throw std::runtime_error("the class log cannot be written");
+}
+
+ConnectionId ClassSession::connect(std::string peerAddress) {
+    const ConnectionId id = nextConnection_++;
+    connections_[id] = Connection{std::move(peerAddress), 0, clock_.now()};
+    return id;
+}
+
+ClassSession::Member* ClassSession::memberOf(ConnectionId id) {
+    const auto c = connections_.find(id);
+    if (c == connections_.end() || c->second.member == 0) return nullptr;
+    const auto m = members_.find(c->second.member);
+    return m == members_.end() ? nullptr : &m->second;
+}
+
+const std::string& ClassSession::shownName(const Member& m) const {
+    return anonymous_ ? m.alias : m.name;
+}
+
+void ClassSession::broadcast(const QString& f, Out& out) const {
+    for (const auto& [id, c] : connections_)
+        if (c.member != 0) out.push_back({id, f});
+}
+
+void ClassSession::error(ConnectionId to, ErrorCode code, std::string message, Out& out,
+                         bool close) {
+    QJsonObject o = typed(MessageType::Error);
+    o["code"] = q(nameOf(code));
+    o["message"] = q(message);
+    out.push_back({to, frame(o), close});
+}
+
+void ClassSession::refuse(const Member& to, RefusalReason reason, std::string message, Out& out,
+                          const std::string& command, QString extraJson) {
+    QJsonObject o = typed(MessageType::Refused);
+    o["reason"] = q(nameOf(reason));
+    o["message"] = q(message);
+    o["version"] = static_cast<double>(version_);
+    if (!command.empty()) o["command"] = q(command);
+    if (!extraJson.isEmpty()) {
+        const QJsonObject extra = QJsonDocument::fromJson(extraJson.toUtf8()).object();
+        for (auto it = extra.begin(); it != extra.end(); ++it)
+            o[it.key()] = it.value();
+    }
+    if (to.connection) out.push_back({to.connection, frame(o)});
+}
+
+QString ClassSession::lockJson() {
+    QJsonObject o = typed(MessageType::Lock);
+    const auto holder = lock_.holder(clock_.now());
+    if (holder && members_.count(holder->member)) {
+        const Member& m = members_.at(holder->member);
+        o["holder"] = QJsonObject{{"id", static_cast<double>(m.id)}, {"name", q(shownName(m))}};
+        o["expiresInMs"] = static_cast<double>(holder->expires - clock_.now());
+    } else {
+        o["holder"] = QJsonValue::Null;
+    }
+    return frame(o);
+}
+
+void ClassSession::announceLockIfChanged(Out& out) {
+    const auto holder = lock_.holder(clock_.now());
+    const std::optional<MemberId> now =
+        holder ? std::optional<MemberId>(holder->member) : std::nullopt;
+    if (now == announcedHolder_) return;
+    announcedHolder_ = now;
+    broadcast(lockJson(), out);
+}
+
+QString ClassSession::membersJson() const {
+    QJsonArray list;
+    for (const auto& [id, m] : members_)
+        list.append(QJsonObject{{"id", static_cast<double>(id)},
+                                {"name", q(shownName(m))},
+                                {"role", q(nameOf(m.role))},
+                                {"connected", m.connection != 0}});
+    QJsonObject o = typed(MessageType::Presence);
+    o["members"] = list;
+    return frame(o);
+}
+
+void ClassSession::announcePresence(Out& out) const {
+    broadcast(membersJson(), out);
+}
+
+std::vector<Delivery> ClassSession::rejectFrame(ConnectionId connection, ErrorCode code,
+                                                std::string message) {
+    Out out;
+    if (connections_.count(connection)) error(connection, code, std::move(message), out);
+    return out;
+}
+
+std::vector<Delivery> ClassSession::receive(ConnectionId id, std::string_view text) {
+    Out out;
+    const auto it = connections_.find(id);
+    if (it == connections_.end()) return out;
+    Connection& c = it->second;
+    c.lastSeen = clock_.now();
+    ParsedClientMessage parsed = parseClientMessage(text, config_.limits);
+    if (const auto* failure = std::get_if<ProtocolError>(&parsed)) {
+        error(id, failure->code, failure->message, out);
+        return out;
+    }
+    handle(c, id, std::get<ClientMessage>(parsed), out);
+    announceLockIfChanged(out);
+    return out;
+}
+
+void ClassSession::handle(Connection& c, ConnectionId id, const ClientMessage& m, Out& out) {
+    if (m.type == MessageType::Join) return join(c, id, std::get<JoinMessage>(m.body), out);
+    Member* member = memberOf(id);
+    if (!member) return error(id, ErrorCode::NotJoined, "send join first", out);
+    const Millis now = clock_.now();
+    lock_.renew(member->id, now); // any message is a sign of life
+    switch (m.type) {
+    case MessageType::Heartbeat:
+        return;
+    case MessageType::Release:
+        lock_.release(member->id);
+        return;
+    case MessageType::Edit:
+        return edit(*member, std::get<EditMessage>(m.body), out);
+    case MessageType::Chat:
+        return chat(*member, std::get<ChatMessage>(m.body), out);
+    case MessageType::History:
+        return history(*member, std::get<HistoryMessage>(m.body), out);
+    default:
+        return instructor(*member, m, out);
+    }
+}
+
+void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Out& out) {
+    const Millis now = clock_.now();
+    if (c.member != 0)
+        return error(id, ErrorCode::AlreadyJoined, "this connection has joined", out);
+    if (failedJoins_.blocked(c.peer, now))
+        return error(id, ErrorCode::TooManyJoins,
+                     "too many failed joins from this address; wait a minute", out, true);
+    auto failed = [&](ErrorCode code, std::string why) {
+        failedJoins_.failed(c.peer, now);
+        error(id, code, std::move(why), out);
+    };
+    if (!sameKey(m.classCode, config_.classCode))
+        return failed(ErrorCode::WrongClass, "no class with that code here");
+    if (m.role == Role::Instructor &&
+        (config_.instructorKey.empty() || !sameKey(m.key, config_.instructorKey)))
+        return failed(ErrorCode::BadKey, "joining as instructor needs the class's instructor key");
+    bool blank = true;
+    for (char ch : m.name)
+        blank = blank && ch == ' ';
+    if (blank) return error(id, ErrorCode::BadName, "a name is needed", out);
+
+    Member* member = nullptr;
+    bool resumed = false;
+    if (!m.resume.empty())
+        for (auto& [mid, candidate] : members_)
+            if (sameKey(candidate.token, m.resume) && candidate.role == m.role) {
+                member = &candidate;
+                break;
+            }
+    if (member) {
+        resumed = true;
+        if (member->connection && member->connection != id) {
+            // The same seat from a new connection: the old one is over.
+            error(member->connection, ErrorCode::AlreadyJoined, "joined again from elsewhere", out,
+                  true);
+            connections_[member->connection].member = 0;
+        }
+        member->connection = id;
+        member->name = m.name;
+        lock_.reconnected(member->id, now);
+    } else {
+        if (members_.size() >= config_.limits.maxMembers)
+            return error(id, ErrorCode::ClassFull, "the class is full", out, true);
+        const MemberId mid = nextMember_++;
+        Member fresh{mid,
+                     m.name,
+                     m.role == Role::Instructor ? "Instructor" : "Learner " + std::to_string(mid),
+                     m.role,
+                     randomToken(),
+                     id,
+                     0,
+                     TokenBucket(config_.limits.rateBurst, config_.limits.ratePerSecond, now),
+                     std::nullopt};
+        member = &members_.emplace(mid, std::move(fresh)).first->second;
+    }
+    c.member = member->id;
+
+    QJsonObject o = typed(MessageType::Welcome);
+    o["id"] = static_cast<double>(member->id);
+    o["token"] = q(member->token);
+    o["name"] = q(shownName(*member));
+    o["role"] = q(nameOf(member->role));
+    o["version"] = static_cast<double>(version_);
+    o["scene"] = q(scene_);
+    o["frozen"] = frozen_;
+    o["anonymous"] = anonymous_;
+    o["resumed"] = resumed;
+    o["members"] = QJsonDocument::fromJson(membersJson().toUtf8()).object()["members"];
+    o["lock"] = QJsonDocument::fromJson(lockJson().toUtf8()).object()["holder"];
+    if (m.since && log_ && *m.since < version_) {
+        QJsonArray missed;
+        for (const LoggedVersion& v : log_->after(*m.since, config_.limits.maxMissedListed))
+            missed.append(QJsonObject{{"version", static_cast<double>(v.version)},
+                                      {"author", q(v.author)},
+                                      {"kind", q(nameOf(v.kind))}});
+        o["missed"] = missed;
+    }
+    o["limits"] =
+        QJsonObject{{"maxMessageBytes", static_cast<double>(config_.limits.maxMessageBytes)},
+                    {"maxSceneBytes", static_cast<double>(config_.limits.maxSceneBytes)},
+                    {"maxNodes", static_cast<double>(config_.limits.maxNodes)},
+                    {"maxFormulaBytes", static_cast<double>(config_.limits.maxFormulaBytes)},
+                    {"maxChatChars", static_cast<double>(config_.limits.maxChatChars)},
+                    {"leaseMs", static_cast<double>(config_.limits.leaseMillis)}};
+    out.push_back({id, frame(o)});
+    announcePresence(out);
+}
+
+void ClassSession::edit(Member& m, const EditMessage& e, Out& out) {
+    apply(m, Change{e.scene, EditKind::Edit, e.version, true, {}}, out);
+}
+
+bool ClassSession::apply(Member& author, Change change, Out& out) {
+    const Millis now = clock_.now();
+    const std::string& cmd = change.command;
+    auto refused = [&](RefusalReason reason, std::string message, QString extra = {}) {
+        refuse(author, reason, std::move(message), out, cmd, std::move(extra));
+        return false;
+    };
+    if (author.role == Role::Observer)
+        return refused(RefusalReason::ReadOnly, "observers cannot change the scene");
+    if (frozen_ && author.role != Role::Instructor)
+        return refused(RefusalReason::ReadOnly, "the instructor has frozen the class");
+    if (!author.bucket.take(now))
+        return refused(RefusalReason::Rate, "too many edits; wait a moment");
+    if (change.scene.size() > config_.limits.maxSceneBytes)
+        return refused(RefusalReason::TooLarge, "the scene has " +
+                                                    std::to_string(change.scene.size()) +
+                                                    " bytes; a class scene may have at most " +
+                                                    std::to_string(config_.limits.maxSceneBytes));
+    if (change.underLock && lock_.heldByOther(author.id, now)) {
+        const Member& holder = members_.at(lock_.holder(now)->member);
+        const QJsonObject extra{{"holder", q(shownName(holder))},
+                                {"holderId", static_cast<double>(holder.id)}};
+        return refused(RefusalReason::Locked, shownName(holder) + " is editing the scene",
+                       frame(extra));
+    }
+    if (change.basedOn && *change.basedOn != version_)
+        return refused(RefusalReason::Stale,
+                       "the edit is based on version " + std::to_string(*change.basedOn) +
+                           " but the scene is at version " + std::to_string(version_));
+    const SceneCheck check = checkClassroomScene(change.scene, config_.limits);
+    if (!check.ok) {
+        std::string first = "the scene has errors";
+        for (const auto& d : check.diagnostics)
+            if (d.severity == scene::Severity::Error) {
+                first = scene::formatSceneDiagnostic(d);
+                break;
+            }
+        const QJsonObject extra{{"diagnostics", diagnosticsJson(check.diagnostics)}};
+        return refused(RefusalReason::Invalid, first, frame(extra));
+    }
+    if (change.underLock) lock_.grant(author.id, now);
+    return commit(&author, std::move(change.scene), change.kind, out);
+}
+
+bool ClassSession::commit(const Member* author, std::string scene, EditKind kind, Out& out) {
+    const std::int64_t next = version_ + 1;
+    if (log_) {
+        try {
+            log_->append({next, author ? author->name : "server", kind, scene, unixMillis()});
+            if (config_.limits.autoSnapshotEvery > 0 &&
+                next % config_.limits.autoSnapshotEvery == 0)
+                log_->snapshot(next, "automatic", "server");
+        } catch (const std::exception& e) {
+            if (author && author->connection)
+                error(author->connection, ErrorCode::Server,
+                      std::string("the edit could not be stored: ") + e.what(), out);
+            return false;
+        }
+    }
+    version_ = next;
+    scene_ = std::move(scene);
+    QJsonObject o = typed(MessageType::Scene);
+    o["version"] = static_cast<double>(version_);
+    o["author"] = q(author ? shownName(*author) : "server");
+    if (author) o["authorId"] = static_cast<double>(author->id);
+    o["kind"] = q(nameOf(kind));
+    o["scene"] = q(scene_);
+    broadcast(frame(o), out);
+    return true;
+}
+
+void ClassSession::chat(Member& m, const ChatMessage& c, Out& out) {
+    if (isChatCommand(c.text)) return command(m, c.text, out);
+    if (!m.bucket.take(clock_.now()))
+        return refuse(m, RefusalReason::Rate, "too many messages; wait a moment", out);
+    QJsonObject o = typed(MessageType::Chat);
+    o["from"] = q(shownName(m));
+    o["fromId"] = static_cast<double>(m.id);
+    o["text"] = q(c.text);
+    broadcast(frame(o), out);
+}
+
+void ClassSession::command(Member& m, const std::string& text, Out& out) {
+    const ChatCommandParse parsed = parseChatCommand(text);
+    auto notice = [&](const std::string& t) {
+        QJsonObject o = typed(MessageType::Notice);
+        o["text"] = q(t);
+        if (m.connection) out.push_back({m.connection, frame(o)});
+    };
+    if (!parsed.command) return refuse(m, RefusalReason::Invalid, parsed.error, out, text);
+    const ChatCommand& c = *parsed.command;
+    switch (c.kind) {
+    case ChatCommandKind::Help:
+        return notice(chatCommandHelp());
+    case ChatCommandKind::Save: {
+        if (!m.bucket.take(clock_.now()))
+            return refuse(m, RefusalReason::Rate, "too many commands; wait a moment", out, text);
+        if (m.role == Role::Observer)
+            return refuse(m, RefusalReason::ReadOnly, "observers cannot save snapshots", out, text);
+        std::int64_t snapshot = 0;
+        if (log_) {
+            try {
+                snapshot = log_->snapshot(version_, c.label.empty() ? "saved" : c.label, m.name);
+            } catch (const std::exception& e) {
+                return error(m.connection, ErrorCode::Server, e.what(), out);
+            }
+        }
+        QJsonObject o = typed(MessageType::Saved);
+        o["version"] = static_cast<double>(version_);
+        o["snapshot"] = static_cast<double>(snapshot);
+        o["label"] = q(c.label.empty() ? "saved" : c.label);
+        if (m.connection) out.push_back({m.connection, frame(o)});
+        return;
+    }
+    case ChatCommandKind::Undo: {
+        if (!m.undo)
+            return refuse(m, RefusalReason::Invalid, "you have no command to undo", out, text);
+        if (m.undo->versionAfter != version_)
+            return refuse(m, RefusalReason::Stale,
+                          "the scene changed after your command (it was version " +
+                              std::to_string(m.undo->versionAfter) + ", now " +
+                              std::to_string(version_) + "); change it back by hand",
+                          out, text);
+        std::string before = m.undo->sceneBefore;
+        if (apply(m, Change{std::move(before), EditKind::Undo, version_, true, text}, out))
+            m.undo.reset();
+        return;
+    }
+    case ChatCommandKind::Add:
+    case ChatCommandKind::Paint: {
+        if (c.formula.size() > config_.limits.maxFormulaBytes)
+            return refuse(m, RefusalReason::TooLarge, "the formula is too long", out, text);
+        std::string why;
+        std::string next = applyChatCommand(c, scene_, why);
+        if (next.empty()) return refuse(m, RefusalReason::Invalid, why, out, text);
+        std::string before = scene_;
+        if (apply(m, Change{std::move(next), EditKind::Command, version_, true, text}, out))
+            m.undo = UndoRecord{version_, std::move(before)};
+        return;
+    }
+    }
+}
+
+void ClassSession::history(Member& m, const HistoryMessage& h, Out& out) {
+    if (!m.bucket.take(clock_.now()))
+        return refuse(m, RefusalReason::Rate, "too many requests; wait a moment", out);
+    std::optional<LoggedVersion> v;
+    if (log_) v = log_->at(h.version);
+    if (!v && h.version == version_) v = LoggedVersion{version_, "", EditKind::Edit, scene_, 0};
+    if (!v)
+        return error(m.connection, ErrorCode::NotFound,
+                     "version " + std::to_string(h.version) + " is not in the class's log", out);
+    QJsonObject o = typed(MessageType::Version);
+    o["version"] = static_cast<double>(v->version);
+    o["author"] = q(anonymous_ ? std::string() : v->author);
+    o["kind"] = q(nameOf(v->kind));
+    o["unixMs"] = static_cast<double>(v->unixMillis);
+    o["scene"] = q(v->scene);
+    out.push_back({m.connection, frame(o)});
+}
+
+void ClassSession::instructor(Member& m, const ClientMessage& msg, Out& out) {
+    if (m.role != Role::Instructor)
+        return error(m.connection, ErrorCode::Forbidden,
+                     "'" + std::string(nameOf(msg.type)) + "' is for the instructor", out);
+    const Millis now = clock_.now();
+    switch (msg.type) {
+    case MessageType::TakeLock:
+        lock_.grant(m.id, now);
+        return;
+    case MessageType::BreakLock:
+        lock_.breakLock();
+        return;
+    case MessageType::Freeze: {
+        frozen_ = std::get<FreezeMessage>(msg.body).frozen;
+        QJsonObject o = typed(MessageType::Frozen);
+        o["frozen"] = frozen_;
+        return broadcast(frame(o), out);
+    }
+    case MessageType::Anonymise:
+        anonymous_ = std::get<AnonymiseMessage>(msg.body).anonymous;
+        // Names changed: say again who is here and who holds the lock.
+        announcePresence(out);
+        broadcast(lockJson(), out);
+        return;
+    case MessageType::Push:
+        if (apply(
+                m,
+                Change{
+                    std::get<PushMessage>(msg.body).scene, EditKind::Push, std::nullopt, false, {}},
+                out))
+            lock_.breakLock(); // everyone's basis changed; nobody keeps an old lease
+        return;
+    case MessageType::Snapshot: {
+        const std::string label = std::get<SnapshotMessage>(msg.body).label;
+        ChatMessage save{"/save " + label};
+        return command(m, save.text, out);
+    }
+    default:
+        return error(m.connection, ErrorCode::UnknownType, "not a client message", out);
+    }
+}
+
+std::vector<Delivery> ClassSession::disconnected(ConnectionId id) {
+    Out out;
+    const auto it = connections_.find(id);
+    if (it == connections_.end()) return out;
+    const MemberId mid = it->second.member;
+    connections_.erase(it);
+    if (mid && members_.count(mid) && members_.at(mid).connection == id) {
+        Member& m = members_.at(mid);
+        m.connection = 0;
+        m.leftAt = clock_.now();
+        lock_.disconnected(mid, clock_.now());
+        announcePresence(out);
+    }
+    announceLockIfChanged(out);
+    return out;
+}
+
+std::vector<Delivery> ClassSession::tick() {
+    Out out;
+    const Millis now = clock_.now();
+    for (auto& [id, c] : connections_)
+        if (now - c.lastSeen > config_.limits.silentMemberMillis)
+            error(id, ErrorCode::Malformed, "no message for too long (send heartbeats)", out, true);
+    bool left = false;
+    for (auto it = members_.begin(); it != members_.end();) {
+        const Member& m = it->second;
+        if (m.connection == 0 && now - m.leftAt >= config_.limits.disconnectGraceMillis) {
+            it = members_.erase(it);
+            left = true;
+        } else {
+            ++it;
+        }
+    }
+    if (left) announcePresence(out);
+    announceLockIfChanged(out);
+    return out;
+}
+
+} // namespace fl::classroom

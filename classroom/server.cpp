@@ -1,0 +1,134 @@
+#include "server.h"
+
+#include <QWebSocket>
+#include <QWebSocketServer>
+
+namespace fl::classroom {
+
+namespace {
+constexpr std::size_t kMaxHeldFrames = 256;
+}
+
+ClassroomServer::ClassroomServer(ClassSession& session, ServerOptions options, QObject* parent)
+    : QObject(parent), session_(session), options_(options),
+      server_(new QWebSocketServer(QStringLiteral("functionlab-classroom"),
+                                   QWebSocketServer::NonSecureMode, this)) {
+    server_->setMaxPendingConnections(256);
+    connect(server_, &QWebSocketServer::newConnection, this, &ClassroomServer::accept);
+    tick_.setInterval(options_.tickMillis);
+    connect(&tick_, &QTimer::timeout, this, [this] { deliver(session_.tick()); });
+}
+
+ClassroomServer::~ClassroomServer() {
+    close();
+}
+
+bool ClassroomServer::listen(const QHostAddress& address, quint16 port, QString* why) {
+    if (!server_->listen(address, port)) {
+        if (why) *why = server_->errorString();
+        return false;
+    }
+    tick_.start();
+    return true;
+}
+
+quint16 ClassroomServer::port() const {
+    return server_->serverPort();
+}
+QHostAddress ClassroomServer::address() const {
+    return server_->serverAddress();
+}
+
+void ClassroomServer::close() {
+    tick_.stop();
+    server_->close();
+    for (auto& [id, peer] : sockets_) {
+        peer.socket->disconnect(this);
+        peer.socket->close(QWebSocketProtocol::CloseCodeGoingAway, "the class server stopped");
+        peer.socket->deleteLater();
+    }
+    sockets_.clear();
+}
+
+void ClassroomServer::accept() {
+    while (QWebSocket* socket = server_->nextPendingConnection()) {
+        const ClassroomLimits& limits = session_.limits();
+        // Qt's own default is about 2 GiB: a message over ours closes the
+        // connection with code 1009 before it is buffered.
+        socket->setMaxAllowedIncomingMessageSize(static_cast<quint64>(limits.maxMessageBytes));
+        socket->setMaxAllowedIncomingFrameSize(static_cast<quint64>(limits.maxMessageBytes));
+        socket->setParent(this);
+        const ConnectionId id = session_.connect(socket->peerAddress().toString().toStdString());
+        sockets_[id] = Peer{socket, {}, {}, false};
+        connect(socket, &QWebSocket::textMessageReceived, this, [this, id](const QString& text) {
+            const QByteArray utf8 = text.toUtf8();
+            deliver(session_.receive(id, std::string_view(utf8.constData(), utf8.size())));
+        });
+        connect(socket, &QWebSocket::binaryMessageReceived, this, [this, id](const QByteArray&) {
+            deliver(session_.rejectFrame(id, ErrorCode::Malformed,
+                                         "the class speaks JSON in text frames, not binary"));
+        });
+        connect(socket, &QWebSocket::bytesWritten, this, [this, id](qint64) { drain(id); });
+        connect(socket, &QWebSocket::disconnected, this, [this, id] { dropped(id); });
+    }
+}
+
+void ClassroomServer::dropped(ConnectionId id) {
+    const auto it = sockets_.find(id);
+    if (it == sockets_.end()) return;
+    it->second.socket->deleteLater();
+    sockets_.erase(it);
+    deliver(session_.disconnected(id));
+}
+
+void ClassroomServer::deliver(const std::vector<Delivery>& deliveries) {
+    for (const Delivery& d : deliveries) {
+        const auto it = sockets_.find(d.to);
+        if (it == sockets_.end() || it->second.closing) continue;
+        send(d.to, it->second, d.frame);
+        if (d.close) {
+            it->second.closing = true;
+            it->second.socket->close(QWebSocketProtocol::CloseCodePolicyViolated);
+        }
+    }
+}
+
+void ClassroomServer::send(ConnectionId id, Peer& peer, const QString& frame) {
+    const qint64 unsent = peer.socket->bytesToWrite();
+    if (unsent > options_.closeAboveBytes) {
+        peer.closing = true;
+        peer.socket->close(QWebSocketProtocol::CloseCodeTooMuchData, "reading too slowly");
+        return;
+    }
+    const bool isScene = frame.startsWith(QLatin1String(R"({"type":"scene")"));
+    if (unsent > options_.highWaterBytes || !peer.heldScene.isEmpty() || !peer.held.empty()) {
+        if (isScene) {
+            peer.heldScene = frame; // only the newest whole scene matters
+        } else if (peer.held.size() < kMaxHeldFrames) {
+            peer.held.push_back(frame);
+        } else {
+            peer.closing = true;
+            peer.socket->close(QWebSocketProtocol::CloseCodeTooMuchData, "reading too slowly");
+        }
+        (void)id;
+        return;
+    }
+    peer.socket->sendTextMessage(frame);
+}
+
+void ClassroomServer::drain(ConnectionId id) {
+    const auto it = sockets_.find(id);
+    if (it == sockets_.end()) return;
+    Peer& peer = it->second;
+    if (peer.closing || peer.socket->bytesToWrite() > options_.highWaterBytes / 2) return;
+    // Frames held back go out in order, the newest scene after them.
+    std::vector<QString> held;
+    held.swap(peer.held);
+    QString scene;
+    scene.swap(peer.heldScene);
+    for (const QString& f : held)
+        peer.socket->sendTextMessage(f);
+    if (!scene.isEmpty()) peer.socket->sendTextMessage(scene);
+}
+
+} // namespace fl::classroom

@@ -1,0 +1,61 @@
+#pragma once
+// The class on the network: a QWebSocketServer that hands each text frame to
+// the ClassSession and sends what it answers. It bounds incoming messages
+// (1 MiB), and keeps one slow reader from costing the others: a connection
+// whose unsent bytes pass a high-water mark gets only the newest scene when
+// it drains (every scene frame is the whole scene, so the ones between do
+// not matter) and is closed if even that does not keep up.
+#include "class_session.h"
+
+#include <QHostAddress>
+#include <QObject>
+#include <QTimer>
+
+#include <map>
+#include <memory>
+
+class QWebSocket;
+class QWebSocketServer;
+
+namespace fl::classroom {
+
+struct ServerOptions {
+    qint64 highWaterBytes = 4 << 20;   // unsent bytes before a connection is held back
+    qint64 closeAboveBytes = 64 << 20; // unsent bytes before a connection is given up
+    int tickMillis = 1000;
+};
+
+class ClassroomServer : public QObject {
+    Q_OBJECT
+  public:
+    ClassroomServer(ClassSession& session, ServerOptions options = {}, QObject* parent = nullptr);
+    ~ClassroomServer() override;
+
+    // False with `why` when the address cannot be listened on.
+    bool listen(const QHostAddress& address, quint16 port, QString* why = nullptr);
+    quint16 port() const;
+    QHostAddress address() const;
+    void close();
+    std::size_t connectionCount() const { return sockets_.size(); }
+
+  private:
+    struct Peer {
+        QWebSocket* socket = nullptr;
+        QString heldScene;         // newest scene frame not sent while held back
+        std::vector<QString> held; // other frames while held back (bounded)
+        bool closing = false;
+    };
+    void accept();
+    void deliver(const std::vector<Delivery>& deliveries);
+    void send(ConnectionId id, Peer& peer, const QString& frame);
+    void drain(ConnectionId id);
+    void dropped(ConnectionId id);
+
+    ClassSession& session_;
+    ServerOptions options_;
+    QWebSocketServer* server_ = nullptr;
+    QTimer tick_;
+    std::map<ConnectionId, Peer> sockets_;
+};
+
+} // namespace fl::classroom

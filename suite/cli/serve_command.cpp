@@ -1,0 +1,177 @@
+// `functionlab serve [SCENE] --port P --class CODE [--data DIR]
+// [--instructor-key KEY] [--bind ADDR]`: the server of one class
+// (docs/classroom.md). Prints `listening on ws://ADDR:P` once it accepts
+// connections; stops cleanly on SIGINT and SIGTERM (every applied version is
+// already in DIR's log, so a restart with the same DIR goes on from there).
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+
+#include "class_session.h"
+#include "edit_log.h"
+#include "scene_policy.h"
+#include "server.h"
+#include "starter_scene.h"
+
+#include <QCoreApplication>
+#include <QHostAddress>
+#include <QSocketNotifier>
+
+#include <csignal>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace fl::cli {
+
+namespace {
+
+int signalPipe[2] = {-1, -1};
+
+void onStopSignal(int) {
+    const char byte = 1;
+    // write() is async-signal-safe; the event loop reads the byte and quits.
+    [[maybe_unused]] const auto n = ::write(signalPipe[1], &byte, 1);
+}
+
+bool readText(const std::string& path, std::string& text, std::string& why) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        why = "cannot read " + path;
+        return false;
+    }
+    std::ostringstream s;
+    s << in.rdbuf();
+    text = s.str();
+    return true;
+}
+
+} // namespace
+
+const CommandSpec& serveSpec() {
+    static const CommandSpec spec{
+        .name = "serve",
+        .summary = "run a class's shared scene server (WebSocket)",
+        .synopsis = {"serve [SCENE] --port P --class CODE [--data DIR] [--instructor-key KEY] "
+                     "[--bind ADDR]"},
+        .description =
+            "Starts the server of one class: members join over WebSocket with the class code\n"
+            "(docs/classroom-protocol.md), edit one shared scene under an automatic lock, and\n"
+            "chat. Prints `listening on ws://ADDR:P` once it accepts connections and runs until\n"
+            "SIGINT or SIGTERM. With --data, every applied version is written to DIR before\n"
+            "anyone is told of it; a restart with the same DIR goes on from the newest version\n"
+            "(SCENE is then ignored). Without SCENE the class starts from one sphere.\n",
+        .positionals = {{"SCENE", "the scene the class starts from (X3D or ClassicVRML text)",
+                         false}},
+        .options = {{.name = "port",
+                     .kind = OptionKind::Integer,
+                     .valueName = "P",
+                     .help = "the TCP port (0: any free port, printed)",
+                     .min = 0,
+                     .max = 65535},
+                    {.name = "class",
+                     .kind = OptionKind::Text,
+                     .valueName = "CODE",
+                     .help = "the class code members join with"},
+                    {.name = "data",
+                     .kind = OptionKind::Path,
+                     .valueName = "DIR",
+                     .help = "where the class's log and snapshots live (classroom.sqlite); "
+                             "without it the class is kept in memory only"},
+                    {.name = "instructor-key",
+                     .kind = OptionKind::Text,
+                     .valueName = "KEY",
+                     .help = "the key an instructor joins with; without it nobody can"},
+                    {.name = "bind",
+                     .kind = OptionKind::Text,
+                     .valueName = "ADDR",
+                     .help = "the address to listen on",
+                     .defaultValue = "127.0.0.1"}},
+        .exitStatus = "0 stopped by a signal, 1 the scene, the data folder or the address could "
+                      "not be used, 2 usage error",
+    };
+    return spec;
+}
+
+int serveCommand(const Args& args) {
+    int exit = 0;
+    const auto a = parseOrExplain(serveSpec(), args, exit, std::cout, std::cerr);
+    if (!a) return exit;
+    if (!a->given("port") || !a->given("class"))
+        return usageError(serveSpec(), "--port and --class are required", std::cerr);
+    const std::string code = a->text("class");
+    if (code.empty() || code.size() > classroom::ClassroomLimits{}.maxClassCodeChars)
+        return usageError(serveSpec(), "--class needs a code of 1 to 64 characters", std::cerr);
+    QHostAddress address;
+    if (!address.setAddress(QString::fromStdString(a->text("bind", "127.0.0.1"))))
+        return usageError(serveSpec(), "--bind needs an IP address, not '" + a->text("bind") + "'",
+                          std::cerr);
+
+    classroom::ClassConfig config;
+    config.classCode = code;
+    config.instructorKey = a->text("instructor-key");
+    config.initialScene = classroom::starterScene();
+    if (const std::string path = a->positional("SCENE"); !path.empty()) {
+        std::string why;
+        if (!readText(path, config.initialScene, why)) {
+            std::cerr << "functionlab serve: " << why << "\n";
+            return kExitDiagnostic;
+        }
+    }
+    int argc = 1;
+    char name[] = "functionlab";
+    char* argv[] = {name, nullptr};
+    QCoreApplication app(argc, argv);
+    try {
+        std::unique_ptr<classroom::EditLog> log;
+        if (a->given("data")) log = std::make_unique<classroom::EditLog>(a->text("data"));
+        if (!log || !log->latest()) {
+            const auto check = classroom::checkClassroomScene(config.initialScene);
+            if (!check.ok) {
+                for (const auto& d : check.diagnostics)
+                    std::cerr << scene::formatSceneDiagnostic(d) << "\n";
+                std::cerr << "functionlab serve: the scene cannot be a class scene\n";
+                return kExitDiagnostic;
+            }
+        }
+        classroom::SteadyClock clock;
+        classroom::ClassSession session(config, clock, log.get());
+        classroom::ClassroomServer server(session);
+        QString why;
+        if (!server.listen(address, static_cast<quint16>(a->integer("port", 0)), &why)) {
+            std::cerr << "functionlab serve: cannot listen on " << a->text("bind", "127.0.0.1")
+                      << ":" << a->integer("port", 0) << ": " << why.toStdString() << "\n";
+            return kExitDiagnostic;
+        }
+        if (::socketpair(AF_UNIX, SOCK_STREAM, 0, signalPipe) != 0) {
+            std::cerr << "functionlab serve: cannot watch for signals\n";
+            return kExitDiagnostic;
+        }
+        QSocketNotifier notifier(signalPipe[0], QSocketNotifier::Read);
+        QObject::connect(&notifier, &QSocketNotifier::activated, &app, [&] {
+            char byte = 0;
+            [[maybe_unused]] const auto n = ::read(signalPipe[0], &byte, 1);
+            app.quit();
+        });
+        struct sigaction action {};
+        action.sa_handler = onStopSignal;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESTART;
+        sigaction(SIGINT, &action, nullptr);
+        sigaction(SIGTERM, &action, nullptr);
+
+        std::cout << "listening on ws://" << server.address().toString().toStdString() << ":"
+                  << server.port() << std::endl;
+        app.exec();
+        server.close();
+        std::cerr << "functionlab serve: stopped at version " << session.version() << "\n";
+    } catch (const std::exception& e) {
+        std::cerr << "functionlab serve: " << e.what() << "\n";
+        return kExitDiagnostic;
+    }
+    return kExitOk;
+}
+
+} // namespace fl::cli

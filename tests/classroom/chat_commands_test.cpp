@@ -1,0 +1,127 @@
+// Chat commands: parsed, and turned into scenes that pass the class's checks.
+#include "chat_commands.h"
+#include "scene_policy.h"
+#include "starter_scene.h"
+
+#include "scenes.h"
+
+#include "scene/field_access.h"
+#include "scene/scene_reader.h"
+#include "scene/source_map.h"
+
+#include <gtest/gtest.h>
+
+namespace fl::classroom {
+namespace {
+
+ChatCommand command(const std::string& text) {
+    const ChatCommandParse p = parseChatCommand(text);
+    EXPECT_TRUE(p.command.has_value()) << text << ": " << p.error;
+    return p.command.value_or(ChatCommand{});
+}
+
+// The formula text of the first `type` node's `definition`.
+std::string definitionOf(const std::string& sceneText, const std::string& type) {
+    scene::ReadOptions o;
+    o.followReferences = false;
+    auto r = scene::readSceneBytes(sceneText, "scene", o);
+    EXPECT_TRUE(r.ok());
+    std::string out;
+    if (r.ok())
+        r.scene->forEachNode([&](const scene::Node& n) {
+            if (out.empty() && n.type == type)
+                if (const scene::Field* f = n.field("definition")) out = scene::formulaText(*f);
+        });
+    return out;
+}
+
+std::string applied(const std::string& text, const std::string& scene) {
+    std::string why;
+    std::string out = applyChatCommand(command(text), scene, why);
+    EXPECT_FALSE(out.empty()) << text << ": " << why;
+    EXPECT_TRUE(checkClassroomScene(out).ok) << out;
+    return out;
+}
+
+TEST(ChatCommands, Parse) {
+    EXPECT_EQ(command("/help").kind, ChatCommandKind::Help);
+    const ChatCommand add = command("/add sphere(1, 0, 0, 0.5) difference");
+    EXPECT_EQ(add.kind, ChatCommandKind::Add);
+    EXPECT_EQ(add.operation, ShapeOperation::Difference);
+    EXPECT_EQ(add.formula, "sphere(1, 0, 0, 0.5)");
+    EXPECT_EQ(command("/add box(1,1,1)").operation, ShapeOperation::Union);
+    EXPECT_EQ(command("/add box(1,1,1) intersection").operation, ShapeOperation::Intersection);
+    EXPECT_EQ(command("/remove sphere(0.5)").operation, ShapeOperation::Difference);
+    const ChatCommand paint = command("/paint 1,0.5,0 40% sphere(0, 1, 0, 0.3)");
+    EXPECT_EQ(paint.kind, ChatCommandKind::Paint);
+    EXPECT_DOUBLE_EQ(paint.colour.g, 0.5);
+    EXPECT_DOUBLE_EQ(paint.opacity, 0.4);
+    EXPECT_EQ(paint.formula, "sphere(0, 1, 0, 0.3)");
+    EXPECT_DOUBLE_EQ(command("/paint red sphere(0.3)").opacity, 1.0);
+    EXPECT_EQ(command("/undo").kind, ChatCommandKind::Undo);
+    EXPECT_EQ(command("/save end of lesson").label, "end of lesson");
+}
+
+TEST(ChatCommands, ParseErrorsSayWhat) {
+    EXPECT_NE(parseChatCommand("/fly").error.find("unknown command"), std::string::npos);
+    EXPECT_FALSE(parseChatCommand("/add").command);
+    EXPECT_FALSE(parseChatCommand("/paint mauve sphere(1)").command);
+    EXPECT_FALSE(parseChatCommand("/paint 2,0,0 sphere(1)").command);
+    EXPECT_FALSE(parseChatCommand("/paint red 150% sphere(1)").command);
+    EXPECT_FALSE(parseChatCommand("/paint red").command);
+    EXPECT_FALSE(parseChatCommand("/undo now").command);
+}
+
+TEST(ChatCommands, AddCombinesWithTheClassShape) {
+    const std::string s =
+        applied("/add sphere(1, 0, 0, 0.5) difference", test::classScene("sphere(0, 0, 0, 1)"));
+    EXPECT_EQ(definitionOf(s, "FGeometry"), "(sphere(0, 0, 0, 1)) \\ (sphere(1, 0, 0, 0.5))");
+    const std::string u = applied("/add box(0.2, 0.2, 2)", s);
+    EXPECT_EQ(definitionOf(u, "FGeometry"),
+              "((sphere(0, 0, 0, 1)) \\ (sphere(1, 0, 0, 0.5))) | (box(0.2, 0.2, 2))");
+}
+
+TEST(ChatCommands, AddToAScriptCombinesItsReturn) {
+    const std::string s =
+        applied("/add sphere(0.5) intersection", test::classScene("a = sphere(1); return a;"));
+    EXPECT_EQ(definitionOf(s, "FGeometry"), "a = sphere(1); return (a) & (sphere(0.5));");
+}
+
+TEST(ChatCommands, AddMakesTheClassShapeInAnEmptyScene) {
+    const std::string empty = "<X3D profile='Immersive' version='3.3'><Scene>\n<Viewpoint "
+                              "position='0 0 5'/>\n</Scene></X3D>";
+    const std::string s = applied("/add sphere(0, 0, 0, 1)", empty);
+    EXPECT_EQ(definitionOf(s, "FGeometry"), "sphere(0, 0, 0, 1)");
+    std::string why;
+    EXPECT_TRUE(applyChatCommand(command("/remove sphere(1)"), empty, why).empty());
+    EXPECT_FALSE(why.empty());
+}
+
+TEST(ChatCommands, PaintBlendsInsideTheTool) {
+    const std::string s = applied("/paint red 50% sphere(0, 1, 0, 0.3)", starterScene());
+    const std::string material = definitionOf(s, "FMaterial");
+    EXPECT_NE(material.find("paint = 0.5 * step(0, sphere(0, 1, 0, 0.3));"), std::string::npos);
+    EXPECT_NE(material.find("r = mix(r, 1, paint);"), std::string::npos);
+}
+
+TEST(ChatCommands, PaintGivesAStandardMaterialAFunctionOne) {
+    const std::string scene = "<X3D profile='Immersive' version='3.3'><Scene><FShape>"
+                              "<FGeometry type='implicit' definition='\"sphere(1)\"'/>"
+                              "<Appearance><Material diffuseColor='0 0 1'/></Appearance>"
+                              "</FShape></Scene></X3D>";
+    const std::string s = applied("/paint yellow sphere(0, 1, 0, 0.5)", scene);
+    const std::string material = definitionOf(s, "FMaterial");
+    EXPECT_NE(material.find("b = 1;"), std::string::npos) << material;
+    EXPECT_NE(material.find("mix(r, 1, paint)"), std::string::npos);
+}
+
+TEST(ChatCommands, AnInvalidToolFormulaGivesAnInvalidScene) {
+    std::string why;
+    const std::string s =
+        applyChatCommand(command("/add sphere(0, 0, 0"), test::classScene("sphere(1)"), why);
+    ASSERT_FALSE(s.empty());
+    EXPECT_FALSE(checkClassroomScene(s).ok);
+}
+
+} // namespace
+} // namespace fl::classroom

@@ -1,0 +1,207 @@
+// Several real WebSocket clients and the server in one process, on
+// loopback: joins, broadcasts, lock refusals and the kept edit, located
+// diagnostics, chat and commands, oversized and malformed frames, and a
+// server restart that the clients ride out by reconnecting and resuming.
+#include "client.h"
+#include "server.h"
+
+#include "scenes.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QWebSocket>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+namespace fl::classroom {
+namespace {
+
+using test::classScene;
+
+constexpr int kWaitMs = 10'000;
+
+class LoopbackTest : public ::testing::Test {
+  protected:
+    LoopbackTest() {
+        ClassConfig c;
+        c.classCode = "C1";
+        c.instructorKey = "secret";
+        c.initialScene = classScene("sphere(0, 0, 0, 1)");
+        session = std::make_unique<ClassSession>(c, clock, nullptr);
+        server = std::make_unique<ClassroomServer>(*session);
+        EXPECT_TRUE(server->listen(QHostAddress::LocalHost, 0));
+        url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(server->port()));
+    }
+
+    ClassroomClient& client(const QString& name, Role role = Role::Student,
+                            const QString& code = "C1") {
+        clients.push_back(std::make_unique<ClassroomClient>());
+        ClassroomClient::JoinOptions o;
+        o.url = url;
+        o.classCode = code;
+        o.name = name;
+        o.role = role;
+        o.initialBackoffMs = 50;
+        o.maxBackoffMs = 200;
+        clients.back()->join(o);
+        return *clients.back();
+    }
+    ClassroomClient& joined(const QString& name) {
+        ClassroomClient& c = client(name);
+        EXPECT_TRUE(
+            QTest::qWaitFor([&] { return c.state() == ClassroomClient::State::Joined; }, kWaitMs));
+        return c;
+    }
+    bool allAt(qint64 version) {
+        return QTest::qWaitFor(
+            [&] {
+                for (const auto& c : clients)
+                    if (c->state() == ClassroomClient::State::Joined && c->version() != version)
+                        return false;
+                return true;
+            },
+            kWaitMs);
+    }
+
+    SteadyClock clock;
+    std::unique_ptr<ClassSession> session;
+    std::unique_ptr<ClassroomServer> server;
+    QUrl url;
+    std::vector<std::unique_ptr<ClassroomClient>> clients;
+};
+
+TEST_F(LoopbackTest, AnEditReachesEveryClient) {
+    ClassroomClient& ana = joined("Ana");
+    joined("Bo");
+    joined("Cy");
+    EXPECT_EQ(ana.version(), 1);
+    EXPECT_EQ(ana.members().size(), 3);
+    ana.submitEdit(QString::fromStdString(classScene("sphere(0, 0, 0, 2)")));
+    ASSERT_TRUE(allAt(2));
+    for (const auto& c : clients)
+        EXPECT_EQ(c->scene().toStdString(), classScene("sphere(0, 0, 0, 2)"));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return ana.holdsLock(); }, kWaitMs));
+}
+
+TEST_F(LoopbackTest, WrongClassCodeGetsAnError) {
+    ClassroomClient& eve = client("Eve", Role::Student, "WRONG");
+    QSignalSpy errors(&eve, &ClassroomClient::errorReceived);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return errors.count() > 0; }, kWaitMs));
+    EXPECT_EQ(errors.at(0).at(0).value<ErrorCode>(), ErrorCode::WrongClass);
+    EXPECT_NE(eve.state(), ClassroomClient::State::Joined);
+}
+
+TEST_F(LoopbackTest, ALockedRefusalKeepsTheEditToOfferAgain) {
+    ClassroomClient& ana = joined("Ana");
+    ClassroomClient& bo = joined("Bo");
+    QSignalSpy refusals(&bo, &ClassroomClient::refused);
+    QSignalSpy applicable(&bo, &ClassroomClient::pendingEditCanBeApplied);
+    ana.submitEdit(QString::fromStdString(classScene("sphere(0, 0, 0, 2)")));
+    ASSERT_TRUE(allAt(2));
+    const QString mine = QString::fromStdString(classScene("box(1, 1, 1)"));
+    bo.submitEdit(mine);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return refusals.count() > 0; }, kWaitMs));
+    const auto r = refusals.at(0).at(0).value<ClassroomClient::Refusal>();
+    EXPECT_EQ(r.reason, RefusalReason::Locked);
+    EXPECT_EQ(r.holder, "Ana");
+    EXPECT_TRUE(bo.hasPendingEdit());
+    EXPECT_EQ(bo.pendingEdit(), mine);
+    EXPECT_EQ(ana.version(), 2);
+
+    ana.releaseLock();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return applicable.count() > 0; }, kWaitMs));
+    EXPECT_TRUE(bo.reofferPendingEdit());
+    ASSERT_TRUE(allAt(3));
+    EXPECT_EQ(ana.scene(), mine);
+    EXPECT_FALSE(bo.hasPendingEdit());
+}
+
+TEST_F(LoopbackTest, InvalidScenesComeBackWithLocatedDiagnostics) {
+    ClassroomClient& ana = joined("Ana");
+    QSignalSpy refusals(&ana, &ClassroomClient::refused);
+    ana.submitEdit(QString::fromStdString(classScene("sphere(0, 0, 0, 1) + sine(x)")));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return refusals.count() > 0; }, kWaitMs));
+    const auto r = refusals.at(0).at(0).value<ClassroomClient::Refusal>();
+    EXPECT_EQ(r.reason, RefusalReason::Invalid);
+    ASSERT_FALSE(r.diagnostics.isEmpty());
+    EXPECT_EQ(r.diagnostics.at(0).toObject()["line"].toInt(), 4);
+    EXPECT_FALSE(ana.hasPendingEdit()); // an invalid edit is the author's to fix, not to re-offer
+}
+
+TEST_F(LoopbackTest, ChatAndChatCommands) {
+    ClassroomClient& ana = joined("Ana");
+    ClassroomClient& bo = joined("Bo");
+    QSignalSpy chat(&bo, &ClassroomClient::chatReceived);
+    QSignalSpy refusals(&ana, &ClassroomClient::refused);
+    ana.sendChat("hello class");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return chat.count() > 0; }, kWaitMs));
+    EXPECT_EQ(chat.at(0).at(0).toString(), "Ana");
+    EXPECT_EQ(chat.at(0).at(1).toString(), "hello class");
+
+    ana.sendChat("/add sphere(1, 0, 0, 0.6) difference");
+    ASSERT_TRUE(allAt(2));
+    EXPECT_TRUE(bo.scene().contains("sphere(1, 0, 0, 0.6)"));
+    ana.sendChat("/paint blue");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return refusals.count() > 0; }, kWaitMs));
+    EXPECT_EQ(refusals.at(0).at(0).value<ClassroomClient::Refusal>().command, "/paint blue");
+    EXPECT_EQ(chat.count(), 1); // commands never travel as chat
+}
+
+TEST_F(LoopbackTest, AnOversizedMessageClosesOnlyItsConnection) {
+    ClassroomClient& ana = joined("Ana");
+    joined("Bo");
+    QWebSocket raw;
+    raw.open(url);
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return raw.state() == QAbstractSocket::ConnectedState; }, kWaitMs));
+    raw.sendTextMessage(QString(R"({"type":"chat","text":"%1"})").arg(QString(1100 * 1024, 'x')));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return raw.state() == QAbstractSocket::UnconnectedState; }, kWaitMs));
+    EXPECT_EQ(raw.closeCode(), QWebSocketProtocol::CloseCodeTooMuchData);
+    ana.submitEdit(QString::fromStdString(classScene("sphere(0, 0, 0, 2)")));
+    EXPECT_TRUE(allAt(2));
+}
+
+TEST_F(LoopbackTest, MalformedFramesGetAnErrorAndTheConnectionGoesOn) {
+    QWebSocket raw;
+    QStringList received;
+    QObject::connect(&raw, &QWebSocket::textMessageReceived,
+                     [&](const QString& m) { received << m; });
+    raw.open(url);
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return raw.state() == QAbstractSocket::ConnectedState; }, kWaitMs));
+    raw.sendTextMessage("{not json");
+    raw.sendBinaryMessage(QByteArray("\x00\x01", 2));
+    raw.sendTextMessage(R"({"type":"join","class":"C1","name":"Raw"})");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return received.size() >= 3; }, kWaitMs));
+    EXPECT_TRUE(received[0].contains(R"("code":"malformed")"));
+    EXPECT_TRUE(received[1].contains(R"("code":"malformed")"));
+    EXPECT_TRUE(received[2].contains(R"("type":"welcome")"));
+}
+
+TEST_F(LoopbackTest, ClientsReconnectAndResumeAfterTheServerRestarts) {
+    ClassroomClient& ana = joined("Ana");
+    ClassroomClient& bo = joined("Bo");
+    QSignalSpy anaJoins(&ana, &ClassroomClient::joined);
+    ana.submitEdit(QString::fromStdString(classScene("sphere(0, 0, 0, 2)")));
+    ASSERT_TRUE(allAt(2));
+    const quint16 port = server->port();
+    server.reset(); // every connection drops; the class (session) goes on
+    ASSERT_TRUE(QTest::qWaitFor([&] { return ana.state() == ClassroomClient::State::Reconnecting; },
+                                kWaitMs));
+    server = std::make_unique<ClassroomServer>(*session);
+    ASSERT_TRUE(server->listen(QHostAddress::LocalHost, port));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return anaJoins.count() > 0 && bo.state() == ClassroomClient::State::Joined; },
+        kWaitMs));
+    EXPECT_TRUE(anaJoins.at(0).at(0).toBool()); // resumed her seat
+    EXPECT_TRUE(ana.holdsLock());               // and, within the grace, her lock
+    ana.submitEdit(QString::fromStdString(classScene("sphere(0, 0, 0, 3)")));
+    EXPECT_TRUE(allAt(3));
+}
+
+} // namespace
+} // namespace fl::classroom
