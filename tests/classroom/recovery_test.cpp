@@ -38,7 +38,7 @@ class ServerProcess {
         QString out;
         const QRegularExpression line(R"(listening on (ws://[0-9.]+:[0-9]+)\n)");
         QRegularExpressionMatch m;
-        QTest::qWaitFor(
+        (void)QTest::qWaitFor(
             [&] {
                 out += QString::fromUtf8(process_.readAllStandardOutput());
                 m = line.match(out);
