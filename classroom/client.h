@@ -91,7 +91,7 @@ class ClassroomClient : public QObject {
     bool reofferPendingEdit();
     void discardPendingEdit();
 
-  signals:
+  Q_SIGNALS:
     void stateChanged(fl::classroom::ClassroomClient::State state);
     void joined(bool resumed);
     void sceneChanged(qint64 version, const QString& author, const QString& scene);

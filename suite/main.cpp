@@ -12,6 +12,13 @@
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) return fl::suite::runWindow(argc, argv, {});
+    std::string joinError;
+    if (const auto join = fl::suite::parseJoinArguments(args, joinError))
+        return fl::suite::runWindow(argc, argv, {}, join);
+    if (!joinError.empty()) {
+        std::cerr << "functionlab: " << joinError << "\n";
+        return fl::cli::kExitUsage;
+    }
     if (args.size() == 1 && !fl::cli::isCommandWord(args[0]) &&
         fl::suite::looksLikeSceneFile(args[0]))
         return fl::suite::runWindow(argc, argv, args[0]);

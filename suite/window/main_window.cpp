@@ -3,9 +3,11 @@
 #include "accuracy_panel.h"
 #include "assignment_panel.h"
 #include "checker.h"
+#include "classroom_panel.h"
 #include "code_editor.h"
 #include "examples.h"
 #include "examples_dock.h"
+#include "field/affine.h"
 #include "find_bar.h"
 #include "grading_panel.h"
 #include "hand_in.h"
@@ -43,6 +45,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -100,7 +103,7 @@ MainWindow::MainWindow(QWidget* parent)
       viewpoints_(new ViewpointBox), recentMenu_(nullptr), triangles_(new QLabel),
       meshTime_(new QLabel), frameRate_(new QLabel), timeLabel_(new QLabel),
       screenError_(new QLabel), errorMeter_(new ScreenErrorMeter(this)) {
-    setWindowTitle(QStringLiteral("FunctionLab"));
+    setWindowTitle(QStringLiteral("FunctionLab[*]"));
     setCentralWidget(view_);
     buildDocks();
     buildMenus();
@@ -157,6 +160,14 @@ MainWindow::MainWindow(QWidget* parent)
             return;
         }
         view_->setMarker(QVector3D(float(p->point[0]), float(p->point[1]), float(p->point[2])));
+        // The classroom tools go there, in the clicked shape's own coordinates.
+        {
+            const mesh::ShapeMesh& s = meshes->shapes[p->shapeIndex];
+            const auto back = field::Affine::fromMatrix(s.placement).inverse();
+            const double size = s.field ? s.field->box.diagonal() : s.domain.diagonal();
+            classroom_->setToolPoint(back ? std::optional(back->point(p->point)) : std::nullopt,
+                                     size);
+        }
         // A TouchSensor over the shape hears the click (the fan starts).
         if (meshes->source == scene_)
             for (const scene::Node* sensor : p->touchSensors)
@@ -243,6 +254,7 @@ void MainWindow::buildDocks() {
     assignment_ = addPanel(new AssignmentPanel, true);
     accuracy_ = addPanel(new AccuracyPanel, true);
     haptics_ = addPanel(new HapticsPanel, true);
+    classroom_ = addPanel(new ClassroomPanel, true);
     examples_->raise();
     // Tabbed docks must not widen their side to fit every tab's title: the
     // view would shrink with each panel added. Their tab bars scroll.
@@ -277,6 +289,10 @@ void MainWindow::buildDocks() {
             viewer::RenderScene::Touch{q(m->tool), q(m->proxy), q(m->force), float(m->maxForce)});
     });
     connect(player_, &viewer::ScenePlayer::timeChanged, haptics_, &HapticsPanel::setSceneTime);
+    // The class's shared scene in the editor and the view; the editor's text
+    // is what the student sends.
+    classroom_->setTextSource([this] { return editor_->toPlainText(); });
+    connect(classroom_, &ClassroomPanel::sharedSceneChanged, this, &MainWindow::showSharedScene);
     // Friction or density as colour: each frame coloured on the panel's worker.
     connect(haptics_, &HapticsPanel::showOnSurfaceChanged, this, [this] {
         if (!shownFrame_) return;
@@ -310,6 +326,11 @@ void MainWindow::buildMenus() {
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addAction(tr("&Join Class…"), this, [this] {
+        classroom_->show();
+        classroom_->raise();
+        classroom_->urlField()->setFocus();
+    });
     file->addSeparator();
     file->addAction(tr("Export &Mesh…"), this, &MainWindow::exportMesh);
     file->addAction(tr("Export &Image…"), this, &MainWindow::exportImage);
@@ -584,6 +605,34 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     errorMeter_->focusOn(nullptr);
     view_->setMarker(std::nullopt); // it marked a point of the old shapes
     player_->setScene(scene);
+}
+
+void MainWindow::joinClass(const QString& url, const QString& classCode, const QString& name,
+                           const QString& role, const QString& key) {
+    classroom_->raise();
+    classroom_->join(url, classCode, name, role, key);
+}
+
+void MainWindow::showSharedScene(const QString& text, qint64 version, const QString& author) {
+    const QString mine = editor_->toPlainText();
+    // Unsent work in the editor is never overwritten: the student sends it
+    // (refused as stale, it is kept and applied on the new version) or
+    // discards it with Undo.
+    if (!lastSharedScene_.isEmpty() && mine != lastSharedScene_ && mine != text) {
+        lastSharedScene_ = text;
+        statusBar()->showMessage(
+            tr("The class scene is at version %1 (%2); your unsent edit stays in the editor: "
+               "send it, or undo it to see the class's")
+                .arg(version)
+                .arg(author));
+        return;
+    }
+    lastSharedScene_ = text;
+    if (mine != text) {
+        editor_->setPlainText(text);
+        editor_->document()->setModified(false);
+    }
+    statusBar()->showMessage(tr("class scene, version %1 by %2").arg(version).arg(author), 5000);
 }
 
 void MainWindow::touchAt(QPointF pixel) {

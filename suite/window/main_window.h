@@ -46,6 +46,7 @@ class ParametersDock;
 class SceneTreeDock;
 class AccuracyPanel;
 class HapticsPanel;
+class ClassroomPanel;
 class ScreenErrorMeter;
 class AssignmentPanel;
 class GradingPanel;
@@ -98,6 +99,10 @@ class MainWindow : public QMainWindow {
     ScreenErrorMeter* errorMeter() const { return errorMeter_; }
     AccuracyPanel* accuracyPanel() const { return accuracy_; }
     HapticsPanel* hapticsPanel() const { return haptics_; }
+    ClassroomPanel* classroomPanel() const { return classroom_; }
+    // Joins a class (File → Join Class…, or `functionlab --join`).
+    void joinClass(const QString& url, const QString& classCode, const QString& name,
+                   const QString& role = QStringLiteral("student"), const QString& key = {});
     // Feeling with the mouse: the tool to the surface under this pixel.
     void touchAt(QPointF pixel);
     // The window's panels, in the order they were added.
@@ -137,6 +142,7 @@ class MainWindow : public QMainWindow {
     void meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds);
     void writeRecovery();
     void playResolutions(); // the level of detail's, with the Accuracy panel's choices
+    void showSharedScene(const QString& text, qint64 version, const QString& author);
 
     QString recoveryPath() const;
 
@@ -154,6 +160,8 @@ class MainWindow : public QMainWindow {
     AssignmentPanel* assignment_ = nullptr;
     AccuracyPanel* accuracy_ = nullptr;
     HapticsPanel* haptics_ = nullptr;
+    ClassroomPanel* classroom_ = nullptr;
+    QString lastSharedScene_; // the class's scene as last shown
     std::unordered_map<const scene::Node*, double> chosenResolutions_; // by the Accuracy panel
     GradingPanel* grading_ = nullptr;
     bool textParses_ = true; // the editor's text, as last parsed, has no errors

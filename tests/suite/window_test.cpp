@@ -14,6 +14,7 @@
 #include "scene_widget.h"
 #include "screen_error_meter.h"
 #include "timeline_bar.h"
+#include "window_screenshot.h"
 
 #include "surface_format.h"
 #include <QApplication>
@@ -50,14 +51,7 @@ QString examplePath(const char* name) {
 // The window as the user sees it: its widgets, with the 3D view's frame
 // painted where the view is (a native window that widget grabs leave blank).
 QImage screenshot(suite::MainWindow& w) {
-    QImage shot = w.grab().toImage();
-    const QImage frame = w.view()->grabFrame();
-    if (!frame.isNull()) {
-        QPainter p(&shot);
-        const QPoint at = w.view()->mapTo(&w, QPoint(0, 0));
-        p.drawImage(QRect(at, w.view()->size()), frame);
-    }
-    return shot;
+    return test::windowScreenshot(w);
 }
 
 void save(const QImage& image, const QString& name) {

@@ -1,0 +1,358 @@
+#include "classroom_panel.h"
+
+#include "client.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QShortcut>
+#include <QSlider>
+#include <QUrl>
+#include <QVBoxLayout>
+
+namespace fl::suite {
+
+using classroom::ClassroomClient;
+
+namespace {
+
+QString reasonText(const ClassroomClient::Refusal& r) {
+    switch (r.reason) {
+    case classroom::RefusalReason::Locked:
+        return ClassroomPanel::tr("%1 holds the lock; your edit is kept and offered again when "
+                                  "the lock is free")
+            .arg(r.holder);
+    case classroom::RefusalReason::Stale:
+        return ClassroomPanel::tr("the scene changed since your version; your edit is kept: "
+                                  "apply it on the new scene, or discard it");
+    case classroom::RefusalReason::Invalid:
+        return ClassroomPanel::tr("the scene has errors: %1").arg(r.message);
+    case classroom::RefusalReason::ReadOnly:
+        return ClassroomPanel::tr("read-only: %1").arg(r.message);
+    case classroom::RefusalReason::Rate:
+        return ClassroomPanel::tr("too many edits at once: wait a moment");
+    case classroom::RefusalReason::TooLarge:
+        return ClassroomPanel::tr("too large: %1").arg(r.message);
+    }
+    return r.message;
+}
+
+// A number as a formula writes it: short, exact enough for a tool.
+QString num(double v) {
+    return QString::number(v, 'g', 6);
+}
+
+} // namespace
+
+ClassroomPanel::ClassroomPanel(QWidget* parent)
+    : Panel(tr("Classroom"), QStringLiteral("classroom"), Qt::RightDockWidgetArea, parent),
+      client_(std::make_unique<ClassroomClient>()), url_(new QLineEdit), code_(new QLineEdit),
+      name_(new QLineEdit), key_(new QLineEdit), say_(new QLineEdit), role_(new QComboBox),
+      tool_(new QComboBox), paint_(new QComboBox), toolSize_(new QSlider(Qt::Horizontal)),
+      join_(new QPushButton(tr("Join"))), send_(new QPushButton(tr("Send my edit"))),
+      release_(new QPushButton(tr("Release lock"))), applyPending_(new QPushButton(tr("Apply"))),
+      discardPending_(new QPushButton(tr("Discard"))), useTool_(new QPushButton(tr("Use"))),
+      state_(new QLabel), lock_(new QLabel), pending_(new QLabel), members_(new QListWidget),
+      chat_(new QListWidget), instructor_(new QWidget), freeze_(new QCheckBox(tr("Freeze"))),
+      anonymous_(new QCheckBox(tr("Anonymous names"))) {
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    auto* form = new QFormLayout;
+    url_->setPlaceholderText(QStringLiteral("ws://127.0.0.1:8765"));
+    code_->setPlaceholderText(tr("the class code"));
+    name_->setPlaceholderText(tr("your name"));
+    key_->setEchoMode(QLineEdit::Password);
+    key_->setPlaceholderText(tr("instructor key"));
+    role_->addItems(
+        {QStringLiteral("student"), QStringLiteral("instructor"), QStringLiteral("observer")});
+    form->addRow(tr("Server:"), url_);
+    form->addRow(tr("Class:"), code_);
+    form->addRow(tr("Name:"), name_);
+    auto* roleRow = new QHBoxLayout;
+    roleRow->addWidget(role_);
+    roleRow->addWidget(key_, 1);
+    roleRow->addWidget(join_);
+    form->addRow(tr("Role:"), roleRow);
+    layout->addLayout(form);
+    layout->addWidget(state_);
+    layout->addWidget(members_, 1);
+    auto* lockRow = new QHBoxLayout;
+    lockRow->addWidget(lock_, 1);
+    lockRow->addWidget(send_);
+    lockRow->addWidget(release_);
+    layout->addLayout(lockRow);
+    auto* pendingRow = new QHBoxLayout;
+    pending_->setWordWrap(true);
+    pendingRow->addWidget(pending_, 1);
+    pendingRow->addWidget(applyPending_);
+    pendingRow->addWidget(discardPending_);
+    layout->addLayout(pendingRow);
+    // The tools: at the point marked by a click in the view.
+    auto* toolRow = new QHBoxLayout;
+    tool_->addItems({tr("remove"), tr("deposit"), tr("paint")});
+    paint_->addItems({QStringLiteral("red"), QStringLiteral("green"), QStringLiteral("blue"),
+                      QStringLiteral("yellow"), QStringLiteral("orange"), QStringLiteral("purple"),
+                      QStringLiteral("white"), QStringLiteral("black")});
+    toolSize_->setRange(1, 50);
+    toolSize_->setValue(10);
+    toolSize_->setToolTip(tr("The tool's radius: 1% to 50% of the shape's size"));
+    toolRow->addWidget(new QLabel(tr("Tool:")));
+    toolRow->addWidget(tool_);
+    toolRow->addWidget(paint_);
+    toolRow->addWidget(toolSize_, 1);
+    toolRow->addWidget(useTool_);
+    layout->addLayout(toolRow);
+    chat_->setWordWrap(true);
+    layout->addWidget(chat_, 2);
+    say_->setPlaceholderText(tr("chat, or a command: /help"));
+    layout->addWidget(say_);
+    auto* instructorRow = new QHBoxLayout(instructor_);
+    instructorRow->setContentsMargins(0, 0, 0, 0);
+    auto* push = new QPushButton(tr("Push my scene"));
+    auto* snapshot = new QPushButton(tr("Snapshot"));
+    auto* take = new QPushButton(tr("Take lock"));
+    auto* brk = new QPushButton(tr("Break lock"));
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{freeze_, anonymous_, push, snapshot, take, brk})
+        instructorRow->addWidget(w);
+    layout->addWidget(instructor_);
+    setWidget(box);
+
+    connect(join_, &QPushButton::clicked, this, [this] {
+        if (client_->state() == ClassroomClient::State::Disconnected)
+            join(url_->text(), code_->text(), name_->text(), role_->currentText(), key_->text());
+        else
+            leave();
+    });
+    connect(send_, &QPushButton::clicked, this, &ClassroomPanel::sendEdit);
+    connect(release_, &QPushButton::clicked, client_.get(), &ClassroomClient::releaseLock);
+    connect(applyPending_, &QPushButton::clicked, this, [this] {
+        if (client_->reofferPendingEdit()) say(tr("your kept edit is sent again"));
+    });
+    connect(discardPending_, &QPushButton::clicked, client_.get(),
+            &ClassroomClient::discardPendingEdit);
+    connect(say_, &QLineEdit::returnPressed, this, [this] {
+        sendChat(say_->text());
+        say_->clear();
+    });
+    connect(useTool_, &QPushButton::clicked, this,
+            [this] { useTool(Tool(std::clamp(tool_->currentIndex(), 0, 2))); });
+    connect(tool_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { paint_->setEnabled(i == int(Tool::Paint)); });
+    connect(freeze_, &QCheckBox::clicked, client_.get(), &ClassroomClient::setFrozen);
+    connect(anonymous_, &QCheckBox::clicked, client_.get(), &ClassroomClient::setAnonymous);
+    connect(push, &QPushButton::clicked, this, [this] {
+        if (text_) client_->pushScene(text_());
+    });
+    connect(snapshot, &QPushButton::clicked, this,
+            [this] { client_->takeSnapshot(tr("snapshot by %1").arg(client_->shownName())); });
+    connect(take, &QPushButton::clicked, client_.get(), &ClassroomClient::takeLock);
+    connect(brk, &QPushButton::clicked, client_.get(), &ClassroomClient::breakLock);
+
+    ClassroomClient* c = client_.get();
+    connect(c, &ClassroomClient::stateChanged, this, [this] { refreshState(); });
+    connect(c, &ClassroomClient::joined, this, [this](bool resumed) {
+        say(resumed ? tr("back in the class (your seat and lock were kept)")
+                    : tr("joined the class as %1").arg(client_->shownName()));
+        refreshState();
+    });
+    connect(c, &ClassroomClient::sceneChanged, this,
+            [this](qint64 version, const QString& author, const QString& scene) {
+                Q_EMIT sharedSceneChanged(scene, version, author);
+                refreshState();
+            });
+    connect(c, &ClassroomClient::chatReceived, this,
+            [this](const QString& from, const QString& text) {
+                chat_->addItem(from + QStringLiteral(": ") + text);
+                chat_->scrollToBottom();
+            });
+    connect(c, &ClassroomClient::noticeReceived, this, [this](const QString& t) { say(t); });
+    connect(c, &ClassroomClient::refused, this, [this](const ClassroomClient::Refusal& r) {
+        QString line = tr("refused: %1").arg(reasonText(r));
+        for (const auto& d : r.diagnostics) {
+            const QJsonObject o = d.toObject();
+            line += QStringLiteral("\n  %1:%2: %3")
+                        .arg(o.value(QStringLiteral("line")).toInt())
+                        .arg(o.value(QStringLiteral("column")).toInt())
+                        .arg(o.value(QStringLiteral("message")).toString());
+        }
+        say(line);
+        refreshLock();
+    });
+    connect(c, &ClassroomClient::errorReceived, this,
+            [this](classroom::ErrorCode, const QString& message) {
+                say(tr("the server says: %1").arg(message));
+            });
+    connect(c, &ClassroomClient::membersChanged, this, &ClassroomPanel::refreshMembers);
+    connect(c, &ClassroomClient::lockChanged, this, [this] {
+        refreshLock();
+        refreshMembers();
+    });
+    connect(c, &ClassroomClient::frozenChanged, this, [this](bool frozen) {
+        freeze_->setChecked(frozen);
+        say(frozen ? tr("the class is frozen: edits wait") : tr("the class is open again"));
+        refreshLock();
+    });
+    connect(c, &ClassroomClient::saved, this, [this](qint64 version, const QString& label) {
+        say(tr("snapshot of version %1 kept: %2").arg(version).arg(label));
+    });
+    connect(c, &ClassroomClient::pendingEditChanged, this, &ClassroomPanel::refreshLock);
+    connect(c, &ClassroomClient::pendingEditCanBeApplied, this, [this] {
+        refreshLock();
+        pending_->setText(tr("The lock is free: apply your kept edit now?"));
+        applyPending_->setEnabled(true);
+    });
+    auto* sendShortcut = new QShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return), box);
+    connect(sendShortcut, &QShortcut::activated, this, &ClassroomPanel::sendEdit);
+    refreshState();
+}
+
+ClassroomPanel::~ClassroomPanel() = default;
+
+void ClassroomPanel::join(const QString& url, const QString& classCode, const QString& name,
+                          const QString& role, const QString& key) {
+    const QUrl u(url.trimmed());
+    if (!u.isValid() ||
+        (u.scheme() != QStringLiteral("ws") && u.scheme() != QStringLiteral("wss"))) {
+        say(tr("the server is a ws:// address, e.g. ws://127.0.0.1:8765"));
+        return;
+    }
+    if (classCode.trimmed().isEmpty() || name.trimmed().isEmpty()) {
+        say(tr("give the class code and your name"));
+        return;
+    }
+    url_->setText(url);
+    code_->setText(classCode);
+    name_->setText(name);
+    role_->setCurrentText(role);
+    ClassroomClient::JoinOptions o;
+    o.url = u;
+    o.classCode = classCode.trimmed();
+    o.name = name.trimmed();
+    o.role = classroom::roleNamed(role.toStdString()).value_or(classroom::Role::Student);
+    o.key = key;
+    client_->join(o);
+    refreshState();
+}
+
+void ClassroomPanel::leave() {
+    client_->leave();
+    refreshState();
+}
+
+void ClassroomPanel::sendEdit() {
+    if (!text_ || client_->state() != ClassroomClient::State::Joined) return;
+    client_->submitEdit(text_());
+}
+
+void ClassroomPanel::sendChat(const QString& text) {
+    if (text.trimmed().isEmpty()) return;
+    client_->sendChat(text.trimmed());
+}
+
+void ClassroomPanel::setToolPoint(std::optional<field::Vec3> point, double shapeSize) {
+    toolPoint_ = point;
+    shapeSize_ = shapeSize > 0 ? shapeSize : 1;
+    useTool_->setEnabled(point.has_value() && client_->state() == ClassroomClient::State::Joined);
+}
+
+QString ClassroomPanel::toolCommand(Tool tool) const {
+    if (!toolPoint_) return {};
+    const field::Vec3& p = *toolPoint_;
+    const double r = shapeSize_ * toolSize_->value() / 100.0;
+    const QString ball =
+        QStringLiteral("sphere(%1, %2, %3, %4)").arg(num(p[0]), num(p[1]), num(p[2]), num(r));
+    switch (tool) {
+    case Tool::Remove:
+        return QStringLiteral("/remove ") + ball;
+    case Tool::Deposit:
+        return QStringLiteral("/add ") + ball + QStringLiteral(" union");
+    case Tool::Paint:
+        return QStringLiteral("/paint ") + paint_->currentText() + QLatin1Char(' ') + ball;
+    }
+    return {};
+}
+
+bool ClassroomPanel::useTool(Tool tool) {
+    const QString command = toolCommand(tool);
+    if (command.isEmpty()) {
+        say(tr("click the class shape in the view to mark where the tool goes"));
+        return false;
+    }
+    sendChat(command);
+    return true;
+}
+
+void ClassroomPanel::say(const QString& line) {
+    auto* item = new QListWidgetItem(line);
+    item->setForeground(palette().placeholderText());
+    chat_->addItem(item);
+    chat_->scrollToBottom();
+}
+
+void ClassroomPanel::refreshMembers() {
+    members_->clear();
+    const auto holder = client_->lockHolder();
+    for (const ClassroomClient::Member& m : client_->members()) {
+        QString line = m.name + QStringLiteral(" (") +
+                       QString::fromUtf8(classroom::nameOf(m.role).data(),
+                                         qsizetype(classroom::nameOf(m.role).size())) +
+                       QLatin1Char(')');
+        if (holder && holder->id == m.id) line += tr(" — holds the lock");
+        if (!m.connected) line += tr(" — away");
+        if (m.id == client_->memberId()) line += tr(" — you");
+        auto* item = new QListWidgetItem(line);
+        if (!m.connected) item->setForeground(palette().placeholderText());
+        members_->addItem(item);
+    }
+}
+
+void ClassroomPanel::refreshLock() {
+    const auto holder = client_->lockHolder();
+    lock_->setText(client_->frozen()      ? tr("the class is frozen")
+                   : !holder              ? tr("the lock is free")
+                   : client_->holdsLock() ? tr("you hold the lock")
+                                          : tr("%1 holds the lock").arg(holder->name));
+    const bool pending = client_->hasPendingEdit();
+    pending_->setVisible(pending);
+    applyPending_->setVisible(pending);
+    discardPending_->setVisible(pending);
+    if (pending && !applyPending_->isEnabled())
+        pending_->setText(
+            tr("Your refused edit is kept; it can be applied when the lock is free."));
+    if (!pending)
+        applyPending_->setEnabled(false);
+    else if (!holder || client_->holdsLock())
+        applyPending_->setEnabled(true);
+    release_->setEnabled(client_->holdsLock());
+}
+
+void ClassroomPanel::refreshState() {
+    const auto s = client_->state();
+    const bool in = s == ClassroomClient::State::Joined;
+    state_->setText(s == ClassroomClient::State::Disconnected ? tr("not in a class")
+                    : s == ClassroomClient::State::Connecting ? tr("connecting…")
+                    : s == ClassroomClient::State::Reconnecting
+                        ? tr("connection lost: reconnecting…")
+                        : tr("in class %1 as %2, version %3")
+                              .arg(code_->text(), client_->shownName())
+                              .arg(client_->version()));
+    join_->setText(s == ClassroomClient::State::Disconnected ? tr("Join") : tr("Leave"));
+    for (QWidget* w : std::initializer_list<QWidget*>{url_, code_, name_, role_, key_})
+        w->setEnabled(s == ClassroomClient::State::Disconnected);
+    const bool observer = role_->currentText() == QStringLiteral("observer");
+    send_->setEnabled(in && !observer);
+    useTool_->setEnabled(in && !observer && toolPoint_.has_value());
+    say_->setEnabled(in);
+    instructor_->setVisible(role_->currentText() == QStringLiteral("instructor"));
+    refreshLock();
+    if (in) refreshMembers();
+}
+
+} // namespace fl::suite

@@ -1,0 +1,135 @@
+// Two windows in one class (Qt Test, issue 17 §1, §3, §5): a server on
+// loopback in this process; Ada and Ben join through their Classroom panels.
+// Ada's edit takes the lock and reaches Ben's editor and view; Ben's edit
+// under Ada's lock is refused — visibly, with her name — and kept; when Ada
+// releases, Ben applies his kept edit. A tool removes material at a clicked
+// point, through the same protocol. Screenshots of both windows are saved.
+#include "classroom_panel.h"
+#include "code_editor.h"
+#include "main_window.h"
+#include "window_screenshot.h"
+
+#include "class_session.h"
+#include "client.h"
+#include "server.h"
+#include "starter_scene.h"
+
+#include <QDir>
+#include <QHostAddress>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTest>
+
+#include <memory>
+
+using namespace fl;
+
+namespace {
+
+void save(suite::MainWindow& w, const QString& name) {
+    QDir().mkpath(QStringLiteral(FUNCTIONLAB_SCREENSHOT_DIR));
+    test::windowScreenshot(w).save(QStringLiteral(FUNCTIONLAB_SCREENSHOT_DIR "/") + name +
+                                   QStringLiteral(".png"));
+}
+
+bool chatHas(const suite::ClassroomPanel* p, const QString& text) {
+    for (int i = 0; i < p->chat()->count(); ++i)
+        if (p->chat()->item(i)->text().contains(text)) return true;
+    return false;
+}
+
+} // namespace
+
+class ClassroomWindowTest : public QObject {
+    Q_OBJECT
+  private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("FunctionLabTests"));
+    }
+
+    void twoStudentsEditInTurnAndTheLockRefusalIsVisible() {
+        classroom::SteadyClock clock;
+        classroom::ClassConfig config;
+        config.classCode = "LAB1";
+        config.initialScene = classroom::starterScene();
+        classroom::ClassSession session(config, clock, nullptr);
+        classroom::ClassroomServer server(session);
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        const QString url = QStringLiteral("ws://127.0.0.1:%1").arg(server.port());
+
+        suite::MainWindow ada, ben;
+        for (suite::MainWindow* w : {&ada, &ben}) {
+            w->setPromptsEnabled(false);
+            w->resize(1280, 800);
+            w->show();
+            QVERIFY(QTest::qWaitForWindowExposed(w));
+        }
+        ada.joinClass(url, QStringLiteral("LAB1"), QStringLiteral("Ada"));
+        ben.joinClass(url, QStringLiteral("LAB1"), QStringLiteral("Ben"));
+        auto* adaPanel = ada.classroomPanel();
+        auto* benPanel = ben.classroomPanel();
+        using State = classroom::ClassroomClient::State;
+        QTRY_COMPARE_WITH_TIMEOUT(adaPanel->client()->state(), State::Joined, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(benPanel->client()->state(), State::Joined, 10000);
+        // Both editors show the class's scene; both see two members.
+        const QString starter = QString::fromStdString(classroom::starterScene());
+        QTRY_COMPARE_WITH_TIMEOUT(ada.editor()->toPlainText(), starter, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(ben.editor()->toPlainText(), starter, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(benPanel->members()->count(), 2, 10000);
+
+        // Ada edits: a smaller sphere. Her edit takes the lock and reaches Ben.
+        QString adaText = starter;
+        QVERIFY(adaText.contains(QStringLiteral("CLASS")));
+        adaText.replace(QStringLiteral("</Scene>"),
+                        QStringLiteral("<WorldInfo title='Ada was here'/>\n</Scene>"));
+        ada.editor()->setPlainText(adaText);
+        adaPanel->sendEdit();
+        QTRY_VERIFY_WITH_TIMEOUT(adaPanel->client()->holdsLock(), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(ben.editor()->toPlainText(), adaText, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(benPanel->lockStatus()->text().contains(QStringLiteral("Ada")),
+                                 10000);
+
+        // Ben edits under Ada's lock: refused, said with her name, kept.
+        QString benText = adaText;
+        benText.replace(QStringLiteral("Ada was here"), QStringLiteral("Ben was here"));
+        ben.editor()->setPlainText(benText);
+        benPanel->sendEdit();
+        QTRY_VERIFY_WITH_TIMEOUT(benPanel->client()->hasPendingEdit(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(chatHas(benPanel, QStringLiteral("Ada holds the lock")), 10000);
+        QVERIFY(benPanel->pendingStatus()->isVisible());
+        QCOMPARE(ada.editor()->toPlainText(), adaText); // nothing of Ben's reached Ada
+        save(ben, QStringLiteral("classroom-ben-refused"));
+
+        // Ada lets go: Ben is offered his kept edit and applies it.
+        QMetaObject::invokeMethod(adaPanel->client(), &classroom::ClassroomClient::releaseLock);
+        QTRY_VERIFY_WITH_TIMEOUT(benPanel->applyPendingButton()->isEnabled(), 10000);
+        benPanel->applyPendingButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(ada.editor()->toPlainText(), benText, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(benPanel->client()->holdsLock(), 10000);
+        QVERIFY(!benPanel->client()->hasPendingEdit());
+        save(ada, QStringLiteral("classroom-ada-sees-ben"));
+
+        // A tool: Ben marks a point on the class shape and removes material
+        // there; the class's scene gets a difference, for both.
+        benPanel->setToolPoint(field::Vec3{0, 0, 1}, 2);
+        QVERIFY(benPanel->toolCommand(suite::ClassroomPanel::Tool::Remove)
+                    .startsWith(QStringLiteral("/remove sphere(0, 0, 1, ")));
+        QVERIFY(benPanel->useTool(suite::ClassroomPanel::Tool::Remove));
+        QTRY_VERIFY_WITH_TIMEOUT(ada.editor()->toPlainText() != benText, 10000);
+        QVERIFY(ada.editor()->toPlainText().contains(QStringLiteral("sphere(0, 0, 1, ")));
+        QTRY_COMPARE_WITH_TIMEOUT(ben.editor()->toPlainText(), ada.editor()->toPlainText(), 10000);
+        // /help is answered to Ben only, never broadcast as chat.
+        benPanel->sendChat(QStringLiteral("/help"));
+        QTRY_VERIFY_WITH_TIMEOUT(chatHas(benPanel, QStringLiteral("/remove")), 10000);
+        QVERIFY(!chatHas(adaPanel, QStringLiteral("/help")));
+        save(ben, QStringLiteral("classroom-ben-tool"));
+        adaPanel->leave();
+        benPanel->leave();
+    }
+};
+
+QTEST_MAIN(ClassroomWindowTest)
+#include "classroom_window_test.moc"
