@@ -101,6 +101,8 @@ class ClassroomWindowTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(chatHas(benPanel, QStringLiteral("Ada holds the lock")), 10000);
         QVERIFY(benPanel->pendingStatus()->isVisible());
         QCOMPARE(ada.editor()->toPlainText(), adaText); // nothing of Ben's reached Ada
+        QTRY_VERIFY_WITH_TIMEOUT(!ben.busy() && ben.view()->triangleCount() > 0, 20000);
+        QTest::qWait(200);
         save(ben, QStringLiteral("classroom-ben-refused"));
 
         // Ada lets go: Ben is offered his kept edit and applies it.
