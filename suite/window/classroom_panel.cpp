@@ -2,8 +2,12 @@
 
 #include "client.h"
 
+#include "scene/scene_reader.h"
+#include "scene/scene_writer.h"
+
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QJsonObject>
@@ -11,6 +15,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSaveFile>
 #include <QShortcut>
 #include <QSlider>
 #include <QUrl>
@@ -55,6 +60,7 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
       client_(std::make_unique<ClassroomClient>()), url_(new QLineEdit), code_(new QLineEdit),
       name_(new QLineEdit), key_(new QLineEdit), say_(new QLineEdit), role_(new QComboBox),
       tool_(new QComboBox), paint_(new QComboBox), toolSize_(new QSlider(Qt::Horizontal)),
+      history_(new QSlider(Qt::Horizontal)), historyLabel_(new QLabel),
       join_(new QPushButton(tr("Join"))), send_(new QPushButton(tr("Send my edit"))),
       release_(new QPushButton(tr("Release lock"))), applyPending_(new QPushButton(tr("Apply"))),
       discardPending_(new QPushButton(tr("Discard"))), useTool_(new QPushButton(tr("Use"))),
@@ -108,6 +114,42 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
     toolRow->addWidget(toolSize_, 1);
     toolRow->addWidget(useTool_);
     layout->addLayout(toolRow);
+    // The history: a slider over the versions; the view shows the one chosen.
+    auto* historyRow = new QHBoxLayout;
+    history_->setRange(1, 1);
+    history_->setToolTip(tr("Replay the class's history: the view shows the version chosen"));
+    auto* exportButton = new QPushButton(tr("Export…"));
+    exportButton->setToolTip(tr("Save the version shown (or the newest) as X3D"));
+    auto* back = new QPushButton(tr("Now"));
+    historyRow->addWidget(new QLabel(tr("History:")));
+    historyRow->addWidget(history_, 1);
+    historyRow->addWidget(historyLabel_);
+    historyRow->addWidget(back);
+    historyRow->addWidget(exportButton);
+    layout->addLayout(historyRow);
+    connect(history_, &QSlider::sliderReleased, this, [this] { replay(history_->value()); });
+    connect(history_, &QSlider::valueChanged, this, [this](int v) {
+        if (!history_->isSliderDown()) replay(v);
+    });
+    connect(back, &QPushButton::clicked, this, &ClassroomPanel::leaveReplay);
+    connect(exportButton, &QPushButton::clicked, this, [this] {
+        QString why;
+        const QString x3d = exportX3d(&why);
+        if (x3d.isEmpty()) {
+            say(why);
+            return;
+        }
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export the class's scene"),
+            tr("class-version-%1.x3d").arg(replaying_ ? replayVersion_ : client_->version()),
+            tr("X3D (*.x3d)"));
+        if (path.isEmpty()) return;
+        QSaveFile f(path);
+        if (!f.open(QIODevice::WriteOnly) || f.write(x3d.toUtf8()) < 0 || !f.commit())
+            say(tr("could not write %1: %2").arg(path, f.errorString()));
+        else
+            say(tr("saved %1").arg(path));
+    });
     chat_->setWordWrap(true);
     layout->addWidget(chat_, 2);
     say_->setPlaceholderText(tr("chat, or a command: /help"));
@@ -165,7 +207,17 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
     connect(c, &ClassroomClient::sceneChanged, this,
             [this](qint64 version, const QString& author, const QString& scene) {
                 Q_EMIT sharedSceneChanged(scene, version, author);
+                const QSignalBlocker quiet(history_);
+                history_->setRange(1, int(std::max<qint64>(version, 1)));
+                if (!replaying_) history_->setValue(int(version));
                 refreshState();
+            });
+    connect(c, &ClassroomClient::versionReceived, this,
+            [this](qint64 version, const QString& author, const QString& scene) {
+                if (!replaying_ || version != replayVersion_) return;
+                replayText_ = scene;
+                historyLabel_->setText(tr("v%1, %2").arg(version).arg(author));
+                Q_EMIT historyShown(scene, version);
             });
     connect(c, &ClassroomClient::chatReceived, this,
             [this](const QString& from, const QString& text) {
@@ -287,6 +339,43 @@ bool ClassroomPanel::useTool(Tool tool) {
     }
     sendChat(command);
     return true;
+}
+
+void ClassroomPanel::replay(qint64 version) {
+    if (client_->state() != ClassroomClient::State::Joined) return;
+    if (version >= client_->version()) {
+        leaveReplay();
+        return;
+    }
+    replaying_ = true;
+    replayVersion_ = version;
+    historyLabel_->setText(tr("v%1…").arg(version));
+    client_->requestVersion(version);
+}
+
+void ClassroomPanel::leaveReplay() {
+    if (!replaying_) return;
+    replaying_ = false;
+    replayText_.clear();
+    historyLabel_->clear();
+    const QSignalBlocker quiet(history_);
+    history_->setValue(history_->maximum());
+    Q_EMIT historyShown({}, client_->version());
+}
+
+QString ClassroomPanel::exportX3d(QString* why) const {
+    const QString text = replaying_ && !replayText_.isEmpty() ? replayText_ : client_->scene();
+    if (text.isEmpty()) {
+        if (why) *why = tr("join a class first: there is no class scene to export");
+        return {};
+    }
+    // The function description as X3D XML, whatever encoding the class uses.
+    const scene::ReadResult r = scene::readSceneBytes(text.toStdString(), "class.x3d");
+    if (!r.ok()) {
+        if (why) *why = tr("the class scene could not be read back");
+        return {};
+    }
+    return QString::fromStdString(scene::writeXml(*r.scene));
 }
 
 void ClassroomPanel::say(const QString& line) {

@@ -63,8 +63,19 @@ class ClassroomPanel : public Panel {
     QLabel* pendingStatus() const { return pending_; }
     QPushButton* applyPendingButton() const { return applyPending_; }
     QLineEdit* urlField() const { return url_; }
+    QSlider* history() const { return history_; }
+    // The class's scene at `version`, asked of the server; comes back as
+    // historyShown (the window shows it until the replay is left).
+    void replay(qint64 version);
+    void leaveReplay();
+    bool replaying() const { return replaying_; }
+    // The function description of the version shown in the replay (else the
+    // newest) as X3D XML; empty with `why` when there is nothing to export.
+    QString exportX3d(QString* why = nullptr) const;
 
   Q_SIGNALS:
+    // A version of the history to show (the text), or the end of the replay (empty).
+    void historyShown(const QString& text, qint64 version);
     // A new shared scene (from anyone, the student's own applied edit too):
     // the window shows it in the editor and the view.
     void sharedSceneChanged(const QString& text, qint64 version, const QString& author);
@@ -81,7 +92,11 @@ class ClassroomPanel : public Panel {
     double shapeSize_ = 1;
     QLineEdit *url_, *code_, *name_, *key_, *say_;
     QComboBox *role_, *tool_, *paint_;
-    QSlider* toolSize_;
+    QSlider *toolSize_, *history_;
+    QLabel* historyLabel_;
+    bool replaying_ = false;
+    qint64 replayVersion_ = 0;
+    QString replayText_;
     QPushButton *join_, *send_, *release_, *applyPending_, *discardPending_, *useTool_;
     QLabel *state_, *lock_, *pending_;
     QListWidget *members_, *chat_;

@@ -293,6 +293,21 @@ void MainWindow::buildDocks() {
     // is what the student sends.
     classroom_->setTextSource([this] { return editor_->toPlainText(); });
     connect(classroom_, &ClassroomPanel::sharedSceneChanged, this, &MainWindow::showSharedScene);
+    // Replaying the class's history: the view shows a past version; the
+    // editor keeps the present (and anything unsent).
+    connect(classroom_, &ClassroomPanel::historyShown, this,
+            [this](const QString& text, qint64 version) {
+                if (text.isEmpty()) { // back to now: the editor's scene again
+                    if (const auto now = parser_->lastGoodScene()) sceneChanged(now);
+                    statusBar()->showMessage(tr("the class scene as it is now"), 3000);
+                    return;
+                }
+                scene::ReadResult r = scene::readSceneBytes(text.toStdString(), "class.x3d");
+                if (!r.ok()) return;
+                sceneChanged(std::shared_ptr<const scene::Scene>(std::move(r.scene)));
+                statusBar()->showMessage(
+                    tr("replaying the class: version %1 (press Now to come back)").arg(version));
+            });
     // Friction or density as colour: each frame coloured on the panel's worker.
     connect(haptics_, &HapticsPanel::showOnSurfaceChanged, this, [this] {
         if (!shownFrame_) return;

@@ -11,6 +11,7 @@
 
 #include "class_session.h"
 #include "client.h"
+#include "edit_log.h"
 #include "server.h"
 #include "starter_scene.h"
 
@@ -19,7 +20,9 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <memory>
@@ -55,7 +58,10 @@ class ClassroomWindowTest : public QObject {
         classroom::ClassConfig config;
         config.classCode = "LAB1";
         config.initialScene = classroom::starterScene();
-        classroom::ClassSession session(config, clock, nullptr);
+        QTemporaryDir data; // the class's log: its history can be replayed
+        QVERIFY(data.isValid());
+        classroom::EditLog log(data.path().toStdString());
+        classroom::ClassSession session(config, clock, &log);
         classroom::ClassroomServer server(session);
         QVERIFY(server.listen(QHostAddress::LocalHost, 0));
         const QString url = QStringLiteral("ws://127.0.0.1:%1").arg(server.port());
@@ -123,6 +129,32 @@ class ClassroomWindowTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(ada.editor()->toPlainText() != benText, 10000);
         QVERIFY(ada.editor()->toPlainText().contains(QStringLiteral("sphere(0, 0, 1, ")));
         QTRY_COMPARE_WITH_TIMEOUT(ben.editor()->toPlainText(), ada.editor()->toPlainText(), 10000);
+        // The history: Ada replays version 1 (the starter) in her view, then
+        // comes back; the version shown exports as X3D.
+        const qint64 now = adaPanel->client()->version();
+        QVERIFY(now >= 4);
+        QSignalSpy shown(adaPanel, &suite::ClassroomPanel::historyShown);
+        adaPanel->replay(1);
+        QTRY_COMPARE_WITH_TIMEOUT(shown.count(), 1, 10000);
+        const QString past = shown.first().at(0).toString();
+        QCOMPARE(shown.first().at(1).toLongLong(), qint64(1));
+        QVERIFY2(past.contains(QStringLiteral("CLASS")) &&
+                     !past.contains(QStringLiteral("was here")),
+                 qPrintable(past));
+        QTRY_VERIFY_WITH_TIMEOUT(ada.view()->meshes() && ada.view()->meshes()->source &&
+                                     ada.view()->meshes()->source->files[0].text ==
+                                         past.toStdString(),
+                                 20000);
+        QString why;
+        const QString x3d = adaPanel->exportX3d(&why);
+        QVERIFY2(x3d.contains(QStringLiteral("<X3D")) && !x3d.contains(QStringLiteral("Ada was")),
+                 qPrintable(why));
+        QCOMPARE(ada.editor()->toPlainText(), ben.editor()->toPlainText()); // the present stays
+        adaPanel->leaveReplay();
+        QTRY_VERIFY_WITH_TIMEOUT(ada.view()->meshes()->source->files[0].text ==
+                                     ada.editor()->toPlainText().toStdString(),
+                                 20000);
+        QVERIFY(adaPanel->exportX3d().contains(QStringLiteral("Ben was here")));
         // /help is answered to Ben only, never broadcast as chat.
         benPanel->sendChat(QStringLiteral("/help"));
         QTRY_VERIFY_WITH_TIMEOUT(chatHas(benPanel, QStringLiteral("/remove")), 10000);
