@@ -624,6 +624,10 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
 
 void MainWindow::joinClass(const QString& url, const QString& classCode, const QString& name,
                            const QString& role, const QString& key) {
+    // The class's scene will take the editor: unsaved work is saved or kept first.
+    if (!maybeKeepChanges()) return;
+    lastSharedScene_.clear();
+    classroom_->show();
     classroom_->raise();
     classroom_->join(url, classCode, name, role, key);
 }
@@ -642,7 +646,11 @@ void MainWindow::showSharedScene(const QString& text, qint64 version, const QStr
                 .arg(author));
         return;
     }
+    const bool first = lastSharedScene_.isEmpty();
     lastSharedScene_ = text;
+    // The class's scene is nobody's file: Save asks where, never over the
+    // file that was open before joining.
+    if (first) setPath(QString());
     if (mine != text) {
         editor_->setPlainText(text);
         editor_->document()->setModified(false);

@@ -85,6 +85,7 @@ class ClassroomWindowTest : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(ada.editor()->toPlainText(), starter, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(ben.editor()->toPlainText(), starter, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(benPanel->members()->count(), 2, 10000);
+        QVERIFY(ada.windowTitle().contains(QStringLiteral("untitled"))); // not a file of hers
 
         // Ada edits: a smaller sphere. Her edit takes the lock and reaches Ben.
         QString adaText = starter;
