@@ -26,10 +26,13 @@ namespace fl::classroom {
 using ConnectionId = std::uint64_t;
 
 // One frame for one connection; `close`: close it after sending.
+// `wholeScene`: a scene frame, which the next one makes worthless (a
+// connection that reads slowly may skip to the newest).
 struct Delivery {
     ConnectionId to = 0;
     QString frame;
     bool close = false;
+    bool wholeScene = false;
 };
 
 struct ClassConfig {
@@ -107,9 +110,14 @@ class ClassSession {
     void refuse(const Member& to, RefusalReason reason, std::string message, Out& out,
                 const std::string& command = {}, QString extraJson = {});
     void error(ConnectionId to, ErrorCode code, std::string message, Out& out, bool close = false);
-    void broadcast(const QString& frame, Out& out) const;
+    // The rate limit: one token of the member's bucket.
+    bool allowed(Member& m, Millis now);
+    void broadcast(const QString& frame, Out& out, bool wholeScene = false) const;
     void announceLockIfChanged(Out& out);
-    void announcePresence(Out& out) const;
+    // Who is here, to everyone: at once when forced or after a quiet second,
+    // else at the next tick — a join storm costs one list per second, not
+    // one per join (each to everyone: quadratic).
+    void announcePresence(Out& out, bool force = false);
     Member* memberOf(ConnectionId id);
     const std::string& shownName(const Member& m) const;
     QString lockJson();
@@ -124,6 +132,8 @@ class ClassSession {
     bool anonymous_ = false;
     SceneLock lock_;
     std::optional<MemberId> announcedHolder_;
+    std::optional<Millis> lastPresence_;
+    bool presenceDue_ = false;
     FailedJoinThrottle failedJoins_;
     std::map<ConnectionId, Connection> connections_;
     std::map<MemberId, Member> members_;

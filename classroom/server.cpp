@@ -85,7 +85,7 @@ void ClassroomServer::deliver(const std::vector<Delivery>& deliveries) {
     for (const Delivery& d : deliveries) {
         const auto it = sockets_.find(d.to);
         if (it == sockets_.end() || it->second.closing) continue;
-        send(d.to, it->second, d.frame);
+        send(it->second, d.frame, d.wholeScene);
         if (d.close) {
             it->second.closing = true;
             it->second.socket->close(QWebSocketProtocol::CloseCodePolicyViolated);
@@ -93,16 +93,15 @@ void ClassroomServer::deliver(const std::vector<Delivery>& deliveries) {
     }
 }
 
-void ClassroomServer::send(ConnectionId id, Peer& peer, const QString& frame) {
+void ClassroomServer::send(Peer& peer, const QString& frame, bool wholeScene) {
     const qint64 unsent = peer.socket->bytesToWrite();
     if (unsent > options_.closeAboveBytes) {
         peer.closing = true;
         peer.socket->close(QWebSocketProtocol::CloseCodeTooMuchData, "reading too slowly");
         return;
     }
-    const bool isScene = frame.startsWith(QLatin1String(R"({"type":"scene")"));
     if (unsent > options_.highWaterBytes || !peer.heldScene.isEmpty() || !peer.held.empty()) {
-        if (isScene) {
+        if (wholeScene) {
             peer.heldScene = frame; // only the newest whole scene matters
         } else if (peer.held.size() < kMaxHeldFrames) {
             peer.held.push_back(frame);
@@ -110,7 +109,6 @@ void ClassroomServer::send(ConnectionId id, Peer& peer, const QString& frame) {
             peer.closing = true;
             peer.socket->close(QWebSocketProtocol::CloseCodeTooMuchData, "reading too slowly");
         }
-        (void)id;
         return;
     }
     peer.socket->sendTextMessage(frame);

@@ -47,7 +47,7 @@ class ClassroomServer : public QObject {
     };
     void accept();
     void deliver(const std::vector<Delivery>& deliveries);
-    void send(ConnectionId id, Peer& peer, const QString& frame);
+    void send(Peer& peer, const QString& frame, bool wholeScene);
     void drain(ConnectionId id);
     void dropped(ConnectionId id);
 

@@ -130,6 +130,7 @@ const std::vector<Command>& commands() {
         {hapticsRecordSpec, hapticsRecordCommand},
         {hapticsReplaySpec, hapticsReplayCommand},
         {serveSpec, serveCommand},
+        {benchClassroomSpec, benchClassroomCommand},
     };
     return all;
 }

@@ -30,6 +30,7 @@ const CommandSpec& hapticsDevicesSpec();
 const CommandSpec& hapticsRecordSpec();
 const CommandSpec& hapticsReplaySpec();
 const CommandSpec& serveSpec();
+const CommandSpec& benchClassroomSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -51,6 +52,7 @@ int hapticsDevicesCommand(const Args& args); // `haptics devices`
 int hapticsRecordCommand(const Args& args);  // `haptics record`
 int hapticsReplayCommand(const Args& args);  // `haptics replay`
 int serveCommand(const Args& args);          // `serve`
+int benchClassroomCommand(const Args& args); // `bench classroom`
 
 struct Command {
     const CommandSpec& (*spec)();
