@@ -199,49 +199,52 @@ void AccuracyPanel::measure() {
     cancel_->setEnabled(true);
     status_->setText(tr("measuring…"));
     running_ = true;
+    // What the worker says, on the interface thread (nothing once the panel is gone).
+    auto progress = [this, alive = alive_](std::vector<bench::AccuracyRow> rows, int done) {
+        QMetaObject::invokeMethod(
+            this,
+            [this, rows = std::move(rows), done, alive] {
+                if (!*alive) return;
+                chart_->setRows(rows);
+                progress_->setValue(done);
+            },
+            Qt::QueuedConnection);
+    };
+    auto finish = [this, alive = alive_](std::vector<bench::AccuracyRow> rows, QString summary) {
+        QMetaObject::invokeMethod(
+            this,
+            [this, rows = std::move(rows), summary, alive] {
+                if (!*alive) return;
+                running_ = false;
+                measure_->setEnabled(true);
+                cancel_->setEnabled(false);
+                chart_->setRows(rows);
+                status_->setText(summary);
+                Q_EMIT measured();
+            },
+            Qt::QueuedConnection);
+    };
     if (cost_ == Cost::Touch) {
         // Polygons past 128 take long to build and say nothing new to a hand.
         std::vector<double> resolutions;
         for (double r : resolutions_)
             if (r <= 128) resolutions.push_back(r);
         progress_->setRange(0, int(resolutions.size()) + 1);
-        worker_ = std::thread([this, field, resolutions, alive = alive_] {
+        worker_ = std::thread([this, field, resolutions, progress, finish] {
             std::vector<bench::AccuracyRow> rows;
-            int done = 0;
             const auto path = bench::pathUnderSurface(*field);
             bench::touchSweep(*field, path, resolutions, 1, &stop_, [&](const bench::TickCost& t) {
                 rows.push_back(touchRow(t));
-                ++done;
-                QMetaObject::invokeMethod(
-                    this,
-                    [this, rows, done, alive] {
-                        if (!*alive) return;
-                        chart_->setRows(rows);
-                        progress_->setValue(done);
-                    },
-                    Qt::QueuedConnection);
+                progress(rows, int(rows.size()));
             });
-            const bool stopped = stop_;
-            const bool felt = !path.empty();
-            QMetaObject::invokeMethod(
-                this,
-                [this, rows, stopped, felt, alive] {
-                    if (!*alive) return;
-                    running_ = false;
-                    measure_->setEnabled(true);
-                    cancel_->setEnabled(false);
-                    chart_->setRows(rows);
-                    status_->setText(stopped ? tr("cancelled")
-                                     : !felt ? tr("no surface to touch was found in the box")
-                                             : touchSummary(rows));
-                    Q_EMIT measured();
-                },
-                Qt::QueuedConnection);
+            finish(rows, stop_          ? tr("cancelled")
+                         : path.empty() ? tr("no surface to touch was found in the box")
+                                        : touchSummary(rows));
         });
         return;
     }
     progress_->setRange(0, int(resolutions_.size()));
-    worker_ = std::thread([this, field, resolutions = resolutions_, alive = alive_] {
+    worker_ = std::thread([this, field, resolutions = resolutions_, progress, finish] {
         std::vector<bench::AccuracyRow> rows;
         bench::SweepOptions o;
         o.threads = 1; // the interface keeps a core
@@ -250,30 +253,10 @@ void AccuracyPanel::measure() {
             if (stop_) break;
             const auto more = bench::runAccuracySweep(*field, {r}, o);
             rows.insert(rows.end(), more.begin(), more.end());
-            ++done;
-            QMetaObject::invokeMethod(
-                this,
-                [this, rows, done, alive] {
-                    if (!*alive) return;
-                    chart_->setRows(rows);
-                    progress_->setValue(done);
-                },
-                Qt::QueuedConnection);
+            progress(rows, ++done);
         }
-        const bool stopped = stop_;
-        QMetaObject::invokeMethod(
-            this,
-            [this, rows, stopped, alive] {
-                if (!*alive) return;
-                running_ = false;
-                measure_->setEnabled(true);
-                cancel_->setEnabled(false);
-                chart_->setRows(rows);
-                status_->setText(stopped ? tr("cancelled")
-                                         : QString::fromStdString(bench::accuracySummary(rows)));
-                Q_EMIT measured();
-            },
-            Qt::QueuedConnection);
+        finish(rows,
+               stop_ ? tr("cancelled") : QString::fromStdString(bench::accuracySummary(rows)));
     });
 }
 
