@@ -69,6 +69,14 @@ double notBackground(const QImage& image) {
     return double(n) / double(image.width() * image.height());
 }
 
+// The window on screen at its test size, asking nothing (prompts off).
+bool shown(suite::MainWindow& w) {
+    w.setPromptsEnabled(false);
+    w.resize(1280, 800);
+    w.show();
+    return QTest::qWaitForWindowExposed(&w);
+}
+
 // Waits until the parse and the meshing for the current text are done.
 bool settle(suite::MainWindow& w, int timeoutMs = 30000) {
     QElapsedTimer clock;
@@ -96,10 +104,7 @@ class WindowTest : public QObject {
 
     void everyExampleOpensAndDraws() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.examples()->count() >= 8);
         for (int i = 0; i < w.examples()->count(); ++i) {
             const QString path = w.examples()->item(i)->data(Qt::UserRole).toString();
@@ -149,10 +154,7 @@ class WindowTest : public QObject {
 
     void aFormulaErrorIsUnderlinedListedAndFixing_itChangesTheShape() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         w.newScene();
         QVERIFY(settle(w));
         const std::size_t before = w.view()->triangleCount();
@@ -366,10 +368,7 @@ class WindowTest : public QObject {
 
     void approachingTheWatermelonRefinesItInAFewRemeshes() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("watermelon.x3d")));
         QVERIFY(settle(w));
         auto resolution = [&] {
@@ -395,10 +394,7 @@ class WindowTest : public QObject {
 
     void displayModesDomainBoxesCutsAndPicking() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         w.newScene(); // a unit ball at the origin, seen from z = 4
         QVERIFY(settle(w));
         const QImage shaded = w.view()->grabFrame();
@@ -523,10 +519,7 @@ class WindowTest : public QObject {
         // The implicit gallery has several shapes: resting the cursor on one
         // names it in the status bar; over empty space, the largest again.
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("implicit_gallery.x3d")));
         QVERIFY(settle(w));
         QTRY_VERIFY_WITH_TIMEOUT(w.screenErrorText().contains(QStringLiteral("max error")), 20000);
@@ -563,10 +556,7 @@ class WindowTest : public QObject {
 
     void theAccuracyPanelsChoiceOutlivesTheLevelOfDetailAndIsWritten() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("watermelon.x3d")));
         QVERIFY(settle(w));
         auto shown = [&] {
@@ -605,10 +595,7 @@ class WindowTest : public QObject {
 
     void theMouseFeelsTheWatermelonAndTheViewDrawsTheForce() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("watermelon.x3d")));
         QVERIFY(settle(w));
         suite::HapticsPanel* haptics = w.hapticsPanel();
@@ -642,10 +629,7 @@ class WindowTest : public QObject {
     void theFansCarpetShowsItsFrictionAsColour() {
         // The room lends friction 0.8 below y = 0.05 (the carpet), 0.3 above.
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("fan.x3d")));
         QVERIFY(settle(w));
         suite::HapticsPanel* haptics = w.hapticsPanel();
