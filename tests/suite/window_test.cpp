@@ -221,7 +221,7 @@ class WindowTest : public QObject {
         for (suite::Panel* p : w.panels())
             names << p->objectName();
         QCOMPARE(names, (QStringList{"editor", "issues", "tree", "examples", "parameters",
-                                     "assignment", "accuracy", "haptics"}));
+                                     "assignment", "accuracy", "haptics", "classroom"}));
         auto* counting = w.addPanel(new Counting, true);
         QCOMPARE(w.dockWidgetArea(counting), Qt::RightDockWidgetArea);
         QVERIFY(!w.tabifiedDockWidgets(counting).isEmpty());
