@@ -32,6 +32,12 @@ bool FailedJoinThrottle::blocked(const std::string& address, Millis now) {
 }
 
 void FailedJoinThrottle::failed(const std::string& address, Millis now) {
+    // Bound memory over addresses too: forget those with nothing left in the window.
+    if (failures_.size() >= kMaxAddresses)
+        for (auto it = failures_.begin(); it != failures_.end();) {
+            forgetOld(it->second, now);
+            it = it->second.empty() ? failures_.erase(it) : std::next(it);
+        }
     auto& times = failures_[address];
     forgetOld(times, now);
     times.push_back(now);

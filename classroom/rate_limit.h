@@ -30,6 +30,7 @@ class FailedJoinThrottle {
     void failed(const std::string& address, Millis now);
 
   private:
+    static constexpr std::size_t kMaxAddresses = 10'000;
     void forgetOld(std::deque<Millis>& times, Millis now) const;
     int max_;
     Millis window_;

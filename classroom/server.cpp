@@ -42,12 +42,16 @@ QHostAddress ClassroomServer::address() const {
 void ClassroomServer::close() {
     tick_.stop();
     server_->close();
-    for (auto& [id, peer] : sockets_) {
+    std::map<ConnectionId, Peer> peers;
+    peers.swap(sockets_);
+    for (auto& [id, peer] : peers) {
         peer.socket->disconnect(this);
         peer.socket->close(QWebSocketProtocol::CloseCodeGoingAway, "the class server stopped");
         peer.socket->deleteLater();
+        // The class outlives this server: its members are disconnected (a
+        // lock holder keeps the grace to come back through another one).
+        session_.disconnected(id);
     }
-    sockets_.clear();
 }
 
 void ClassroomServer::accept() {
