@@ -158,7 +158,7 @@ ClientBody readBody(MessageType type, FieldReader& r, const ClassroomLimits& lim
         return m;
     }
     case MessageType::Chat:
-        return ChatMessage{r.text("text", limits.maxChatChars, true, false)};
+        return ChatMessage{r.text("text", limits.maxChatChars, true, true)};
     case MessageType::Freeze:
         return FreezeMessage{r.boolean("frozen", true)};
     case MessageType::Push:

@@ -130,8 +130,13 @@ int serveCommand(const Args& args) {
         if (!log || !log->latest()) {
             const auto check = classroom::checkClassroomScene(config.initialScene);
             if (!check.ok) {
-                for (const auto& d : check.diagnostics)
+                const std::string shown = a->positional("SCENE").empty()
+                                              ? std::string("the starter scene")
+                                              : a->positional("SCENE");
+                for (auto d : check.diagnostics) {
+                    d.file = shown; // the user's file name, not the protocol's "scene"
                     std::cerr << scene::formatSceneDiagnostic(d) << "\n";
+                }
                 std::cerr << "functionlab serve: the scene cannot be a class scene\n";
                 return kExitDiagnostic;
             }

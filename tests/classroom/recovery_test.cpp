@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace fl::classroom {
 namespace {
@@ -108,6 +109,33 @@ TEST(ClassroomRecovery, NothingAppliedIsLostToSigkill) {
     EXPECT_TRUE(
         QString::fromUtf8(again.process().readAllStandardError()).contains("stopped at version 5"));
     std::filesystem::remove_all(data);
+}
+
+TEST(ClassroomServe, ASceneWithAnInlineIsRefusedWithItsLine) {
+    const auto file = std::filesystem::temp_directory_path() /
+                      ("functionlab-serve-inline-" + std::to_string(::getpid()) + ".x3d");
+    {
+        std::ofstream out(file);
+        out << "<X3D profile='Immersive' version='3.3'><Scene>\n"
+               "<Inline url='\"elsewhere.x3d\"'/>\n</Scene></X3D>\n";
+    }
+    QProcess serve;
+    serve.start(FUNCTIONLAB_EXECUTABLE,
+                {"serve", QString::fromStdString(file.string()), "--port", "0", "--class", "C"});
+    ASSERT_TRUE(serve.waitForFinished(kWaitMs));
+    EXPECT_EQ(serve.exitCode(), 1);
+    const QString err = QString::fromUtf8(serve.readAllStandardError());
+    EXPECT_TRUE(err.contains(QString::fromStdString(file.string()) + ":2:")) << err.toStdString();
+    EXPECT_TRUE(err.contains("Inline")) << err.toStdString();
+    std::filesystem::remove(file);
+}
+
+TEST(ClassroomServe, PortAndClassAreRequired) {
+    QProcess serve;
+    serve.start(FUNCTIONLAB_EXECUTABLE, {"serve", "--port", "0"});
+    ASSERT_TRUE(serve.waitForFinished(kWaitMs));
+    EXPECT_EQ(serve.exitCode(), 2);
+    EXPECT_TRUE(QString::fromUtf8(serve.readAllStandardError()).contains("--class"));
 }
 
 } // namespace
