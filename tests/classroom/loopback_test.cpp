@@ -153,6 +153,20 @@ TEST_F(LoopbackTest, ChatAndChatCommands) {
     EXPECT_EQ(chat.count(), 1); // commands never travel as chat
 }
 
+TEST_F(LoopbackTest, ABurstOfChatIsRefusedAsRate) {
+    ClassroomClient& ana = joined("Ana");
+    ClassroomClient& bo = joined("Bo");
+    QSignalSpy refusals(&ana, &ClassroomClient::refused);
+    QSignalSpy chat(&bo, &ClassroomClient::chatReceived);
+    for (int i = 0; i < 30; ++i)
+        ana.sendChat(QStringLiteral("message %1").arg(i));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return refusals.count() > 0; }, kWaitMs));
+    EXPECT_EQ(refusals.at(0).at(0).value<ClassroomClient::Refusal>().reason, RefusalReason::Rate);
+    QTest::qWait(200);
+    EXPECT_LT(chat.count(), 30);
+    EXPECT_GE(chat.count(), 10);
+}
+
 TEST_F(LoopbackTest, AnOversizedMessageClosesOnlyItsConnection) {
     ClassroomClient& ana = joined("Ana");
     joined("Bo");
