@@ -282,6 +282,19 @@ void MainWindow::buildDocks() {
             view_->setTouch(std::nullopt);
             return;
         }
+        // With a device (or the mouse's stand-in) touching a function shape,
+        // the classroom tools go where the proxy is, in that shape's coordinates.
+        if (m->contact)
+            if (const auto meshes = view_->meshes())
+                for (const mesh::ShapeMesh& s : meshes->shapes) {
+                    if (!s.field) continue;
+                    const auto back = field::Affine::fromMatrix(s.placement).inverse();
+                    if (!back) continue;
+                    const field::Vec3 local = back->point(m->proxy);
+                    if (!s.field->box.contains(local)) continue;
+                    classroom_->setToolPoint(local, s.field->box.diagonal());
+                    break;
+                }
         auto q = [](const field::Vec3& v) {
             return QVector3D(float(v[0]), float(v[1]), float(v[2]));
         };

@@ -1,6 +1,7 @@
 #include "accuracy_chart.h"
 #include "accuracy_panel.h"
 #include "assignment_panel.h"
+#include "classroom_panel.h"
 #include "code_editor.h"
 #include "haptics_panel.h"
 #include "live_parser.h"
@@ -617,6 +618,11 @@ class WindowTest : public QObject {
                                 .arg(touch.force.y())
                                 .arg(touch.force.z())));
         save(screenshot(w), "window-watermelon-feel");
+        // Where the proxy touches, the classroom's tools would go.
+        QTRY_VERIFY_WITH_TIMEOUT(w.classroomPanel()
+                                     ->toolCommand(suite::ClassroomPanel::Tool::Remove)
+                                     .startsWith(QStringLiteral("/remove sphere(")),
+                                 5000);
         haptics->feelButton()->click();
         QTRY_VERIFY_WITH_TIMEOUT(!w.view()->touch().has_value(), 5000);
         // A scene with nothing tangible: the loop cannot be started.
