@@ -90,10 +90,12 @@ void ClassroomServer::deliver(const std::vector<Delivery>& deliveries) {
         const auto it = sockets_.find(d.to);
         if (it == sockets_.end() || it->second.closing) continue;
         send(it->second, d.frame, d.wholeScene);
-        if (d.close) {
-            it->second.closing = true;
-            it->second.socket->close(QWebSocketProtocol::CloseCodePolicyViolated);
-        }
+        if (!d.close) continue;
+        // Look again: closing a socket may have dropped it from the map.
+        const auto again = sockets_.find(d.to);
+        if (again == sockets_.end() || again->second.closing) continue;
+        again->second.closing = true;
+        again->second.socket->close(QWebSocketProtocol::CloseCodePolicyViolated);
     }
 }
 
