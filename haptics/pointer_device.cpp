@@ -4,11 +4,6 @@ namespace fl::haptics {
 
 PointerDevice::PointerDevice(DeviceLimits limits) : limits_(limits) {}
 
-bool PointerDevice::placed() const {
-    std::lock_guard lock(mutex_);
-    return placed_;
-}
-
 void PointerDevice::moveTo(const field::Vec3& position, std::optional<field::Vec3> approach) {
     if (!field::isFinite(position)) return;
     std::lock_guard lock(mutex_);

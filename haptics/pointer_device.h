@@ -20,7 +20,6 @@ class PointerDevice : public HapticDevice {
     // `approach` (a point outside the surface): contact is found by the tool
     // crossing the surface, so a tool that appeared inside would be inside.
     void moveTo(const field::Vec3& position, std::optional<field::Vec3> approach = std::nullopt);
-    bool placed() const;
     // The force last commanded (what the window draws as an arrow).
     field::Vec3 lastForce() const;
 
