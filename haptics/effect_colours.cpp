@@ -28,11 +28,14 @@ std::shared_ptr<const mesh::SceneMeshes> colouredByEffect(const mesh::SceneMeshe
         const EffectField* e = t->effect(kind);
         if (!e) continue;
         formula::ScalarEvaluator evaluate(e->tape);
-        // A borrowed effect reads the scene's coordinates (its effectFrame is
-        // that shape's placement); this mesh has its own placement.
+        // A borrowed effect reads the lender's coordinates: the snapshot's
+        // frame is for its own mesh, and a USE'd shape has other placements,
+        // so the lender's frame is taken back out and this mesh's put in.
         const bool borrowed = t->triangles && !t->field;
-        const field::Affine frameOf =
-            borrowed ? field::Affine::fromMatrix(s.placement) : t->effectFrame;
+        field::Affine frameOf = t->effectFrame;
+        if (borrowed)
+            if (const auto back = t->toScene.inverse())
+                frameOf = t->effectFrame * *back * field::Affine::fromMatrix(s.placement);
         const double time = e->timing.at(tangible.moment);
         s.mesh.colours.resize(s.mesh.positions.size());
         for (std::size_t i = 0; i < s.mesh.positions.size(); ++i) {

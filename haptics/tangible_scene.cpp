@@ -87,6 +87,13 @@ EffectField effectOf(const scene::Scene& scene, const animation::Animator& clock
     return e;
 }
 
+// Where a lending FShape stands (the meshing walk says), else the scene's frame.
+field::Affine lenderPlacement(const mesh::SceneMeshes& meshes, const scene::Node* lender) {
+    for (const mesh::SceneMeshes::Lender& l : meshes.lenders)
+        if (l.shape == lender) return field::Affine::fromMatrix(l.placement);
+    return {};
+}
+
 bool isSurfaceKind(scene::TangibleKind k) {
     return k == scene::TangibleKind::Friction || k == scene::TangibleKind::Tension;
 }
@@ -97,7 +104,8 @@ namespace {
 
 // A standard shape felt through the physics its group's FShape lends it.
 std::optional<TangibleShape> borrowing(const scene::Scene& scene, const animation::Animator& clock,
-                                       const mesh::ShapeMesh& s, const scene::PlanEntry& lender) {
+                                       const mesh::ShapeMesh& s, const scene::PlanEntry& lender,
+                                       const field::Affine& lenderToScene) {
     const field::Affine toScene = field::Affine::fromMatrix(s.placement);
     const auto toShape = toScene.inverse();
     if (!toShape) return std::nullopt;
@@ -109,9 +117,11 @@ std::optional<TangibleShape> borrowing(const scene::Scene& scene, const animatio
     auto bvh = std::make_shared<const TriangleBvh>(s.mesh);
     shape.container = bvh->bounds();
     shape.triangles = std::move(bvh);
-    // The lender's box, in the scene's coordinates (docs/haptics.md: a group
-    // under a Transform is read as if it had none).
-    shape.effectFrame = toScene;
+    // The lender's box, in the lender's own coordinates (those of its group):
+    // this shape's point taken there.
+    const auto sceneToLender = lenderToScene.inverse();
+    if (!sceneToLender) return std::nullopt;
+    shape.effectFrame = *sceneToLender * toScene;
     const auto centre = scene::numbersField(*lender.node, "bboxCenter");
     const auto size = scene::numbersField(*lender.node, "bboxSize");
     if (centre.size() == 3 && size.size() == 3 && size[0] > 0 && size[1] > 0 && size[2] > 0)
@@ -119,7 +129,7 @@ std::optional<TangibleShape> borrowing(const scene::Scene& scene, const animatio
             {centre[0] - size[0] / 2, centre[1] - size[1] / 2, centre[2] - size[2] / 2},
             {centre[0] + size[0] / 2, centre[1] + size[1] / 2, centre[2] + size[2] / 2}};
     else
-        shape.geometryBox = field::boundsOf(shape.container, toScene);
+        shape.geometryBox = field::boundsOf(shape.container, shape.effectFrame);
     for (const scene::TangibleEffect& t : lender.tangible)
         if (t.node)
             if (const formula::Tape* tape = scene.definition(*t.node, "definition")) {
@@ -149,7 +159,8 @@ TangibleScene makeTangibleScene(const scene::Scene& scene, const scene::EffectsP
         if (const auto b = lent.find(s.shape); b != lent.end()) {
             if (s.error.empty() && !s.mesh.isPointCloud() && !s.mesh.isLines() &&
                 s.mesh.triangleCount() > 0)
-                if (auto shape = borrowing(scene, clock, s, *b->second)) {
+                if (auto shape = borrowing(scene, clock, s, *b->second,
+                                           lenderPlacement(meshes, b->second->node))) {
                     placed[b->second->node] = true;
                     out.geometryVaries =
                         out.geometryVaries || (b->second->timeVarying & scene::kTransform);

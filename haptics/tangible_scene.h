@@ -43,8 +43,8 @@ struct TangibleShape {
     std::shared_ptr<const TriangleBvh> triangles;
     // Where the effects look: the box their domain boxes are mapped from, in
     // the coordinates `effectFrame` takes the shape's to — the shape's own box
-    // (identity) for a function shape; the lending FShape's box, in the
-    // scene's coordinates, for standard shapes that borrow its physics.
+    // (identity) for a function shape; the lending FShape's bbox, in its own
+    // coordinates (its group's), for standard shapes that borrow its physics.
     field::Box3 geometryBox;
     field::Affine effectFrame;
     field::Affine toScene; // the shape's coordinates to the scene's

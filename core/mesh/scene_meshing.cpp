@@ -274,7 +274,10 @@ class Walker {
 
     void shape(const Node& n, const Affine& m) {
         const Node* geometry = scene::effectiveNode(moment_.node(n, "geometry"));
-        if (!geometry) return; // lends its properties to the shapes grouped with it
+        if (!geometry) { // lends its properties to the shapes grouped with it
+            if (n.type == "FShape") out_.lenders.push_back({&n, m.matrix()});
+            return;
+        }
         if (geometry->type != "FGeometry") {
             standardShape(n, *geometry, m);
             return;

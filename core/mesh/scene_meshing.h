@@ -131,6 +131,14 @@ struct SceneMeshes {
     // viewer's player does): the shapes' node pointers stay valid as long as
     // the meshes are kept, even after the editor has replaced the scene.
     std::shared_ptr<const scene::Scene> source;
+    // FShapes without geometry, which lend their appearance and physics to the
+    // shapes grouped with them, and where each stands: its coordinates to the
+    // scene's (the frame its bboxCenter/bboxSize and components are read in).
+    struct Lender {
+        const scene::Node* shape = nullptr;
+        Matrix4 placement = kIdentity4;
+    };
+    std::vector<Lender> lenders;
 };
 
 SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options);

@@ -81,3 +81,26 @@ TEST(TangibleScene, TheSharksTailIsTangible) {
     const TangibleScene t = makeTangibleScene(*scene, 0);
     EXPECT_FALSE(t.empty());
 }
+
+TEST(TangibleScene, BorrowedPhysicsIsReadInTheLendersOwnCoordinates) {
+    // The group stands at x = 10; its friction is x in its own coordinates.
+    auto r = scene::readSceneBytes(R"(#X3D V3.3 utf8
+PROFILE Immersive
+Transform { translation 10 0 0 children [
+  Shape { geometry Box { size 2 2 2 } }
+  FShape { bboxCenter 0 0 0 bboxSize 4 4 4 physics FPhysics { surface FSurface {
+    friction FFriction { definition "x" domainMin -2 -2 -2 domainMax 2 2 2 } } } }
+] }
+)",
+                                   "group.x3dv");
+    ASSERT_TRUE(r.ok());
+    ProbeOptions o;
+    // Onto the box's top at the group's x = 0.5, 0.1 mm deep, then along +x.
+    o.path = {{10.5, 1.5, 0}, {10.5, 0.9999, 0}, {10.6, 0.9999, 0}};
+    const auto run = runProbe(*r.scene, o);
+    ASSERT_TRUE(run);
+    const ProbeTick& end = run->ticks.back();
+    ASSERT_EQ(end.contact, ContactKind::Surface);
+    // The cone: friction about 0.6 at the proxy (x = 0.6 in the group), 0.1 mm deep.
+    EXPECT_NEAR(end.device[0] - end.proxy[0], 0.6 * 0.0001, 1e-5);
+}
