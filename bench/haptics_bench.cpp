@@ -299,8 +299,9 @@ std::string hapticsBenchText(const HapticsBenchResult& r) {
              " " + fmt("%8.2f", t.maxUs) + " " + fmt("%7.0f", double(t.ticks)) + " " +
              fmt("%8.0f", double(t.surfaceTicks)) + " " + fmt("%7.0f", double(t.insideTicks)) +
              "\n";
-    s += "\nFunction against polygon contact, sliding on the watermelon (error: proxy to the\n"
-         "true surface, a fraction of the box diagonal):\n";
+    s += "\nFunction against polygon contact, sliding on the watermelon (error: the function's\n"
+         "row, the proxy's distance from the surface; the others', from the function's proxy,\n"
+         "tick by tick; a fraction of the box diagonal):\n";
     s += "  contact          triangles      p50      p99    p99.9   mean error    max error\n";
     for (const TickCost& t : r.contact)
         s += "  " + t.name + std::string(16 - std::min<std::size_t>(16, t.name.size()), ' ') +
