@@ -107,7 +107,8 @@ HapticsPanel::HapticsPanel(QWidget* parent)
     setWidget(box);
     status_->setText(tr("stopped"));
     connect(rescan_, &QPushButton::clicked, this, &HapticsPanel::findDevices);
-    findDevices();
+    devices_->addItem(tr("the mouse (no haptic device)"));
+    // USB is looked at when the panel is first shown, not at every start of the window.
     feel_->setEnabled(false);
     connect(feel_, &QPushButton::toggled, this, [this](bool on) { on ? start() : stop(); });
     refresh_.setInterval(33);
@@ -131,7 +132,13 @@ void HapticsPanel::colour(std::shared_ptr<const mesh::SceneMeshes> frame) {
     colourer_.request({std::move(frame), snapshot_, show_->currentData().toInt()});
 }
 
+void HapticsPanel::showEvent(QShowEvent* event) {
+    Panel::showEvent(event);
+    if (!scanned_) findDevices();
+}
+
 void HapticsPanel::findDevices() {
+    scanned_ = true;
     std::vector<std::string> notes;
     found_ = haptics::listDevices(&notes);
     const QSignalBlocker quiet(devices_);

@@ -87,6 +87,9 @@ class HapticsPanel : public Panel {
     // The scene's time (the timeline): shapes that move are snapshotted again.
     void setSceneTime(double seconds);
 
+  protected:
+    void showEvent(QShowEvent* event) override;
+
   Q_SIGNALS:
     void touchChanged(std::optional<fl::suite::TouchMarks> marks);
     void frameColoured(std::shared_ptr<const fl::mesh::SceneMeshes> frame);
@@ -112,6 +115,7 @@ class HapticsPanel : public Panel {
     bool geometryVaries_ = false;
     double seconds_ = 0, snapshotSeconds_ = -1;
     std::vector<haptics::DeviceEntry> found_;
+    bool scanned_ = false;                          // USB looked at (first shown, or Find devices)
     std::unique_ptr<haptics::HapticDevice> device_; // the one the loop runs
     haptics::PointerDevice* pointer_ = nullptr;     // device_, when it is the mouse's
     double maxForce_ = 1;
