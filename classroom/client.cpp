@@ -180,7 +180,7 @@ void ClassroomClient::onMembers(const QJsonArray& list) {
     members_.clear();
     for (const QJsonValue& v : list) {
         const QJsonObject m = v.toObject();
-        members_.push_back({static_cast<qint64>(m["id"].toDouble()), m["name"].toString(),
+        members_.push_back({m["id"].toInteger(), m["name"].toString(),
                             roleNamed(m["role"].toString().toStdString()).value_or(Role::Student),
                             m["connected"].toBool(true)});
     }
@@ -190,8 +190,7 @@ void ClassroomClient::onMembers(const QJsonArray& list) {
 void ClassroomClient::onLock(const QJsonValue& holder) {
     if (holder.isObject()) {
         const QJsonObject h = holder.toObject();
-        lockHolder_ = Member{static_cast<qint64>(h["id"].toDouble()), h["name"].toString(),
-                             Role::Student, true};
+        lockHolder_ = Member{h["id"].toInteger(), h["name"].toString(), Role::Student, true};
     } else {
         lockHolder_.reset();
     }
@@ -202,12 +201,12 @@ void ClassroomClient::onLock(const QJsonValue& holder) {
 void ClassroomClient::onWelcome(const QJsonObject& o) {
     const bool resumed = o["resumed"].toBool();
     token_ = o["token"].toString();
-    memberId_ = static_cast<qint64>(o["id"].toDouble());
+    memberId_ = o["id"].toInteger();
     shownName_ = o["name"].toString();
     frozen_ = o["frozen"].toBool();
     anonymous_ = o["anonymous"].toBool();
     backoffMs_ = options_.initialBackoffMs;
-    const qint64 version = static_cast<qint64>(o["version"].toDouble());
+    const qint64 version = o["version"].toInteger();
     const bool changed = version != version_ || o["scene"].toString() != scene_;
     version_ = version;
     scene_ = o["scene"].toString();
@@ -227,9 +226,9 @@ void ClassroomClient::received(const QString& text) {
     case MessageType::Welcome:
         return onWelcome(o);
     case MessageType::Scene:
-        version_ = static_cast<qint64>(o["version"].toDouble());
+        version_ = o["version"].toInteger();
         scene_ = o["scene"].toString();
-        if (static_cast<qint64>(o["authorId"].toDouble()) == memberId_) lastEdit_.clear();
+        if (o["authorId"].toInteger() == memberId_) lastEdit_.clear();
         emit sceneChanged(version_, o["author"].toString(), scene_);
         return;
     case MessageType::Refused: {
@@ -237,7 +236,7 @@ void ClassroomClient::received(const QString& text) {
         r.reason = refusalReasonNamed(o["reason"].toString().toStdString())
                        .value_or(RefusalReason::Invalid);
         r.message = o["message"].toString();
-        r.version = static_cast<qint64>(o["version"].toDouble());
+        r.version = o["version"].toInteger();
         r.holder = o["holder"].toString();
         r.command = o["command"].toString();
         r.diagnostics = o["diagnostics"].toArray();
@@ -265,10 +264,10 @@ void ClassroomClient::received(const QString& text) {
         frozen_ = o["frozen"].toBool();
         return emit frozenChanged(frozen_);
     case MessageType::Saved:
-        return emit saved(static_cast<qint64>(o["version"].toDouble()), o["label"].toString());
+        return emit saved(o["version"].toInteger(), o["label"].toString());
     case MessageType::Version:
-        return emit versionReceived(static_cast<qint64>(o["version"].toDouble()),
-                                    o["author"].toString(), o["scene"].toString());
+        return emit versionReceived(o["version"].toInteger(), o["author"].toString(),
+                                    o["scene"].toString());
     case MessageType::Error: {
         const ErrorCode code =
             errorCodeNamed(o["code"].toString().toStdString()).value_or(ErrorCode::Malformed);

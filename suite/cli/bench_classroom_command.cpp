@@ -219,8 +219,7 @@ int benchClassroomCommand(const Args& args) {
             // JSON-escaped text cannot hold an unescaped `"type":"...` inside a string.
             if (m.contains(QLatin1String(R"("type":"welcome")"))) ++welcomed;
             if (!phase || !m.contains(QLatin1String(R"("type":"scene")"))) return;
-            const qint64 v = static_cast<qint64>(
-                QJsonDocument::fromJson(m.toUtf8()).object()["version"].toDouble());
+            const qint64 v = QJsonDocument::fromJson(m.toUtf8()).object()["version"].toInteger();
             got[v].push_back(now);
         });
         QObject::connect(raw, qOverload<QAbstractSocket::SocketError>(&QWebSocket::error), raw,
@@ -253,7 +252,7 @@ int benchClassroomCommand(const Args& args) {
         const QJsonObject o = QJsonDocument::fromJson(m.toUtf8()).object();
         const QString type = o["type"].toString();
         if (type == "welcome" || type == "scene")
-            version = std::max(version, static_cast<qint64>(o["version"].toDouble()));
+            version = std::max(version, o["version"].toInteger());
         if (type == "scene" && phase) ++phase->applied;
         if (type == "refused" && phase) ++phase->refused;
         if (type == "scene" || type == "refused") inFlight = false;
