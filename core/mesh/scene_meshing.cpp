@@ -11,6 +11,7 @@
 #include "point_cloud.h"
 #include "scene/field_access.h"
 #include "scene/function_kinds.h"
+#include "scene/node_graph.h"
 #include "scene_standard_geometry.h"
 #include "surface_displacement.h"
 
@@ -47,7 +48,8 @@ class Walker {
 
     void walk(const Node* raw, const Affine& m) {
         const Node* n = scene::effectiveNode(raw);
-        if (!n) return;
+        const scene::WalkPath::Step step(path_, n);
+        if (!n || refused(step)) return;
         // USE makes a DAG; a few dozen lines can make it exponentially large
         // when walked as a tree. Each visit counts; past the budget the rest
         // is left out, with one note.
@@ -570,7 +572,8 @@ class Walker {
                  const std::array<formula::Val, formula::kInputCount>& local,
                  std::vector<Piece>& out) {
         const Node* n = scene::effectiveNode(raw);
-        if (!n) return;
+        const scene::WalkPath::Step step(path_, n);
+        if (!n || refused(step)) return;
         if (n->type == "FShape") {
             const Node* geometry = scene::effectiveNode(moment_.node(*n, "geometry"));
             if (!geometry || geometry->type != "FGeometry" ||
@@ -817,6 +820,19 @@ class Walker {
     std::vector<const Node*> touchSensors_; // of the lowest group the walk is inside that has any
     std::vector<DefinitionText> texts_;     // of the composite being built
     static constexpr std::size_t kMaxVisits = 200000;
+    // The reader refuses scenes deeper than this; one changed by events (a
+    // ROUTE into a children field) may still reach it.
+    bool refused(const scene::WalkPath::Step& step) {
+        if (step.entered()) return false;
+        if (!loopNoted_)
+            out_.notes.push_back("a node contains itself, or nodes nest more than " +
+                                 std::to_string(scene::kMaxWalkDepth) +
+                                 " deep; the walk stops there and what is below is not meshed");
+        loopNoted_ = true;
+        return true;
+    }
+    scene::WalkPath path_;
+    bool loopNoted_ = false;
     std::size_t visits_ = 0;
     bool overBudget_ = false;
 };

@@ -190,13 +190,12 @@ Node* ClassicReader::node(std::string_view defName, FilePos defPos) {
     if (type.text == "NULL" || type.text == "USE" || type.text == "DEF" || type.text == "PROTO" ||
         type.text == "ROUTE")
         b_.fail(type.pos, "expected a node type, found '" + std::string(type.text) + "'");
-    b_.enterNode(type.pos);
-    Node* n = b_.newNode(type.text, type.pos);
+    Node* n = b_.openNode(type.text, type.pos);
     if (!defName.empty()) b_.define(n, defName, defPos); // before the body: its ROUTEs may name it
     expect(T::LeftBrace, "'{' after " + n->type);
     nodeBody(*n);
     expect(T::RightBrace, "'}' to close " + n->type);
-    b_.leaveNode();
+    b_.closeNode();
     return n;
 }
 

@@ -1,6 +1,7 @@
 #include "effects_plan.h"
 
 #include "field_access.h"
+#include "node_graph.h"
 
 #include <cstdio>
 #include <functional>
@@ -87,7 +88,8 @@ class Planner {
 
     void visit(const Node* raw) {
         const Node* n = effectiveNode(raw);
-        if (!n || !visited_.insert(n).second) return;
+        const WalkPath::Step step(path_, n);
+        if (!step.entered() || !visited_.insert(n).second) return;
         if (n->type == "FShape")
             shape(*n);
         else if (n->type == "FTransform")
@@ -189,6 +191,7 @@ class Planner {
     const Scene& scene_;
     EffectsPlan plan_;
     std::set<const Node*> visited_;
+    WalkPath path_;
     std::map<const Node*, unsigned> routed_;
     std::map<const Node*, std::vector<std::string>> routeNotes_;
 };

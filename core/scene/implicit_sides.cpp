@@ -3,6 +3,7 @@
 #include "field_access.h"
 #include "formula/eval_scalar.h"
 #include "function_kinds.h"
+#include "node_graph.h"
 
 #include <array>
 #include <cmath>
@@ -34,7 +35,7 @@ struct Uses {
 // The FShapes below `node` (through grouping nodes' children).
 void shapesBelow(const Node* raw, const std::string& why, Uses& uses, int depth = 0) {
     const Node* n = effectiveNode(raw);
-    if (!n || depth > 64) return;
+    if (!n || depth > int(kMaxWalkDepth)) return;
     if (n->type == "FShape") {
         uses.add(n, why);
         return;

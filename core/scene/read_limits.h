@@ -9,7 +9,13 @@ struct ReadLimits {
     std::size_t maxFileBytes = 64u << 20;     // a file as read from disk
     std::size_t maxDecodedBytes = 256u << 20; // after gunzip
     std::size_t maxNodes = 2'000'000;         // written in files, all Inlines together
-    std::size_t maxNestingDepth = 256;        // nodes within nodes
+    std::size_t maxNestingDepth = 256;        // nodes within nodes, as written
+    // What the scene is once every USE, PROTO instance and Inline is unfolded:
+    // the work a walk down the tree does (a DEF used twice at each of 30
+    // levels is a small file of a billion nodes). The depth is the one every
+    // recursive walker guards against (kMaxWalkDepth).
+    std::size_t maxUnfoldedNodes = 4'000'000;
+    std::size_t maxUnfoldedDepth = 512;
     std::size_t maxExpandedNodes = 2'000'000; // created by PROTO expansion
     std::size_t maxProtoDepth = 32;           // PROTO instances within PROTO bodies
     std::size_t maxInlineDepth = 8;           // Inline within Inline

@@ -118,16 +118,6 @@ ProtoDeclaration* SceneBuilder::currentProto() const {
     return scopes_.back().proto;
 }
 
-void SceneBuilder::enterNode(FilePos pos) {
-    if (++depth_ > limits_.maxNestingDepth)
-        fail(pos,
-             "nodes are nested more than " + std::to_string(limits_.maxNestingDepth) + " deep");
-}
-
-void SceneBuilder::leaveNode() {
-    --depth_;
-}
-
 // A name must survive every encoding: a ClassicVRML name (X3D's rules, also
 // for VRML97 files, which may be written as X3D) that is valid UTF-8 and, for
 // node types, PROTOs and fields, an XML name too (letters, digits, '_', '-',
@@ -184,7 +174,10 @@ void SceneBuilder::checkName(std::string_view name, NameKind kind, FilePos pos) 
                    "backslashes, and do not start with a digit, '+' or '-'");
 }
 
-Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
+Node* SceneBuilder::openNode(std::string_view type, FilePos pos) {
+    if (++depth_ > limits_.maxNestingDepth)
+        fail(pos,
+             "nodes are nested more than " + std::to_string(limits_.maxNestingDepth) + " deep");
     checkName(type, NameKind::NodeType, pos);
     if (++nodesCreated_ > limits_.maxNodes)
         fail(pos, "the scene has more than " + std::to_string(limits_.maxNodes) + " nodes");
@@ -215,7 +208,13 @@ Node* SceneBuilder::newNode(std::string_view type, FilePos pos) {
                         "'; it is kept and written back on save, but not shown",
                     suggestion);
     }
+    scopes_.back().open.push_back(node);
     return node;
+}
+
+void SceneBuilder::closeNode() {
+    --depth_;
+    if (!scopes_.back().open.empty()) scopes_.back().open.pop_back();
 }
 
 // X3D 19775-1 §7.2.5: a node outside the declared profile and components
@@ -249,17 +248,32 @@ void SceneBuilder::define(Node* node, std::string_view name, FilePos pos) {
         it->second = node;
     }
     node->defName = std::string(name);
+    defPositions_[node] = pos;
+}
+
+std::string SceneBuilder::defPlace(const Node& node) const {
+    const auto it = defPositions_.find(&node);
+    const FilePos pos = it == defPositions_.end() ? node.where : it->second;
+    return std::to_string(pos.line) + ":" + std::to_string(pos.column);
 }
 
 Node* SceneBuilder::use(std::string_view name, FilePos pos) {
     Scope& scope = scopes_.back();
-    if (auto it = scope.defs.find(std::string(name)); it != scope.defs.end()) return it->second;
+    const Node* holder = scope.open.empty() ? nullptr : scope.open.back();
+    if (auto it = scope.defs.find(std::string(name)); it != scope.defs.end()) {
+        Node* target = it->second;
+        const bool inside =
+            std::find(scope.open.begin(), scope.open.end(), target) != scope.open.end();
+        useSites_.push_back({holder, target, pos, inside});
+        return target;
+    }
     Node* placeholder = scene_.newNode();
     placeholder->type = "USE";
     placeholder->forwardUse = std::string(name);
     placeholder->where = pos;
     placeholder->file = file_;
     scope.forwardUses.push_back({placeholder, pos, 0});
+    useSites_.push_back({holder, placeholder, pos, false});
     return placeholder;
 }
 
@@ -545,9 +559,77 @@ void SceneBuilder::finish() {
         popScope(); // a reader stopped inside a PROTO body
     closeScope(scopes_.back());
     replacePlaceholders();
-    if (hasErrors()) return;
+    if (hasErrors() || refuseLoops(Edges::AsWritten)) return;
     resolveExternProtos();
     expandInstances();
+    // A loop only an expansion makes (a PROTO whose interface default holds
+    // an instance of itself): the nodes as written have none.
+    refuseLoops(Edges::WithExpansions);
+}
+
+const Node* SceneBuilder::resolvedTarget(const Node* n) const {
+    for (int i = 0; i < 64; ++i) { // the same bound replacePlaceholders() walks
+        auto it = resolvedPlaceholders_.find(const_cast<Node*>(n));
+        if (it == resolvedPlaceholders_.end()) break;
+        n = it->second;
+    }
+    return n;
+}
+
+const SceneBuilder::UseSite* SceneBuilder::useSiteOf(const Node& holder, const Node& target) const {
+    auto origin = [&](const Node* n) {
+        auto it = cloneOrigins_.find(n);
+        return it == cloneOrigins_.end() ? n : it->second;
+    };
+    const Node* h = origin(&holder);
+    const Node* t = origin(&target);
+    for (const UseSite& site : useSites_)
+        if (site.holder == h && resolvedTarget(site.target) == t) return &site;
+    return nullptr;
+}
+
+bool SceneBuilder::refuseLoops(Edges edges) {
+    std::vector<const Node*> roots(scene_.roots.begin(), scene_.roots.end());
+    const NodeGraphShape shape = examineNodeGraph(
+        roots, protoNodes(scene_), edges, limits_.maxUnfoldedNodes, limits_.maxUnfoldedDepth);
+    if (!shape.loop) return false;
+    const NodeLoop& loop = *shape.loop;
+    // The edge that closed the loop may be the one that nests a node where it
+    // is written (the node was first reached by a forward USE): any USE on
+    // the loop is a place to cut it.
+    const UseSite* site = nullptr;
+    const std::size_t n = loop.path.size();
+    for (std::size_t i = 0; i < n && !site; ++i)
+        site = useSiteOf(*loop.path[(i + n - 1) % n], *loop.path[i]);
+    auto name = [](const Node& node) {
+        return node.defName.empty() ? node.type : node.type + " " + node.defName;
+    };
+    std::string through;
+    for (const Node* p : loop.path)
+        through += (through.empty() ? "" : " > ") + name(*p);
+    through += " > " + name(*loop.ancestor);
+    if (site && site->insideTarget) {
+        // X3D 19775-1 §4.4.3: a node may not be its own ancestor.
+        const std::string& def = site->target->defName;
+        error(site->pos,
+              "USE " + def + " is inside the node it names (DEF " + def + " at " +
+                  defPlace(*site->target) + "): a node cannot contain itself",
+              "a scene is a tree: USE " + def + " outside DEF " + def +
+                  ", or DEF a separate node to use here");
+    } else if (site) {
+        const Node& target = *resolvedTarget(site->target);
+        error(site->pos,
+              "USE " + target.defName + " makes a loop: DEF " + target.defName + " (at " +
+                  defPlace(target) + ") would contain itself (" + through + ")",
+              "a scene is a tree with shared leaves: USE a node only outside itself");
+    } else {
+        // Not written as a USE in this file: an expansion joined the loop.
+        const Node& instance = loop.ancestor->instance ? *loop.ancestor->instance : *loop.ancestor;
+        error(instance.where,
+              name(instance) + " would contain itself once its PROTO is expanded (" + through + ")",
+              "a PROTO's default field values may not hold an instance of that PROTO");
+    }
+    return true;
 }
 
 void SceneBuilder::resolveExternProtos() {
@@ -609,6 +691,7 @@ Node* SceneBuilder::cloneForInstance(Node& original, const Node& instance, std::
                                  std::to_string(limits_.maxExpandedNodes) + " nodes");
     Node* copy = scene_.newNode();
     clones.emplace(&original, copy);
+    cloneOrigins_.emplace(copy, &original);
     copy->type = original.type;
     copy->spec = original.spec;
     copy->proto = original.proto;

@@ -3,6 +3,7 @@
 // understood: node types and field lookup, DEF/USE scopes (with USE before DEF
 // resolved at the end), IS and ROUTE checks, limits, diagnostics, and PROTO
 // expansion. Encoding rules that differ are parameters, not copies.
+#include "node_graph.h"
 #include "read_limits.h"
 #include "scene.h"
 
@@ -56,12 +57,18 @@ class SceneBuilder {
     void popScope(); // resolves forward USEs of the scope
     ProtoDeclaration* currentProto() const;
 
-    // Node creation: type lookup (built-in, PROTO, unknown) by the encoding's rules.
     // Refuses (with a located error) a name ClassicVRML could not write.
     void checkName(std::string_view name, NameKind kind, FilePos pos);
-    Node* newNode(std::string_view type, FilePos pos);
+    // A node starts: type lookup (built-in, PROTO, unknown) by the encoding's
+    // rules, the nesting depth, and the node is open (an ancestor of what
+    // follows) until closeNode().
+    Node* openNode(std::string_view type, FilePos pos);
+    void closeNode();
     void define(Node* node, std::string_view name, FilePos pos);
-    // The node a USE names; a placeholder when the name comes later in the file.
+    // The node a USE names; a placeholder when the name comes later in the
+    // file. A USE that makes a loop is refused at finish(), where the whole
+    // graph is known (a USE inside the node it names is one only in a field
+    // that holds children, not in a Script's declared field).
     Node* use(std::string_view name, FilePos pos);
 
     void declareProto(ProtoDeclaration* proto, FilePos pos);
@@ -96,9 +103,6 @@ class SceneBuilder {
     void addRoute(std::string_view fromDef, std::string_view fromField, std::string_view toDef,
                   std::string_view toField, FilePos pos);
 
-    void enterNode(FilePos pos); // nesting depth
-    void leaveNode();
-
     // Loads what an EXTERNPROTO names (sets `resolved`); returns why not.
     using ExternProtoResolver = std::function<std::string(ProtoDeclaration&)>;
     void setExternProtoResolver(ExternProtoResolver resolver) {
@@ -125,7 +129,22 @@ class SceneBuilder {
             FilePos pos;
         };
         std::vector<PendingRoute> routes; // checked when the scope ends (DEFs may follow)
+        std::vector<Node*> open;          // the nodes being read, outermost first
     };
+    // Where a USE was written, to say where a loop is closed: `holder` is the
+    // node whose field holds it (null at the top of a scope), `target` the
+    // node or forward placeholder it returned.
+    struct UseSite {
+        const Node* holder;
+        const Node* target;
+        FilePos pos;
+        bool insideTarget; // written inside the node it names
+    };
+    const Node* resolvedTarget(const Node* n) const;
+    const UseSite* useSiteOf(const Node& holder, const Node& target) const;
+    // Refuses a loop in the graph (one error, located at a USE that closes it
+    // where one can be found) and returns whether there was one.
+    bool refuseLoops(Edges edges);
     void resolveRoute(Scope& scope, const Scope::PendingRoute& r);
     Node* cloneForInstance(Node& original, const Node& instance, std::size_t depth,
                            std::unordered_map<const Node*, Node*>& clones);
@@ -142,6 +161,10 @@ class SceneBuilder {
     std::vector<SceneDiagnostic>& diagnostics_;
     std::vector<Scope> scopes_;
     std::unordered_map<Node*, Node*> resolvedPlaceholders_;
+    std::vector<UseSite> useSites_;
+    std::unordered_map<const Node*, FilePos> defPositions_;     // where each DEF name is written
+    std::string defPlace(const Node& node) const;               // "line:column" of its DEF
+    std::unordered_map<const Node*, const Node*> cloneOrigins_; // expanded node -> body node
     std::size_t depth_ = 0;
     ExternProtoResolver resolveExtern_;
     std::size_t nodesCreated_ = 0;

@@ -1,5 +1,7 @@
 #include "scene_compare.h"
 
+#include "node_graph.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -85,6 +87,8 @@ class Comparer {
             return differ(where + ": " + a->type + " is shared on one side only");
         pairs_[a] = b;
         reverse_[b] = a;
+        const WalkPath::Step step(path_, a); // pairs_ ends loops; this bounds the depth
+        if (!step.entered()) return differ(where + ": nodes nest too deep to compare");
         const std::string here =
             where + " > " + a->type + (a->defName.empty() ? "" : " " + a->defName);
         if (a->type != b->type || a->defName != b->defName)
@@ -167,6 +171,7 @@ class Comparer {
 
     std::map<const Node*, const Node*> pairs_;
     std::map<const Node*, const Node*> reverse_;
+    WalkPath path_;
 };
 
 } // namespace

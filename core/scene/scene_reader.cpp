@@ -4,6 +4,7 @@
 #include "function_definitions.h"
 #include "gzip.h"
 #include "implicit_sides.h"
+#include "node_graph.h"
 #include "preview_marker.h"
 #include "scene_builder.h"
 #include "scene_references.h"
@@ -109,6 +110,9 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
     // A preview written by `convert` is for other browsers, not part of the scene.
     std::erase_if(scene->roots, [](const Node* n) { return n && n->defName == kPreviewDefName; });
     references.resolveInlines();
+    checkUnfoldedScene(*scene, options.limits.maxUnfoldedNodes, options.limits.maxUnfoldedDepth,
+                       result.diagnostics);
+    if (hasErrors(result.diagnostics)) return result;
     if (options.compileFunctions) {
         compileFunctionDefinitions(*scene, result.diagnostics);
         if (hasErrors(result.diagnostics)) return result;

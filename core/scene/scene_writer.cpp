@@ -1,5 +1,7 @@
 #include "scene_writer.h"
 
+#include "node_graph.h"
+
 #include <charconv>
 #include <cmath>
 #include <set>
@@ -121,6 +123,7 @@ class Writer {
     Encoding encoding_;
     std::string out_;
     std::set<const Node*> written_;
+    WalkPath path_; // the nodes being written
 };
 
 // ------------------------------------------------------------- Classic
@@ -196,6 +199,8 @@ std::string Writer::classicNodeRef(const Node* n, int depth) {
     if (!n) return "NULL";
     if (!n->defName.empty() && (written_.count(n) || n->type == "IMPORT"))
         return "USE " + n->defName; // an IMPORTed node is named by its IMPORT
+    const WalkPath::Step step(path_, n);
+    if (!step.entered()) return "NULL"; // a loop or a depth the reader refuses
     written_.insert(n);
     std::string head = n->defName.empty() ? "" : "DEF " + n->defName + " ";
     head += n->type + " {";
@@ -401,6 +406,8 @@ void Writer::xmlNode(const Node* n, int depth, const std::string& containerField
         line(depth, head + " USE='" + xmlEscape(n->defName) + "'/>");
         return;
     }
+    const WalkPath::Step step(path_, n);
+    if (!step.entered()) return; // a loop or a depth the reader refuses
     written_.insert(n);
     if (!n->defName.empty()) head += " DEF='" + xmlEscape(n->defName) + "'";
     struct Child {

@@ -310,8 +310,7 @@ Node* XmlReader::nodeElement() {
     }
     std::string type = instance ? attrValue("name") : str(xml_.name());
     if (type.empty()) b_.fail(pos, "<ProtoInstance> needs a name attribute");
-    b_.enterNode(pos);
-    Node* n = b_.newNode(type, pos);
+    Node* n = b_.openNode(type, pos);
     if (const Attr* def = attr("DEF")) b_.define(n, def->value, def->pos);
     for (const Attr& a : attrs_) {
         if (a.name == "DEF" || a.name == "containerField") {
@@ -323,7 +322,7 @@ Node* XmlReader::nodeElement() {
         setAttributeField(*n, a);
     }
     nodeContent(*n);
-    b_.leaveNode();
+    b_.closeNode();
     return n;
 }
 
