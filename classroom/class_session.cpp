@@ -1,5 +1,6 @@
 #include "class_session.h"
 
+#include "member_name.h"
 #include "scene_policy.h"
 
 #include <QJsonArray>
@@ -249,10 +250,8 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
     if (m.role == Role::Instructor &&
         (config_.instructorKey.empty() || !sameKey(m.key, config_.instructorKey)))
         return failed(ErrorCode::BadKey, "joining as instructor needs the class's instructor key");
-    bool blank = true;
-    for (char ch : m.name)
-        blank = blank && ch == ' ';
-    if (blank) return error(id, ErrorCode::BadName, "a name is needed", out);
+    if (const auto why = memberNameProblem(m.name, config_.limits.maxNameChars))
+        return error(id, ErrorCode::BadName, *why, out);
 
     Member* member = nullptr;
     bool resumed = false;
@@ -262,6 +261,13 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
                 member = &candidate;
                 break;
             }
+    const std::string key = memberNameKey(m.name);
+    for (const auto& [mid, other] : members_)
+        if (&other != member && memberNameKey(other.name) == key)
+            return error(id, ErrorCode::BadName,
+                         "someone in the class is already called '" + m.name +
+                             "'; choose another name",
+                         out);
     if (member) {
         resumed = true;
         if (member->connection && member->connection != id) {

@@ -1,5 +1,7 @@
 #include "protocol.h"
 
+#include "member_name.h"
+
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
@@ -87,13 +89,12 @@ struct FieldReader {
             fail(ErrorCode::Malformed, std::string(type) + ": \"" + field + "\" must be a string");
             return {};
         }
-        const QString s = v.toString();
-        if (static_cast<std::size_t>(s.size()) > maxChars) {
+        std::string utf8 = v.toString().toStdString();
+        if (characterCount(utf8) > maxChars) { // characters, not UTF-16 units
             fail(tooLong, std::string(type) + ": \"" + field + "\" is longer than " +
                               std::to_string(maxChars) + " characters");
             return {};
         }
-        std::string utf8 = s.toStdString();
         if (!isCleanText(utf8, lineBreaks)) {
             fail(ErrorCode::Malformed,
                  std::string(type) + ": \"" + field + "\" holds control characters");

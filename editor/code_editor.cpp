@@ -11,6 +11,7 @@
 #include <QScrollBar>
 #include <QStringListModel>
 #include <QTextBlock>
+#include <QTextDocument>
 #include <QToolTip>
 
 #include <algorithm>
@@ -174,7 +175,7 @@ void CodeEditor::updateExtraSelections() {
         QTextEdit::ExtraSelection s;
         s.format.setUnderlineStyle(QTextCharFormat::WaveUnderline);
         s.format.setUnderlineColor(d.error ? QColor(Qt::red) : QColor(0xe0, 0x90, 0x00));
-        s.format.setToolTip(d.message);
+        s.format.setToolTip(Qt::convertFromPlainText(d.message, Qt::WhiteSpaceNormal));
         s.cursor = QTextCursor(document());
         s.cursor.setPosition(start);
         s.cursor.setPosition(end, QTextCursor::KeepAnchor);
@@ -235,7 +236,10 @@ bool CodeEditor::event(QEvent* event) {
         if (messages.isEmpty())
             QToolTip::hideText();
         else
-            QToolTip::showText(help->globalPos(), messages.join('\n'), this);
+            // Messages quote the scene's own text: never read as markup.
+            QToolTip::showText(help->globalPos(),
+                               Qt::convertFromPlainText(messages.join('\n'), Qt::WhiteSpaceNormal),
+                               this);
         return true;
     }
     return QPlainTextEdit::event(event);

@@ -1,5 +1,7 @@
 #include "accuracy_panel.h"
 
+#include "plain_text.h"
+
 #include "haptics_bench.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
@@ -32,7 +34,7 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
       shapes_(new QComboBox), costs_(new QComboBox), chart_(new AccuracyChart),
       progress_(new QProgressBar), measure_(new QPushButton(tr("Measure"))),
       cancel_(new QPushButton(tr("Cancel"))), write_(new QPushButton(tr("Write into the scene"))),
-      target_(new QLineEdit), status_(new QLabel) {
+      target_(new QLineEdit), status_(plainLabel()) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;

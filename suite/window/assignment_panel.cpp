@@ -1,6 +1,8 @@
 #include "assignment_panel.h"
 
 #include "catalogue.h"
+#include "offline_text_browser.h"
+#include "plain_text.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -22,10 +24,14 @@ QString points(double p) {
 
 } // namespace
 
+QTextBrowser* AssignmentPanel::instructions() const {
+    return instructions_;
+}
+
 AssignmentPanel::AssignmentPanel(QWidget* parent, const QString& folder)
     : Panel(tr("Assignment"), QStringLiteral("assignment"), Qt::RightDockWidgetArea, parent),
-      choice_(new QComboBox), instructions_(new QTextBrowser), checklist_(new QTreeWidget),
-      status_(new QLabel), starter_(new QPushButton(tr("Start from the starter scene"))),
+      choice_(new QComboBox), instructions_(new OfflineTextBrowser), checklist_(new QTreeWidget),
+      status_(plainLabel()), starter_(new QPushButton(tr("Start from the starter scene"))),
       checker_(
           this, [](const Check& c) { return grading::checkScene(*c.scene, c.requirements); },
           [this](const Check& c, grading::CheckReport report) {
@@ -110,11 +116,12 @@ void AssignmentPanel::showAssignment() {
         return;
     }
     QFile file(QString::fromStdString(a->instructions.string()));
-    instructions_->setMarkdown(file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll())
-                                                              : tr("(no instructions)"));
+    instructions_->showMarkdown(file.open(QIODevice::ReadOnly)
+                                    ? QString::fromUtf8(file.read(1 << 20))
+                                    : tr("(no instructions)"));
     for (const grading::Requirement& r : a->requirements) {
         auto* item = new QTreeWidgetItem(checklist_, {QString::fromStdString(r.id), {}});
-        item->setToolTip(0, QString::fromStdString(r.description));
+        item->setToolTip(0, plainToolTip(QString::fromStdString(r.description)));
         item->setText(1, QString::fromStdString(r.description));
     }
     if (scene_) check(scene_);
@@ -144,7 +151,7 @@ void AssignmentPanel::showReport(const grading::CheckReport& report) {
                              .arg(points(r.maxPoints)));
         item->setForeground(0, r.met ? QColor(0x2e, 0x7d, 0x32) : QColor(0xc6, 0x28, 0x28));
         item->setText(1, QString::fromStdString(r.evidence));
-        item->setToolTip(1, QString::fromStdString(r.evidence));
+        item->setToolTip(1, plainToolTip(QString::fromStdString(r.evidence)));
         // The first place in the scene text itself (not in an Inline file).
         item->setData(0, Qt::UserRole, 0);
         for (const grading::Location& l : r.locations)

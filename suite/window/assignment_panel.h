@@ -23,6 +23,8 @@ class QTreeWidget;
 
 namespace fl::suite {
 
+class OfflineTextBrowser;
+
 class AssignmentPanel : public Panel {
     Q_OBJECT
   public:
@@ -36,7 +38,7 @@ class AssignmentPanel : public Panel {
     bool checking() const;
 
     QTreeWidget* checklist() const { return checklist_; }
-    QTextBrowser* instructions() const { return instructions_; }
+    QTextBrowser* instructions() const;
     QLabel* status() const { return status_; }
 
   public Q_SLOTS:
@@ -58,7 +60,7 @@ class AssignmentPanel : public Panel {
     std::vector<courseware::AssignmentLoad> assignments_;
     int current_ = -1;
     QComboBox* choice_;
-    QTextBrowser* instructions_;
+    OfflineTextBrowser* instructions_;
     QTreeWidget* checklist_;
     QLabel* status_;
     QPushButton* starter_;

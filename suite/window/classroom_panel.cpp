@@ -1,5 +1,7 @@
 #include "classroom_panel.h"
 
+#include "plain_text.h"
+
 #include "client.h"
 
 #include "scene/scene_reader.h"
@@ -60,11 +62,11 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
       client_(std::make_unique<ClassroomClient>()), url_(new QLineEdit), code_(new QLineEdit),
       name_(new QLineEdit), key_(new QLineEdit), say_(new QLineEdit), role_(new QComboBox),
       tool_(new QComboBox), paint_(new QComboBox), toolSize_(new QSlider(Qt::Horizontal)),
-      history_(new QSlider(Qt::Horizontal)), historyLabel_(new QLabel),
+      history_(new QSlider(Qt::Horizontal)), historyLabel_(plainLabel()),
       join_(new QPushButton(tr("Join"))), send_(new QPushButton(tr("Send my edit"))),
       release_(new QPushButton(tr("Release lock"))), applyPending_(new QPushButton(tr("Apply"))),
       discardPending_(new QPushButton(tr("Discard"))), useTool_(new QPushButton(tr("Use"))),
-      state_(new QLabel), lock_(new QLabel), pending_(new QLabel), members_(new QListWidget),
+      state_(plainLabel()), lock_(plainLabel()), pending_(plainLabel()), members_(new QListWidget),
       chat_(new QListWidget), instructor_(new QWidget), freeze_(new QCheckBox(tr("Freeze"))),
       anonymous_(new QCheckBox(tr("Anonymous names"))) {
     auto* box = new QWidget;
@@ -216,12 +218,13 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
             [this](qint64 version, const QString& author, const QString& scene) {
                 if (!replaying_ || version != replayVersion_) return;
                 replayText_ = scene;
-                historyLabel_->setText(tr("v%1, %2").arg(version).arg(author));
+                historyLabel_->setText(tr("v%1, %2").arg(version).arg(visibleText(author)));
                 Q_EMIT historyShown(scene, version);
             });
     connect(c, &ClassroomClient::chatReceived, this,
             [this](const QString& from, const QString& text) {
-                chat_->addItem(from + QStringLiteral(": ") + text);
+                // Both come from others: drawn as the characters they hold.
+                chat_->addItem(visibleText(from) + QStringLiteral(": ") + visibleText(text, true));
                 chat_->scrollToBottom();
             });
     connect(c, &ClassroomClient::noticeReceived, this, [this](const QString& t) { say(t); });
@@ -379,7 +382,8 @@ QString ClassroomPanel::exportX3d(QString* why) const {
 }
 
 void ClassroomPanel::say(const QString& line) {
-    auto* item = new QListWidgetItem(line);
+    // What is said quotes the server and other members: drawn literally.
+    auto* item = new QListWidgetItem(visibleText(line, true));
     item->setForeground(palette().placeholderText());
     chat_->addItem(item);
     chat_->scrollToBottom();
@@ -389,7 +393,7 @@ void ClassroomPanel::refreshMembers() {
     members_->clear();
     const auto holder = client_->lockHolder();
     for (const ClassroomClient::Member& m : client_->members()) {
-        QString line = m.name + QStringLiteral(" (") +
+        QString line = visibleText(m.name) + QStringLiteral(" (") +
                        QString::fromUtf8(classroom::nameOf(m.role).data(),
                                          qsizetype(classroom::nameOf(m.role).size())) +
                        QLatin1Char(')');
@@ -407,7 +411,7 @@ void ClassroomPanel::refreshLock() {
     lock_->setText(client_->frozen()      ? tr("the class is frozen")
                    : !holder              ? tr("the lock is free")
                    : client_->holdsLock() ? tr("you hold the lock")
-                                          : tr("%1 holds the lock").arg(holder->name));
+                                          : tr("%1 holds the lock").arg(visibleText(holder->name)));
     const bool pending = client_->hasPendingEdit();
     pending_->setVisible(pending);
     applyPending_->setVisible(pending);
@@ -430,7 +434,7 @@ void ClassroomPanel::refreshState() {
                     : s == ClassroomClient::State::Reconnecting
                         ? tr("connection lost: reconnecting…")
                         : tr("in class %1 as %2, version %3")
-                              .arg(code_->text(), client_->shownName())
+                              .arg(visibleText(code_->text()), visibleText(client_->shownName()))
                               .arg(client_->version()));
     join_->setText(s == ClassroomClient::State::Disconnected ? tr("Join") : tr("Leave"));
     for (QWidget* w : std::initializer_list<QWidget*>{url_, code_, name_, role_, key_})

@@ -1,5 +1,7 @@
 #include "examples_dock.h"
 
+#include "plain_text.h"
+
 #include "catalogue.h"
 #include "examples.h"
 
@@ -14,7 +16,7 @@ ExamplesDock::ExamplesDock(QWidget* parent, const QString& folder)
     const QString from = folder.isEmpty() ? examplesFolder() : folder;
     for (const courseware::ExampleScene& e : courseware::listExamples(from.toStdString())) {
         auto* item = new QListWidgetItem(QString::fromStdString(e.title), list_);
-        item->setToolTip(QString::fromStdString(e.description));
+        item->setToolTip(plainToolTip(QString::fromStdString(e.description)));
         item->setData(Qt::UserRole, QString::fromStdString(e.path.string()));
     }
     connect(list_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {

@@ -1,6 +1,8 @@
 #include "grading_panel.h"
 
 #include "catalogue.h"
+#include "offline_text_browser.h"
+#include "plain_text.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -35,9 +37,9 @@ QString graderName() {
 
 GradingPanel::GradingPanel(QWidget* parent)
     : Panel(tr("Grading"), QStringLiteral("grading"), Qt::BottomDockWidgetArea, parent),
-      assignments_(new QComboBox), table_(new QTableWidget), evidence_(new QTextBrowser),
+      assignments_(new QComboBox), table_(new QTableWidget), evidence_(new OfflineTextBrowser),
       rubric_(new QFormLayout), rubricBox_(new QWidget), override_(new QDoubleSpinBox),
-      overrideWhy_(new QLineEdit), summary_(new QLabel) {
+      overrideWhy_(new QLineEdit), summary_(plainLabel()) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;
@@ -149,7 +151,7 @@ void GradingPanel::fillTable() {
         int column = 0;
         auto cell = [&](const QString& text, const QString& tip = {}) {
             auto* item = new QTableWidgetItem(text);
-            item->setToolTip(tip);
+            item->setToolTip(plainToolTip(tip));
             table_->setItem(int(row), column++, item);
             return item;
         };
@@ -210,8 +212,9 @@ void GradingPanel::showStudent() {
     }
     QString text =
         QStringLiteral("<b>%1</b> — submitted %2, graded %3 by checker %4<br/>")
-            .arg(student_.toHtmlEscaped(), QString::fromStdString(g->submittedAt),
-                 QString::fromStdString(g->gradedAt), QString::fromStdString(g->checkerVersion));
+            .arg(student_.toHtmlEscaped(), QString::fromStdString(g->submittedAt).toHtmlEscaped(),
+                 QString::fromStdString(g->gradedAt).toHtmlEscaped(),
+                 QString::fromStdString(g->checkerVersion).toHtmlEscaped());
     if (!g->gradable)
         text += QStringLiteral("<p style='color:#c62828'>%1</p>")
                     .arg(QString::fromStdString(g->diagnostics).toHtmlEscaped());
@@ -219,8 +222,8 @@ void GradingPanel::showStudent() {
         text += QStringLiteral("<p><b style='color:%1'>%2 %3</b> (%4/%5): %6</p>")
                     .arg(r.met ? QStringLiteral("#2e7d32") : QStringLiteral("#c62828"),
                          r.met ? QStringLiteral("✔") : QStringLiteral("✘"),
-                         QString::fromStdString(r.id), number(r.points), number(r.maxPoints),
-                         QString::fromStdString(r.evidence).toHtmlEscaped());
+                         QString::fromStdString(r.id).toHtmlEscaped(), number(r.points),
+                         number(r.maxPoints), QString::fromStdString(r.evidence).toHtmlEscaped());
     evidence_->setHtml(text);
     const auto scores = book_->manualScores(g->student, g->assignment);
     if (assignment_)
@@ -240,10 +243,11 @@ void GradingPanel::showStudent() {
             rowLayout->setContentsMargins(0, 0, 0, 0);
             rowLayout->addWidget(points);
             rowLayout->addWidget(comment, 1);
-            rubric_->addRow(QStringLiteral("%1 (of %2)")
-                                .arg(QString::fromStdString(item.id), number(item.points)),
-                            row);
-            row->setToolTip(QString::fromStdString(item.description));
+            rubric_->addRow(
+                plainLabel(QStringLiteral("%1 (of %2)")
+                               .arg(QString::fromStdString(item.id), number(item.points))),
+                row);
+            row->setToolTip(plainToolTip(QString::fromStdString(item.description)));
             editors_.push_back({QString::fromStdString(item.id), points, comment});
         }
     const auto o = book_->overrideScore(g->student, g->assignment);

@@ -1,5 +1,7 @@
 #include "haptics_panel.h"
 
+#include "plain_text.h"
+
 #include "device/device_enumeration.h"
 #include "device/device_limits.h"
 #include "effect_colours.h"
@@ -47,7 +49,7 @@ HapticsPanel::HapticsPanel(QWidget* parent)
     : Panel(tr("Haptics"), QStringLiteral("haptics"), Qt::RightDockWidgetArea, parent),
       feel_(new QPushButton(tr("Feel"))), rescan_(new QPushButton(tr("Find devices"))),
       devices_(new QComboBox), show_(new QComboBox), depth_(new QSlider(Qt::Horizontal)),
-      status_(new QLabel), contact_(new QLabel), notes_(new QLabel), graph_(new ForceGraph),
+      status_(new QLabel), contact_(new QLabel), notes_(plainLabel()), graph_(new ForceGraph),
       worker_(
           this, [](const Request& r) { return snapshotOf(*r.scene, r.seconds); },
           [this](const Request& r, std::shared_ptr<const haptics::TangibleScene> snapshot) {
@@ -148,13 +150,14 @@ void HapticsPanel::findDevices() {
         devices_->addItem(
             QString::fromStdString(d.name + (d.accessible ? "" : " — not accessible")));
         const int row = devices_->count() - 1;
-        devices_->setItemData(row, QString::fromStdString(d.accessible ? d.path : d.message),
-                              Qt::ToolTipRole);
+        devices_->setItemData(
+            row, plainToolTip(QString::fromStdString(d.accessible ? d.path : d.message)),
+            Qt::ToolTipRole);
     }
     QString why;
     for (const std::string& n : notes)
         why += QString::fromStdString(n) + QLatin1Char('\n');
-    devices_->setToolTip(why.trimmed());
+    devices_->setToolTip(plainToolTip(why.trimmed()));
 }
 
 void HapticsPanel::start() {

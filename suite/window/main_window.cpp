@@ -20,6 +20,7 @@
 #include "mesh_geometry.h"
 #include "parameters_dock.h"
 #include "picking.h"
+#include "plain_text.h"
 #include "render_scene.h"
 #include "scene/field_access.h"
 #include "scene/gzip.h"
@@ -102,7 +103,7 @@ MainWindow::MainWindow(QWidget* parent)
       player_(new viewer::ScenePlayer(nullptr, this)), timeline_(new TimelineBar(player_)),
       viewpoints_(new ViewpointBox), recentMenu_(nullptr), triangles_(new QLabel),
       meshTime_(new QLabel), frameRate_(new QLabel), timeLabel_(new QLabel),
-      screenError_(new QLabel), errorMeter_(new ScreenErrorMeter(this)) {
+      screenError_(plainLabel()), errorMeter_(new ScreenErrorMeter(this)) {
     setWindowTitle(QStringLiteral("FunctionLab[*]"));
     setCentralWidget(view_);
     buildDocks();
@@ -115,7 +116,8 @@ MainWindow::MainWindow(QWidget* parent)
 
     for (QLabel* l : {triangles_, meshTime_, screenError_, frameRate_, timeLabel_})
         statusBar()->addPermanentWidget(l);
-    connect(errorMeter_, &ScreenErrorMeter::measured, screenError_, &QLabel::setText);
+    connect(errorMeter_, &ScreenErrorMeter::measured, screenError_,
+            [this](const QString& text) { screenError_->setText(visibleText(text)); });
 
     connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
         parser_->setText(editor_->toPlainText(), path_);
@@ -176,7 +178,7 @@ MainWindow::MainWindow(QWidget* parent)
                                      .arg(p->point[0], 0, 'g', 6)
                                      .arg(p->point[1], 0, 'g', 6)
                                      .arg(p->point[2], 0, 'g', 6)
-                                     .arg(QString::fromStdString(p->shape))
+                                     .arg(visibleText(QString::fromStdString(p->shape)))
                                      .arg(p->onFunction ? tr(", on f = 0") : QString()));
     });
     connect(&lodTimer_, &QTimer::timeout, this, [this] {
@@ -583,8 +585,8 @@ bool MainWindow::maybeKeepChanges() {
 
 void MainWindow::problem(const QString& text) {
     lastProblem_ = text;
-    statusBar()->showMessage(text, 10000);
-    if (prompts_) QMessageBox::warning(this, tr("FunctionLab"), text);
+    statusBar()->showMessage(visibleText(text), 10000);
+    if (prompts_) warnPlainly(this, tr("FunctionLab"), text);
 }
 
 void MainWindow::addRecent(const QString& path) {
@@ -604,11 +606,13 @@ void MainWindow::fillRecentMenu() {
     const QStringList recent = QSettings().value(QStringLiteral("file/recent")).toStringList();
     for (const QString& path : recent)
         recentMenu_
-            ->addAction(QFileInfo(path).fileName(), this,
+            // '&' in a file name is not a keyboard accelerator.
+            ->addAction(QFileInfo(path).fileName().replace(QLatin1Char('&'), QStringLiteral("&&")),
+                        this,
                         [this, path] {
                             if (maybeKeepChanges()) openFile(path);
                         })
-            ->setToolTip(path);
+            ->setToolTip(plainToolTip(path));
     recentMenu_->setEnabled(!recent.isEmpty());
 }
 
@@ -656,7 +660,7 @@ void MainWindow::showSharedScene(const QString& text, qint64 version, const QStr
             tr("The class scene is at version %1 (%2); your unsent edit stays in the editor: "
                "send it, or undo it to see the class's")
                 .arg(version)
-                .arg(author));
+                .arg(visibleText(author)));
         return;
     }
     const bool first = lastSharedScene_.isEmpty();
@@ -668,7 +672,8 @@ void MainWindow::showSharedScene(const QString& text, qint64 version, const QStr
         editor_->setPlainText(text);
         editor_->document()->setModified(false);
     }
-    statusBar()->showMessage(tr("class scene, version %1 by %2").arg(version).arg(author), 5000);
+    statusBar()->showMessage(
+        tr("class scene, version %1 by %2").arg(version).arg(visibleText(author)), 5000);
 }
 
 void MainWindow::touchAt(QPointF pixel) {
@@ -803,10 +808,9 @@ bool MainWindow::recoverUnsavedWork() {
     if (!f.exists() || !f.open(QIODevice::ReadOnly)) return false;
     const QString of = QSettings().value(QStringLiteral("file/recoveryOf")).toString();
     if (prompts_ &&
-        QMessageBox::question(
-            this, tr("Unsaved work"),
-            tr("FunctionLab closed last time with unsaved changes%1. Restore them?")
-                .arg(of.isEmpty() ? QString() : tr(" to %1").arg(of))) != QMessageBox::Yes) {
+        !askPlainly(this, tr("Unsaved work"),
+                    tr("FunctionLab closed last time with unsaved changes%1. Restore them?")
+                        .arg(of.isEmpty() ? QString() : tr(" to %1").arg(of)))) {
         f.close();
         QFile::remove(recoveryPath());
         return false;
@@ -845,10 +849,9 @@ void MainWindow::handInDialog() {
             .arg(QFileInfo(path_.isEmpty() ? QStringLiteral("scene") : path_).completeBaseName())
             .arg(QString::fromStdString(assignment_->assignment()->id));
     if (handIn(QDir(parent).filePath(name)) && prompts_)
-        QMessageBox::information(
-            this, tr("Handed in"),
-            tr("Your submission is in %1.\n%2")
-                .arg(QDir(parent).filePath(name), statusBar()->currentMessage()));
+        informPlainly(this, tr("Handed in"),
+                      tr("Your submission is in %1.\n%2")
+                          .arg(QDir(parent).filePath(name), statusBar()->currentMessage()));
 }
 
 bool MainWindow::handIn(const QString& folder) {

@@ -164,6 +164,63 @@ class ClassroomWindowTest : public QObject {
         adaPanel->leave();
         benPanel->leave();
     }
+
+    // Issue 26 §2: a name and chat full of markup, a bidirectional override,
+    // a tab and a line break are drawn as the characters they are; nothing
+    // is read as HTML (an <img src=/dev/zero> label read the file until the
+    // window died).
+    void textFromOthersIsDrawnLiterally() {
+        classroom::SteadyClock clock;
+        classroom::ClassConfig config;
+        config.classCode = "LAB2";
+        config.initialScene = classroom::starterScene();
+        classroom::ClassSession session(config, clock, nullptr);
+        classroom::ClassroomServer server(session);
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        const QString url = QStringLiteral("ws://127.0.0.1:%1").arg(server.port());
+        const QString evil = QStringLiteral("<img src=/dev/zero>");
+
+        suite::MainWindow mallory, ben;
+        for (suite::MainWindow* w : {&mallory, &ben}) {
+            w->setPromptsEnabled(false);
+            w->resize(1280, 800);
+            w->show();
+            QVERIFY(QTest::qWaitForWindowExposed(w));
+        }
+        mallory.joinClass(url, QStringLiteral("LAB2"), evil);
+        ben.joinClass(url, QStringLiteral("LAB2"), QStringLiteral("Ben"));
+        auto* m = mallory.classroomPanel();
+        auto* b = ben.classroomPanel();
+        using State = classroom::ClassroomClient::State;
+        QTRY_COMPARE_WITH_TIMEOUT(m->client()->state(), State::Joined, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(b->client()->state(), State::Joined, 10000);
+        const QString starter = QString::fromStdString(classroom::starterScene());
+        QTRY_COMPARE_WITH_TIMEOUT(mallory.editor()->toPlainText(), starter, 10000);
+
+        // Mallory takes the lock: Ben's lock label names her, literally.
+        QString text = starter;
+        text.replace(QStringLiteral("</Scene>"),
+                     QStringLiteral("<WorldInfo title='x'/>\n</Scene>"));
+        mallory.editor()->setPlainText(text);
+        m->sendEdit();
+        QTRY_VERIFY_WITH_TIMEOUT(b->lockStatus()->text().contains(evil), 10000);
+        QCOMPARE(b->lockStatus()->textFormat(), Qt::PlainText);
+        bool listed = false;
+        for (int i = 0; i < b->members()->count(); ++i)
+            listed = listed || b->members()->item(i)->text().startsWith(evil);
+        QVERIFY(listed);
+
+        // Her chat: markup, an override that would reverse the line, a tab.
+        m->sendChat(QStringLiteral("<b>bold</b> \u202Eevil\tend"));
+        QTRY_VERIFY_WITH_TIMEOUT(chatHas(b, QStringLiteral("<b>bold</b>")), 10000);
+        QVERIFY(chatHas(b, QStringLiteral("\u27E8U+202E\u27E9evil")));
+        QVERIFY(!chatHas(b, QStringLiteral("\u202E")));
+        QVERIFY(chatHas(b, evil + QStringLiteral(": ")));
+        QTRY_VERIFY_WITH_TIMEOUT(!ben.busy() && ben.view()->triangleCount() > 0, 20000);
+        save(ben, QStringLiteral("classroom-text-from-others"));
+        m->leave();
+        b->leave();
+    }
 };
 
 QTEST_MAIN(ClassroomWindowTest)
