@@ -8,12 +8,17 @@
 #include <QJsonObject>
 #include <QRandomGenerator>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 namespace fl::classroom {
 
 namespace {
+
+// Changes waiting for their check: the class over, and one student's.
+constexpr std::size_t kMaxWaitingChecks = 64;
+constexpr std::size_t kMaxWaitingChecksOfAStudent = 4;
 
 QString q(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
@@ -69,8 +74,11 @@ bool sameKey(const std::string& a, const std::string& b) {
 
 ClassSession::ClassSession(ClassConfig config, const Clock& clock, EditLog* log)
     : config_(std::move(config)), clock_(clock), log_(log),
-      lock_(config_.limits.leaseMillis, config_.limits.disconnectGraceMillis),
-      failedJoins_(config_.limits.maxFailedJoins, config_.limits.failedJoinWindow) {
+      lock_(config_.limits.leaseMillis, config_.limits.disconnectGraceMillis,
+            config_.limits.brokenLockCooldownMillis),
+      failedJoins_(config_.limits.maxFailedJoins, config_.limits.failedJoinWindow),
+      joinsByAddress_(config_.limits.joinBurstPerAddress, config_.limits.joinsPerSecondPerAddress),
+      instructorKey_(config_.limits.keyFreeTries, config_.limits.maxKeyDelayMillis) {
     if (log_)
         if (auto latest = log_->latest()) {
             version_ = latest->version;
@@ -92,10 +100,28 @@ ClassSession::ClassSession(ClassConfig config, const Clock& clock, EditLog* log)
         throw std::runtime_error("the class log cannot be written");
 }
 
-ConnectionId ClassSession::connect(std::string peerAddress) {
+std::optional<ConnectionId> ClassSession::connect(std::string peerAddress) {
+    const auto unjoined =
+        std::count_if(connections_.begin(), connections_.end(), [&](const auto& c) {
+            return c.second.member == 0 && c.second.peer == peerAddress;
+        });
+    if (std::size_t(unjoined) >= config_.limits.maxUnjoinedPerAddress) return std::nullopt;
     const ConnectionId id = nextConnection_++;
-    connections_[id] = Connection{std::move(peerAddress), 0, clock_.now()};
+    const Millis now = clock_.now();
+    connections_[id] = Connection{std::move(peerAddress), 0, now, now};
     return id;
+}
+
+bool ClassSession::freeASeat() {
+    auto away = members_.end();
+    for (auto it = members_.begin(); it != members_.end(); ++it)
+        if (it->second.connection == 0 &&
+            (away == members_.end() || it->second.leftAt < away->second.leftAt))
+            away = it;
+    if (away == members_.end()) return false;
+    lock_.release(away->first);
+    members_.erase(away);
+    return true;
 }
 
 ClassSession::Member* ClassSession::memberOf(ConnectionId id) {
@@ -215,8 +241,8 @@ void ClassSession::handle(Connection& c, ConnectionId id, const ClientMessage& m
     if (m.type == MessageType::Join) return join(c, id, std::get<JoinMessage>(m.body), out);
     Member* member = memberOf(id);
     if (!member) return error(id, ErrorCode::NotJoined, "send join first", out);
-    const Millis now = clock_.now();
-    lock_.renew(member->id, now); // any message is a sign of life
+    // Any message keeps the seat (Connection::lastSeen); only an edit keeps
+    // the lock (a lease held by heartbeats alone would never end).
     switch (m.type) {
     case MessageType::Heartbeat:
         return;
@@ -238,18 +264,35 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
     const Millis now = clock_.now();
     if (c.member != 0)
         return error(id, ErrorCode::AlreadyJoined, "this connection has joined", out);
-    if (failedJoins_.blocked(c.peer, now))
-        return error(id, ErrorCode::TooManyJoins,
-                     "too many failed joins from this address; wait a minute", out, true);
-    auto failed = [&](ErrorCode code, std::string why) {
+    // The right code always gets in, however many others mistyped behind the
+    // same address; wrong ones from an address that guessed too often close
+    // the connection.
+    if (!sameKey(m.classCode, config_.classCode)) {
+        const bool blocked = failedJoins_.blocked(c.peer, now);
         failedJoins_.failed(c.peer, now);
-        error(id, code, std::move(why), out);
-    };
-    if (!sameKey(m.classCode, config_.classCode))
-        return failed(ErrorCode::WrongClass, "no class with that code here");
-    if (m.role == Role::Instructor &&
-        (config_.instructorKey.empty() || !sameKey(m.key, config_.instructorKey)))
-        return failed(ErrorCode::BadKey, "joining as instructor needs the class's instructor key");
+        if (blocked)
+            return error(id, ErrorCode::TooManyJoins,
+                         "too many wrong class codes from this address; wait a minute", out, true);
+        return error(id, ErrorCode::WrongClass, "no class with that code here", out);
+    }
+    if (m.role == Role::Instructor) {
+        if (config_.instructorKey.empty())
+            return error(id, ErrorCode::BadKey, "this class has no instructor key", out);
+        if (const Millis wait = instructorKey_.waiting(now))
+            return error(id, ErrorCode::TooManyJoins,
+                         "wrong instructor keys were tried: instructor joins wait " +
+                             std::to_string((wait + 999) / 1000) + " s more",
+                         out, true);
+        if (!sameKey(m.key, config_.instructorKey)) {
+            instructorKey_.failed(now);
+            return error(id, ErrorCode::BadKey,
+                         "joining as instructor needs the class's instructor key", out);
+        }
+        instructorKey_.succeeded();
+    } else if (!joinsByAddress_.take(c.peer, now)) {
+        return error(id, ErrorCode::TooManyJoins, "too many joins from this address; wait a moment",
+                     out, true);
+    }
     if (const auto why = memberNameProblem(m.name, config_.limits.maxNameChars))
         return error(id, ErrorCode::BadName, *why, out);
 
@@ -269,6 +312,9 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
                              "'; choose another name",
                          out);
     if (member) {
+        if (member->role != Role::Instructor && !member->joins.take(now))
+            return error(id, ErrorCode::TooManyJoins, "this seat rejoined too often; wait a moment",
+                         out, true);
         resumed = true;
         if (member->connection && member->connection != id) {
             // The same seat from a new connection: the old one is over.
@@ -280,7 +326,10 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
         member->name = m.name;
         lock_.reconnected(member->id, now);
     } else {
-        if (members_.size() >= config_.limits.maxMembers)
+        // Seats kept for members who may come back do not fill the class:
+        // the one away longest makes room. The instructor always gets in.
+        if (m.role != Role::Instructor && members_.size() >= config_.limits.maxMembers &&
+            !freeASeat())
             return error(id, ErrorCode::ClassFull, "the class is full", out, true);
         const MemberId mid = nextMember_++;
         Member fresh{mid,
@@ -291,7 +340,9 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
                      id,
                      0,
                      TokenBucket(config_.limits.rateBurst, config_.limits.ratePerSecond, now),
-                     std::nullopt};
+                     std::nullopt,
+                     TokenBucket(config_.limits.joinBurstPerSeat,
+                                 config_.limits.joinsPerSecondPerSeat, now)};
         member = &members_.emplace(mid, std::move(fresh)).first->second;
     }
     c.member = member->id;
@@ -328,21 +379,21 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
 }
 
 void ClassSession::edit(Member& m, const EditMessage& e, Out& out) {
-    apply(m, Change{e.scene, EditKind::Edit, e.version, true, {}}, out);
+    apply(m, Change{e.scene, EditKind::Edit, e.version, true, {}, AfterCommit::Nothing, {}}, out);
 }
 
-bool ClassSession::apply(Member& author, Change change, Out& out) {
+bool ClassSession::admissible(Member& author, const Change& change, Out& out, bool again) {
     const Millis now = clock_.now();
-    const std::string& cmd = change.command;
     auto refused = [&](RefusalReason reason, std::string message, QString extra = {}) {
-        refuse(author, reason, std::move(message), out, cmd, std::move(extra));
+        refuse(author, reason, std::move(message), out, change.command, std::move(extra));
         return false;
     };
     if (author.role == Role::Observer)
         return refused(RefusalReason::ReadOnly, "observers cannot change the scene");
     if (frozen_ && author.role != Role::Instructor)
         return refused(RefusalReason::ReadOnly, "the instructor has frozen the class");
-    if (!allowed(author, now)) return refused(RefusalReason::Rate, "too many edits; wait a moment");
+    if (!again && !allowed(author, now))
+        return refused(RefusalReason::Rate, "too many edits; wait a moment");
     if (change.scene.size() > config_.limits.maxSceneBytes)
         return refused(RefusalReason::TooLarge, "the scene has " +
                                                     std::to_string(change.scene.size()) +
@@ -355,11 +406,40 @@ bool ClassSession::apply(Member& author, Change change, Out& out) {
         return refused(RefusalReason::Locked, shownName(holder) + " is editing the scene",
                        frame(extra));
     }
+    if (change.underLock && lock_.coolingDown(author.id, now))
+        return refused(RefusalReason::Locked,
+                       "the instructor broke your lock; you can edit again in a moment");
     if (change.basedOn && *change.basedOn != version_)
         return refused(RefusalReason::Stale,
                        "the edit is based on version " + std::to_string(*change.basedOn) +
                            " but the scene is at version " + std::to_string(version_));
-    const SceneCheck check = checkClassroomScene(change.scene, config_.limits);
+    return true;
+}
+
+void ClassSession::apply(Member& author, Change change, Out& out) {
+    if (!admissible(author, change, out, false)) return;
+    if (!deferChecks_) {
+        const SceneCheck check = checkClassroomScene(change.scene, config_.limits);
+        return finishApply(author, std::move(change), check, out);
+    }
+    // Checked off the event loop: a few changes of each student at a time,
+    // and a bounded queue for the class.
+    const auto mine = std::count_if(waiting_.begin(), waiting_.end(),
+                                    [&](const auto& w) { return w.second.author == author.id; });
+    if (author.role != Role::Instructor && std::size_t(mine) >= kMaxWaitingChecksOfAStudent)
+        return refuse(author, RefusalReason::Rate,
+                      "your last changes are still being checked; wait for them", out,
+                      change.command);
+    if (waiting_.size() >= kMaxWaitingChecks)
+        return refuse(author, RefusalReason::Rate,
+                      "the server is busy checking other changes; try again in a moment", out,
+                      change.command);
+    const CheckId id = nextCheck_++;
+    toCheck_.push_back({id, change.scene});
+    waiting_.emplace(id, WaitingCheck{author.id, std::move(change), std::nullopt});
+}
+
+void ClassSession::finishApply(Member& author, Change change, const SceneCheck& check, Out& out) {
     if (!check.ok) {
         std::string first = "the scene has errors";
         for (const auto& d : check.diagnostics)
@@ -368,10 +448,66 @@ bool ClassSession::apply(Member& author, Change change, Out& out) {
                 break;
             }
         const QJsonObject extra{{"diagnostics", diagnosticsJson(check.diagnostics)}};
-        return refused(RefusalReason::Invalid, first, frame(extra));
+        return refuse(author, check.tooCostly ? RefusalReason::TooCostly : RefusalReason::Invalid,
+                      first, out, change.command, frame(extra));
     }
-    if (change.underLock) lock_.grant(author.id, now);
-    return commit(&author, std::move(change.scene), change.kind, out);
+    // A deferred check: the class may have moved on while it ran.
+    if (deferChecks_ && !admissible(author, change, out, true)) return;
+    if (change.underLock) lock_.grant(author.id, clock_.now());
+    const std::string before = scene_;
+    if (!commit(&author, std::move(change.scene), change.kind, out)) return;
+    switch (change.after) {
+    case AfterCommit::Nothing:
+        break;
+    case AfterCommit::RecordUndo:
+        author.undo = UndoRecord{version_, std::move(change.sceneBefore)};
+        break;
+    case AfterCommit::ForgetUndo:
+        author.undo.reset();
+        break;
+    case AfterCommit::BreakLock:
+        lock_.breakLock(clock_.now(), false); // everyone's basis changed; no old lease stays
+        break;
+    }
+}
+
+std::vector<ScheduledCheck> ClassSession::takeChecks() {
+    std::vector<ScheduledCheck> out;
+    out.swap(toCheck_);
+    return out;
+}
+
+std::vector<Delivery> ClassSession::checked(CheckId id, const SceneCheck& result) {
+    Out out;
+    const auto it = waiting_.find(id);
+    if (it == waiting_.end() || it->second.result) return out; // already timed out
+    it->second.result = result;
+    applyChecked(out);
+    announceLockIfChanged(out);
+    return out;
+}
+
+void ClassSession::applyChecked(Out& out) {
+    while (!waiting_.empty() && waiting_.begin()->second.result) {
+        WaitingCheck w = std::move(waiting_.begin()->second);
+        waiting_.erase(waiting_.begin());
+        const auto m = members_.find(w.author);
+        if (m != members_.end()) finishApply(m->second, std::move(w.change), *w.result, out);
+    }
+}
+
+std::vector<Delivery> ClassSession::checkTimedOut(CheckId id) {
+    SceneCheck late;
+    late.tooCostly = true;
+    late.diagnostics.push_back({scene::Severity::Error,
+                                kSceneFileName,
+                                {},
+                                "checking the scene took longer than " +
+                                    std::to_string(config_.limits.maxCheckMillis) +
+                                    " ms; a class scene must be quicker to check",
+                                "use fewer or simpler formulas, or fewer PROTO instances",
+                                true});
+    return checked(id, late);
 }
 
 bool ClassSession::commit(const Member* author, std::string scene, EditKind kind, Out& out) {
@@ -453,10 +589,15 @@ void ClassSession::command(Member& m, const std::string& text, Out& out) {
                               std::to_string(m.undo->versionAfter) + ", now " +
                               std::to_string(version_) + "); change it back by hand",
                           out, text);
-        std::string before = m.undo->sceneBefore;
-        if (apply(m, Change{std::move(before), EditKind::Undo, version_, true, text}, out))
-            m.undo.reset();
-        return;
+        return apply(m,
+                     Change{m.undo->sceneBefore,
+                            EditKind::Undo,
+                            version_,
+                            true,
+                            text,
+                            AfterCommit::ForgetUndo,
+                            {}},
+                     out);
     }
     case ChatCommandKind::Add:
     case ChatCommandKind::Paint: {
@@ -465,10 +606,10 @@ void ClassSession::command(Member& m, const std::string& text, Out& out) {
         std::string why;
         std::string next = applyChatCommand(c, scene_, why);
         if (next.empty()) return refuse(m, RefusalReason::Invalid, why, out, text);
-        std::string before = scene_;
-        if (apply(m, Change{std::move(next), EditKind::Command, version_, true, text}, out))
-            m.undo = UndoRecord{version_, std::move(before)};
-        return;
+        return apply(m,
+                     Change{std::move(next), EditKind::Command, version_, true, text,
+                            AfterCommit::RecordUndo, scene_},
+                     out);
     }
     }
 }
@@ -501,7 +642,7 @@ void ClassSession::instructor(Member& m, const ClientMessage& msg, Out& out) {
         lock_.grant(m.id, now);
         return;
     case MessageType::BreakLock:
-        lock_.breakLock();
+        lock_.breakLock(now, true);
         return;
     case MessageType::Freeze: {
         frozen_ = std::get<FreezeMessage>(msg.body).frozen;
@@ -516,13 +657,15 @@ void ClassSession::instructor(Member& m, const ClientMessage& msg, Out& out) {
         broadcast(lockJson(), out);
         return;
     case MessageType::Push:
-        if (apply(
-                m,
-                Change{
-                    std::get<PushMessage>(msg.body).scene, EditKind::Push, std::nullopt, false, {}},
-                out))
-            lock_.breakLock(); // everyone's basis changed; nobody keeps an old lease
-        return;
+        return apply(m,
+                     Change{std::get<PushMessage>(msg.body).scene,
+                            EditKind::Push,
+                            std::nullopt,
+                            false,
+                            {},
+                            AfterCommit::BreakLock,
+                            {}},
+                     out);
     case MessageType::Snapshot: {
         const std::string label = std::get<SnapshotMessage>(msg.body).label;
         ChatMessage save{"/save " + label};
@@ -554,7 +697,10 @@ std::vector<Delivery> ClassSession::tick() {
     Out out;
     const Millis now = clock_.now();
     for (auto& [id, c] : connections_)
-        if (now - c.lastSeen > config_.limits.silentMemberMillis)
+        if (c.member == 0 && now - c.connectedAt > config_.limits.joinDeadlineMillis)
+            // Heartbeats do not keep a connection that never joins.
+            error(id, ErrorCode::NotJoined, "no join in time", out, true);
+        else if (now - c.lastSeen > config_.limits.silentMemberMillis)
             error(id, ErrorCode::Malformed, "no message for too long (send heartbeats)", out, true);
     bool left = false;
     for (auto it = members_.begin(); it != members_.end();) {

@@ -11,6 +11,7 @@
 #include "protocol.h"
 #include "rate_limit.h"
 #include "scene_lock.h"
+#include "scene_policy.h"
 
 #include <QString>
 
@@ -35,6 +36,14 @@ struct Delivery {
     bool wholeScene = false;
 };
 
+// A scene the class waits to see checked (ClassSession::takeChecks): the
+// server checks it off the event loop and hands the result back.
+using CheckId = std::uint64_t;
+struct ScheduledCheck {
+    CheckId id = 0;
+    std::string scene;
+};
+
 struct ClassConfig {
     std::string classCode;
     std::string instructorKey; // empty: nobody can join as instructor
@@ -49,7 +58,10 @@ class ClassSession {
     // invalid or the log cannot be written.
     ClassSession(ClassConfig config, const Clock& clock, EditLog* log);
 
-    ConnectionId connect(std::string peerAddress);
+    // A new connection from `peerAddress`; nullopt when that address already
+    // has ClassroomLimits::maxUnjoinedPerAddress connections that have not
+    // joined (the transport closes it).
+    std::optional<ConnectionId> connect(std::string peerAddress);
     std::vector<Delivery> receive(ConnectionId connection, std::string_view frame);
     // A frame the transport could not take (binary, over the size limit).
     std::vector<Delivery> rejectFrame(ConnectionId connection, ErrorCode code, std::string message);
@@ -57,6 +69,19 @@ class ClassSession {
     // Lets leases and grace periods run out and closes silent connections;
     // the server calls it about once a second.
     std::vector<Delivery> tick();
+
+    // Checking a changed scene costs work (issue 26 §3). By default a change
+    // is checked as it arrives; deferred, it waits in takeChecks() for the
+    // server to check it on a worker (checkClassroomScene) and hand the result
+    // to checked() — or to say checkTimedOut() when it took longer than
+    // limits().maxCheckMillis. Meanwhile the class goes on; the cheap rules
+    // (lock, version, freeze) are applied again when the result comes, and
+    // changes are applied in the order they arrived.
+    void setDeferredChecks(bool deferred) { deferChecks_ = deferred; }
+    std::vector<ScheduledCheck> takeChecks();
+    std::vector<Delivery> checked(CheckId id, const SceneCheck& result);
+    std::vector<Delivery> checkTimedOut(CheckId id);
+    std::size_t checksWaiting() const { return waiting_.size(); }
 
     std::int64_t version() const { return version_; }
     const std::string& scene() const { return scene_; }
@@ -79,11 +104,16 @@ class ClassSession {
         Millis leftAt = 0;
         TokenBucket bucket;
         std::optional<UndoRecord> undo;
+        TokenBucket joins; // resumes of this seat
     };
+    // Makes room for a new member in a full class: the seat of the member
+    // away longest goes (a seat kept for a reconnect is not a member).
+    bool freeASeat();
     struct Connection {
         std::string peer;
         MemberId member = 0; // 0 before a welcome
         Millis lastSeen = 0;
+        Millis connectedAt = 0;
     };
     using Out = std::vector<Delivery>;
 
@@ -95,16 +125,23 @@ class ClassSession {
     void instructor(Member& m, const ClientMessage& msg, Out& out);
     void history(Member& m, const HistoryMessage& h, Out& out);
 
+    // What else a change does once it is committed.
+    enum class AfterCommit : std::uint8_t { Nothing, RecordUndo, ForgetUndo, BreakLock };
     struct Change {
         std::string scene;
         EditKind kind = EditKind::Edit;
         std::optional<std::int64_t> basedOn; // checked as a fencing token when given
         bool underLock = true;               // false: an instructor's push
         std::string command;                 // the chat text, for refusals
+        AfterCommit after = AfterCommit::Nothing;
+        std::string sceneBefore; // for RecordUndo
     };
-    // The one path every change takes: role, freeze, size, lock, version,
-    // checks, log, broadcast. Returns whether it was applied.
-    bool apply(Member& author, Change change, Out& out);
+    // The one path every change takes: role, freeze, size, lock, version
+    // (admissible), the scene's check (now or deferred), then log and
+    // broadcast (finishApply).
+    void apply(Member& author, Change change, Out& out);
+    bool admissible(Member& author, const Change& change, Out& out, bool again);
+    void finishApply(Member& author, Change change, const SceneCheck& check, Out& out);
     bool commit(const Member* author, std::string scene, EditKind kind, Out& out);
 
     void refuse(const Member& to, RefusalReason reason, std::string message, Out& out,
@@ -123,6 +160,19 @@ class ClassSession {
     QString lockJson();
     QString membersJson() const;
 
+    struct WaitingCheck {
+        MemberId author = 0;
+        Change change;
+        std::optional<SceneCheck> result; // once checked (or timed out)
+    };
+    // Applies the checked changes at the head of the queue: changes are
+    // applied in the order they came, whichever check ends first.
+    void applyChecked(Out& out);
+    bool deferChecks_ = false;
+    std::map<CheckId, WaitingCheck> waiting_;
+    std::vector<ScheduledCheck> toCheck_;
+    CheckId nextCheck_ = 1;
+
     ClassConfig config_;
     const Clock& clock_;
     EditLog* log_;
@@ -135,6 +185,8 @@ class ClassSession {
     std::optional<Millis> lastPresence_;
     bool presenceDue_ = false;
     FailedJoinThrottle failedJoins_;
+    AddressBuckets joinsByAddress_;
+    KeyThrottle instructorKey_;
     std::map<ConnectionId, Connection> connections_;
     std::map<MemberId, Member> members_;
     ConnectionId nextConnection_ = 1;

@@ -32,9 +32,13 @@ constexpr std::array kRoleNames{std::pair{Role::Student, "student"},
                                 std::pair{Role::Instructor, "instructor"},
                                 std::pair{Role::Observer, "observer"}};
 constexpr std::array kReasonNames{
-    std::pair{RefusalReason::Locked, "locked"},   std::pair{RefusalReason::Stale, "stale"},
-    std::pair{RefusalReason::Invalid, "invalid"}, std::pair{RefusalReason::ReadOnly, "read-only"},
-    std::pair{RefusalReason::Rate, "rate"},       std::pair{RefusalReason::TooLarge, "too-large"},
+    std::pair{RefusalReason::Locked, "locked"},
+    std::pair{RefusalReason::Stale, "stale"},
+    std::pair{RefusalReason::Invalid, "invalid"},
+    std::pair{RefusalReason::ReadOnly, "read-only"},
+    std::pair{RefusalReason::Rate, "rate"},
+    std::pair{RefusalReason::TooLarge, "too-large"},
+    std::pair{RefusalReason::TooCostly, "too-costly"},
 };
 constexpr std::array kErrorNames{
     std::pair{ErrorCode::Malformed, "malformed"},

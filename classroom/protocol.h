@@ -43,7 +43,7 @@ enum class MessageType {
 enum class Role { Student, Instructor, Observer };
 
 // Why an edit (or a chat command) was not applied.
-enum class RefusalReason { Locked, Stale, Invalid, ReadOnly, Rate, TooLarge };
+enum class RefusalReason { Locked, Stale, Invalid, ReadOnly, Rate, TooLarge, TooCostly };
 
 // Why a message could not be handled at all.
 enum class ErrorCode {

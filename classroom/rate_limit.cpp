@@ -15,6 +15,27 @@ bool TokenBucket::take(Millis now) {
     return true;
 }
 
+bool TokenBucket::full(Millis now) const {
+    const double refilled =
+        tokens_ + static_cast<double>(std::max<Millis>(now - last_, 0)) * perSecond_ / 1000.0;
+    return refilled >= burst_;
+}
+
+bool AddressBuckets::take(const std::string& address, Millis now) {
+    if (buckets_.size() >= kMaxAddresses) {
+        std::erase_if(buckets_, [&](const auto& b) { return b.second.full(now); });
+        if (buckets_.size() >= kMaxAddresses) buckets_.clear(); // a flood of addresses
+    }
+    auto it = buckets_.try_emplace(address, burst_, perSecond_, now).first;
+    return it->second.take(now);
+}
+
+void KeyThrottle::failed(Millis now) {
+    if (++failures_ <= freeTries_) return;
+    const int doublings = std::min(failures_ - freeTries_ - 1, 30);
+    until_ = now + std::min<Millis>(maxDelay_, Millis(1000) << doublings);
+}
+
 void FailedJoinThrottle::forgetOld(std::deque<Millis>& times, Millis now) const {
     while (!times.empty() && now - times.front() >= window_)
         times.pop_front();

@@ -18,10 +18,16 @@ void SceneLock::grant(MemberId member, Millis now) {
     holder_ = LockHolder{member, now + lease_};
 }
 
-bool SceneLock::renew(MemberId member, Millis now) {
-    if (!holder(now) || holder_->member != member || !holder_->connected) return false;
-    holder_->expires = now + lease_;
-    return true;
+void SceneLock::breakLock(Millis now, bool cooldown) {
+    if (cooldown && holder(now)) {
+        broken_ = holder_->member;
+        brokenUntil_ = now + cooldown_;
+    }
+    holder_.reset();
+}
+
+bool SceneLock::coolingDown(MemberId member, Millis now) const {
+    return broken_ == member && now < brokenUntil_;
 }
 
 bool SceneLock::release(MemberId member) {

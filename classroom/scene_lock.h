@@ -1,9 +1,11 @@
 #pragma once
 // The class's one lock, a lease over the whole scene (docs/design-notes.md,
-// "Classroom locks"): an edit takes it for its sender; the holder's edits and
-// heartbeats renew it; it ends on release, after `lease` without renewal, or
-// `grace` after the holder disconnects (a reconnect within the grace keeps
-// it). Time comes from the caller, so tests run on a ManualClock.
+// "Classroom locks"): an edit takes it for its sender and renews it; it ends
+// on release, after `lease` without an edit (heartbeats keep a member's seat,
+// not the lock), or `grace` after the holder disconnects (a reconnect within
+// the grace keeps it). A holder whose lock the instructor breaks cannot take
+// it again for `cooldown`. Time comes from the caller, so tests run on a
+// ManualClock.
 #include "clock.h"
 
 #include <cstdint>
@@ -22,7 +24,8 @@ struct LockHolder {
 
 class SceneLock {
   public:
-    SceneLock(Millis lease, Millis grace) : lease_(lease), grace_(grace) {}
+    SceneLock(Millis lease, Millis grace, Millis cooldown = 30'000)
+        : lease_(lease), grace_(grace), cooldown_(cooldown) {}
 
     // The holder at `now`, after letting an expired lease go.
     std::optional<LockHolder> holder(Millis now);
@@ -30,11 +33,13 @@ class SceneLock {
     bool heldByOther(MemberId member, Millis now);
     // Gives the lock to `member` (taking it from anyone) with a fresh lease.
     void grant(MemberId member, Millis now);
-    // A sign of life from `member`: renews the lease if it holds the lock.
-    bool renew(MemberId member, Millis now);
     // Gives the lock up if `member` holds it.
     bool release(MemberId member);
-    void breakLock() { holder_.reset(); }
+    // Nobody holds it. `cooldown`: the instructor broke it, and its holder
+    // waits before taking it again (else a student takes it straight back).
+    void breakLock(Millis now, bool cooldown);
+    // Whether `member` is waiting after a broken lock.
+    bool coolingDown(MemberId member, Millis now) const;
     // The holder left: keep the lock for the grace period only.
     void disconnected(MemberId member, Millis now);
     // The holder is back (same member, new connection): a normal lease again.
@@ -43,7 +48,10 @@ class SceneLock {
   private:
     Millis lease_;
     Millis grace_;
+    Millis cooldown_;
     std::optional<LockHolder> holder_;
+    std::optional<MemberId> broken_; // whose lock was broken, until brokenUntil_
+    Millis brokenUntil_ = 0;
 };
 
 } // namespace fl::classroom

@@ -1,7 +1,10 @@
 #include "scene_policy.h"
 
 #include "scene/scene_reader.h"
+#include "scene/scene_work.h"
 #include "scene/source_map.h"
+
+#include <algorithm>
 
 namespace fl::classroom {
 
@@ -20,6 +23,25 @@ bool hasUrl(const scene::Node& node) {
 
 } // namespace
 
+scene::ReadOptions readOptionsFor(const ClassroomLimits& limits) {
+    scene::ReadOptions options;
+    options.followReferences = false;
+    options.limits.maxFileBytes = limits.maxSceneBytes;
+    options.limits.maxDecodedBytes = limits.maxSceneBytes;
+    options.limits.maxNodes = limits.maxNodes;
+    options.limits.maxExpandedNodes = limits.maxNodes;
+    options.limits.maxInlineFiles = 0;
+    options.limits.maxDiagnostics = 50;
+    options.limits.maxUnfoldedNodes = limits.maxUnfoldedNodes;
+    options.limits.maxTapeInstructions = limits.maxTapeInstructions;
+    options.limits.maxCompileSteps = limits.maxCompileSteps;
+    return options;
+}
+
+scene::WorkBudget workBudgetFor(const ClassroomLimits& limits) {
+    return {limits.maxMeshCells, limits.maxMeshEvaluations};
+}
+
 SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& limits) {
     SceneCheck check;
     if (text.size() > limits.maxSceneBytes) {
@@ -29,16 +51,11 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
                    std::to_string(limits.maxSceneBytes));
         return check;
     }
-    scene::ReadOptions options;
-    options.followReferences = false;
-    options.limits.maxFileBytes = limits.maxSceneBytes;
-    options.limits.maxDecodedBytes = limits.maxSceneBytes;
-    options.limits.maxNodes = limits.maxNodes;
-    options.limits.maxExpandedNodes = limits.maxNodes;
-    options.limits.maxInlineFiles = 0;
-    options.limits.maxDiagnostics = 50;
+    const scene::ReadOptions options = readOptionsFor(limits);
     scene::ReadResult read = scene::readSceneBytes(text, kSceneFileName, options);
     check.diagnostics = std::move(read.diagnostics);
+    check.tooCostly = std::any_of(check.diagnostics.begin(), check.diagnostics.end(),
+                                  [](const scene::SceneDiagnostic& d) { return d.overBudget; });
     if (!read.ok()) return check;
     const scene::Scene& s = *read.scene;
     check.nodes = s.nodeCount();
@@ -74,6 +91,11 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
                            std::to_string(limits.maxFormulaBytes));
         }
     });
+    if (auto costly = scene::checkWorkBudget(s, workBudgetFor(limits))) {
+        costly->file = kSceneFileName;
+        check.diagnostics.push_back(std::move(*costly));
+        check.tooCostly = true;
+    }
     check.ok = !scene::hasErrors(check.diagnostics);
     return check;
 }

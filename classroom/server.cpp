@@ -1,7 +1,12 @@
 #include "server.h"
 
+#include "scene_policy.h"
+
 #include <QWebSocket>
 #include <QWebSocketServer>
+
+#include <algorithm>
+#include <new>
 
 namespace fl::classroom {
 
@@ -17,10 +22,64 @@ ClassroomServer::ClassroomServer(ClassSession& session, ServerOptions options, Q
     connect(server_, &QWebSocketServer::newConnection, this, &ClassroomServer::accept);
     tick_.setInterval(options_.tickMillis);
     connect(&tick_, &QTimer::timeout, this, [this] { deliver(session_.tick()); });
+    checks_.setMaxThreadCount(std::max(1, options_.checkThreads));
+    session_.setDeferredChecks(true);
 }
 
 ClassroomServer::~ClassroomServer() {
     close();
+    checks_.clear(); // checks not started are dropped; running ones end within their budget
+    checks_.waitForDone();
+    session_.setDeferredChecks(false);
+}
+
+namespace {
+
+// checkClassroomScene on a worker: whatever happens there is a refusal, never
+// an exception out of the thread (memory runs out under the server's cap).
+SceneCheck checkOnWorker(const std::string& scene, const ClassroomLimits& limits) {
+    auto failed = [](std::string message) {
+        SceneCheck c;
+        c.tooCostly = true;
+        c.diagnostics.push_back({scene::Severity::Error,
+                                 kSceneFileName,
+                                 {},
+                                 std::move(message),
+                                 "use fewer or simpler formulas, or fewer PROTO instances",
+                                 true});
+        return c;
+    };
+    try {
+        return checkClassroomScene(scene, limits);
+    } catch (const std::bad_alloc&) {
+        return failed("checking the scene needed more memory than the class server allows");
+    } catch (const std::exception& e) {
+        return failed(std::string("the scene could not be checked: ") + e.what());
+    }
+}
+
+} // namespace
+
+void ClassroomServer::dispatchChecks() {
+    for (ScheduledCheck& c : session_.takeChecks()) {
+        const CheckId id = c.id;
+        const ClassroomLimits limits = session_.limits();
+        const int timeLimit = int(std::min<Millis>(limits.maxCheckMillis, 3'600'000));
+        checks_.start([this, id, limits, timeLimit, scene = std::move(c.scene)] {
+            // The time limit runs from when a worker takes the check up.
+            QMetaObject::invokeMethod(this, [this, id, timeLimit] {
+                QTimer::singleShot(timeLimit, this, [this, id] {
+                    deliver(session_.checkTimedOut(id));
+                    dispatchChecks();
+                });
+            });
+            SceneCheck result = checkOnWorker(scene, limits);
+            QMetaObject::invokeMethod(this, [this, id, result = std::move(result)] {
+                deliver(session_.checked(id, result));
+                dispatchChecks();
+            });
+        });
+    }
 }
 
 bool ClassroomServer::listen(const QHostAddress& address, quint16 port, QString* why) {
@@ -62,11 +121,21 @@ void ClassroomServer::accept() {
         socket->setMaxAllowedIncomingMessageSize(static_cast<quint64>(limits.maxMessageBytes));
         socket->setMaxAllowedIncomingFrameSize(static_cast<quint64>(limits.maxMessageBytes));
         socket->setParent(this);
-        const ConnectionId id = session_.connect(socket->peerAddress().toString().toStdString());
+        const std::optional<ConnectionId> admitted =
+            session_.connect(socket->peerAddress().toString().toStdString());
+        if (!admitted) {
+            // An address holding open connections that never join.
+            socket->close(QWebSocketProtocol::CloseCodePolicyViolated,
+                          QStringLiteral("too many connections from this address have not joined"));
+            socket->deleteLater();
+            continue;
+        }
+        const ConnectionId id = *admitted;
         sockets_[id] = Peer{socket, {}, {}, false};
         connect(socket, &QWebSocket::textMessageReceived, this, [this, id](const QString& text) {
             const QByteArray utf8 = text.toUtf8();
             deliver(session_.receive(id, std::string_view(utf8.constData(), utf8.size())));
+            dispatchChecks();
         });
         connect(socket, &QWebSocket::binaryMessageReceived, this, [this, id](const QByteArray&) {
             deliver(session_.rejectFrame(id, ErrorCode::Malformed,

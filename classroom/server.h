@@ -4,11 +4,14 @@
 // (1 MiB), and keeps one slow reader from costing the others: a connection
 // whose unsent bytes pass a high-water mark gets only the newest scene when
 // it drains (every scene frame is the whole scene, so the ones between do
-// not matter) and is closed if even that does not keep up.
+// not matter) and is closed if even that does not keep up. A changed scene is
+// checked on a worker thread, never on the event loop, with a time limit
+// (ClassroomLimits::maxCheckMillis): a costly edit cannot freeze the class.
 #include "class_session.h"
 
 #include <QHostAddress>
 #include <QObject>
+#include <QThreadPool>
 #include <QTimer>
 
 #include <map>
@@ -23,6 +26,7 @@ struct ServerOptions {
     qint64 highWaterBytes = 4 << 20;   // unsent bytes before a connection is held back
     qint64 closeAboveBytes = 64 << 20; // unsent bytes before a connection is given up
     int tickMillis = 1000;
+    int checkThreads = 2; // workers that check changed scenes
 };
 
 class ClassroomServer : public QObject {
@@ -50,12 +54,15 @@ class ClassroomServer : public QObject {
     void send(Peer& peer, const QString& frame, bool wholeScene);
     void drain(ConnectionId id);
     void dropped(ConnectionId id);
+    // Starts the checks the session waits for on the workers.
+    void dispatchChecks();
 
     ClassSession& session_;
     ServerOptions options_;
     QWebSocketServer* server_ = nullptr;
     QTimer tick_;
     std::map<ConnectionId, Peer> sockets_;
+    QThreadPool checks_; // last: destroyed (waiting for its workers) first
 };
 
 } // namespace fl::classroom

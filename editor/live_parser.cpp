@@ -7,10 +7,15 @@
 
 namespace fl::editor {
 
-ParseOutcome parseSceneText(const QString& text, const QString& path) {
+ParseOutcome parseSceneText(const QString& text, const QString& path, const ParseLimits& limits) {
     ParseOutcome out;
     const std::string file = path.isEmpty() ? std::string("untitled.x3d") : path.toStdString();
-    scene::ReadResult r = scene::readSceneBytes(text.toStdString(), file);
+    scene::ReadResult r = scene::readSceneBytes(text.toStdString(), file, limits.read);
+    if (r.ok())
+        if (auto costly = scene::checkWorkBudget(*r.scene, limits.work)) {
+            r.diagnostics.push_back(std::move(*costly));
+            r.scene.reset();
+        }
     bool errors = !r.ok();
     for (const auto& d : r.diagnostics) {
         const bool isError = d.severity == scene::Severity::Error;
@@ -61,8 +66,8 @@ void LiveParser::start() {
     working_ = true;
     if (worker_.joinable()) worker_.join();
     const int generation = generation_;
-    worker_ = std::thread([this, generation, text = text_, path = path_] {
-        auto outcome = std::make_shared<ParseOutcome>(parseSceneText(text, path));
+    worker_ = std::thread([this, generation, text = text_, path = path_, limits = limits_] {
+        auto outcome = std::make_shared<ParseOutcome>(parseSceneText(text, path, limits));
         QMetaObject::invokeMethod(
             this, [this, generation, outcome] { finished(generation, outcome); },
             Qt::QueuedConnection);

@@ -7,6 +7,8 @@
 #include "code_editor.h" // EditorDiagnostic
 #include "scene/scene.h"
 #include "scene/scene_diagnostic.h"
+#include "scene/scene_reader.h"
+#include "scene/scene_work.h"
 
 #include <QObject>
 #include <QTimer>
@@ -23,8 +25,16 @@ struct ParseOutcome {
     std::shared_ptr<const scene::Scene> scene; // null when the text has errors
 };
 
+// How a text is read and what showing it may cost: a file's defaults, or the
+// tighter bounds of a class scene (classroom::readOptionsFor).
+struct ParseLimits {
+    scene::ReadOptions read;
+    scene::WorkBudget work;
+};
+
 // Reads `text` as the scene file `path` (its folder resolves Inline urls).
-ParseOutcome parseSceneText(const QString& text, const QString& path);
+ParseOutcome parseSceneText(const QString& text, const QString& path,
+                            const ParseLimits& limits = {});
 
 class LiveParser : public QObject {
     Q_OBJECT
@@ -33,6 +43,9 @@ class LiveParser : public QObject {
     ~LiveParser() override;
 
     void setDelay(int milliseconds) { timer_.setInterval(milliseconds); }
+    // The bounds of the next parses (a scene from a class is held to the
+    // class's; see issue 26 §3).
+    void setLimits(const ParseLimits& limits) { limits_ = limits; }
     // The text changed: parse it after the pause.
     void setText(const QString& text, const QString& path);
     // Parse now, without the pause.
@@ -52,6 +65,7 @@ class LiveParser : public QObject {
 
     QTimer timer_;
     QString text_, path_;
+    ParseLimits limits_;
     std::shared_ptr<const scene::Scene> lastGood_;
     int generation_ = 0, finished_ = 0;
     std::thread worker_;

@@ -56,6 +56,8 @@ class Compiler {
     Compiler(const Program& program, const CompileOptions& options, std::vector<Diagnostic>& diags)
         : program_(program), options_(options), diags_(diags) {}
 
+    long expansionSteps() const { return expansionSteps_; }
+
     std::optional<Tape> run() {
         try {
             declareInputs();
@@ -970,6 +972,7 @@ CompileResult compile(std::string_view source, const CompileOptions& options) {
     if (hasErrors(result.diagnostics)) return result;
     Compiler compiler(program, options, result.diagnostics);
     std::optional<Tape> tape = compiler.run();
+    result.expansionSteps = compiler.expansionSteps();
     if (!hasErrors(result.diagnostics)) result.tape = std::move(tape);
     return result;
 }

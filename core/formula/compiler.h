@@ -50,6 +50,7 @@ struct CompileOptions {
 struct CompileResult {
     std::optional<Tape> tape; // present exactly when there are no errors
     std::vector<Diagnostic> diagnostics;
+    long expansionSteps = 0; // the work compiling took (Limits::maxExpansionSteps)
     bool ok() const { return tape.has_value(); }
 };
 

@@ -870,7 +870,7 @@ std::vector<formula::ParameterInfo> sceneParameters(const scene::Scene& scene) {
     std::vector<formula::ParameterInfo> out;
     for (const scene::Scene* shown : scene::scenesShownBy(scene))
         for (const scene::CompiledDefinition& d : shown->definitions)
-            for (const formula::ParameterInfo& p : d.tape.params)
+            for (const formula::ParameterInfo& p : d.tape->params)
                 if (std::none_of(out.begin(), out.end(),
                                  [&](const formula::ParameterInfo& q) { return q.name == p.name; }))
                     out.push_back(p);

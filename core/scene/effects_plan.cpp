@@ -22,7 +22,7 @@ bool definitionReadsT(const Scene& scene, const Node* node, std::string_view fie
 bool anyDefinitionReadsT(const Scene& scene, const Node* node) {
     if (!node) return false;
     for (const CompiledDefinition& d : scene.definitions)
-        if (d.node == node && d.tape.usesInput[kInputT]) return true;
+        if (d.node == node && d.tape->usesInput[kInputT]) return true;
     return false;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 
 #include "field_access.h"
 #include "function_kinds.h"
@@ -14,14 +16,22 @@
 namespace fl::scene {
 namespace {
 
+// Numbers in a cache key: every bit counts (0.1 and 0.1000000001 differ).
+std::string formatNumberKey(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%a", v);
+    return text;
+}
+
 using formula::DefinitionKind;
 
 class DefinitionCompiler {
   public:
-    DefinitionCompiler(Scene& scene, std::vector<SceneDiagnostic>& out)
-        : scene_(scene), out_(out) {}
+    DefinitionCompiler(Scene& scene, std::vector<SceneDiagnostic>& out, const ReadLimits& limits)
+        : scene_(scene), out_(out), limits_(limits) {}
 
-    void compileNode(const Node& node);
+    // False once the scene's formulas cost more than the limits allow.
+    bool compileNode(const Node& node);
 
   private:
     void report(const Node& node, const Field* field, Severity severity, FilePos pos,
@@ -51,8 +61,21 @@ class DefinitionCompiler {
     void checkMaterial(const Node& node);
     void checkDomain(const Node& node);
 
+    // One compilation per distinct text and options: a PROTO's instances
+    // share it (and its tape).
+    struct Compiled {
+        std::shared_ptr<const formula::Tape> tape;
+        std::vector<formula::Diagnostic> diagnostics;
+    };
+    const Compiled& compiled(const std::string& source, const formula::CompileOptions& options);
+    bool overBudget(const Node& node, const Field& field);
+
     Scene& scene_;
     std::vector<SceneDiagnostic>& out_;
+    const ReadLimits& limits_;
+    std::map<std::string, Compiled> cache_;
+    long compileSteps_ = 0;
+    std::size_t tapeInstructions_ = 0;
     LineIndexes lineIndexes_{scene_};
     std::set<std::tuple<std::string, int, int, std::string>> seen_;
 };
@@ -88,7 +111,9 @@ void DefinitionCompiler::checkGeometry(const Node& node) {
     if (collision != "function" && collision != "polygonal")
         report(node, node.field("collision"), Severity::Error, fieldPos(node, "collision"),
                "collision '" + collision + "' is not function or polygonal");
-    if (stringsField(node, "definition").empty())
+    const Field* definition = node.field("definition");
+    const bool givenByInstance = definition && !definition->isReference.empty();
+    if (stringsField(node, "definition").empty() && !givenByInstance)
         report(node, nullptr, Severity::Error, node.where, "FGeometry has no definition",
                "write definition \"1 - x^2 - y^2 - z^2\" for a unit sphere");
     if (numberField(node, "points") < 0 || numberField(node, "points") > 10'000'000)
@@ -238,7 +263,46 @@ void DefinitionCompiler::checkDomain(const Node& node) {
                "timeBase '" + base + "' is not scene, local or utc");
 }
 
-void DefinitionCompiler::compileNode(const Node& node) {
+const DefinitionCompiler::Compiled&
+DefinitionCompiler::compiled(const std::string& source, const formula::CompileOptions& options) {
+    std::string key = std::to_string(int(options.kind)) + ' ' +
+                      std::to_string(int(options.setOperations.kind)) + ' ' +
+                      formatNumberKey(options.setOperations.m) + ' ' +
+                      formatNumberKey(options.setOperations.alpha) + ' ' +
+                      std::to_string(options.parameters.size()) + '\n' + source;
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+    formula::CompileResult result = formula::compile(source, options);
+    compileSteps_ += result.expansionSteps;
+    Compiled c;
+    if (result.tape) c.tape = std::make_shared<const formula::Tape>(std::move(*result.tape));
+    c.diagnostics = std::move(result.diagnostics);
+    return cache_.emplace(std::move(key), std::move(c)).first->second;
+}
+
+bool DefinitionCompiler::overBudget(const Node& node, const Field& field) {
+    std::string what;
+    if (compileSteps_ > limits_.maxCompileSteps)
+        what = "take more than " + std::to_string(limits_.maxCompileSteps) +
+               " steps to compile (after inlining functions and unrolling loops)";
+    else if (tapeInstructions_ > limits_.maxTapeInstructions)
+        what = "come to more than " + std::to_string(limits_.maxTapeInstructions) + " instructions";
+    if (what.empty()) return false;
+    // Where the node is written: a PROTO instance, not the body it copies.
+    const Node* at = &node;
+    while (at->instance)
+        at = at->instance;
+    const std::size_t before = out_.size();
+    report(*at, at == &node ? &field : nullptr, Severity::Error,
+           at == &node ? field.where : at->where,
+           "the scene's formulas, every PROTO instance counted, " + what +
+               ": this one is past the limit",
+           "use fewer instances of costly formulas, fewer loop iterations, or split the scene");
+    if (out_.size() > before) out_.back().overBudget = true;
+    return true;
+}
+
+bool DefinitionCompiler::compileNode(const Node& node) {
     if (node.type == "FGeometry") checkGeometry(node);
     if (node.type == "FMaterial") checkMaterial(node);
     if (node.type == "FTransform") checkTransform(node);
@@ -248,7 +312,7 @@ void DefinitionCompiler::compileNode(const Node& node) {
         if (!field || field->value.strings.empty()) continue;
         const std::string source = formulaText(*field);
         warnDroppedBackslashes(node, *field);
-        formula::CompileResult result = formula::compile(source, optionsFor(node, df.kind));
+        const Compiled& result = compiled(source, optionsFor(node, df.kind));
         for (const formula::Diagnostic& d : result.diagnostics) {
             const FilePos pos = formulaTextPosition(*field, d.range.begin.offset, lineIndexes_);
             report(node, field, d.severity, pos,
@@ -256,10 +320,13 @@ void DefinitionCompiler::compileNode(const Node& node) {
         }
         if (result.tape && node.type == "FMaterial" && df.field == "definition")
             checkMaterialOutputs(node, *result.tape, *field);
-        if (result.tape && !node.inProtoBody)
-            scene_.definitions.push_back(
-                {&node, std::string(df.field), df.kind, std::move(*result.tape)});
+        if (result.tape && !node.inProtoBody) {
+            tapeInstructions_ += result.tape->code.size();
+            scene_.definitions.push_back({&node, std::string(df.field), df.kind, result.tape});
+        }
+        if (overBudget(node, *field)) return false;
     }
+    return true;
 }
 
 } // namespace
@@ -290,14 +357,15 @@ std::vector<DefinitionField> definitionFields(const Node& node) {
     return {};
 }
 
-void compileFunctionDefinitions(Scene& scene, std::vector<SceneDiagnostic>& diagnostics) {
-    DefinitionCompiler compiler(scene, diagnostics);
+void compileFunctionDefinitions(Scene& scene, std::vector<SceneDiagnostic>& diagnostics,
+                                const ReadLimits& limits) {
+    DefinitionCompiler compiler(scene, diagnostics, limits);
     std::vector<const Node*> nodes;
     scene.forEachNode([&](const Node& n) {
         if (n.spec && n.spec->family == NodeFamily::Function) nodes.push_back(&n);
     });
     for (const Node* n : nodes)
-        compiler.compileNode(*n);
+        if (!compiler.compileNode(*n)) return;
 }
 
 } // namespace fl::scene

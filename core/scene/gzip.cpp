@@ -1,5 +1,7 @@
 #include "gzip.h"
 
+#include "read_limits.h"
+
 #include <zlib.h>
 
 namespace fl::scene {
@@ -33,7 +35,7 @@ std::optional<std::string> gunzip(std::string_view bytes, std::size_t maxBytes,
         }
         out.append(buffer, sizeof buffer - zs.avail_out);
         if (out.size() > maxBytes) {
-            problem = "the file unpacks to more than " + std::to_string(maxBytes >> 20) + " MiB";
+            problem = "the file unpacks to more than " + byteSizeText(maxBytes);
             inflateEnd(&zs);
             return std::nullopt;
         }

@@ -117,7 +117,7 @@ void checkUnfoldedScene(const Scene& scene, std::size_t maxNodes, std::size_t ma
     const NodeGraphShape shape = examineNodeGraph(roots, {}, Edges::Shown, maxNodes, maxDepth);
     auto refuse = [&](const Node& at, std::string message, std::string suggestion) {
         out.push_back({Severity::Error, scene.pathOf(at.file), at.where, std::move(message),
-                       std::move(suggestion)});
+                       std::move(suggestion), true});
     };
     if (shape.loop) // the builder refuses loops; met here only for a scene changed by code
         refuse(*shape.loop->holder, "this node contains itself", "a scene is a tree");

@@ -2,6 +2,7 @@
 // Bounds on what a scene file may ask of us; each exceeded bound is a located
 // error, never a crash, a hang or unbounded memory (docs/nodes.md, "Limits").
 #include <cstddef>
+#include <string>
 
 namespace fl::scene {
 
@@ -20,7 +21,19 @@ struct ReadLimits {
     std::size_t maxProtoDepth = 32;           // PROTO instances within PROTO bodies
     std::size_t maxInlineDepth = 8;           // Inline within Inline
     std::size_t maxInlineFiles = 256;         // files one scene may pull in
-    std::size_t maxDiagnostics = 200;         // then one "too many" note
+    // The work of a scene's formulas: steps to compile them (inlining,
+    // unrolling; a text shared by many PROTO instances compiles once) and the
+    // instructions of their tapes, each instance counted (each is evaluated).
+    long maxCompileSteps = 50'000'000;
+    std::size_t maxTapeInstructions = 20'000'000;
+    std::size_t maxDiagnostics = 200; // then one "too many" note
 };
+
+// A size as a person reads it in a message: "64 MiB", "256 KiB", "900 bytes".
+inline std::string byteSizeText(std::size_t bytes) {
+    if (bytes >= (1u << 20) && bytes % (1u << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+    if (bytes >= (1u << 10) && bytes % (1u << 10) == 0) return std::to_string(bytes >> 10) + " KiB";
+    return std::to_string(bytes) + " bytes";
+}
 
 } // namespace fl::scene

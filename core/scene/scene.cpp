@@ -38,7 +38,7 @@ const FieldDeclaration* ProtoDeclaration::interfaceField(std::string_view fieldN
 
 const formula::Tape* Scene::definition(const Node& node, std::string_view field) const {
     for (const CompiledDefinition& d : definitions)
-        if (d.node == &node && d.field == field) return &d.tape;
+        if (d.node == &node && d.field == field) return d.tape.get();
     for (const auto& child : referenced) // a node of an Inline's scene
         if (const formula::Tape* tape = child->definition(node, field)) return tape;
     return nullptr;

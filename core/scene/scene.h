@@ -157,12 +157,13 @@ struct Component {
     int level = 1;
 };
 
-// A function node's definition compiled at load time (DESIGN §3).
+// A function node's definition compiled at load time (DESIGN §3). The
+// instances of a PROTO share the tape their common text compiles to.
 struct CompiledDefinition {
     const Node* node = nullptr;
     std::string field; // "definition", "translation", ...
     formula::DefinitionKind kind = formula::DefinitionKind::Generic;
-    formula::Tape tape;
+    std::shared_ptr<const formula::Tape> tape;
 };
 
 // A number no other Scene object of this process has had: caches keyed by

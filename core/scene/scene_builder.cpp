@@ -89,6 +89,12 @@ void SceneBuilder::fail(FilePos pos, std::string message, std::string suggestion
     throw StopReading{};
 }
 
+void SceneBuilder::failOverBudget(FilePos pos, std::string message) {
+    error(pos, std::move(message));
+    diagnostics_.back().overBudget = true;
+    throw StopReading{};
+}
+
 bool SceneBuilder::hasErrors() const {
     return errorCount_ > 0;
 }
@@ -180,7 +186,8 @@ Node* SceneBuilder::openNode(std::string_view type, FilePos pos) {
              "nodes are nested more than " + std::to_string(limits_.maxNestingDepth) + " deep");
     checkName(type, NameKind::NodeType, pos);
     if (++nodesCreated_ > limits_.maxNodes)
-        fail(pos, "the scene has more than " + std::to_string(limits_.maxNodes) + " nodes");
+        failOverBudget(pos,
+                       "the scene has more than " + std::to_string(limits_.maxNodes) + " nodes");
     Node* node = scene_.newNode();
     node->type = std::string(type);
     node->where = pos;
@@ -687,8 +694,8 @@ Node* SceneBuilder::cloneForInstance(Node& original, const Node& instance, std::
     if (auto it = clones.find(&original); it != clones.end())
         return it->second; // DEF/USE inside the body stays shared
     if (++expandedNodes_ > limits_.maxExpandedNodes)
-        fail(instance.where, "PROTO expansion creates more than " +
-                                 std::to_string(limits_.maxExpandedNodes) + " nodes");
+        failOverBudget(instance.where, "PROTO expansion creates more than " +
+                                           std::to_string(limits_.maxExpandedNodes) + " nodes");
     Node* copy = scene_.newNode();
     clones.emplace(&original, copy);
     cloneOrigins_.emplace(copy, &original);

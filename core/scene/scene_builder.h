@@ -50,6 +50,8 @@ class SceneBuilder {
     void error(FilePos pos, std::string message, std::string suggestion = {});
     void warning(FilePos pos, std::string message, std::string suggestion = {});
     [[noreturn]] void fail(FilePos pos, std::string message, std::string suggestion = {});
+    // fail() for a bound on size or work (SceneDiagnostic::overBudget).
+    [[noreturn]] void failOverBudget(FilePos pos, std::string message);
     bool hasErrors() const;
 
     // Scopes: the scene, each PROTO body, each PROTO interface default value.

@@ -20,6 +20,9 @@ struct SceneDiagnostic {
     FilePos pos;
     std::string message;
     std::string suggestion; // empty when there is none
+    // A bound on size or work was passed (the scene costs too much), not a
+    // mistake in its text: a class refuses it as too-costly.
+    bool overBudget = false;
 };
 
 // "FILE:LINE:COL: error: message (suggestion)"

@@ -35,7 +35,7 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
                        ReferenceContext* context, const std::filesystem::path& baseDir) {
     if (bytes.size() > options.limits.maxFileBytes)
         return failWith(path, "the file is larger than " +
-                                  std::to_string(options.limits.maxFileBytes >> 20) + " MiB");
+                                  byteSizeText(options.limits.maxFileBytes));
     if (isGzip(bytes)) {
         std::string problem;
         std::optional<std::string> text = gunzip(bytes, options.limits.maxDecodedBytes, problem);
@@ -114,7 +114,7 @@ ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOpt
                        result.diagnostics);
     if (hasErrors(result.diagnostics)) return result;
     if (options.compileFunctions) {
-        compileFunctionDefinitions(*scene, result.diagnostics);
+        compileFunctionDefinitions(*scene, result.diagnostics, options.limits);
         if (hasErrors(result.diagnostics)) return result;
         for (SceneDiagnostic& d : checkImplicitSides(*scene))
             result.diagnostics.push_back(std::move(d));
@@ -133,7 +133,7 @@ ReadResult readSceneFile(const std::filesystem::path& path, const ReadOptions& o
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > options.limits.maxFileBytes)
         return failWith(name, "the file is larger than " +
-                                  std::to_string(options.limits.maxFileBytes >> 20) + " MiB");
+                                  byteSizeText(options.limits.maxFileBytes));
     std::ostringstream content;
     content << in.rdbuf();
     // References are followed inside the folder the scene file is in.

@@ -134,13 +134,13 @@ Scene* ReferenceLoader::load(const fs::path& file, std::string& why) {
         return nullptr;
     }
     if (size > options_.limits.maxFileBytes) {
-        why = "it is larger than " + std::to_string(options_.limits.maxFileBytes >> 20) + " MiB";
+        why = "it is larger than " + byteSizeText(options_.limits.maxFileBytes);
         loaded_[file] = nullptr;
         return nullptr;
     }
     if (c.bytesRead + size > options_.limits.maxDecodedBytes) {
         why = "the scene's files together would exceed " +
-              std::to_string(options_.limits.maxDecodedBytes >> 20) + " MiB";
+              byteSizeText(options_.limits.maxDecodedBytes);
         loaded_[file] = nullptr;
         return nullptr;
     }

@@ -8,7 +8,9 @@
 #include "animation/animator.h"
 #include "scene/effects_plan.h"
 #include "scene/scene_reader.h"
+#include "scene/scene_work.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace fl::cli {
@@ -61,6 +63,27 @@ std::string planJson(const scene::EffectsPlan& plan) {
     return out + "]}";
 }
 
+std::string workJson(const scene::Scene& s, const scene::SceneWork& w) {
+    std::string out = "{\"tapeInstructions\":" + std::to_string(w.tapeInstructions);
+    out += ",\"meshCells\":" + jsonNumber(w.meshCells);
+    out += ",\"meshEvaluations\":" + jsonNumber(w.meshEvaluations);
+    out += ",\"costliest\":";
+    out += w.costliest ? jsonString(s.locationOf(*w.costliest)) : std::string("null");
+    return out + "}";
+}
+
+std::string workText(const scene::Scene& s, const scene::SceneWork& w) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "work: %zu formula instructions; meshing at the files' resolutions: %.3g cells, "
+                  "%.3g instructions evaluated on a dense grid",
+                  w.tapeInstructions, w.meshCells, w.meshEvaluations);
+    std::string out = line;
+    if (w.costliest)
+        out += " (most: " + w.costliest->type + " at " + s.locationOf(*w.costliest) + ")";
+    return out + "\n";
+}
+
 } // namespace
 
 const CommandSpec& checkSpec() {
@@ -76,10 +99,12 @@ const CommandSpec& checkSpec() {
         .positionals = {{.name = "FILE", .help = "the scene"}},
         .options = {{.name = "plan",
                      .help = "also print the effects plan: per node, what depends on time and "
-                             "which tangible effects exist"},
+                             "which tangible effects exist; and the work: formula instructions, "
+                             "and cells and evaluations meshing at the files' resolutions takes"},
                     {.name = "json",
                      .help = "print one JSON object instead: {\"file\", \"loaded\", "
-                             "\"diagnostics\": [...], \"plan\": {...} (with --plan)}"}},
+                             "\"diagnostics\": [...], \"plan\": {...}, \"work\": {...} (with "
+                             "--plan)}"}},
         .exitStatus = "0 the scene loaded (warnings allowed), 1 it did not, 2 usage error",
     };
     return spec;
@@ -112,12 +137,17 @@ int checkCommand(const Args& args) {
             out += sceneDiagnosticJson(r.diagnostics[i]);
         }
         out += "]";
-        if (plan && r.ok()) out += ",\"plan\":" + planJson(scene::makeEffectsPlan(*r.scene));
+        if (plan && r.ok()) {
+            out += ",\"plan\":" + planJson(scene::makeEffectsPlan(*r.scene));
+            out += ",\"work\":" + workJson(*r.scene, scene::estimateSceneWork(*r.scene));
+        }
         std::cout << out << "}\n";
     } else {
         for (const auto& d : r.diagnostics)
             std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-        if (plan && r.ok()) std::cout << scene::planText(scene::makeEffectsPlan(*r.scene));
+        if (plan && r.ok())
+            std::cout << scene::planText(scene::makeEffectsPlan(*r.scene))
+                      << workText(*r.scene, scene::estimateSceneWork(*r.scene));
     }
     return r.ok() ? kExitOk : kExitDiagnostic;
 }

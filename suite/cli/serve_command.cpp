@@ -12,15 +12,18 @@
 #include "server.h"
 #include "starter_scene.h"
 
+#include "scene/read_limits.h"
+
 #include <QCoreApplication>
 #include <QHostAddress>
 #include <QSocketNotifier>
 
 #include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -36,15 +39,48 @@ void onStopSignal(int) {
     [[maybe_unused]] const auto n = ::write(signalPipe[1], &byte, 1);
 }
 
-bool readText(const std::string& path, std::string& text, std::string& why) {
+// The starting scene: no larger than a class scene may be (compressed or not).
+bool readText(const std::string& path, std::size_t maxBytes, std::string& text, std::string& why) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > maxBytes) {
+        why = path + " has " + std::to_string(size) + " bytes; a class scene may have at most " +
+              scene::byteSizeText(maxBytes);
+        return false;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         why = "cannot read " + path;
         return false;
     }
-    std::ostringstream s;
-    s << in.rdbuf();
-    text = s.str();
+    text.assign(maxBytes + 1, '\0');
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(std::size_t(in.gcount()));
+    if (text.size() > maxBytes) {
+        why =
+            path + " is larger than " + scene::byteSizeText(maxBytes) + ", as a class scene may be";
+        return false;
+    }
+    return true;
+}
+
+// Caps the server's address space (RLIMIT_AS): a check that would need more
+// fails with bad_alloc, which the worker turns into a refusal of that one
+// edit, instead of the machine swapping or the kernel killing the class.
+bool capMemory(long mebibytes, std::string& why) {
+    if (mebibytes <= 0) return true;
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_AS, &limit) != 0) {
+        why = "cannot read the memory limit";
+        return false;
+    }
+    const rlim_t wanted = rlim_t(mebibytes) << 20;
+    if (limit.rlim_max != RLIM_INFINITY && wanted > limit.rlim_max) return true; // already lower
+    limit.rlim_cur = wanted;
+    if (::setrlimit(RLIMIT_AS, &limit) != 0) {
+        why = "cannot set the memory limit";
+        return false;
+    }
     return true;
 }
 
@@ -55,7 +91,7 @@ const CommandSpec& serveSpec() {
         .name = "serve",
         .summary = "run a class's shared scene server (WebSocket)",
         .synopsis = {"serve [SCENE] --port P --class CODE [--data DIR] [--instructor-key KEY] "
-                     "[--bind ADDR]"},
+                     "[--bind ADDR] [--memory-limit MIB]"},
         .description =
             "Starts the server of one class: members join over WebSocket with the class code\n"
             "(docs/classroom-protocol.md), edit one shared scene under an automatic lock, and\n"
@@ -88,7 +124,15 @@ const CommandSpec& serveSpec() {
                      .kind = OptionKind::Text,
                      .valueName = "ADDR",
                      .help = "the address to listen on",
-                     .defaultValue = "127.0.0.1"}},
+                     .defaultValue = "127.0.0.1"},
+                    {.name = "memory-limit",
+                     .kind = OptionKind::Integer,
+                     .valueName = "MIB",
+                     .help = "the most memory (address space) the server may use, in MiB; an "
+                             "edit whose check would need more is refused (0: no limit)",
+                     .defaultValue = "4096",
+                     .min = 0,
+                     .max = 1 << 20}},
         .exitStatus = "0 stopped by a signal, 1 the scene, the data folder or the address could "
                       "not be used, 2 usage error",
     };
@@ -115,10 +159,14 @@ int serveCommand(const Args& args) {
     config.initialScene = classroom::starterScene();
     if (const std::string path = a->positional("SCENE"); !path.empty()) {
         std::string why;
-        if (!readText(path, config.initialScene, why)) {
+        if (!readText(path, config.limits.maxSceneBytes, config.initialScene, why)) {
             std::cerr << "functionlab serve: " << why << "\n";
             return kExitDiagnostic;
         }
+    }
+    if (std::string why; !capMemory(a->integer("memory-limit", 4096), why)) {
+        std::cerr << "functionlab serve: " << why << "\n";
+        return kExitDiagnostic;
     }
     int argc = 1;
     char name[] = "functionlab";
@@ -137,7 +185,9 @@ int serveCommand(const Args& args) {
                     d.file = shown; // the user's file name, not the protocol's "scene"
                     std::cerr << scene::formatSceneDiagnostic(d) << "\n";
                 }
-                std::cerr << "functionlab serve: the scene cannot be a class scene\n";
+                std::cerr << "functionlab serve: " << shown
+                          << " cannot be a class scene (see above); fix it, or start without "
+                             "SCENE from one sphere\n";
                 return kExitDiagnostic;
             }
         }

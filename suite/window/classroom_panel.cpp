@@ -46,6 +46,9 @@ QString reasonText(const ClassroomClient::Refusal& r) {
         return ClassroomPanel::tr("too many edits at once: wait a moment");
     case classroom::RefusalReason::TooLarge:
         return ClassroomPanel::tr("too large: %1").arg(r.message);
+    case classroom::RefusalReason::TooCostly:
+        return ClassroomPanel::tr("it would cost every window in the class too much work: %1")
+            .arg(r.message);
     }
     return r.message;
 }

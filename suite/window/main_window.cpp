@@ -4,6 +4,7 @@
 #include "assignment_panel.h"
 #include "checker.h"
 #include "classroom_panel.h"
+#include "client.h"
 #include "code_editor.h"
 #include "examples.h"
 #include "examples_dock.h"
@@ -26,6 +27,7 @@
 #include "scene/gzip.h"
 #include "scene/scene_reader.h"
 #include "scene_player.h"
+#include "scene_policy.h"
 #include "scene_text_dock.h"
 #include "scene_tree_dock.h"
 #include "scene_widget.h"
@@ -120,6 +122,13 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QString& text) { screenError_->setText(visibleText(text)); });
 
     connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
+        // In a class, the text is (or becomes) the class's scene: it is read
+        // with the class's bounds on size and work, as the server checks it.
+        const bool inClass =
+            classroom_->client()->state() != classroom::ClassroomClient::State::Disconnected;
+        parser_->setLimits(inClass ? editor::ParseLimits{classroom::readOptionsFor({}),
+                                                         classroom::workBudgetFor({})}
+                                   : editor::ParseLimits{});
         parser_->setText(editor_->toPlainText(), path_);
         recoveryTimer_.start();
         setWindowModified(isModified());

@@ -64,14 +64,18 @@ TEST_F(ClassSessionTest, FailedJoinsAreThrottledPerAddress) {
     for (int i = 0; i < 15; ++i) {
         c = h.connect("10.1.1.1");
         h.send(c, R"({"type":"join","class":"X","name":"Eve"})");
+        h.drop(c); // a window told the code is wrong closes
     }
+    // Further wrong codes from that address are cut short ...
     c = h.connect("10.1.1.1");
-    h.send(c, R"({"type":"join","class":"C1","name":"Eve"})");
+    h.send(c, R"({"type":"join","class":"X","name":"Eve"})");
     EXPECT_EQ(h.last(c, "error")["code"].toString(), "too-many-joins");
     EXPECT_TRUE(h.closed(c));
-    const ConnectionId other = h.connect("10.1.1.2");
-    h.send(other, R"({"type":"join","class":"C1","name":"Ann"})");
-    EXPECT_FALSE(h.last(other, "welcome").isEmpty());
+    // ... but the right code from behind the same address still gets in
+    // (a NAT or a TLS proxy is a whole class at one address).
+    c = h.connect("10.1.1.1");
+    h.send(c, R"({"type":"join","class":"C1","name":"Eve"})");
+    EXPECT_FALSE(h.last(c, "welcome").isEmpty());
 }
 
 TEST_F(ClassSessionTest, AnEditReachesEveryone) {
@@ -270,15 +274,18 @@ TEST_F(ClassSessionTest, RateLimitRefusesABurst) {
     EXPECT_EQ(h.last(ana, "chat")["text"].toString(), "later");
 }
 
-TEST_F(ClassSessionTest, LeaseRunsOutWithoutHeartbeats) {
+TEST_F(ClassSessionTest, LeaseRunsOutWithoutEditsWhateverTheHeartbeats) {
+    // Heartbeats keep Ana's seat, not the lock (issue 26 §4): an edit renews it.
     const ConnectionId ana = h.join("Ana"), bo = h.join("Bo");
     h.send(ana, editFrame(1, classScene("sphere(2)")));
     clock.advance(9'000);
-    h.send(ana, R"({"type":"heartbeat"})");
+    h.send(ana, editFrame(2, classScene("sphere(2.5)")));
     clock.advance(9'000);
+    h.send(ana, R"({"type":"heartbeat"})");
     h.tick();
     EXPECT_FALSE(h.last(bo, "lock")["holder"].isNull());
     clock.advance(1'001);
+    h.send(ana, R"({"type":"heartbeat"})");
     h.tick();
     EXPECT_TRUE(h.last(bo, "lock")["holder"].isNull());
 }

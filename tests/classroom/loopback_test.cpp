@@ -246,5 +246,40 @@ TEST_F(LoopbackTest, UnderBackPressureEveryoneStillEndsAtTheNewestScene) {
     std::cout << "scenes seen by Ana: " << seenByAna.count() << " of 30\n";
 }
 
+TEST_F(LoopbackTest, ACheckPastTheTimeLimitIsRefusedAndTheClassGoesOn) {
+    // Issue 26 §3: the scene is checked on a worker; with a 1 ms limit, a
+    // scene whose three formulas each unroll a 4 096-step loop is refused as
+    // too costly, while chat flows on the event loop meanwhile.
+    server.reset();
+    ClassConfig c;
+    c.classCode = "C1";
+    c.initialScene = classScene("sphere(0, 0, 0, 1)");
+    c.limits.maxCheckMillis = 1;
+    session = std::make_unique<ClassSession>(c, clock, nullptr);
+    server = std::make_unique<ClassroomServer>(*session);
+    ASSERT_TRUE(server->listen(QHostAddress::LocalHost, 0));
+    url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(server->port()));
+    ClassroomClient& ana = joined("Ana");
+    ClassroomClient& bo = joined("Bo");
+    QSignalSpy refusals(&ana, &ClassroomClient::refused);
+    QSignalSpy chat(&ana, &ClassroomClient::chatReceived);
+    std::string slow = "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n";
+    for (int i = 0; i < 3; ++i)
+        slow += "FShape { geometry FGeometry { resolution 8 definition \"s = 0; for (i = 0; "
+                "i < 4096; i++) { s += sin(x * i + y) * cos(z * i + s); } return 0.5" +
+                std::to_string(i) + " - x*x - y*y - z*z + s * 1e-6;\" } }\n";
+    ana.submitEdit(QString::fromStdString(slow));
+    bo.sendChat(QStringLiteral("meanwhile"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return refusals.count() > 0 && chat.count() > 0; }, kWaitMs));
+    const auto r = refusals.at(0).at(0).value<ClassroomClient::Refusal>();
+    EXPECT_EQ(r.reason, RefusalReason::TooCostly);
+    EXPECT_NE(r.message.indexOf(QStringLiteral("took longer than 1 ms")), -1)
+        << r.message.toStdString();
+    // The slow check's late result is ignored: the class stays where it was.
+    QTest::qWait(300);
+    EXPECT_EQ(session->version(), 1);
+    EXPECT_TRUE(allAt(1));
+}
+
 } // namespace
 } // namespace fl::classroom

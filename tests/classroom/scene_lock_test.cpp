@@ -20,13 +20,12 @@ TEST(SceneLock, LeaseExpiresWithoutRenewal) {
     EXPECT_FALSE(lock.holder(clock.now()).has_value());
 }
 
-TEST(SceneLock, RenewalKeepsItAndOnlyTheHolderRenews) {
+TEST(SceneLock, AnotherEditRenewsIt) {
     ManualClock clock;
     SceneLock lock(10'000, 20'000);
     lock.grant(1, clock.now());
     clock.advance(8'000);
-    EXPECT_TRUE(lock.renew(1, clock.now()));
-    EXPECT_FALSE(lock.renew(2, clock.now()));
+    lock.grant(1, clock.now()); // the holder's next edit
     clock.advance(8'000);
     EXPECT_EQ(lock.holder(clock.now())->member, 1u);
 }
@@ -48,8 +47,6 @@ TEST(SceneLock, DisconnectedHolderKeepsItForTheGrace) {
     lock.disconnected(1, clock.now());
     clock.advance(19'000);
     EXPECT_TRUE(lock.heldByOther(2, clock.now()));
-    // Heartbeats of a disconnected holder cannot arrive; nothing renews it.
-    EXPECT_FALSE(lock.renew(1, clock.now()));
     clock.advance(1'000);
     EXPECT_FALSE(lock.holder(clock.now()).has_value());
 }
@@ -60,8 +57,7 @@ TEST(SceneLock, ReconnectWithinTheGraceKeepsIt) {
     lock.grant(1, clock.now());
     lock.disconnected(1, clock.now());
     clock.advance(15'000);
-    lock.reconnected(1, clock.now());
-    EXPECT_TRUE(lock.renew(1, clock.now()));
+    lock.reconnected(1, clock.now()); // a fresh lease from now
     clock.advance(9'000);
     EXPECT_EQ(lock.holder(clock.now())->member, 1u);
 }
@@ -72,8 +68,22 @@ TEST(SceneLock, GrantTakesItFromAnyone) {
     lock.grant(1, clock.now());
     lock.grant(9, clock.now());
     EXPECT_EQ(lock.holder(clock.now())->member, 9u);
-    lock.breakLock();
+    lock.breakLock(clock.now(), false);
     EXPECT_FALSE(lock.holder(clock.now()).has_value());
+    EXPECT_FALSE(lock.coolingDown(9, clock.now()));
+}
+
+TEST(SceneLock, ABrokenHolderWaitsBeforeTakingItAgain) {
+    ManualClock clock;
+    SceneLock lock(10'000, 20'000, 30'000);
+    lock.grant(4, clock.now());
+    lock.breakLock(clock.now(), true);
+    EXPECT_TRUE(lock.coolingDown(4, clock.now()));
+    EXPECT_FALSE(lock.coolingDown(5, clock.now()));
+    clock.advance(29'999);
+    EXPECT_TRUE(lock.coolingDown(4, clock.now()));
+    clock.advance(1);
+    EXPECT_FALSE(lock.coolingDown(4, clock.now()));
 }
 
 TEST(RateLimit, BucketEmptiesAndRefills) {

@@ -16,7 +16,10 @@ class Harness {
   public:
     explicit Harness(ClassSession& session) : session_(session) {}
 
-    ConnectionId connect(const std::string& peer = "127.0.0.1") { return session_.connect(peer); }
+    // 0 when the session refuses the connection (too many unjoined ones).
+    ConnectionId connect(const std::string& peer = "127.0.0.1") {
+        return session_.connect(peer).value_or(0);
+    }
 
     void send(ConnectionId c, const std::string& frame) { take(session_.receive(c, frame)); }
     void drop(ConnectionId c) { take(session_.disconnected(c)); }

@@ -87,7 +87,9 @@ TEST(RayMarch, RandomRaysHitTheUnitSphereWhereGeometrySays) {
         // The exact answer: |o + s d| = 1.
         const double b = dot(origin, towards), c = dot(origin, origin) - 1, disc = b * b - c;
         if (disc <= 1e-9) { // misses (or grazes)
-            if (disc < -1e-6) EXPECT_FALSE(hit) << k;
+            if (disc < -1e-6) {
+                EXPECT_FALSE(hit) << k;
+            }
             continue;
         }
         ASSERT_TRUE(hit) << k;

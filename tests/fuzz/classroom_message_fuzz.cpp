@@ -35,10 +35,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     config.initialScene = "#X3D V3.3 utf8\nPROFILE Immersive\n"
                           "DEF CLASS FShape { geometry FGeometry { definition \"sphere(1)\" } }\n";
     ClassSession session(config, clock, nullptr);
-    const ConnectionId teacher = session.connect("a");
+    const ConnectionId teacher = *session.connect("a");
     checkAnswers(session.receive(
         teacher, R"({"type":"join","class":"C","name":"T","role":"instructor","key":"k"})"));
-    const ConnectionId student = session.connect("b");
+    const ConnectionId student = *session.connect("b");
     checkAnswers(session.receive(student, R"({"type":"join","class":"C","name":"S"})"));
     std::size_t start = 0;
     std::int64_t version = session.version();
