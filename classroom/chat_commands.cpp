@@ -1,11 +1,13 @@
 #include "chat_commands.h"
 
+#include "formula/lexer.h"
 #include "scene/field_access.h"
 #include "scene/node_catalogue.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "scene/source_map.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -147,31 +149,77 @@ std::string_view operatorOf(ShapeOperation op) {
     return "|";
 }
 
-bool isWordChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+// Formula text read by the formula lexer, so that what a comment holds (a
+// `;`, a `return`, a `)`) is never taken for code.
+struct FormulaTokens {
+    std::string_view text;
+    std::vector<formula::Token> tokens; // without the End token
+
+    explicit FormulaTokens(std::string_view t) : text(t) {
+        std::vector<formula::Diagnostic> ignored; // the class checks the result in full
+        tokens = formula::tokenize(t, ignored);
+        if (!tokens.empty() && tokens.back().kind == formula::TokenKind::End) tokens.pop_back();
+    }
+    bool has(formula::TokenKind kind) const {
+        return std::any_of(tokens.begin(), tokens.end(),
+                           [&](const formula::Token& t) { return t.kind == kind; });
+    }
+    // Whether a `//` comment runs to the end of a line somewhere between
+    // `from` and `to` (byte offsets): what follows on that line is hidden.
+    bool lineCommentIn(std::size_t from, std::size_t to) const {
+        std::size_t at = from;
+        for (const formula::Token& t : tokens) {
+            if (t.range.begin.offset >= to) break;
+            if (t.range.end.offset <= from) continue;
+            if (text.substr(at, t.range.begin.offset - at).find("//") != std::string_view::npos)
+                return true;
+            at = t.range.end.offset;
+        }
+        return text.substr(at, to - std::min(at, to)).find("//") != std::string_view::npos;
+    }
+};
+
+// `text` closed so that a following `)` is not inside a line comment.
+std::string closable(std::string_view text, const FormulaTokens& t, std::size_t from,
+                     std::size_t to) {
+    return std::string(text) + (t.lineCommentIn(from, to) ? "\n" : "");
 }
 
 // `old OP (tool)`: a plain expression is wrapped whole; a script's final
-// `return EXPR;` becomes `return (EXPR) OP (tool);`.
+// `return EXPR;` becomes `return (EXPR) OP (tool);`. Comments stay where they
+// were written and are never read as code.
 std::string combined(const std::string& old, ShapeOperation op, const std::string& tool,
                      std::string& why) {
-    const std::string_view body = trim(old);
     const std::string opText(operatorOf(op));
-    if (body.find(';') == std::string_view::npos)
-        return "(" + std::string(body) + ") " + opText + " (" + tool + ")";
-    const std::size_t at = body.rfind("return");
-    const bool isWord = at != std::string_view::npos && (at == 0 || !isWordChar(body[at - 1])) &&
-                        at + 6 < body.size() && !isWordChar(body[at + 6]);
-    const std::string_view tail = isWord ? body.substr(at + 6) : std::string_view{};
-    if (!isWord || tail.empty() || tail.back() != ';' ||
-        tail.find_first_of(";}") != tail.size() - 1) {
+    const FormulaTokens toolTokens(tool);
+    const std::string toolText = closable(tool, toolTokens, 0, tool.size());
+    const FormulaTokens t(old);
+    if (!t.has(formula::TokenKind::Semicolon))
+        return "(" + closable(old, t, 0, old.size()) + ") " + opText + " (" + toolText + ")";
+    // A script: the last `return`, then its expression up to the final `;`.
+    const auto last = std::find_if(t.tokens.rbegin(), t.tokens.rend(), [](const formula::Token& k) {
+        return k.kind == formula::TokenKind::KwReturn;
+    });
+    const bool endsWithReturn = last != t.tokens.rend() &&
+                                t.tokens.back().kind == formula::TokenKind::Semicolon &&
+                                std::none_of(last.base(), t.tokens.end() - 1,
+                                             [](const formula::Token& k) {
+                                                 return k.kind == formula::TokenKind::Semicolon ||
+                                                        k.kind == formula::TokenKind::RBrace ||
+                                                        k.kind == formula::TokenKind::LBrace;
+                                             }) &&
+                                last.base() != t.tokens.end() - 1;
+    if (!endsWithReturn) {
         why = "the class shape's script does not end with `return EXPRESSION;`, so there is "
               "nothing to combine the new shape with";
         return {};
     }
-    const std::string_view expression = trim(tail.substr(0, tail.size() - 1));
-    return std::string(body.substr(0, at)) + "return (" + std::string(expression) + ") " + opText +
-           " (" + tool + ");";
+    const std::size_t exprBegin = last->range.end.offset;
+    const std::size_t exprEnd = t.tokens.back().range.begin.offset;
+    const std::string_view expression =
+        std::string_view(old).substr(exprBegin, exprEnd - exprBegin);
+    return old.substr(0, exprBegin) + " (" + closable(trim(expression), t, exprBegin, exprEnd) +
+           ") " + opText + " (" + toolText + ")" + old.substr(exprEnd);
 }
 
 std::string addShape(scene::Scene& s, const ChatCommand& c, std::string& why) {
@@ -259,11 +307,13 @@ std::string paintShape(scene::Scene& s, const ChatCommand& c, std::string& why) 
     std::vector<std::string> lines =
         definition ? definition->value.strings : std::vector<std::string>{};
     for (const std::string& line : lines)
-        if (line.find("return") != std::string::npos) {
+        if (FormulaTokens(line).has(formula::TokenKind::KwReturn)) {
             why = "the class shape's colour script returns early; paint is added after it";
             return {};
         }
-    lines.push_back("paint = " + number(c.opacity) + " * step(0, " + c.formula + ");");
+    const FormulaTokens tool(c.formula);
+    lines.push_back("paint = " + number(c.opacity) + " * step(0, " +
+                    closable(c.formula, tool, 0, c.formula.size()) + ");");
     lines.push_back("r = mix(r, " + number(c.colour.r) + ", paint);");
     lines.push_back("g = mix(g, " + number(c.colour.g) + ", paint);");
     lines.push_back("b = mix(b, " + number(c.colour.b) + ", paint);");

@@ -19,6 +19,8 @@ namespace {
 // Changes waiting for their check: the class over, and one student's.
 constexpr std::size_t kMaxWaitingChecks = 64;
 constexpr std::size_t kMaxWaitingChecksOfAStudent = 4;
+// Chat a newly joined member is shown from before they came.
+constexpr std::size_t kChatLinesOnWelcome = 50;
 
 QString q(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
@@ -82,7 +84,11 @@ ClassSession::ClassSession(ClassConfig config, const Clock& clock, EditLog* log)
     if (log_)
         if (auto latest = log_->latest()) {
             version_ = latest->version;
-            scene_ = std::move(latest->scene);
+            if (checkClassroomScene(latest->scene, config_.limits).ok) {
+                scene_ = std::move(latest->scene);
+                return;
+            }
+            restoreGoodVersion();
             return;
         }
     const SceneCheck check = checkClassroomScene(config_.initialScene, config_.limits);
@@ -98,6 +104,40 @@ ClassSession::ClassSession(ClassConfig config, const Clock& clock, EditLog* log)
     Out ignored;
     if (!commit(nullptr, config_.initialScene, EditKind::Start, ignored))
         throw std::runtime_error("the class log cannot be written");
+}
+
+// The newest version is not a scene this server accepts (written by an
+// older server, before a check existed, or damaged): the newest version
+// that is goes on, as a new version, so no window ever loads the bad one.
+void ClassSession::restoreGoodVersion() {
+    const std::int64_t bad = version_;
+    std::string good;
+    std::string from;
+    for (std::int64_t v = bad - 1; v >= 1 && v > bad - 1000 && good.empty(); --v) {
+        std::optional<LoggedVersion> older;
+        try {
+            older = log_->at(v);
+        } catch (const std::exception&) {
+            continue; // a damaged row: look further back
+        }
+        if (older && checkClassroomScene(older->scene, config_.limits).ok) {
+            good = std::move(older->scene);
+            from = "version " + std::to_string(v);
+        }
+    }
+    if (good.empty()) {
+        if (!checkClassroomScene(config_.initialScene, config_.limits).ok)
+            throw std::runtime_error("no version in the class log is a valid class scene, nor is "
+                                     "the starting scene");
+        good = config_.initialScene;
+        from = "the starting scene";
+    }
+    Out ignored;
+    if (!commit(nullptr, good, EditKind::Push, ignored))
+        throw std::runtime_error("the class log cannot be written");
+    startNote_ = "version " + std::to_string(bad) +
+                 " in the log is not a valid class scene; the class goes on from " + from +
+                 ", as version " + std::to_string(version_);
 }
 
 std::optional<ConnectionId> ClassSession::connect(std::string peerAddress) {
@@ -359,13 +399,29 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
     o["resumed"] = resumed;
     o["members"] = QJsonDocument::fromJson(membersJson().toUtf8()).object()["members"];
     o["lock"] = QJsonDocument::fromJson(lockJson().toUtf8()).object()["holder"];
+    // What the log adds is a courtesy: a log that cannot be read leaves it
+    // out, and the member is welcomed all the same.
     if (m.since && log_ && *m.since < version_) {
         QJsonArray missed;
-        for (const LoggedVersion& v : log_->after(*m.since, config_.limits.maxMissedListed))
-            missed.append(QJsonObject{{"version", static_cast<double>(v.version)},
-                                      {"author", q(v.author)},
-                                      {"kind", q(nameOf(v.kind))}});
+        try {
+            for (const LoggedVersion& v : log_->after(*m.since, config_.limits.maxMissedListed))
+                missed.append(QJsonObject{{"version", static_cast<double>(v.version)},
+                                          {"author", q(anonymous_ ? std::string() : v.author)},
+                                          {"kind", q(nameOf(v.kind))}});
+        } catch (const std::exception&) {
+        }
         o["missed"] = missed;
+    }
+    if (!resumed && log_) {
+        QJsonArray chat;
+        try {
+            for (const ChatLine& line : log_->recentChat(kChatLinesOnWelcome))
+                chat.append(QJsonObject{{"from", q(anonymous_ ? std::string() : line.author)},
+                                        {"text", q(line.text)},
+                                        {"unixMs", static_cast<double>(line.unixMillis)}});
+        } catch (const std::exception&) {
+        }
+        o["chat"] = chat;
     }
     o["limits"] =
         QJsonObject{{"maxMessageBytes", static_cast<double>(config_.limits.maxMessageBytes)},
@@ -448,8 +504,10 @@ void ClassSession::finishApply(Member& author, Change change, const SceneCheck& 
                 break;
             }
         const QJsonObject extra{{"diagnostics", diagnosticsJson(check.diagnostics)}};
-        return refuse(author, check.tooCostly ? RefusalReason::TooCostly : RefusalReason::Invalid,
-                      first, out, change.command, frame(extra));
+        const RefusalReason reason = check.tooLarge    ? RefusalReason::TooLarge
+                                     : check.tooCostly ? RefusalReason::TooCostly
+                                                       : RefusalReason::Invalid;
+        return refuse(author, reason, first, out, change.command, frame(extra));
     }
     // A deferred check: the class may have moved on while it ran.
     if (deferChecks_ && !admissible(author, change, out, true)) return;
@@ -541,6 +599,14 @@ void ClassSession::chat(Member& m, const ChatMessage& c, Out& out) {
     if (isChatCommand(c.text)) return command(m, c.text, out);
     if (!allowed(m, clock_.now()))
         return refuse(m, RefusalReason::Rate, "too many messages; wait a moment", out);
+    if (log_) {
+        try { // kept with the edits: a restarted class still has its chat
+            log_->appendChat({m.name, c.text, unixMillis()});
+        } catch (const std::exception& e) {
+            return error(m.connection, ErrorCode::Server,
+                         std::string("the message could not be stored: ") + e.what(), out);
+        }
+    }
     QJsonObject o = typed(MessageType::Chat);
     o["from"] = q(shownName(m));
     o["fromId"] = static_cast<double>(m.id);
@@ -559,12 +625,22 @@ void ClassSession::command(Member& m, const std::string& text, Out& out) {
     const ChatCommand& c = *parsed.command;
     switch (c.kind) {
     case ChatCommandKind::Help:
+        if (!allowed(m, clock_.now()))
+            return refuse(m, RefusalReason::Rate, "too many commands; wait a moment", out, text);
         return notice(chatCommandHelp());
     case ChatCommandKind::Save: {
         if (!allowed(m, clock_.now()))
             return refuse(m, RefusalReason::Rate, "too many commands; wait a moment", out, text);
         if (m.role == Role::Observer)
             return refuse(m, RefusalReason::ReadOnly, "observers cannot save snapshots", out, text);
+        if (frozen_ && m.role != Role::Instructor)
+            return refuse(m, RefusalReason::ReadOnly, "the instructor has frozen the class", out,
+                          text);
+        if (characterCount(c.label) > config_.limits.maxLabelChars)
+            return refuse(m, RefusalReason::TooLarge,
+                          "a snapshot label has at most " +
+                              std::to_string(config_.limits.maxLabelChars) + " characters",
+                          out, text);
         std::int64_t snapshot = 0;
         if (log_) {
             try {
@@ -618,7 +694,17 @@ void ClassSession::history(Member& m, const HistoryMessage& h, Out& out) {
     if (!allowed(m, clock_.now()))
         return refuse(m, RefusalReason::Rate, "too many requests; wait a moment", out);
     std::optional<LoggedVersion> v;
-    if (log_) v = log_->at(h.version);
+    if (log_) {
+        try {
+            v = log_->at(h.version);
+        } catch (const std::exception& e) {
+            // A damaged page: this request is refused, the class goes on.
+            return error(m.connection, ErrorCode::Server,
+                         "version " + std::to_string(h.version) +
+                             " cannot be read from the class's log: " + e.what(),
+                         out);
+        }
+    }
     if (!v && h.version == version_) v = LoggedVersion{version_, "", EditKind::Edit, scene_, 0};
     if (!v)
         return error(m.connection, ErrorCode::NotFound,

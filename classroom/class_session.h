@@ -87,6 +87,9 @@ class ClassSession {
     const std::string& scene() const { return scene_; }
     std::size_t memberCount() const { return members_.size(); }
     bool frozen() const { return frozen_; }
+    // What the server should say at start (a version of the log it could not
+    // use), or empty.
+    const std::string& startNote() const { return startNote_; }
     const ClassroomLimits& limits() const { return config_.limits; }
 
   private:
@@ -143,6 +146,7 @@ class ClassSession {
     bool admissible(Member& author, const Change& change, Out& out, bool again);
     void finishApply(Member& author, Change change, const SceneCheck& check, Out& out);
     bool commit(const Member* author, std::string scene, EditKind kind, Out& out);
+    void restoreGoodVersion();
 
     void refuse(const Member& to, RefusalReason reason, std::string message, Out& out,
                 const std::string& command = {}, QString extraJson = {});
@@ -168,6 +172,7 @@ class ClassSession {
     // Applies the checked changes at the head of the queue: changes are
     // applied in the order they came, whichever check ends first.
     void applyChecked(Out& out);
+    std::string startNote_;
     bool deferChecks_ = false;
     std::map<CheckId, WaitingCheck> waiting_;
     std::vector<ScheduledCheck> toCheck_;

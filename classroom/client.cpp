@@ -214,6 +214,12 @@ void ClassroomClient::onWelcome(const QJsonObject& o) {
     setState(State::Joined);
     heartbeat_.start(options_.heartbeatMs);
     emit joined(resumed);
+    // The chat before this member came (kept in the class's log).
+    for (const QJsonValue& line : o["chat"].toArray()) {
+        const QJsonObject c = line.toObject();
+        const QString from = c["from"].toString();
+        emit chatReceived(from.isEmpty() ? tr("(earlier)") : from, c["text"].toString());
+    }
     if (changed) emit sceneChanged(version_, QString(), scene_);
     onLock(o["lock"]);
 }

@@ -143,6 +143,9 @@ ClientBody readBody(MessageType type, FieldReader& r, const ClassroomLimits& lim
         m.classCode = r.text("class", limits.maxClassCodeChars, true, false);
         m.name = r.text("name", limits.maxNameChars, true, false, ErrorCode::BadName);
         const std::string role = r.text("role", 16, false, false);
+        if (r.has("role") && role.empty())
+            r.fail(ErrorCode::Malformed,
+                   "join: \"role\" is student, instructor or observer; leave it out for student");
         if (!role.empty()) {
             if (auto known = roleNamed(role))
                 m.role = *known;
@@ -163,13 +166,14 @@ ClientBody readBody(MessageType type, FieldReader& r, const ClassroomLimits& lim
         return m;
     }
     case MessageType::Chat:
-        return ChatMessage{r.text("text", limits.maxChatChars, true, true)};
+        return ChatMessage{r.text("text", limits.maxChatChars, true, true, ErrorCode::TooLarge)};
     case MessageType::Freeze:
         return FreezeMessage{r.boolean("frozen", true)};
     case MessageType::Push:
         return PushMessage{r.text("scene", limits.maxMessageBytes, true, true)};
     case MessageType::Snapshot:
-        return SnapshotMessage{r.text("label", limits.maxLabelChars, false, false)};
+        return SnapshotMessage{
+            r.text("label", limits.maxLabelChars, false, false, ErrorCode::TooLarge)};
     case MessageType::Anonymise:
         return AnonymiseMessage{r.boolean("anonymous", true)};
     case MessageType::History:

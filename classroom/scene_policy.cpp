@@ -49,6 +49,7 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
                "the scene has " + std::to_string(text.size()) +
                    " bytes; a class scene may have at most " +
                    std::to_string(limits.maxSceneBytes));
+        check.tooLarge = true;
         return check;
     }
     const scene::ReadOptions options = readOptionsFor(limits);
@@ -59,6 +60,7 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
     if (!read.ok()) return check;
     const scene::Scene& s = *read.scene;
     check.nodes = s.nodeCount();
+    check.tooLarge = check.nodes > limits.maxNodes;
     if (check.nodes > limits.maxNodes)
         refuse(check, {},
                "the scene has " + std::to_string(check.nodes) +
@@ -84,11 +86,13 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
         for (const scene::Field& field : node.fields) {
             if (field.value.strings.empty() || field.name != "definition") continue;
             const std::string formula = scene::formulaText(field);
-            if (formula.size() > limits.maxFormulaBytes)
+            if (formula.size() > limits.maxFormulaBytes) {
                 refuse(check, field.where,
                        node.type + ".definition has " + std::to_string(formula.size()) +
                            " bytes; a class formula may have at most " +
                            std::to_string(limits.maxFormulaBytes));
+                check.tooLarge = true;
+            }
         }
     });
     if (auto costly = scene::checkWorkBudget(s, workBudgetFor(limits))) {

@@ -25,6 +25,8 @@ struct SceneCheck {
     // Refused for the work it would cost (a too-costly refusal), not for a
     // mistake in it; the first error says where.
     bool tooCostly = false;
+    // Refused for its size (text, nodes, a formula's length): a too-large refusal.
+    bool tooLarge = false;
 };
 
 // The name scene diagnostics carry as their file: "scene:LINE:COL: ...".

@@ -134,7 +134,15 @@ void ClassroomServer::accept() {
         sockets_[id] = Peer{socket, {}, {}, false};
         connect(socket, &QWebSocket::textMessageReceived, this, [this, id](const QString& text) {
             const QByteArray utf8 = text.toUtf8();
-            deliver(session_.receive(id, std::string_view(utf8.constData(), utf8.size())));
+            try {
+                deliver(session_.receive(id, std::string_view(utf8.constData(), utf8.size())));
+            } catch (const std::exception& e) {
+                // The session refuses what it cannot do; an exception that
+                // still gets here costs this one message, never the class.
+                deliver(session_.rejectFrame(id, ErrorCode::Server,
+                                             std::string("the server could not handle that: ") +
+                                                 e.what()));
+            }
             dispatchChecks();
         });
         connect(socket, &QWebSocket::binaryMessageReceived, this, [this, id](const QByteArray&) {

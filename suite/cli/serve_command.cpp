@@ -91,14 +91,16 @@ const CommandSpec& serveSpec() {
         .name = "serve",
         .summary = "run a class's shared scene server (WebSocket)",
         .synopsis = {"serve [SCENE] --port P --class CODE [--data DIR] [--instructor-key KEY] "
-                     "[--bind ADDR] [--memory-limit MIB]"},
+                     "[--bind ADDR] [--memory-limit MIB] [--new]"},
         .description =
             "Starts the server of one class: members join over WebSocket with the class code\n"
             "(docs/classroom-protocol.md), edit one shared scene under an automatic lock, and\n"
             "chat. Prints `listening on ws://ADDR:P` once it accepts connections and runs until\n"
             "SIGINT or SIGTERM. With --data, every applied version is written to DIR before\n"
             "anyone is told of it; a restart with the same DIR goes on from the newest version\n"
-            "(SCENE is then ignored). Without SCENE the class starts from one sphere.\n",
+            "(SCENE is then ignored). Without SCENE the class starts from one sphere.\n"
+            "A damaged log, a log missing from a folder that held a class, or a folder another\n"
+            "server holds is refused with what to do.\n",
         .positionals = {{"SCENE", "the scene the class starts from (X3D or ClassicVRML text)",
                          false}},
         .options = {{.name = "port",
@@ -125,6 +127,9 @@ const CommandSpec& serveSpec() {
                      .valueName = "ADDR",
                      .help = "the address to listen on",
                      .defaultValue = "127.0.0.1"},
+                    {.name = "new",
+                     .help = "with --data: start a new class even if the folder held one whose "
+                             "log is missing or empty (its old versions are gone)"},
                     {.name = "memory-limit",
                      .kind = OptionKind::Integer,
                      .valueName = "MIB",
@@ -174,7 +179,8 @@ int serveCommand(const Args& args) {
     QCoreApplication app(argc, argv);
     try {
         std::unique_ptr<classroom::EditLog> log;
-        if (a->given("data")) log = std::make_unique<classroom::EditLog>(a->text("data"));
+        if (a->given("data"))
+            log = std::make_unique<classroom::EditLog>(a->text("data"), a->flag("new"));
         if (!log || !log->latest()) {
             const auto check = classroom::checkClassroomScene(config.initialScene);
             if (!check.ok) {
@@ -193,6 +199,8 @@ int serveCommand(const Args& args) {
         }
         classroom::SteadyClock clock;
         classroom::ClassSession session(config, clock, log.get());
+        if (!session.startNote().empty())
+            std::cerr << "functionlab serve: " << session.startNote() << "\n";
         classroom::ClassroomServer server(session);
         QString why;
         if (!server.listen(address, static_cast<quint16>(a->integer("port", 0)), &why)) {

@@ -87,6 +87,29 @@ TEST(ChatCommands, AddToAScriptCombinesItsReturn) {
     EXPECT_EQ(definitionOf(s, "FGeometry"), "a = sphere(1); return (a) & (sphere(0.5));");
 }
 
+TEST(ChatCommands, CommentsInAToolNeverBreakTheNextCommand) {
+    // Issue 26 §6: a `;` inside a comment made the class shape look like a
+    // script, and every later /add and /remove failed for everyone.
+    std::string scene = test::classScene("sphere(0, 0, 0, 1)");
+    for (const char* cmd :
+         {"/add box(0.5, 0.5, 0.5) /* cut; here */", "/remove sphere(0.2) // ; gone",
+          "/add sphere(0.3, 0, 0, 0.1) intersection", "/remove box(0.1, 0.1, 3)"}) {
+        const std::string next = applied(cmd, scene);
+        ASSERT_FALSE(next.empty()) << cmd;
+        EXPECT_TRUE(checkClassroomScene(next).ok) << cmd << "\n" << definitionOf(next, "FGeometry");
+        scene = next;
+    }
+    const std::string def = definitionOf(scene, "FGeometry");
+    EXPECT_NE(def.find("/* cut; here */"), std::string::npos) << def; // comments stay
+}
+
+TEST(ChatCommands, AReturnInACommentIsNotTheScriptsReturn) {
+    const std::string s =
+        applied("/add sphere(0.5)", test::classScene("a = sphere(1); return a; // not: return b;"));
+    EXPECT_EQ(definitionOf(s, "FGeometry"),
+              "a = sphere(1); return (a) | (sphere(0.5)); // not: return b;");
+}
+
 TEST(ChatCommands, AddMakesTheClassShapeInAnEmptyScene) {
     const std::string empty = "<X3D profile='Immersive' version='3.3'><Scene>\n<Viewpoint "
                               "position='0 0 5'/>\n</Scene></X3D>";

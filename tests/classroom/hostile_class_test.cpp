@@ -300,5 +300,52 @@ TEST_F(HostileClass, WithoutAnInstructorKeyTheLockStillTimesOut) {
     EXPECT_EQ(keyless.version(), 3);
 }
 
+// ---- §6 smaller holes ---------------------------------------------------------
+
+TEST_F(HostileClass, SnapshotLabelsHaveTheirLengthInCharacters) {
+    const ConnectionId ana = join(QStringLiteral("Ana"));
+    h.send(ana, chatFrame("/save " + std::string(121, 'x')));
+    EXPECT_EQ(h.last(ana, "refused")["reason"].toString(), "too-large");
+    h.send(ana, chatFrame("/save " + std::string(120, 'x')));
+    EXPECT_FALSE(h.last(ana, "saved").isEmpty());
+}
+
+TEST_F(HostileClass, AnOverlongCommandIsTooLargeNotInvalid) {
+    const ConnectionId ana = join(QStringLiteral("Ana"));
+    h.send(ana, chatFrame("/add " + std::string(16 * 1024 + 1, '1')));
+    EXPECT_EQ(errorCode(ana), "too-large");
+}
+
+TEST_F(HostileClass, HelpIsRateLimitedLikeEverythingElse) {
+    const ConnectionId ana = join(QStringLiteral("Ana"));
+    for (int i = 0; i < 12; ++i)
+        h.send(ana, chatFrame("/help"));
+    EXPECT_EQ(h.count(ana, "notice"), 10);
+    EXPECT_EQ(h.last(ana, "refused")["reason"].toString(), "rate");
+}
+
+TEST_F(HostileClass, StudentsCannotSaveWhileTheClassIsFrozen) {
+    const ConnectionId prof =
+        join(QStringLiteral("Prof"), "127.0.0.1", QStringLiteral("instructor"),
+             QJsonObject{{"key", "a-long-instructor-key"}});
+    const ConnectionId ana = join(QStringLiteral("Ana"));
+    h.send(prof, R"({"type":"freeze","frozen":true})");
+    h.send(ana, chatFrame("/save mine"));
+    EXPECT_EQ(h.last(ana, "refused")["reason"].toString(), "read-only");
+    EXPECT_TRUE(h.last(ana, "saved").isEmpty());
+}
+
+TEST_F(HostileClass, AnonymousMeansNoNamesInTheWelcome) {
+    // (The welcome's list of missed versions: edit_log_test.cpp.)
+    const ConnectionId prof =
+        join(QStringLiteral("Prof"), "127.0.0.1", QStringLiteral("instructor"),
+             QJsonObject{{"key", "a-long-instructor-key"}});
+    h.send(prof, R"({"type":"anonymise","anonymous":true})");
+    const ConnectionId ana = join(QStringLiteral("Ana"));
+    EXPECT_TRUE(h.last(ana, "welcome")["name"].toString().startsWith("Learner"));
+    for (const auto& m : h.last(ana, "welcome")["members"].toArray())
+        EXPECT_NE(m.toObject()["name"].toString(), "Prof");
+}
+
 } // namespace
 } // namespace fl::classroom

@@ -111,7 +111,13 @@ TEST(ClassroomProtocol, OversizedMessagesAreRefusedBeforeParsing) {
     limits.maxMessageBytes = 100;
     EXPECT_EQ(failure(R"({"type":"chat","text":")" + std::string(200, 'x') + "\"}", limits).code,
               ErrorCode::TooLarge);
+    // A chat text over its length is too large (issue 26 §6), not malformed.
     EXPECT_EQ(failure(R"({"type":"chat","text":")" + std::string(2001, 'x') + "\"}").code,
+              ErrorCode::TooLarge);
+}
+
+TEST(ClassroomProtocol, AnEmptyRoleIsNoRole) {
+    EXPECT_EQ(failure(R"({"type":"join","class":"C","name":"Ana","role":""})").code,
               ErrorCode::Malformed);
 }
 
