@@ -53,6 +53,23 @@ class HostileClass : public ::testing::Test {
     test::Harness h{session};
 };
 
+// ---- §1 a scene that loops -----------------------------------------------------
+
+TEST_F(HostileClass, AnEditWhoseNodesLoopIsRefusedAtTheUse) {
+    const ConnectionId ana = join(QStringLiteral("Ana")), bo = join(QStringLiteral("Bo"));
+    h.send(ana, editFrame(1, "<X3D profile='Immersive'><Scene>\n"
+                             "<Transform DEF='A'><Transform USE='A'/></Transform>\n"
+                             "</Scene></X3D>"));
+    const QJsonObject r = h.last(ana, "refused");
+    EXPECT_EQ(r["reason"].toString(), "invalid");
+    const QJsonObject d = r["diagnostics"].toArray()[0].toObject();
+    EXPECT_EQ(d["line"].toInt(), 2);
+    EXPECT_EQ(d["column"].toInt(), 36);
+    EXPECT_TRUE(d["message"].toString().contains("DEF A at 2:17"));
+    EXPECT_EQ(session.version(), 1);
+    EXPECT_EQ(h.count(bo, "scene"), 0); // nobody else ever sees it
+}
+
 // ---- §2 names --------------------------------------------------------------
 
 TEST_F(HostileClass, MarkupInANameIsJustCharacters) {
