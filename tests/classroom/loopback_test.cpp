@@ -241,9 +241,11 @@ TEST_F(LoopbackTest, UnderBackPressureEveryoneStillEndsAtTheNewestScene) {
     ASSERT_TRUE(allAt(31));
     for (const auto& c : clients)
         EXPECT_EQ(c->scene().toStdString(), classScene("sphere(0, 0, 0, 30)"));
-    // How many of the 30 scenes Ana was sent (fewer when some were skipped).
+    // Held back, Ana was sent the newest scene, not all 30 (the frames in
+    // between were skipped), and she still ends at the newest.
     RecordProperty("scenesSeenByAna", static_cast<int>(seenByAna.count()));
-    std::cout << "scenes seen by Ana: " << seenByAna.count() << " of 30\n";
+    EXPECT_GE(seenByAna.count(), 1);
+    EXPECT_LT(seenByAna.count(), 30);
 }
 
 TEST_F(LoopbackTest, ACheckPastTheTimeLimitIsRefusedAndTheClassGoesOn) {

@@ -24,3 +24,13 @@ function(expect_json_equal json expected)
     message(FATAL_ERROR "JSON ${ARGN}: expected '${expected}', got '${actual}' in ${json}")
   endif()
 endfunction()
+
+# A tool a test needs is missing: a warning on a developer's machine, a
+# failure where it must be there (CI sets FUNCTIONLAB_REQUIRE_TOOLS=1).
+function(missing_tool message)
+  if(DEFINED ENV{FUNCTIONLAB_REQUIRE_TOOLS} AND NOT "$ENV{FUNCTIONLAB_REQUIRE_TOOLS}" STREQUAL ""
+     AND NOT "$ENV{FUNCTIONLAB_REQUIRE_TOOLS}" STREQUAL "0")
+    message(FATAL_ERROR "${message} (FUNCTIONLAB_REQUIRE_TOOLS is set: the tool must be installed)")
+  endif()
+  message(WARNING "${message}")
+endfunction()

@@ -114,6 +114,12 @@ TEST(BatchGrading, AKilledBatchKeepsWhatItFinished) {
     Gradebook book(c.db.string());
     EXPECT_EQ(book.latestGrades("lab").size(), 2u);
     EXPECT_TRUE(book.verifyChain().intact);
+    // Run again: what was finished is skipped, only the rest is graded.
+    const BatchSummary again = gradeBatch(book, lab(), subs, options(c));
+    EXPECT_EQ(again.skipped, 2u);
+    EXPECT_EQ(again.graded + again.failed + again.notGradable, 3u);
+    EXPECT_EQ(book.latestGrades("lab").size(), 5u);
+    EXPECT_TRUE(book.verifyChain().intact);
 }
 
 TEST(BatchGrading, OnlyPlainNamesAreSubmissions) {

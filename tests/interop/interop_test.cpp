@@ -6,7 +6,10 @@
 //   assimp (assimp-utils): STL, OBJ and PLY with the triangle count that
 //     `functionlab mesh` reported.
 // A missing tool skips its tests with a message saying how to install it
-// (scripts/test installs them all). CTest label: interop.
+// (scripts/test installs them all); where FUNCTIONLAB_REQUIRE_TOOLS is set, as
+// in CI, it fails them. CTest label: interop.
+#include "../common/required_tool.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -185,15 +188,16 @@ Picture measure(const QImage& image) {
 void expectView3dsceneShows(const QString& file) {
     const QString viewer = tool("view3dscene");
     if (viewer.isEmpty())
-        GTEST_SKIP() << "view3dscene is not installed: apt-get install view3dscene "
-                        "(scripts/test installs it)";
+        FUNCTIONLAB_SKIP_WITHOUT_TOOL("view3dscene is not installed: apt-get install view3dscene "
+                                      "(scripts/test installs it)");
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     QString program = viewer;
     QStringList arguments;
     if (env.value("DISPLAY").isEmpty()) {
         const QString xvfb = tool("xvfb-run");
         if (xvfb.isEmpty())
-            GTEST_SKIP() << "no display and no xvfb-run: apt-get install xvfb, or run under X";
+            FUNCTIONLAB_SKIP_WITHOUT_TOOL(
+                "no display and no xvfb-run: apt-get install xvfb, or run under X");
         program = xvfb;
         arguments = {"-a", "-s", "-screen 0 800x600x24", viewer};
     }
@@ -265,10 +269,13 @@ class GltfValidator : public testing::TestWithParam<std::string> {};
 TEST_P(GltfValidator, FindsNoErrors) {
     const QString node = tool("node").isEmpty() ? tool("nodejs") : tool("node");
     if (node.isEmpty())
-        GTEST_SKIP() << "Node.js is not installed: apt-get install nodejs npm (scripts/test does)";
+        FUNCTIONLAB_SKIP_WITHOUT_TOOL(
+            "Node.js is not installed: apt-get install nodejs npm (scripts/test does)");
     if (!QFileInfo::exists(kValidatorDir + "/package.json"))
-        GTEST_SKIP() << "the glTF validator is not installed at " << kValidatorDir.toStdString()
-                     << ": scripts/test installs it (npm ci in build/interop-tools)";
+        FUNCTIONLAB_SKIP_WITHOUT_TOOL(
+            "the glTF validator is not installed at "
+            << kValidatorDir.toStdString()
+            << ": scripts/test installs it (npm ci in build/interop-tools)");
     std::string failure;
     const QString out = outputPath(GetParam(), ".glb");
     const long long triangles = meshExample(GetParam(), out, failure);
@@ -304,7 +311,8 @@ class Assimp : public testing::TestWithParam<MeshFile> {};
 TEST_P(Assimp, CountsTheReportedTriangles) {
     const QString assimp = tool("assimp");
     if (assimp.isEmpty())
-        GTEST_SKIP() << "assimp is not installed: apt-get install assimp-utils (scripts/test does)";
+        FUNCTIONLAB_SKIP_WITHOUT_TOOL(
+            "assimp is not installed: apt-get install assimp-utils (scripts/test does)");
     std::string failure;
     const QString out =
         outputPath(GetParam().example, "." + QString::fromStdString(GetParam().extension));
