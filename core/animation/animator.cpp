@@ -153,16 +153,16 @@ struct Animator::Impl final : ResponseContext {
 
     void wireIs(const Node& clone) {
         const scene::ProtoDeclaration& proto = clone.instance->proto->definition();
-        for (const scene::Field& f : clone.fields) {
-            if (f.isReference.empty()) continue;
-            const scene::FieldDeclaration* decl = proto.interfaceField(f.isReference);
-            if (!decl) continue;
-            const std::string field = canonicalField(clone, f.name);
-            if (scene::canWrite(decl->access))
-                isInbound[clone.instance].push_back({f.isReference, &clone, field});
-            if (scene::canRead(decl->access))
-                isOutbound[&clone].push_back({f.isReference, clone.instance, field});
-        }
+        for (const scene::Field& f : clone.fields)
+            for (const std::string& is : f.isReferences) { // events fan in and out
+                const scene::FieldDeclaration* decl = proto.interfaceField(is);
+                if (!decl) continue;
+                const std::string field = canonicalField(clone, f.name);
+                if (scene::canWrite(decl->access))
+                    isInbound[clone.instance].push_back({is, &clone, field});
+                if (scene::canRead(decl->access))
+                    isOutbound[&clone].push_back({is, clone.instance, field});
+            }
     }
 
     void warn(int file, scene::FilePos pos, std::string message, std::string suggestion = {}) {

@@ -1,5 +1,7 @@
 #include "classic_reader.h"
+
 #include "components.h"
+#include <algorithm>
 
 #include "classic_lexer.h"
 #include "number_text.h"
@@ -226,8 +228,19 @@ void ClassicReader::nodeBody(Node& n) {
             next();
             ClassicTokenInfo iface = expect(T::Identifier, "an interface field name after IS");
             b_.checkIs(n, info, fieldName, iface.text, iface.pos);
-            field.isReference = std::string(iface.text);
+            field.isReferences.emplace_back(iface.text);
             field.value.type = info.type;
+            // `x IS b` after the declaration `inputOnly SFTime x IS a`: one
+            // more connection of the declared field (as XML's <connect>).
+            const auto declared =
+                std::find_if(n.declarations.begin(), n.declarations.end(),
+                             [&](const FieldDeclaration& d) { return d.name == fieldName; });
+            if (declared != n.declarations.end()) {
+                if (std::find(declared->isReferences.begin(), declared->isReferences.end(),
+                              field.isReferences.front()) == declared->isReferences.end())
+                    declared->isReferences.push_back(field.isReferences.front());
+                continue;
+            }
         } else if (!info.known) {
             b_.reportUnknownField(n, fieldName, t.pos);
             field.value = unknownValue();
@@ -237,16 +250,21 @@ void ClassicReader::nodeBody(Node& n) {
             field.value = value(info.type, t);
         }
         if (Field* old = n.field(fieldName)) {
-            // X3D 4 lets an inputOutput field have both an IS and a value.
-            if (old->isReference.empty() == !field.isReference.empty()) {
-                if (field.isReference.empty())
-                    old->value = std::move(field.value);
-                else
-                    old->isReference = std::move(field.isReference);
+            // X3D 4 lets an inputOutput field have both an IS and a value,
+            // and any field several IS connections: all are kept.
+            const bool oldHasValue = !old->value.numbers.empty() || !old->value.strings.empty() ||
+                                     !old->value.nodes.empty() || old->isReferences.empty();
+            if (!field.isReferences.empty()) {
+                for (std::string& is : field.isReferences)
+                    if (std::find(old->isReferences.begin(), old->isReferences.end(), is) ==
+                        old->isReferences.end())
+                        old->isReferences.push_back(std::move(is));
             } else {
-                b_.warning(t.pos,
-                           "field '" + fieldName + "' is given twice; the later value is used");
-                *old = std::move(field);
+                if (oldHasValue)
+                    b_.warning(t.pos,
+                               "field '" + fieldName + "' is given twice; the later value is used");
+                old->value = std::move(field.value);
+                old->where = field.where;
             }
         } else {
             n.fields.push_back(std::move(field));
@@ -276,7 +294,7 @@ void ClassicReader::fieldDeclaration(Node& n) {
         ClassicTokenInfo iface = expect(T::Identifier, "an interface field name after IS");
         FieldInfo info{*type, access, true, false, d.name};
         b_.checkIs(n, info, d.name, iface.text, iface.pos);
-        d.isReference = std::string(iface.text);
+        d.isReferences.emplace_back(iface.text);
     } else if (hasInitialValue(access)) {
         d.value = value(*type, nameTok);
         d.hasValue = true;
@@ -285,12 +303,15 @@ void ClassicReader::fieldDeclaration(Node& n) {
         if (other.name == d.name) {
             // an IS and an initial value for the same field (X3D 4)
             if (other.type == d.type && other.access == d.access &&
-                other.isReference.empty() != d.isReference.empty()) {
-                if (d.isReference.empty()) {
+                (!d.isReferences.empty() || !other.hasValue)) {
+                if (d.isReferences.empty()) {
                     other.value = std::move(d.value);
                     other.hasValue = d.hasValue;
                 } else {
-                    other.isReference = std::move(d.isReference);
+                    for (std::string& is : d.isReferences)
+                        if (std::find(other.isReferences.begin(), other.isReferences.end(), is) ==
+                            other.isReferences.end())
+                            other.isReferences.push_back(std::move(is));
                 }
                 return;
             }

@@ -89,7 +89,7 @@ std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node
     const std::string_view text = scene.files[0].text;
     const bool xml = scene.encoding == Encoding::Xml;
     if (const Field* f = node.field(field)) {
-        if (f->file != 0 || !f->isReference.empty()) {
+        if (f->file != 0 || !f->isReferences.empty()) {
             say(why, "the field's value comes from elsewhere (IS or another file)");
             return std::nullopt;
         }

@@ -112,7 +112,7 @@ void DefinitionCompiler::checkGeometry(const Node& node) {
         report(node, node.field("collision"), Severity::Error, fieldPos(node, "collision"),
                "collision '" + collision + "' is not function or polygonal");
     const Field* definition = node.field("definition");
-    const bool givenByInstance = definition && !definition->isReference.empty();
+    const bool givenByInstance = definition && !definition->isReferences.empty();
     if (stringsField(node, "definition").empty() && !givenByInstance)
         report(node, nullptr, Severity::Error, node.where, "FGeometry has no definition",
                "write definition \"1 - x^2 - y^2 - z^2\" for a unit sphere");

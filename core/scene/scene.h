@@ -60,8 +60,9 @@ struct Field {
     FilePos where;
     int file = -1;
     // Inside a PROTO body: `IS interfaceName` instead of (or, for
-    // inputOutput, besides) a value.
-    std::string isReference;
+    // inputOutput, besides) a value. X3D lets one field be connected to
+    // several interface fields (events fan in and out): each is kept.
+    std::vector<std::string> isReferences;
 };
 
 // A field a Script node or a PROTO interface declares.
@@ -71,8 +72,8 @@ struct FieldDeclaration {
     AccessType access = AccessType::InitializeOnly;
     FieldValue value; // initial value (initializeOnly / inputOutput)
     bool hasValue = false;
-    bool valueIsDefault = false; // not written: the reader filled in the type's default
-    std::string isReference;     // Script field inside a PROTO body
+    bool valueIsDefault = false;           // not written: the reader filled in the type's default
+    std::vector<std::string> isReferences; // Script field inside a PROTO body (as Field's)
     FilePos where;
 };
 

@@ -711,8 +711,10 @@ Node* SceneBuilder::cloneForInstance(Node& original, const Node& instance, std::
     copy->declarations = original.declarations;
     copy->fields = original.fields;
     const ProtoDeclaration& proto = instance.proto->definition();
-    auto substitute = [&](FieldValue& value, const std::string& isName) {
-        if (isName.empty()) return false;
+    // A field connected to several interface fields takes its value from the first.
+    auto substitute = [&](FieldValue& value, const std::vector<std::string>& references) {
+        if (references.empty()) return false;
+        const std::string& isName = references.front();
         if (const Field* given = instance.field(isName)) {
             value = given->value;
         } else if (const FieldDeclaration* decl = proto.interfaceField(isName)) {
@@ -721,12 +723,12 @@ Node* SceneBuilder::cloneForInstance(Node& original, const Node& instance, std::
         return true;
     };
     for (Field& f : copy->fields) {
-        if (substitute(f.value, f.isReference)) continue; // instance nodes are shared, not cloned
+        if (substitute(f.value, f.isReferences)) continue; // instance nodes are shared, not cloned
         for (Node*& child : f.value.nodes)
             if (child) child = cloneForInstance(*child, instance, depth, clones);
     }
     for (FieldDeclaration& d : copy->declarations) {
-        if (substitute(d.value, d.isReference)) continue;
+        if (substitute(d.value, d.isReferences)) continue;
         for (Node*& child : d.value.nodes)
             if (child) child = cloneForInstance(*child, instance, depth, clones);
     }

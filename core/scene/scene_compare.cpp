@@ -61,7 +61,7 @@ class Comparer {
     bool declaration(const FieldDeclaration& a, const FieldDeclaration& b, const std::string& where,
                      bool compareValue) {
         if (a.name != b.name || a.type != b.type || a.access != b.access ||
-            a.isReference != b.isReference)
+            a.isReferences != b.isReferences)
             return differ(where + ": field declaration " + a.name + " vs " + b.name);
         if (compareValue && hasInitialValue(a.access))
             return value(a.value, b.value, where + "." + a.name);
@@ -100,7 +100,7 @@ class Comparer {
         // An empty node field (children [], geometry NULL) means the same as
         // no field: XML cannot write it.
         auto meaningful = [](const Field& f) {
-            return !(holdsNodes(f.value.type) && f.value.nodes.empty() && f.isReference.empty());
+            return !(holdsNodes(f.value.type) && f.value.nodes.empty() && f.isReferences.empty());
         };
         auto count = [&](const Node* n) {
             return std::count_if(n->fields.begin(), n->fields.end(), meaningful);
@@ -112,9 +112,16 @@ class Comparer {
             if (!meaningful(fa)) continue;
             const Field* fb = b->field(fa.name);
             if (!fb) return differ(here + ": field " + fa.name + " missing");
-            if (fa.isReference != fb->isReference)
-                return differ(here + "." + fa.name + ": IS " + fa.isReference + " vs " +
-                              fb->isReference);
+            if (fa.isReferences != fb->isReferences) {
+                auto joined = [](const std::vector<std::string>& v) {
+                    std::string out;
+                    for (const std::string& s : v)
+                        out += (out.empty() ? "" : ", ") + s;
+                    return out;
+                };
+                return differ(here + "." + fa.name + ": IS " + joined(fa.isReferences) + " vs " +
+                              joined(fb->isReferences));
+            }
             if (!value(fa.value, fb->value, here + "." + fa.name)) return false;
         }
         return true;

@@ -34,8 +34,8 @@ ReadResult readSceneBytes(std::string bytes, const std::string& path, const Read
 ReadResult readSceneIn(std::string bytes, const std::string& path, const ReadOptions& options,
                        ReferenceContext* context, const std::filesystem::path& baseDir) {
     if (bytes.size() > options.limits.maxFileBytes)
-        return failWith(path, "the file is larger than " +
-                                  byteSizeText(options.limits.maxFileBytes));
+        return failWith(path,
+                        "the file is larger than " + byteSizeText(options.limits.maxFileBytes));
     if (isGzip(bytes)) {
         std::string problem;
         std::optional<std::string> text = gunzip(bytes, options.limits.maxDecodedBytes, problem);
@@ -132,8 +132,8 @@ ReadResult readSceneFile(const std::filesystem::path& path, const ReadOptions& o
     if (!in) return failWith(name, "cannot open the file", "check the path and the permissions");
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > options.limits.maxFileBytes)
-        return failWith(name, "the file is larger than " +
-                                  byteSizeText(options.limits.maxFileBytes));
+        return failWith(name,
+                        "the file is larger than " + byteSizeText(options.limits.maxFileBytes));
     std::ostringstream content;
     content << in.rdbuf();
     // References are followed inside the folder the scene file is in.

@@ -224,16 +224,20 @@ void Writer::classicNodeBody(const Node& n, int depth) {
         std::string text =
             std::string(vrml ? vrml97AccessTypeName(d.access) : accessTypeName(d.access)) + " " +
             std::string(fieldTypeName(d.type)) + " " + d.name;
-        if (!d.isReference.empty()) {
-            line(depth, text + " IS " + d.isReference);
+        if (!d.isReferences.empty()) {
+            // The declaration with its first IS, then each further one.
+            line(depth, text + " IS " + d.isReferences.front());
+            for (std::size_t i = 1; i < d.isReferences.size(); ++i)
+                line(depth, d.name + " IS " + d.isReferences[i]);
             if (!d.hasValue) continue; // IS only
         }
         if (hasInitialValue(d.access)) text += " " + classicValue(d.value, depth);
         line(depth, text);
     }
     for (const Field& f : n.fields) {
-        if (!f.isReference.empty()) {
-            line(depth, f.name + " IS " + f.isReference);
+        if (!f.isReferences.empty()) {
+            for (const std::string& is : f.isReferences)
+                line(depth, f.name + " IS " + is);
             if (f.value.numbers.empty() && f.value.strings.empty() && f.value.nodes.empty())
                 continue; // IS only
         }
@@ -418,7 +422,7 @@ void Writer::xmlNode(const Node* n, int depth, const std::string& containerField
     std::vector<const Field*> connections;
     std::vector<const Field*> instanceFields;
     for (const Field& f : n->fields) {
-        if (!f.isReference.empty()) {
+        if (!f.isReferences.empty()) {
             connections.push_back(&f);
             if (f.value.numbers.empty() && f.value.strings.empty() && f.value.nodes.empty())
                 continue; // IS only
@@ -448,7 +452,7 @@ void Writer::xmlNode(const Node* n, int depth, const std::string& containerField
                          std::string(accessTypeName(d.access)) + "'";
         if (hasInitialValue(d.access) && !holdsNodes(d.type) && d.hasValue)
             fh += " value='" + xmlEscape(xmlAttributeValue(d.value)) + "'";
-        if (!holdsNodes(d.type) || d.value.nodes.empty() || !d.isReference.empty()) {
+        if (!holdsNodes(d.type) || d.value.nodes.empty() || !d.isReferences.empty()) {
             line(depth + 1, fh + "/>");
             continue;
         }
@@ -459,16 +463,18 @@ void Writer::xmlNode(const Node* n, int depth, const std::string& containerField
     }
     bool declarationConnections = false;
     for (const FieldDeclaration& d : n->declarations)
-        declarationConnections |= !d.isReference.empty();
+        declarationConnections |= !d.isReferences.empty();
     if (!connections.empty() || declarationConnections) {
         line(depth + 1, "<IS>");
+        auto connect = [&](const std::string& field, const std::vector<std::string>& references) {
+            for (const std::string& is : references)
+                line(depth + 2, "<connect nodeField='" + xmlEscape(field) + "' protoField='" +
+                                    xmlEscape(is) + "'/>");
+        };
         for (const FieldDeclaration& d : n->declarations)
-            if (!d.isReference.empty())
-                line(depth + 2, "<connect nodeField='" + xmlEscape(d.name) + "' protoField='" +
-                                    xmlEscape(d.isReference) + "'/>");
+            connect(d.name, d.isReferences);
         for (const Field* f : connections)
-            line(depth + 2, "<connect nodeField='" + xmlEscape(f->name) + "' protoField='" +
-                                xmlEscape(f->isReference) + "'/>");
+            connect(f->name, f->isReferences);
         line(depth + 1, "</IS>");
     }
     for (const Field* f : instanceFields) {

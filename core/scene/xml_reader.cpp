@@ -488,13 +488,23 @@ FieldDeclaration XmlReader::fieldElement(bool external, bool inProtoInterface) {
         d.hasValue = true;
     }
     if (inProtoInterface) b_.popScope();
-    if (hasInitialValue(d.access) && !external && !d.hasValue && d.isReference.empty()) {
+    if (hasInitialValue(d.access) && !external && !d.hasValue && d.isReferences.empty()) {
         d.value = typeDefault(d.type); // no value attribute: the type's default
         d.hasValue = true;
         d.valueIsDefault = true; // until an <IS> connects it (then it has no value)
     }
     return d;
 }
+
+namespace {
+
+// One more IS connection of a field (X3D allows several), each once.
+void addIs(std::vector<std::string>& references, const std::string& protoField) {
+    if (std::find(references.begin(), references.end(), protoField) == references.end())
+        references.push_back(protoField);
+}
+
+} // namespace
 
 void XmlReader::isElement(Node& n) {
     while (nextChild()) {
@@ -511,7 +521,7 @@ void XmlReader::isElement(Node& n) {
             if (d.name == nodeField) {
                 FieldInfo info{d.type, d.access, true, false, d.name};
                 b_.checkIs(n, info, nodeField, protoField, pos);
-                d.isReference = protoField;
+                addIs(d.isReferences, protoField);
                 if (d.valueIsDefault) { // the value comes through IS, as in ClassicVRML
                     d.value = FieldValue{d.type, {}, {}, {}, {}};
                     d.hasValue = d.valueIsDefault = false;
@@ -530,7 +540,7 @@ void XmlReader::isElement(Node& n) {
                 f = &n.fields.back();
                 f->value.type = info.type;
             }
-            f->isReference = protoField;
+            addIs(f->isReferences, protoField); // several <connect>s: several IS
         }
     next:;
     }
@@ -557,7 +567,7 @@ void XmlReader::fieldValueElement(Node& instance) {
         if (n) field.value.nodes.push_back(n);
     }
     if (Field* old = instance.field(name)) {
-        field.isReference = old->isReference; // an <IS> may come first
+        field.isReferences = old->isReferences; // an <IS> may come first
         *old = std::move(field);
     } else
         instance.fields.push_back(std::move(field));

@@ -158,3 +158,51 @@ TEST(InterfaceConversion, NamesNoOtherEncodingCouldWriteAreRefusedWhereTheyStand
                   .find("d.x3dv:3:8: error: the file holds the control character U+0001"),
               std::string::npos);
 }
+
+// Issue 27 §6 (Castle Game Engine's proto_tricky_is_clauses.x3dv): one field
+// connected to two interface fields keeps both connections in every encoding,
+// and nothing warns that the field "is given twice".
+TEST(InterfaceConversion, AFieldConnectedToTwoInterfaceFieldsKeepsBoth) {
+    const std::string classic = R"(#X3D V3.3 utf8
+PROFILE Immersive
+PROTO Tricky [
+  inputOnly SFTime someEvent
+  inputOnly SFTime someEvent3
+  inputOutput SFVec3f where 0 0 0
+  inputOutput SFVec3f there 1 1 1
+] {
+  Transform {
+    translation IS where
+    translation IS there
+    children DEF S Script {
+      inputOnly SFTime anotherEvent IS someEvent
+      anotherEvent IS someEvent3
+    }
+  }
+}
+Tricky { }
+)";
+    ReadOptions options;
+    options.compileFunctions = false;
+    const ReadResult r = readSceneBytes(classic, "tricky.x3dv", options);
+    ASSERT_TRUE(r.ok());
+    for (const auto& d : r.diagnostics)
+        EXPECT_EQ(d.message.find("given twice"), std::string::npos) << d.message;
+    const Node* body = r.scene->protos.at(0)->body.at(0);
+    EXPECT_EQ(body->field("translation")->isReferences,
+              (std::vector<std::string>{"where", "there"}));
+    const Node* script = body->field("children")->value.nodes.at(0);
+    ASSERT_EQ(script->declarations.size(), 1u);
+    EXPECT_EQ(script->declarations[0].isReferences,
+              (std::vector<std::string>{"someEvent", "someEvent3"}));
+    for (const Encoding e : {Encoding::Xml, Encoding::ClassicVrml}) {
+        const std::string written = writeScene(*r.scene, e);
+        const ReadResult back =
+            readSceneBytes(written, e == Encoding::Xml ? "t.x3d" : "t.x3dv", options);
+        ASSERT_TRUE(back.ok()) << written;
+        for (const auto& d : back.diagnostics)
+            EXPECT_EQ(d.message.find("given twice"), std::string::npos) << d.message;
+        std::string difference;
+        EXPECT_TRUE(sameModel(*r.scene, *back.scene, &difference)) << difference << "\n" << written;
+    }
+}
