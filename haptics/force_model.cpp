@@ -32,6 +32,7 @@ ForceSettings settingsFor(const DeviceLimits& limits, double rateHz) {
     // Twice Colgate & Brown's least damping for a passive sampled wall, within
     // what the device can render.
     s.contactDamping = std::min(s.stiffness / rateHz, limits.maxDamping);
+    s.maxForce = limits.maxForce;
     return s;
 }
 
@@ -344,10 +345,18 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
                         surfaceForce, field::scaled(n, settings_.contactDamping *
                                                            field::dot(tool.velocity, n) / nn));
             }
-            if (double tension[3]; effectAt(scene::TangibleKind::Tension, s.proxy, tension) &&
-                                   tension[0] >= 0 && pressing > tension[0]) {
-                s.contact = ContactKind::Inside; // popped through
-                surfaceForce = {};
+            if (double tension[3];
+                effectAt(scene::TangibleKind::Tension, s.proxy, tension) && tension[0] >= 0) {
+                if (tension[0] > 1)
+                    report(shape.name + "tension>1",
+                           "FTension is a fraction of the device's maximum force; " + shape.name +
+                               "'s is above 1 and is taken as 1 (the surface then "
+                               "holds up to the device's limit)");
+                const double popAt = std::min(tension[0], 1.0) * settings_.maxForce;
+                if (pressing > popAt) {
+                    s.contact = ContactKind::Inside; // popped through
+                    surfaceForce = {};
+                }
             }
         }
         s.lastTool = tool3;

@@ -15,9 +15,11 @@
 // - Polygon contact (standard shapes, collision "polygonal"): a god-object
 //   against the triangles the viewer draws (TriangleBvh), sliding on up to
 //   three faces, with the same friction cone.
-// - FTension: when the spring (not the damping) pushes back harder than
-//   that (N), the tool pops through; inside, the inside acts and the
-//   surface lets the tool out freely.
+// - FTension: a fraction of the device's maximum force (values above 1 are
+//   taken as 1, said once), as OpenHaptics' pop-through is; when the spring
+//   (not the damping) pushes back harder than that, the tool pops through;
+//   inside, the inside acts and the surface lets the tool out freely. The
+//   paper's friction 0.1, tension 1 and density 0.8 are on one scale.
 // - FDensity: viscous drag inside, density (clamped to [0, 1]) times the
 //   device's damping.
 // - FForce: the field (N), evaluated only inside its shape.
@@ -56,6 +58,7 @@ struct ForceSettings {
     double stiffness = 0;      // N per scene unit of spring between tool and proxy
     double damping = 0;        // N·s per scene unit at density 1
     double contactDamping = 0; // N·s per scene unit along a surface's normal
+    double maxForce = 0;       // N: the device's most; FTension is a fraction of it
 };
 // Half the device's stiffness, its full damping inside, and on surfaces
 // K·T (twice the least damping that keeps a wall sampled every T = 1/rate

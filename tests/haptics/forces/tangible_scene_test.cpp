@@ -65,7 +65,8 @@ TEST(TangibleScene, TheFansCarpetIsRoughAndItsCabinetSmooth) {
     ProbeOptions o;
     o.duration = 0.4;
     // Down onto the carpet (top at y = 0.02), 0.05 mm in — its tension is
-    // 0.8 N, 0.08 mm of spring — then sideways along it.
+    // 0.8 of the device's force, far more than 0.05 mm of spring — then
+    // sideways along it.
     o.path = {{1.2, 0.3, 0.9}, {1.2, 0.01995, 0.9}, {1.3, 0.01995, 0.9}};
     auto r = runProbe(*scene, o);
     ASSERT_TRUE(r);
