@@ -185,6 +185,7 @@ BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,
             g.rubricHash = assignment.rubricHash;
             g.gradedAt = utcNow();
             g.maxScore = assignment.maxAutomatic;
+            g.isolation = std::string(isolationName(r.isolation));
             std::string failure = failureOf(r, options.limits);
             if (failure.empty() && !gradeFromCheckJson(r.out, g))
                 failure = "the checker gave no verdict (exit " + std::to_string(r.exitCode) + ")";

@@ -171,6 +171,12 @@ void Gradebook::migrate() {
         db_.execute("PRAGMA user_version = 2");
         t.commit();
     }
+    if (schemaVersion() < 3) { // 3: the isolation each check ran under
+        SqliteDatabase::Transaction t(db_);
+        db_.execute("ALTER TABLE grades ADD COLUMN isolation TEXT NOT NULL DEFAULT ''");
+        db_.execute("PRAGMA user_version = 3");
+        t.commit();
+    }
 }
 
 std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
@@ -270,6 +276,7 @@ std::string Gradebook::rowHash(const GradeRecord& g, const std::string& previous
     row << previous << '\x1f' << g.student << '\x1f' << g.assignment << '\x1f' << g.contentHash
         << '\x1f' << g.checkerVersion << '\x1f' << g.rubricHash << '\x1f' << g.gradable << '\x1f'
         << g.score << '\x1f' << g.maxScore << '\x1f' << g.lateFactor << '\x1f' << g.gradedAt;
+    if (!g.isolation.empty()) row << '\x1f' << g.isolation; // schema 3 (older rows: none)
     return sha256(row.str());
 }
 
@@ -294,8 +301,8 @@ void Gradebook::recordGrade(const GradeRecord& g) {
     auto last = db_.prepare("SELECT row_hash FROM grades ORDER BY id DESC LIMIT 1");
     const std::string previous = last.step() ? last.text(0) : std::string(64, '0');
     db_.prepare("INSERT INTO grades(submission_id, checker_version, rubric_hash, gradable, score, "
-                "max_score, late_factor, graded_at, diagnostics, previous_hash, row_hash) "
-                "VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)")
+                "max_score, late_factor, graded_at, diagnostics, previous_hash, row_hash, "
+                "isolation) VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)")
         .bind(1, submission)
         .bind(2, g.checkerVersion)
         .bind(3, g.rubricHash)
@@ -307,6 +314,7 @@ void Gradebook::recordGrade(const GradeRecord& g) {
         .bind(9, g.diagnostics)
         .bind(10, previous)
         .bind(11, rowHash(g, previous))
+        .bind(12, g.isolation)
         .run();
     const std::int64_t grade = db_.lastInsertId();
     auto result =
@@ -331,7 +339,7 @@ std::vector<GradeRecord> Gradebook::latestGrades(const std::string& assignment) 
     auto s = db_.prepare(
         "SELECT g.id, s.student_id, s.content_hash, s.submitted_at, s.hours_late, "
         "g.checker_version, g.rubric_hash, g.gradable, g.score, g.max_score, g.late_factor, "
-        "g.graded_at, g.diagnostics, s.path FROM grades g JOIN submissions s ON "
+        "g.graded_at, g.diagnostics, s.path, g.isolation FROM grades g JOIN submissions s ON "
         "g.submission_id = s.id "
         "WHERE s.assignment_id = ?1 AND g.id = (SELECT MAX(g2.id) FROM grades g2 JOIN "
         "submissions s2 ON g2.submission_id = s2.id WHERE s2.student_id = s.student_id AND "
@@ -355,6 +363,7 @@ std::vector<GradeRecord> Gradebook::latestGrades(const std::string& assignment) 
         g.gradedAt = s.text(11);
         g.diagnostics = s.text(12);
         g.path = s.text(13);
+        g.isolation = s.text(14);
         results.bind(1, s.integer(0));
         while (results.step()) {
             RequirementResult r;
@@ -438,8 +447,8 @@ Gradebook::ChainCheck Gradebook::verifyChain() {
     auto s = db_.prepare(
         "SELECT g.id, s.student_id, s.assignment_id, s.content_hash, g.checker_version, "
         "g.rubric_hash, g.gradable, g.score, g.max_score, g.late_factor, g.graded_at, "
-        "g.previous_hash, g.row_hash FROM grades g JOIN submissions s ON g.submission_id = s.id "
-        "ORDER BY g.id");
+        "g.previous_hash, g.row_hash, g.isolation FROM grades g JOIN submissions s ON "
+        "g.submission_id = s.id ORDER BY g.id");
     std::string previous(64, '0');
     while (s.step()) {
         ++c.rows;
@@ -454,6 +463,7 @@ Gradebook::ChainCheck Gradebook::verifyChain() {
         g.maxScore = s.number(8);
         g.lateFactor = s.number(9);
         g.gradedAt = s.text(10);
+        g.isolation = s.text(13);
         if (s.text(11) != previous || s.text(12) != rowHash(g, previous)) {
             c.intact = false;
             c.firstBadRow = s.integer(0);

@@ -15,7 +15,7 @@
 
 namespace fl::grading {
 
-inline constexpr int kGradebookSchemaVersion = 2;
+inline constexpr int kGradebookSchemaVersion = 3;
 
 struct Student {
     std::string id; // the roster's (a login, a number); submissions are named by it
@@ -47,6 +47,9 @@ struct GradeRecord {
     std::string gradedAt;
     std::vector<RequirementResult> requirements;
     std::string diagnostics; // why not gradable, as text
+    // What the checker ran under (schema 3): "bubblewrap", "syscall filter",
+    // "limits only"; empty when not run by a batch (or before schema 3).
+    std::string isolation;
 };
 
 struct ManualScore {

@@ -31,16 +31,18 @@ const CommandSpec& gradeBatchSpec() {
         .name = "grade batch",
         .summary = "grade a class's submissions into a SQLite gradebook, isolated and resumable",
         .synopsis = {"grade batch --assignment ID|DIR DIR --db GRADEBOOK.sqlite [--jobs N] "
-                     "[--roster CSV] [--json]"},
+                     "[--roster CSV] [--isolation KIND | --no-isolation] [--json]"},
         .description =
             "Grades every submission in DIR — a scene file or a folder per student; the\n"
             "student's id is the name before its first dot — each by `functionlab grade\n"
             "check` in its own child process with limits (CPU time, memory, output, wall\n"
-            "clock, no files written, no network: bubblewrap when installed, else a network\n"
-            "namespace), so a hostile file costs its own budget, never the batch. Each\n"
-            "result is written to the gradebook as soon as it is in: a killed batch loses no\n"
-            "finished result, and a batch run again skips submissions already graded with\n"
-            "the same content, checker version and rubric.\n",
+            "clock) and an isolation: no files written and no network — bubblewrap where it\n"
+            "runs, else a syscall filter (seccomp). Without either the batch refuses to run\n"
+            "unless --no-isolation. A hostile file costs its own budget, never the batch;\n"
+            "the gradebook records which isolation each check ran under. Each result is\n"
+            "written to the gradebook as soon as it is in: a killed batch loses no finished\n"
+            "result, and a batch run again skips submissions already graded with the same\n"
+            "content, checker version and rubric.\n",
         .positionals = {{.name = "DIR", .help = "the folder of submissions"}},
         .options = {assignmentOption(),
                     gradebookOption("the gradebook (created when missing)"),
@@ -63,12 +65,24 @@ const CommandSpec& gradeBatchSpec() {
                      .defaultValue = "60",
                      .min = 1,
                      .max = 3600},
+                    {.name = "isolation",
+                     .kind = OptionKind::Choice,
+                     .valueName = "KIND",
+                     .help = "the isolation to check under (default: the strongest this machine "
+                             "gives, bubblewrap before syscall-filter)",
+                     .choices = {"bubblewrap", "syscall-filter"}},
+                    {.name = "no-isolation",
+                     .help = "check with limits only (CPU, memory, output, wall clock): files "
+                             "can be written and the network reached; only for submissions you "
+                             "trust, on a machine with neither bubblewrap nor seccomp"},
                     {.name = "json",
                      .help = "print one JSON object at the end: {\"graded\", \"skipped\", "
-                             "\"not_gradable\", \"failed\", \"problems\": [...]}"}},
+                             "\"not_gradable\", \"failed\", \"isolation\", \"problems\": "
+                             "[...]}"}},
         .notes = "A progress line on a terminal. Results: `functionlab grade export`.\n",
         .exitStatus = "0 the batch ran (whatever the scores), 1 the assignment, the folder or the "
-                      "gradebook could not be read, 2 usage error",
+                      "gradebook could not be read, or no isolation is available (see "
+                      "--no-isolation), 2 usage error",
     };
     return spec;
 }
@@ -85,6 +99,23 @@ int gradeBatchCommand(const Args& args) {
     std::error_code ec;
     if (!std::filesystem::is_directory(folder, ec)) {
         std::cerr << "functionlab grade batch: " << folder.string() << " is not a folder\n";
+        return kExitDiagnostic;
+    }
+    if (a->given("isolation") && a->flag("no-isolation"))
+        return usageError(gradeBatchSpec(), "--isolation and --no-isolation exclude each other",
+                          std::cerr);
+    grading::IsolationLimits limits;
+    limits.wallSeconds = a->number("time-limit", 60);
+    limits.cpuSeconds = limits.wallSeconds / 2;
+    limits.isolate = !a->flag("no-isolation");
+    if (a->given("isolation"))
+        limits.isolation = a->text("isolation") == "bubblewrap" ? grading::Isolation::Bubblewrap
+                                                                : grading::Isolation::SyscallFilter;
+    else if (limits.isolate && grading::bestIsolation() == grading::Isolation::LimitsOnly) {
+        std::cerr << "functionlab grade batch: this machine can isolate no check: neither "
+                     "bubblewrap nor a seccomp filter works here. Install bubblewrap "
+                     "(apt-get install bubblewrap), or run with --no-isolation for submissions "
+                     "you trust (files could be written, the network reached).\n";
         return kExitDiagnostic;
     }
     try {
@@ -107,8 +138,7 @@ int gradeBatchCommand(const Args& args) {
             std::cerr << "functionlab grade batch: " << s << "\n";
         grading::BatchOptions o;
         o.jobs = int(a->integer("jobs", 2));
-        o.limits.wallSeconds = a->number("time-limit", 60);
-        o.limits.cpuSeconds = o.limits.wallSeconds / 2;
+        o.limits = limits;
         o.checkerVersion = grading::kCheckerVersion;
         o.dueUtc = assignment->due.value_or("");
         o.lateFactor = [&](double hours) { return assignment->late.factor(hours); };
@@ -135,6 +165,11 @@ int gradeBatchCommand(const Args& args) {
             out += ",\"skipped\":" + std::to_string(summary.skipped);
             out += ",\"not_gradable\":" + std::to_string(summary.notGradable);
             out += ",\"failed\":" + std::to_string(summary.failed);
+            out += ",\"isolation\":" +
+                   jsonString(limits.isolate ? std::string(grading::isolationName(
+                                                   limits.isolation ? *limits.isolation
+                                                                    : grading::bestIsolation()))
+                                             : std::string("limits only"));
             out += ",\"problems\":[";
             for (std::size_t i = 0; i < summary.problems.size(); ++i) {
                 if (i) out += ",";

@@ -66,7 +66,7 @@ int gradeReportCommand(const Args& args) {
             l.cpuSeconds = 60;
             l.memoryBytes = std::size_t(16) << 30;
             l.fileBytes = std::size_t(64) << 20;
-            l.noNetwork = false;
+            l.isolate = false;
             char time[32];
             std::snprintf(time, sizeof time, "%g", seconds);
             const grading::ChildResult r =

@@ -78,6 +78,18 @@ run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/grade
     --roster ${OUT_DIR}/roster.csv --jobs 2 --json)
 expect_json_equal("${OUT}" "3" graded)
 expect_json_equal("${OUT}" "1" not_gradable)
+# Each check ran isolated (bubblewrap where it runs, else the syscall filter).
+string(JSON isolation GET "${OUT}" isolation)
+if(NOT isolation MATCHES "^(bubblewrap|syscall filter)$")
+  message(FATAL_ERROR "the batch ran under '${isolation}'")
+endif()
+# The fallback, asked for: the same verdicts under the syscall filter.
+run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/filtered.sqlite
+    --isolation syscall-filter --json)
+expect_json_equal("${OUT}" "3" graded)
+expect_json_equal("${OUT}" "syscall filter" isolation)
+run(2 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/x.sqlite
+    --isolation bubblewrap --no-isolation)
 run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/gradebook.sqlite --json)
 expect_json_equal("${OUT}" "4" skipped)
 expect_json_equal("${OUT}" "0" graded)
