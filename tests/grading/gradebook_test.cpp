@@ -170,13 +170,15 @@ TEST(Gradebook, SchemaOneIsMigrated) {
         book.registerAssignment(lab());
         book.recordGrade(grade("ann", "h", 70));
     }
-    // Back to what schema 1 wrote: no path column, user_version 1.
-    raw(path, "ALTER TABLE submissions DROP COLUMN path; PRAGMA user_version = 1");
+    // Back to what schema 1 wrote: no path or isolation column, user_version 1.
+    raw(path, "ALTER TABLE submissions DROP COLUMN path; ALTER TABLE grades DROP COLUMN "
+              "isolation; PRAGMA user_version = 1");
     Gradebook book(path);
-    EXPECT_EQ(book.schemaVersion(), 2);
+    EXPECT_EQ(book.schemaVersion(), kGradebookSchemaVersion);
     const auto grades = book.latestGrades("lab");
     ASSERT_EQ(grades.size(), 1u);
     EXPECT_EQ(grades[0].score, 70);
     EXPECT_EQ(grades[0].path, "");
+    EXPECT_EQ(grades[0].isolation, "");
     EXPECT_TRUE(book.verifyChain().intact);
 }
