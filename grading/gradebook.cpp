@@ -1,5 +1,7 @@
 #include "gradebook.h"
 
+#include "gradebook_log.h"
+
 #include <QCryptographicHash>
 #include <QDateTime>
 #include <QJsonArray>
@@ -82,30 +84,6 @@ CREATE TABLE overrides (
 CREATE INDEX grades_by_submission ON grades(submission_id);
 )sql";
 
-std::string sha256(const std::string& text) {
-    return QCryptographicHash::hash(QByteArray::fromStdString(text), QCryptographicHash::Sha256)
-        .toHex()
-        .toStdString();
-}
-
-std::string locationsJson(const std::vector<Location>& locations) {
-    QJsonArray a;
-    for (const Location& l : locations)
-        a.append(QJsonObject{
-            {"file", QString::fromStdString(l.file)}, {"line", l.line}, {"column", l.column}});
-    return QJsonDocument(a).toJson(QJsonDocument::Compact).toStdString();
-}
-
-std::vector<Location> locationsOf(const std::string& json) {
-    std::vector<Location> out;
-    for (const QJsonValue& v : QJsonDocument::fromJson(QByteArray::fromStdString(json)).array()) {
-        const QJsonObject o = v.toObject();
-        out.push_back({o.value("file").toString().toStdString(), o.value("line").toInt(),
-                       o.value("column").toInt()});
-    }
-    return out;
-}
-
 // Fields of one CSV line (RFC 4180 quoting).
 std::vector<std::string> csvFields(const std::string& line) {
     std::vector<std::string> out(1);
@@ -177,6 +155,13 @@ void Gradebook::migrate() {
         db_.execute("PRAGMA user_version = 3");
         t.commit();
     }
+    if (schemaVersion() < 4) { // 4: the log of every change, and signed heads
+        SqliteDatabase::Transaction t(db_);
+        db_.execute(kLogSchema);
+        importStateIntoLog();
+        db_.execute("PRAGMA user_version = 4");
+        t.commit();
+    }
 }
 
 std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
@@ -220,6 +205,17 @@ std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
 }
 
 void Gradebook::addStudent(const Student& s) {
+    // What the row would become (an empty name or email keeps the old one):
+    // no entry when nothing changes.
+    auto now = db_.prepare("SELECT name, email FROM students WHERE id = ?1");
+    now.bind(1, s.id);
+    if (now.step() && (s.name.empty() || s.name == now.text(0)) &&
+        (s.email.empty() || s.email == now.text(1)))
+        return;
+    change("student", studentPayload(s));
+}
+
+void Gradebook::applyStudent(const Student& s) {
     db_.prepare("INSERT INTO students(id, name, email) VALUES(?1, ?2, ?3) "
                 "ON CONFLICT(id) DO UPDATE SET name = CASE WHEN ?2 = '' THEN name ELSE ?2 END, "
                 "email = CASE WHEN ?3 = '' THEN email ELSE ?3 END")
@@ -238,6 +234,15 @@ std::vector<Student> Gradebook::students() {
 }
 
 void Gradebook::registerAssignment(const AssignmentRecord& a) {
+    for (const AssignmentRecord& known : assignments()) // every batch registers it again
+        if (known.id == a.id && known.title == a.title && known.maxAutomatic == a.maxAutomatic &&
+            known.maxManual == a.maxManual && known.rubricHash == a.rubricHash &&
+            known.due == a.due)
+            return;
+    change("assignment", assignmentPayload(a));
+}
+
+void Gradebook::applyAssignment(const AssignmentRecord& a) {
     db_.prepare("INSERT INTO assignments(id, title, max_automatic, max_manual, rubric_hash, due) "
                 "VALUES(?1, ?2, ?3, ?4, ?5, ?6) ON CONFLICT(id) DO UPDATE SET title = ?2, "
                 "max_automatic = ?3, max_manual = ?4, rubric_hash = ?5, due = ?6")
@@ -281,8 +286,11 @@ std::string Gradebook::rowHash(const GradeRecord& g, const std::string& previous
 }
 
 void Gradebook::recordGrade(const GradeRecord& g) {
-    SqliteDatabase::Transaction t(db_);
-    addStudent({g.student, "", ""});
+    change("grade", gradePayload(g));
+}
+
+void Gradebook::applyGrade(const GradeRecord& g) {
+    applyStudent({g.student, "", ""});
     db_.prepare("INSERT INTO submissions(student_id, assignment_id, content_hash, submitted_at, "
                 "hours_late, path) VALUES(?1, ?2, ?3, ?4, ?5, ?6) ON CONFLICT DO UPDATE SET "
                 "path = ?6")
@@ -331,7 +339,6 @@ void Gradebook::recordGrade(const GradeRecord& g) {
         result.run();
         result.reset();
     }
-    t.commit();
 }
 
 std::vector<GradeRecord> Gradebook::latestGrades(const std::string& assignment) {
@@ -384,16 +391,22 @@ std::vector<GradeRecord> Gradebook::latestGrades(const std::string& assignment) 
 void Gradebook::setManualScore(const std::string& student, const std::string& assignment,
                                const std::string& item, double points, const std::string& comment,
                                const std::string& grader) {
+    change("manual-score",
+           manualScorePayload(student, assignment, {item, points, comment, grader, utcNow()}));
+}
+
+void Gradebook::applyManualScore(const std::string& student, const std::string& assignment,
+                                 const ManualScore& m) {
     db_.prepare("INSERT INTO manual_scores(student_id, assignment_id, item_id, points, comment, "
                 "grader, at) VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7) ON CONFLICT DO UPDATE SET "
                 "points = ?4, comment = ?5, grader = ?6, at = ?7")
         .bind(1, student)
         .bind(2, assignment)
-        .bind(3, item)
-        .bind(4, points)
-        .bind(5, comment)
-        .bind(6, grader)
-        .bind(7, utcNow())
+        .bind(3, m.item)
+        .bind(4, m.points)
+        .bind(5, m.comment)
+        .bind(6, m.grader)
+        .bind(7, m.at)
         .run();
 }
 
@@ -417,6 +430,12 @@ std::vector<ManualScore> Gradebook::manualScores(const std::string& student,
 
 void Gradebook::addOverride(const std::string& student, const std::string& assignment, double score,
                             const std::string& who, const std::string& why) {
+    change("override", overridePayload(student, assignment, score, who, why, utcNow()));
+}
+
+void Gradebook::applyOverride(const std::string& student, const std::string& assignment,
+                              double score, const std::string& who, const std::string& why,
+                              const std::string& at) {
     db_.prepare("INSERT INTO overrides(student_id, assignment_id, score, who, why, at) "
                 "VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
         .bind(1, student)
@@ -424,7 +443,7 @@ void Gradebook::addOverride(const std::string& student, const std::string& assig
         .bind(3, score)
         .bind(4, who)
         .bind(5, why)
-        .bind(6, utcNow())
+        .bind(6, at)
         .run();
 }
 
@@ -440,38 +459,6 @@ std::optional<double> Gradebook::overrideScore(const std::string& student,
 double Gradebook::finalScore(const GradeRecord& g) {
     if (auto o = overrideScore(g.student, g.assignment)) return *o;
     return g.score * g.lateFactor + manualPoints(g.student, g.assignment);
-}
-
-Gradebook::ChainCheck Gradebook::verifyChain() {
-    ChainCheck c;
-    auto s = db_.prepare(
-        "SELECT g.id, s.student_id, s.assignment_id, s.content_hash, g.checker_version, "
-        "g.rubric_hash, g.gradable, g.score, g.max_score, g.late_factor, g.graded_at, "
-        "g.previous_hash, g.row_hash, g.isolation FROM grades g JOIN submissions s ON "
-        "g.submission_id = s.id ORDER BY g.id");
-    std::string previous(64, '0');
-    while (s.step()) {
-        ++c.rows;
-        GradeRecord g;
-        g.student = s.text(1);
-        g.assignment = s.text(2);
-        g.contentHash = s.text(3);
-        g.checkerVersion = s.text(4);
-        g.rubricHash = s.text(5);
-        g.gradable = s.integer(6) != 0;
-        g.score = s.number(7);
-        g.maxScore = s.number(8);
-        g.lateFactor = s.number(9);
-        g.gradedAt = s.text(10);
-        g.isolation = s.text(13);
-        if (s.text(11) != previous || s.text(12) != rowHash(g, previous)) {
-            c.intact = false;
-            c.firstBadRow = s.integer(0);
-            return c;
-        }
-        previous = s.text(12);
-    }
-    return c;
 }
 
 } // namespace fl::grading

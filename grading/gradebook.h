@@ -3,19 +3,30 @@
 // while a batch writes). Students (a roster CSV imports them), assignments,
 // submissions (content hash, time, lateness), the checker's results per
 // requirement, manual rubric scores with comments, overrides (who, when,
-// why) — and an audit chain: every grade row records the submission's hash,
-// the checker version and the rubric hash, and the hash of the row before
-// it, so a row changed behind the gradebook's back shows.
+// why).
+//
+// The audit trail (issue 27 §3): every change — an assignment, a student, a
+// grade with its results, a manual score, an override — is first an entry
+// of one append-only log (`events`), each holding the hash of the one
+// before it, and only then applied to the tables the queries read. So the
+// tables can always be rebuilt from the log, and verify() finds an entry
+// changed, inserted or deleted (the chain breaks) or a table changed behind
+// the log's back (the rebuild differs). The instructor's key (signing.h,
+// kept outside the gradebook) signs the log's head; a signed head in an
+// export, or the public key, finds the tail deleted or the whole log
+// re-hashed by someone without the key.
 #include "requirement.h"
 #include "sqlite_database.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fl::grading {
 
-inline constexpr int kGradebookSchemaVersion = 3;
+inline constexpr int kGradebookSchemaVersion = 4;
 
 struct Student {
     std::string id; // the roster's (a login, a number); submissions are named by it
@@ -59,6 +70,42 @@ struct ManualScore {
     std::string grader;
     std::string at;
 };
+
+// The newest entry of the log: what a signature covers.
+struct LogHead {
+    std::int64_t seq = 0; // entries are numbered 1, 2, 3 ... (0: an empty log)
+    std::string hash;     // 64 hex digits
+};
+
+// A head signed with an instructor's key.
+struct SignedHead {
+    LogHead head;
+    std::string publicKey; // hex
+    std::string signature; // hex
+    std::string at;
+};
+
+// What verify() found.
+struct GradebookCheck {
+    bool intact = true;        // the log's chain holds and the tables are what it says
+    std::size_t entries = 0;   // in the log
+    LogHead head;              // its newest entry
+    std::int64_t badEntry = 0; // the first entry that breaks the chain (0: none, or a table)
+    std::string problem;       // what changed and where, for a person; empty when intact
+    // Signatures: the newest head signed with the key asked for (or, without
+    // one, with any key), and how many entries came after it.
+    std::optional<SignedHead> signedHead;
+    bool signatureHolds = false;
+    std::size_t unsignedEntries = 0;
+};
+
+struct VerifyOptions {
+    std::optional<std::string> head;      // a head hash from an export: must be in the log
+    std::optional<std::string> publicKey; // hex: a head signed with it must hold
+};
+
+// The text a head's signature covers.
+std::string headMessage(const LogHead& head);
 
 struct RosterProblem {
     int line = 0;
@@ -104,15 +151,28 @@ class Gradebook {
     // The final score: the override if any, else automatic x late factor + manual.
     double finalScore(const GradeRecord& g);
 
-    struct ChainCheck {
-        bool intact = true;
-        std::int64_t firstBadRow = 0; // grades.id where the chain breaks
-        std::size_t rows = 0;
-    };
-    ChainCheck verifyChain();
+    // The log and its signatures (gradebook_log.cpp).
+    LogHead head();
+    std::size_t entries();
+    // Signs the head with `key`, keeps the signature, and returns it.
+    SignedHead signHead(const struct SigningKey& key);
+    std::vector<SignedHead> signedHeads(); // newest first
+    GradebookCheck verify(const VerifyOptions& options = {});
 
   private:
     void migrate();
+    void importStateIntoLog(); // schema 4: the state of an older gradebook becomes its log
+    // Every change: the entry first, then the tables (one transaction).
+    void change(std::string_view kind, const std::string& payload);
+    void appendEntry(std::string_view kind, const std::string& payload);
+    void apply(std::string_view kind, const std::string& payload);
+    void applyStudent(const Student& s);
+    void applyAssignment(const AssignmentRecord& a);
+    void applyGrade(const GradeRecord& g);
+    void applyManualScore(const std::string& student, const std::string& assignment,
+                          const ManualScore& m);
+    void applyOverride(const std::string& student, const std::string& assignment, double score,
+                       const std::string& who, const std::string& why, const std::string& at);
     std::string rowHash(const GradeRecord& g, const std::string& previous);
 
     SqliteDatabase db_;

@@ -48,12 +48,13 @@ std::int64_t SqliteDatabase::lastInsertId() const {
     return sqlite3_last_insert_rowid(db_);
 }
 
-SqliteDatabase::Transaction::Transaction(SqliteDatabase& db) : db_(db) {
-    db_.execute("BEGIN IMMEDIATE");
+SqliteDatabase::Transaction::Transaction(SqliteDatabase& db)
+    : db_(db), nested_(sqlite3_get_autocommit(db.db_) == 0) {
+    if (!nested_) db_.execute("BEGIN IMMEDIATE");
 }
 
 SqliteDatabase::Transaction::~Transaction() {
-    if (!done_) {
+    if (!done_ && !nested_) {
         char* error = nullptr;
         sqlite3_exec(db_.db_, "ROLLBACK", nullptr, nullptr, &error);
         sqlite3_free(error);
@@ -61,7 +62,7 @@ SqliteDatabase::Transaction::~Transaction() {
 }
 
 void SqliteDatabase::Transaction::commit() {
-    db_.execute("COMMIT");
+    if (!nested_) db_.execute("COMMIT");
     done_ = true;
 }
 
@@ -135,6 +136,15 @@ std::int64_t SqliteStatement::integer(int column) const {
 
 bool SqliteStatement::isNull(int column) const {
     return sqlite3_column_type(statement_, column) == SQLITE_NULL;
+}
+
+int SqliteStatement::columns() const {
+    return sqlite3_column_count(statement_);
+}
+
+std::string SqliteStatement::columnName(int column) const {
+    const char* name = sqlite3_column_name(statement_, column);
+    return name ? name : "";
 }
 
 } // namespace fl::grading

@@ -31,7 +31,9 @@ class SqliteDatabase {
     SqliteStatement prepare(std::string_view sql);
     std::int64_t lastInsertId() const;
 
-    // BEGIN IMMEDIATE ... COMMIT, rolled back if the scope is left by an exception.
+    // BEGIN IMMEDIATE ... COMMIT, rolled back if the scope is left by an
+    // exception. Inside another transaction it is part of that one (the
+    // outer one commits or rolls back).
     class Transaction {
       public:
         explicit Transaction(SqliteDatabase& db);
@@ -40,6 +42,7 @@ class SqliteDatabase {
 
       private:
         SqliteDatabase& db_;
+        bool nested_ = false;
         bool done_ = false;
     };
 
@@ -70,6 +73,8 @@ class SqliteStatement {
     double number(int column) const;
     std::int64_t integer(int column) const;
     bool isNull(int column) const;
+    int columns() const; // of the result rows
+    std::string columnName(int column) const;
 
   private:
     sqlite3* db_;

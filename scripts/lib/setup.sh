@@ -6,8 +6,9 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 
 # Debian 12 package names. Qt, GLM, hidapi, libusb and SQLite are for the
-# viewer, haptics and grading parts; bubblewrap isolates each submission
-# grade batch checks; muParser is a benchmark peer only.
+# viewer, haptics and grading parts; libsodium signs the gradebook's log;
+# bubblewrap isolates each submission grade batch checks; muParser is a
+# benchmark peer only.
 # Installed with --no-install-recommends, so every package CMake needs is
 # named here even where another package only recommends it (libqt6opengl6-dev:
 # Qt6 3DRender needs Qt6OpenGL, a mere Recommends of qt6-base-dev).
@@ -15,7 +16,7 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev libmuparser-dev
-  libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libhidapi-dev libusb-1.0-0-dev
+  libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libsodium-dev libhidapi-dev libusb-1.0-0-dev
   qt6-base-dev libqt6opengl6-dev qt6-3d-dev qt6-websockets-dev zlib1g-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   bubblewrap

@@ -84,6 +84,7 @@ if(NOT isolation MATCHES "^(bubblewrap|syscall filter)$")
   message(FATAL_ERROR "the batch ran under '${isolation}'")
 endif()
 # The fallback, asked for: the same verdicts under the syscall filter.
+file(REMOVE ${OUT_DIR}/filtered.sqlite ${OUT_DIR}/filtered.sqlite-wal ${OUT_DIR}/filtered.sqlite-shm)
 run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/filtered.sqlite
     --isolation syscall-filter --json)
 expect_json_equal("${OUT}" "3" graded)

@@ -106,24 +106,6 @@ TEST(Gradebook, ManualScoresOverridesAndLateness) {
     EXPECT_DOUBLE_EQ(book.finalScore(book.latestGrades("lab")[0]), 95);
 }
 
-TEST(Gradebook, TamperingShowsInTheChain) {
-    const std::string path = freshPath("chain");
-    {
-        Gradebook book(path);
-        book.registerAssignment(lab());
-        for (int i = 0; i < 4; ++i)
-            book.recordGrade(grade("s" + std::to_string(i), "h" + std::to_string(i), 10.0 * i));
-        const auto c = book.verifyChain();
-        EXPECT_TRUE(c.intact);
-        EXPECT_EQ(c.rows, 4u);
-    }
-    raw(path, "UPDATE grades SET score = 100 WHERE id = 3");
-    Gradebook book(path);
-    const auto c = book.verifyChain();
-    EXPECT_FALSE(c.intact);
-    EXPECT_EQ(c.firstBadRow, 3);
-}
-
 TEST(Gradebook, ANewerSchemaIsRefusedNotDamaged) {
     const std::string path = freshPath("newer");
     { Gradebook book(path); }
@@ -172,7 +154,7 @@ TEST(Gradebook, SchemaOneIsMigrated) {
     }
     // Back to what schema 1 wrote: no path or isolation column, user_version 1.
     raw(path, "ALTER TABLE submissions DROP COLUMN path; ALTER TABLE grades DROP COLUMN "
-              "isolation; PRAGMA user_version = 1");
+              "isolation; DROP TABLE events; DROP TABLE signed_heads; PRAGMA user_version = 1");
     Gradebook book(path);
     EXPECT_EQ(book.schemaVersion(), kGradebookSchemaVersion);
     const auto grades = book.latestGrades("lab");
@@ -180,5 +162,5 @@ TEST(Gradebook, SchemaOneIsMigrated) {
     EXPECT_EQ(grades[0].score, 70);
     EXPECT_EQ(grades[0].path, "");
     EXPECT_EQ(grades[0].isolation, "");
-    EXPECT_TRUE(book.verifyChain().intact);
+    EXPECT_TRUE(book.verify().intact) << book.verify().problem;
 }
