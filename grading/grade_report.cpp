@@ -82,6 +82,19 @@ std::string passRateSvg(const std::vector<std::pair<std::string, double>>& rates
 
 } // namespace
 
+// Which state of the gradebook the page shows: its log's head, and who
+// signed it (functionlab grade verify --head HASH checks it later).
+static std::string headParagraph(const LogHead& head, const std::optional<SignedHead>& signedHead) {
+    std::string p = "<p class='head'>Made from the gradebook's log at entry " +
+                    std::to_string(head.seq) + ", hash <code>" + head.hash + "</code>";
+    if (signedHead && signedHead->head.hash == head.hash)
+        p += ", signed with key <code>" + signedHead->publicKey + "</code>: signature <code>" +
+             signedHead->signature + "</code>";
+    else
+        p += " (not signed)";
+    return p + ". Check it with <code>functionlab grade verify GRADEBOOK --head HASH</code>.</p>";
+}
+
 ReportResult writeReport(Gradebook& book, const AssignmentRecord& a,
                          const std::vector<std::string>& ids, const std::filesystem::path& folder,
                          const ReportOptions& options) {
@@ -172,7 +185,7 @@ ReportResult writeReport(Gradebook& book, const AssignmentRecord& a,
         "<h2>Pass rate per requirement</h2>" + passRateSvg(rates) +
         "<h2>Students</h2><table><tr><th>student</th><th>name</th><th>final</th>"
         "<th>gradable</th></tr>\n" +
-        rows + "</table></body></html>\n";
+        rows + "</table>" + headParagraph(book.head(), options.signedHead) + "</body></html>\n";
     std::ofstream(folder / "index.html", std::ios::binary) << index;
     result.pages.insert(result.pages.begin(), folder / "index.html");
     return result;

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct ReportOptions {
         render;
     // The moments pictured for a submission (one when nothing moves).
     std::function<std::vector<double>(const std::string& submission)> moments;
+    // The gradebook's log head the report was made from (and its signature):
+    // `functionlab grade verify --head` checks the gradebook still has it.
+    std::optional<SignedHead> signedHead;
 };
 
 struct ReportResult {

@@ -125,6 +125,8 @@ const std::vector<Command>& commands() {
         {gradeExportSpec, gradeExportCommand},
         {gradeSimilarSpec, gradeSimilarCommand},
         {gradeReportSpec, gradeReportCommand},
+        {gradeVerifySpec, gradeVerifyCommand},
+        {gradeKeySpec, gradeKeyCommand},
         {hapticsDevicesSpec, hapticsDevicesCommand},
         {hapticsProbeSpec, hapticsProbeCommand},
         {hapticsRecordSpec, hapticsRecordCommand},

@@ -25,6 +25,8 @@ const CommandSpec& gradeBatchSpec();
 const CommandSpec& gradeExportSpec();
 const CommandSpec& gradeSimilarSpec();
 const CommandSpec& gradeReportSpec();
+const CommandSpec& gradeVerifySpec();
+const CommandSpec& gradeKeySpec();
 const CommandSpec& hapticsProbeSpec();
 const CommandSpec& hapticsDevicesSpec();
 const CommandSpec& hapticsRecordSpec();
@@ -47,6 +49,8 @@ int gradeBatchCommand(const Args& args);     // `grade batch`
 int gradeExportCommand(const Args& args);    // `grade export`
 int gradeSimilarCommand(const Args& args);   // `grade similar`
 int gradeReportCommand(const Args& args);    // `grade report`
+int gradeVerifyCommand(const Args& args);    // `grade verify`
+int gradeKeyCommand(const Args& args);       // `grade key new`
 int hapticsProbeCommand(const Args& args);   // `haptics probe`
 int hapticsDevicesCommand(const Args& args); // `haptics devices`
 int hapticsRecordCommand(const Args& args);  // `haptics record`

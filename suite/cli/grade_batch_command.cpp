@@ -75,10 +75,12 @@ const CommandSpec& gradeBatchSpec() {
                      .help = "check with limits only (CPU, memory, output, wall clock): files "
                              "can be written and the network reached; only for submissions you "
                              "trust, on a machine with neither bubblewrap nor seccomp"},
+                    signingKeyOption(),
                     {.name = "json",
                      .help = "print one JSON object at the end: {\"graded\", \"skipped\", "
-                             "\"not_gradable\", \"failed\", \"isolation\", \"problems\": "
-                             "[...]}"}},
+                             "\"not_gradable\", \"failed\", \"isolation\", \"head\": "
+                             "{\"entry\", \"hash\", \"publicKey\", \"signature\"}, "
+                             "\"problems\": [...]}"}},
         .notes = "A progress line on a terminal. Results: `functionlab grade export`.\n",
         .exitStatus = "0 the batch ran (whatever the scores), 1 the assignment, the folder or the "
                       "gradebook could not be read, or no isolation is available (see "
@@ -160,6 +162,7 @@ int gradeBatchCommand(const Args& args) {
         if (terminal) std::cerr << "\n";
         for (const std::string& p : summary.problems)
             std::cerr << "functionlab grade batch: " << p << "\n";
+        const auto signedHead = signHeadOrSay(book, *a, "grade batch", std::cerr);
         if (a->flag("json")) {
             std::string out = "{\"graded\":" + std::to_string(summary.graded);
             out += ",\"skipped\":" + std::to_string(summary.skipped);
@@ -170,6 +173,7 @@ int gradeBatchCommand(const Args& args) {
                                                    limits.isolation ? *limits.isolation
                                                                     : grading::bestIsolation()))
                                              : std::string("limits only"));
+            out += ",\"head\":" + headJson(book.head(), signedHead);
             out += ",\"problems\":[";
             for (std::size_t i = 0; i < summary.problems.size(); ++i) {
                 if (i) out += ",";

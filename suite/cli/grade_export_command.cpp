@@ -7,6 +7,7 @@
 #include "catalogue.h"
 #include "grade_export.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -25,7 +26,10 @@ const CommandSpec& gradeExportSpec() {
             "Moodle's grade import CSV (username, email, grade, feedback); gradescope: a\n"
             "folder OUT/STUDENT/results.json in the autograder's format, one test per\n"
             "requirement; csv: every figure and requirement. Cells a spreadsheet would run\n"
-            "as formulas are escaped.\n",
+            "as formulas are escaped. Beside it, OUT.head.json (gradescope: OUT/head.json)\n"
+            "holds the gradebook log's head the export was made from, signed with the\n"
+            "instructor's key when there is one: functionlab grade verify --head checks\n"
+            "later that the gradebook still has it.\n",
         .options = {gradebookOption("the gradebook"),
                     assignmentOption(),
                     {.name = "format",
@@ -37,7 +41,8 @@ const CommandSpec& gradeExportSpec() {
                      .shortName = 'o',
                      .kind = OptionKind::Path,
                      .valueName = "OUT",
-                     .help = "the file to write (gradescope: the folder)"}},
+                     .help = "the file to write (gradescope: the folder)"},
+                    signingKeyOption()},
         .exitStatus = "0 written, 1 the gradebook or the assignment could not be read or OUT "
                       "not written, 2 usage error",
     };
@@ -58,17 +63,28 @@ int gradeExportCommand(const Args& args) {
     try {
         grading::Gradebook book(db);
         const grading::AssignmentRecord record = assignment->record();
+        std::string headFile = out + ".head.json";
         if (format == "gradescope") {
             grading::exportGradescope(book, record, out);
-            return kExitOk;
+            headFile = (std::filesystem::path(out) / "head.json").string();
+        } else {
+            const grading::ExportFormat f = format == "canvas"   ? grading::ExportFormat::Canvas
+                                            : format == "moodle" ? grading::ExportFormat::Moodle
+                                                                 : grading::ExportFormat::Csv;
+            std::ofstream file(out, std::ios::binary);
+            file << grading::exportCsvText(book, record, f);
+            if (!file) {
+                std::cerr << "functionlab grade export: cannot write " << out << "\n";
+                return kExitDiagnostic;
+            }
         }
-        const grading::ExportFormat f = format == "canvas"   ? grading::ExportFormat::Canvas
-                                        : format == "moodle" ? grading::ExportFormat::Moodle
-                                                             : grading::ExportFormat::Csv;
-        std::ofstream file(out, std::ios::binary);
-        file << grading::exportCsvText(book, record, f);
-        if (!file) {
-            std::cerr << "functionlab grade export: cannot write " << out << "\n";
+        // Which state of the gradebook this export shows, signed: the LMS's
+        // file cannot hold it, so it goes beside it.
+        const auto signedHead = signHeadOrSay(book, *a, "grade export", std::cerr);
+        std::ofstream head(headFile, std::ios::binary);
+        head << headJson(book.head(), signedHead) << "\n";
+        if (!head) {
+            std::cerr << "functionlab grade export: cannot write " << headFile << "\n";
             return kExitDiagnostic;
         }
     } catch (const std::exception& e) {

@@ -5,6 +5,7 @@
 #include "cli/option_table.h"
 
 #include "assignment.h"
+#include "gradebook.h"
 
 #include <iosfwd>
 #include <optional>
@@ -21,5 +22,20 @@ std::optional<courseware::Assignment> assignmentOrExplain(const std::string& idO
 
 // False (after saying so on `err`) when `path` is no gradebook file.
 bool gradebookExists(const std::string& command, const std::string& path, std::ostream& err);
+
+// --signing-key FILE: the instructor's secret key that signs the gradebook's
+// log (grading/signing.h); without it, FUNCTIONLAB_GRADING_KEY or
+// ~/.config/functionlab/grading.key when there is one.
+OptionSpec signingKeyOption();
+
+// Signs the gradebook's head with that key and says so on `err`; without a
+// key, says the head stays unsigned. Nullopt when it was not signed (a key
+// that cannot be read is said too).
+std::optional<grading::SignedHead> signHeadOrSay(grading::Gradebook& book, const ParsedArgs& a,
+                                                 const std::string& command, std::ostream& err);
+
+// The head as exports carry it: one JSON object {"entry", "hash",
+// "publicKey", "signature"} (the last two null when unsigned).
+std::string headJson(const grading::LogHead& head, const std::optional<grading::SignedHead>& s);
 
 } // namespace fl::cli

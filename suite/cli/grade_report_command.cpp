@@ -29,7 +29,9 @@ const CommandSpec& gradeReportSpec() {
             "the students) and a page per student: each requirement with its evidence or\n"
             "the reason it is not met and the places, rubric comments, and pictures of\n"
             "the submission drawn off screen by `functionlab render` — at two moments when\n"
-            "something in it moves. Text from submissions is escaped.\n",
+            "something in it moves. Text from submissions is escaped. The index says\n"
+            "which state of the gradebook it shows: the log's head, signed with the\n"
+            "instructor's key when there is one (functionlab grade verify --head).\n",
         .options = {gradebookOption("the gradebook"),
                     assignmentOption(),
                     {.name = "output",
@@ -37,7 +39,8 @@ const CommandSpec& gradeReportSpec() {
                      .kind = OptionKind::Path,
                      .valueName = "DIR",
                      .help = "the folder to write"},
-                    {.name = "no-pictures", .help = "leave the pictures out (faster)"}},
+                    {.name = "no-pictures", .help = "leave the pictures out (faster)"},
+                    signingKeyOption()},
         .exitStatus = "0 written (a picture that could not be drawn is said on its page), 1 the "
                       "gradebook or the assignment could not be read, 2 usage error",
     };
@@ -88,6 +91,7 @@ int gradeReportCommand(const Args& args) {
         std::vector<std::string> ids;
         for (const grading::Requirement& r : assignment->requirements)
             ids.push_back(r.id);
+        o.signedHead = signHeadOrSay(book, *a, "grade report", std::cerr);
         const grading::ReportResult r =
             grading::writeReport(book, assignment->record(), ids, a->text("output"), o);
         std::cout << r.pages.size() << " pages, " << r.pictures << " pictures"

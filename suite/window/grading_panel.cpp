@@ -3,6 +3,7 @@
 #include "catalogue.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
+#include "signing.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -39,7 +40,7 @@ GradingPanel::GradingPanel(QWidget* parent)
     : Panel(tr("Grading"), QStringLiteral("grading"), Qt::BottomDockWidgetArea, parent),
       assignments_(new QComboBox), table_(new QTableWidget), evidence_(new OfflineTextBrowser),
       rubric_(new QFormLayout), rubricBox_(new QWidget), override_(new QDoubleSpinBox),
-      overrideWhy_(new QLineEdit), summary_(plainLabel()) {
+      overrideWhy_(new QLineEdit), summary_(plainLabel()), integrity_(plainLabel()) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;
@@ -47,6 +48,8 @@ GradingPanel::GradingPanel(QWidget* parent)
     top->addWidget(assignments_, 1);
     top->addWidget(summary_, 2);
     layout->addLayout(top);
+    integrity_->setWordWrap(true);
+    layout->addWidget(integrity_);
     auto* split = new QSplitter;
     split->addWidget(table_);
     auto* details = new QWidget;
@@ -110,7 +113,41 @@ bool GradingPanel::openGradebook(const QString& path, const QString& assignmentI
     const int at = assignmentId.isEmpty() ? 0 : assignments_->findData(assignmentId);
     assignments_->setCurrentIndex(std::max(0, at));
     fillTable();
+    signAndVerify(false);
     return true;
+}
+
+void GradingPanel::signAndVerify(bool sign) {
+    if (!book_) return;
+    try {
+        if (sign)
+            if (const std::string path = grading::defaultSigningKeyPath(); !path.empty()) {
+                std::string why;
+                if (const auto key = grading::readSigningKey(path, why)) book_->signHead(*key);
+            }
+        const grading::GradebookCheck c = book_->verify();
+        QString text;
+        if (!c.intact) {
+            text = tr("NOT INTACT: %1").arg(QString::fromStdString(c.problem));
+        } else {
+            text = tr("Intact: %1 entries in the log; the tables are what it says.").arg(c.entries);
+            if (c.signedHead)
+                text +=
+                    QLatin1Char(' ') +
+                    tr("Signed at entry %1 with key %2…%3")
+                        .arg(c.signedHead->head.seq)
+                        .arg(QString::fromStdString(c.signedHead->publicKey.substr(0, 12)))
+                        .arg(c.unsignedEntries
+                                 ? tr("; %1 entries since, not yet signed").arg(c.unsignedEntries)
+                                 : QString());
+            else
+                text += QLatin1Char(' ') + tr("Not signed (functionlab grade key new).");
+        }
+        integrity_->setText(text);
+        integrity_->setStyleSheet(c.intact ? QString() : QStringLiteral("color: #c62828"));
+    } catch (const std::exception& e) {
+        integrity_->setText(tr("cannot be verified: %1").arg(QString::fromStdString(e.what())));
+    }
 }
 
 const grading::GradeRecord* GradingPanel::gradeOf(const QString& student) const {
@@ -273,6 +310,7 @@ void GradingPanel::saveManualScores() {
         book_->setManualScore(g->student, g->assignment, e.item.toStdString(), e.points->value(),
                               e.comment->text().toStdString(), graderName().toStdString());
     fillTable();
+    signAndVerify(true);
 }
 
 bool GradingPanel::saveOverride(QString* error) {
@@ -287,6 +325,7 @@ bool GradingPanel::saveOverride(QString* error) {
                        overrideWhy_->text().toStdString());
     overrideWhy_->clear();
     fillTable();
+    signAndVerify(true);
     return true;
 }
 

@@ -47,12 +47,18 @@ class GradingPanel : public Panel {
     void saveManualScores();
     bool saveOverride(QString* error = nullptr);
     bool exportTo(const QString& path, grading::ExportFormat format, QString* error = nullptr);
+    // Whether the gradebook is what its log says, and who signed it.
+    QLabel* integrityStatus() const { return integrity_; }
 
   Q_SIGNALS:
     void openSubmission(const QString& path);
 
   private:
     void fillTable();
+    // After a change: the head signed with the instructor's key when there is
+    // one (FUNCTIONLAB_GRADING_KEY or ~/.config/functionlab/grading.key),
+    // then the gradebook verified again.
+    void signAndVerify(bool sign);
     void showStudent();
     const grading::GradeRecord* gradeOf(const QString& student) const;
 
@@ -70,6 +76,7 @@ class GradingPanel : public Panel {
     QDoubleSpinBox* override_;
     QLineEdit* overrideWhy_;
     QLabel* summary_;
+    QLabel* integrity_;
     struct RubricEditor {
         QString item;
         QDoubleSpinBox* points;

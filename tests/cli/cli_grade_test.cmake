@@ -98,6 +98,30 @@ run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantas
     --format csv -o ${OUT_DIR}/grades.csv)
 file(READ ${OUT_DIR}/grades.csv csv)
 expect_match("${csv}" "alice,\"Smith, Alice\",alice@example.org,yes,100,100,1,0,,100,")
+# Issue 27 §3: the export carries the log's head; the gradebook is intact
+# and still holds it; a head it never had is refused.
+file(READ ${OUT_DIR}/grades.csv.head.json headJson)
+string(JSON head GET "${headJson}" hash)
+run(0 grade verify ${OUT_DIR}/gradebook.sqlite --head ${head})
+expect_match("${OUT}" "intact: [0-9]+ entries")
+run(1 grade verify ${OUT_DIR}/gradebook.sqlite
+    --head 0000000000000000000000000000000000000000000000000000000000000001)
+expect_match("${OUT}" "NOT INTACT: the head 0000000000000000… is not in the log")
+# The instructor's key: made once, signs each batch; the public key checks.
+file(REMOVE ${OUT_DIR}/grading.key ${OUT_DIR}/grading.key.pub)
+run(0 grade key new --out ${OUT_DIR}/grading.key)
+string(STRIP "${OUT}" publicKey)
+run(1 grade key new --out ${OUT_DIR}/grading.key) # never overwritten
+run(1 grade verify ${OUT_DIR}/gradebook.sqlite --key ${publicKey}) # not signed with it yet
+run(0 grade batch --assignment implicit-fantasies ${class} --db ${OUT_DIR}/gradebook.sqlite
+    --signing-key ${OUT_DIR}/grading.key --json)
+string(JSON signedWith GET "${OUT}" head publicKey)
+if(NOT signedWith STREQUAL publicKey)
+  message(FATAL_ERROR "the batch signed with ${signedWith}, not ${publicKey}")
+endif()
+run(0 grade verify ${OUT_DIR}/gradebook.sqlite --key ${OUT_DIR}/grading.key.pub --json)
+expect_json_equal("${OUT}" "ON" intact) # CMake reads JSON true as ON
+expect_json_equal("${OUT}" "ON" signed holds)
 expect_match("${csv}" "bob,'=HYPERLINK\\(1\\),")
 expect_match("${csv}" "carol,,,no,0,")
 run(0 grade export --db ${OUT_DIR}/gradebook.sqlite --assignment implicit-fantasies

@@ -11,6 +11,8 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
+#include <QLabel>
 #include <QLineEdit>
 #include <QTableWidget>
 #include <QTest>
@@ -86,6 +88,8 @@ class GradingPanelTest : public QObject {
         panel.overrideReason()->setText(QStringLiteral("talked it through"));
         QVERIFY(panel.saveOverride());
         QCOMPARE(t->item(1, t->columnCount() - 1)->text(), QStringLiteral("55"));
+        QVERIFY2(panel.integrityStatus()->text().startsWith(QStringLiteral("Intact")),
+                 qPrintable(panel.integrityStatus()->text()));
         const QString csv = QFileInfo(path_).path() + QStringLiteral("/grades.csv");
         QVERIFY(panel.exportTo(csv, grading::ExportFormat::Csv));
         QFile f(csv);
@@ -96,6 +100,29 @@ class GradingPanelTest : public QObject {
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
         QVERIFY(panel.grab().save(FUNCTIONLAB_SCREENSHOT_DIR "/grading-panel.png"));
+    }
+
+    // Issue 27 §3: an override changed behind the log's back shows in red.
+    void aTamperedGradebookSaysSo() {
+        const QString copy = QFileInfo(path_).path() + QStringLiteral("/tampered.sqlite");
+        QFile::remove(copy);
+        {
+            grading::Gradebook book(path_.toStdString()); // its WAL written out on close
+        }
+        QVERIFY(QFile::copy(path_, copy));
+        {
+            grading::SqliteDatabase db(copy.toStdString());
+            db.execute("UPDATE results SET points = 0");
+        }
+        suite::GradingPanel panel;
+        QVERIFY(panel.openGradebook(copy));
+        QVERIFY2(panel.integrityStatus()->text().startsWith(QStringLiteral("NOT INTACT")),
+                 qPrintable(panel.integrityStatus()->text()));
+        QVERIFY(panel.integrityStatus()->text().contains(QStringLiteral("results")));
+        panel.resize(1200, 520);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QVERIFY(panel.grab().save(FUNCTIONLAB_SCREENSHOT_DIR "/grading-panel-tampered.png"));
     }
 
     void aMissingOrEmptyGradebookIsExplained() {
