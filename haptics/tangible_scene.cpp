@@ -42,39 +42,6 @@ mesh::SceneMeshes shapesAt(const scene::Scene& scene, const scene::EffectsPlan& 
     return mesh::meshScene(scene, o);
 }
 
-// The standard shapes an FShape without geometry lends its physics to: every
-// Shape below the group it is a child of.
-std::unordered_map<const scene::Node*, const scene::PlanEntry*>
-borrowers(const scene::Scene& scene, const scene::EffectsPlan& plan) {
-    std::unordered_map<const scene::Node*, const scene::PlanEntry*> out;
-    for (const scene::PlanEntry& e : plan.entries) {
-        if (!e.node || !e.appliesToSiblings || e.tangible.empty()) continue;
-        const scene::Node* parent = nullptr;
-        scene.forEachNode([&](const scene::Node& n) {
-            for (const scene::Field& f : n.fields)
-                for (const scene::Node* c : f.value.nodes)
-                    if (scene::effectiveNode(c) == e.node) parent = &n;
-        });
-        if (!parent) continue;
-        std::vector<const scene::Node*> todo{parent};
-        std::size_t visits = 0;
-        while (!todo.empty() && ++visits < 100000) {
-            const scene::Node* n = todo.back();
-            todo.pop_back();
-            for (const scene::Field& f : n->fields)
-                for (const scene::Node* c : f.value.nodes) {
-                    const scene::Node* child = scene::effectiveNode(c);
-                    if (!child) continue;
-                    if (child->type == "Shape")
-                        out.emplace(child, &e);
-                    else if (child->type != "FShape")
-                        todo.push_back(child);
-                }
-        }
-    }
-    return out;
-}
-
 EffectField effectOf(const scene::Scene& scene, const animation::Animator& clock,
                      const scene::TangibleEffect& t, const formula::Tape& tape) {
     EffectField e;
@@ -122,14 +89,8 @@ std::optional<TangibleShape> borrowing(const scene::Scene& scene, const animatio
     const auto sceneToLender = lenderToScene.inverse();
     if (!sceneToLender) return std::nullopt;
     shape.effectFrame = *sceneToLender * toScene;
-    const auto centre = scene::numbersField(*lender.node, "bboxCenter");
-    const auto size = scene::numbersField(*lender.node, "bboxSize");
-    if (centre.size() == 3 && size.size() == 3 && size[0] > 0 && size[1] > 0 && size[2] > 0)
-        shape.geometryBox = {
-            {centre[0] - size[0] / 2, centre[1] - size[1] / 2, centre[2] - size[2] / 2},
-            {centre[0] + size[0] / 2, centre[1] + size[1] / 2, centre[2] + size[2] / 2}};
-    else
-        shape.geometryBox = field::boundsOf(shape.container, shape.effectFrame);
+    shape.geometryBox = mesh::boundingBoxOf(*lender.node)
+                            .value_or(field::boundsOf(shape.container, shape.effectFrame));
     for (const scene::TangibleEffect& t : lender.tangible)
         if (t.node)
             if (const formula::Tape* tape = scene.definition(*t.node, "definition")) {
@@ -152,7 +113,7 @@ TangibleScene makeTangibleScene(const scene::Scene& scene, const scene::EffectsP
     for (const scene::PlanEntry& e : plan.entries)
         if (e.node && !e.tangible.empty()) tangible[e.node] = &e;
     const mesh::SceneMeshes meshes = shapesAt(scene, plan, clock, moment);
-    const auto lent = borrowers(scene, plan);
+    const auto lent = scene::lentPhysics(scene, plan);
     std::unordered_map<const scene::Node*, bool> placed;
     for (const mesh::ShapeMesh& s : meshes.shapes) {
         // A standard shape that borrows its group's physics: felt by its triangles.

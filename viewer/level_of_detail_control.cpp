@@ -33,8 +33,12 @@ bool LevelOfDetail::update(const mesh::SceneMeshes& meshes, const CameraPose& po
                            QSize viewport) {
     bool changed = false;
     for (const mesh::ShapeMesh& s : meshes.shapes) {
-        if (!s.geometry || !scene::boolField(*s.geometry, "lod") || !s.error.empty()) continue;
-        const auto range = scene::numbersField(*s.geometry, "lodRange");
+        // A combined shape (an FTransform's set operation) takes its first
+        // lod child's range, and its resolution is keyed by the FTransform.
+        if (!s.levelOfDetail || !s.error.empty()) continue;
+        const scene::Node* key = s.geometry ? s.geometry : s.shape;
+        if (!key) continue;
+        const auto range = scene::numbersField(*s.levelOfDetail, "lodRange");
         const double lo = range.size() == 2 ? range[0] : 8, hi = range.size() == 2 ? range[1] : 256;
         const field::Box3 box = sceneBox(s);
         mesh::ViewForLod view;
@@ -43,12 +47,12 @@ bool LevelOfDetail::update(const mesh::SceneMeshes& meshes, const CameraPose& po
         view.viewportHeight = std::max(viewport.height(), 1);
         view.pixelError = pixelError;
         const double wanted = mesh::resolutionForView(box, view, lo, hi);
-        auto it = resolutions_.find(s.geometry);
+        auto it = resolutions_.find(key);
         const double current = it != resolutions_.end() ? it->second : s.resolution;
         // At the ends of lodRange a clamped wish is always taken.
         const bool atLimit = (wanted == lo || wanted == hi) && wanted != current;
         if (atLimit || mesh::lodChangeWorthIt(current, wanted, hysteresis)) {
-            resolutions_[s.geometry] = wanted;
+            resolutions_[key] = wanted;
             changed = true;
         }
     }

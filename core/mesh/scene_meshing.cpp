@@ -9,12 +9,14 @@
 #include "mesh_topology.h"
 #include "parametric.h"
 #include "point_cloud.h"
+#include "scene/effects_plan.h"
 #include "scene/field_access.h"
 #include "scene/function_kinds.h"
 #include "scene/node_graph.h"
 #include "scene_standard_geometry.h"
 #include "surface_displacement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -38,6 +40,27 @@ Affine transformOf(const Node& n, const scene::FieldSource& fields) {
     return Affine::translate(t[0], t[1], t[2]) * Affine::translate(c[0], c[1], c[2]) *
            Affine::rotate(r) * Affine::rotate(sr) * Affine::scale(s[0], s[1], s[2]) * srInverse *
            Affine::translate(-c[0], -c[1], -c[2]);
+}
+
+// Coordinate k of `map` applied to the local coordinates, written with no
+// term that is zero and no factor that is one: an identity or axis-aligned
+// placement gives exactly `x`, as in one formula. (0 * x and t + 0 are not
+// folded by the tape builder, rightly for arbitrary values; here the
+// coordinates are finite. Each such step would widen an interval by an ulp,
+// and a face lying on a cell boundary — box(0.5, …) in [-1, 1] — would never
+// be proven on one side.)
+formula::Val affineCoordinate(formula::TapeBuilder& b, const Affine& map, int k,
+                              const std::array<formula::Val, formula::kInputCount>& local) {
+    std::optional<formula::Val> sum;
+    if (map.t[k] != 0) sum = formula::Val::constant(map.t[k]);
+    for (int j = 0; j < 3; ++j) {
+        const double m = map.m[k][j];
+        if (m == 0) continue;
+        const formula::Val term = m == 1 ? local[std::size_t(j)]
+                                         : b.mul(formula::Val::constant(m), local[std::size_t(j)]);
+        sum = sum ? b.add(*sum, term) : term;
+    }
+    return sum ? *sum : formula::Val::constant(0.0);
 }
 
 class Walker {
@@ -295,6 +318,7 @@ class Walker {
             return;
         }
         sm.geometry = geometry;
+        if (moment_.flag(*geometry, "lod")) sm.levelOfDetail = geometry;
         sm.domain = domainOf(*geometry);
         // `implicit`: the surface f = 0, whichever side is positive: not closed
         // by its box, oriented by the volume it encloses (if it closes), else
@@ -403,6 +427,7 @@ class Walker {
         }
         colour(appearance, field.box, sm);
         sm.look = lookOf(appearance, n.type == "FShape");
+        sm.appearance = appearance;
         if (surface && !sm.mesh.isPointCloud()) sm.look.solid = r.closedSurface;
         // A parametric surface has two sides and no inside: both are drawn.
         // (Curves become closed tubes and solids their closed boundary.)
@@ -453,6 +478,7 @@ class Walker {
         sm.warnings = std::move(r.warnings);
         const Node* appearance = scene::effectiveNode(moment_.node(n, "appearance"));
         sm.look = lookOf(appearance, n.type == "FShape");
+        sm.appearance = appearance;
         sm.look.solid = r.solid;
         sm.look.texture =
             sm.mesh.texCoords.empty() ? std::nullopt : textureOf(scene_, appearance, sm.warnings);
@@ -564,6 +590,9 @@ class Walker {
         Box3 box;                         // in the FTransform's local coordinates
         const Node* appearance = nullptr; // of the first FShape in it
         double resolution = 0;
+        // The first FGeometry in it drawn with lod TRUE: a combined shape is
+        // drawn with its level of detail (ShapeMesh::levelOfDetail).
+        const Node* levelOfDetail = nullptr;
     };
 
     // The pieces under `raw`, whose coordinates are `toLocal` of the
@@ -591,13 +620,8 @@ class Walker {
             if (!inverse) return;
             const Affine& back = *inverse;
             std::array<formula::Val, formula::kInputCount> in = local;
-            for (int k = 0; k < 3; ++k) {
-                formula::Val v = formula::Val::constant(back.t[k]);
-                for (int j = 0; j < 3; ++j)
-                    v = b.add(v,
-                              b.mul(formula::Val::constant(back.m[k][j]), local[std::size_t(j)]));
-                in[std::size_t(k)] = v;
-            }
+            for (int k = 0; k < 3; ++k)
+                in[std::size_t(k)] = affineCoordinate(b, back, k, local);
             in[std::size_t(formula::Input::T)] = formula::Val::constant(timeOf(*geometry));
             formula::Val f = formula::inlineTape(b, *tape, in, std::vector<double>{},
                                                  textTag(*geometry, "definition"))[0];
@@ -612,7 +636,8 @@ class Walker {
             }
             out.push_back({f, field::boundsOf(box, toLocal),
                            scene::effectiveNode(moment_.node(*n, "appearance")),
-                           moment_.number(*geometry, "resolution", 0, 32)});
+                           moment_.number(*geometry, "resolution", 0, 32),
+                           moment_.flag(*geometry, "lod") ? geometry : nullptr});
             return;
         }
         if (n->type == "Transform" || n->type == "FTransform") {
@@ -644,6 +669,7 @@ class Walker {
         Piece r = pieces.front();
         for (const Piece& p : pieces) {
             r.resolution = std::max(r.resolution, p.resolution);
+            if (!r.levelOfDetail) r.levelOfDetail = p.levelOfDetail;
             if (op != SetOperation::Intersection && op != SetOperation::Difference)
                 for (std::size_t k = 0; k < 3; ++k) {
                     r.box.lo[k] = std::min(r.box.lo[k], p.box.lo[k]);
@@ -735,6 +761,10 @@ class Walker {
             sm.measuredError = e.error.max;
         } else {
             if (options_.useFileResolution) o.resolution = whole.resolution;
+            // The viewer's level of detail keys a combined shape by its FTransform.
+            if (auto it = options_.resolutions.find(&ft); it != options_.resolutions.end())
+                o.resolution = it->second;
+            sm.resolution = o.resolution;
             r = cached(MeshCache::keyOf(field, o.resolution),
                        [&] { return meshImplicit(field, o); });
         }
@@ -747,10 +777,89 @@ class Walker {
         sm.texts = std::move(texts_);
         colour(whole.appearance, sm.field->box, sm);
         sm.look = lookOf(whole.appearance, true);
+        sm.appearance = whole.appearance;
+        sm.levelOfDetail = whole.levelOfDetail;
         place(sm, m);
         out_.shapes.push_back(std::move(sm));
     }
 
+  public:
+    // Standard shapes without an appearance of their own take the one an
+    // FShape without geometry beside them lends (docs/nodes.md, "Standard
+    // shapes with function properties"): its FMaterial's colour over the
+    // lender's box — its bboxCenter/bboxSize, else the bounds of every shape
+    // it lends to — in the lender's coordinates. After the walk: a lender
+    // may come after the shapes it lends to.
+    void lendAppearances() {
+        if (out_.lenders.empty()) return;
+        const auto lent = scene::lendingShapes(scene_);
+        std::unordered_map<const Node*, Affine> lenderToScene;
+        for (const SceneMeshes::Lender& l : out_.lenders)
+            lenderToScene.emplace(l.shape, Affine::fromMatrix(l.placement));
+        struct Borrower {
+            ShapeMesh* shape;
+            std::vector<Vec3f> points; // its vertices in the lender's coordinates
+        };
+        std::vector<std::pair<const Node*, std::vector<Borrower>>> byLender;
+        for (ShapeMesh& sm : out_.shapes) {
+            if (sm.functionGeometry || sm.appearance || !sm.error.empty() ||
+                !sm.mesh.colours.empty())
+                continue;
+            const auto it = lent.find(sm.shape);
+            if (it == lent.end()) continue;
+            for (const Node* lender : it->second) {
+                const auto where = lenderToScene.find(lender);
+                if (!scene::effectiveNode(moment_.node(*lender, "appearance")) ||
+                    where == lenderToScene.end())
+                    continue;
+                const std::optional<Affine> back = where->second.inverse();
+                if (!back) break; // the lender is flattened: nothing to map onto
+                const Affine toLender =
+                    options_.placeInScene ? *back : *back * Affine::fromMatrix(sm.placement);
+                Borrower b{&sm, {}};
+                for (const Vec3f& p : sm.mesh.positions) {
+                    const auto q = toLender.point({p[0], p[1], p[2]});
+                    b.points.push_back({float(q[0]), float(q[1]), float(q[2])});
+                }
+                auto group = std::find_if(byLender.begin(), byLender.end(),
+                                          [&](const auto& g) { return g.first == lender; });
+                if (group == byLender.end()) group = byLender.insert(byLender.end(), {lender, {}});
+                group->second.push_back(std::move(b));
+                break;
+            }
+        }
+        for (auto& [lender, borrowers] : byLender) {
+            const Node* appearance = scene::effectiveNode(moment_.node(*lender, "appearance"));
+            Box3 box{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+            if (const auto given = boundingBoxOf(*lender)) {
+                box = *given;
+            } else {
+                for (const Borrower& b : borrowers)
+                    for (const Vec3f& p : b.points)
+                        for (std::size_t k = 0; k < 3; ++k) {
+                            box.lo[k] = std::min(box.lo[k], double(p[k]));
+                            box.hi[k] = std::max(box.hi[k], double(p[k]));
+                        }
+            }
+            if (!box.valid()) continue;
+            for (Borrower& b : borrowers) {
+                ShapeMesh probe; // the borrower's vertices where the lender sees them
+                probe.mesh.positions = std::move(b.points);
+                colour(appearance, box, probe);
+                ShapeMesh& sm = *b.shape;
+                sm.mesh.colours = std::move(probe.mesh.colours);
+                sm.warnings.insert(sm.warnings.end(), probe.warnings.begin(), probe.warnings.end());
+                const bool solid = sm.look.solid;
+                sm.look = lookOf(appearance, true);
+                sm.look.solid = solid;
+                sm.appearance = appearance;
+                // Its colour field sees the lender's coordinates, not the
+                // shape's: left out (the grader samples the mesh's colours).
+            }
+        }
+    }
+
+  private:
     // Moves a mesh from its geometry's coordinates into the scene's.
     void place(ShapeMesh& sm, const Affine& m) const {
         if (!options_.placeInScene) {
@@ -790,7 +899,7 @@ class Walker {
     void colour(const Node* appearance, const Box3& geometryBox, ShapeMesh& sm) {
         const Node* material =
             appearance ? scene::effectiveNode(moment_.node(*appearance, "material")) : nullptr;
-        if (!material || sm.mesh.empty()) return;
+        if (!material) return;
         ColourField cf;
         cf.geometryBox = geometryBox;
         cf.componentBox = geometryBox;
@@ -811,6 +920,7 @@ class Walker {
         }
         const auto warnings = applyColour(sm.mesh, cf);
         sm.warnings.insert(sm.warnings.end(), warnings.begin(), warnings.end());
+        if (cf.colour) sm.colourField = std::make_shared<const ColourField>(std::move(cf));
     }
 
     const scene::Scene& scene_;
@@ -846,6 +956,15 @@ Box3 domainOf(const scene::Node& node) {
     return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
+std::optional<Box3> boundingBoxOf(const scene::Node& node) {
+    const auto centre = scene::numbersField(node, "bboxCenter");
+    const auto size = scene::numbersField(node, "bboxSize");
+    if (centre.size() != 3 || size.size() != 3 || !(size[0] > 0 && size[1] > 0 && size[2] > 0))
+        return std::nullopt;
+    return Box3{{centre[0] - size[0] / 2, centre[1] - size[1] / 2, centre[2] - size[2] / 2},
+                {centre[0] + size[0] / 2, centre[1] + size[1] / 2, centre[2] + size[2] / 2}};
+}
+
 animation::Instant momentOf(const SceneMeshOptions& options) {
     const std::int64_t seconds = animation::secondsToNanoseconds(options.sceneSeconds);
     return options.instant.value_or(animation::Instant{seconds, seconds, 0});
@@ -863,6 +982,7 @@ SceneMeshes meshScene(const scene::Scene& scene, const SceneMeshOptions& options
     Walker walker(scene, options, out, options.animator ? *options.animator : *own);
     for (const Node* root : scene.roots)
         walker.walk(root, {});
+    walker.lendAppearances();
     return out;
 }
 

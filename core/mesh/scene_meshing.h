@@ -7,6 +7,7 @@
 // animation (TimeSensors, interpolators, ROUTEs) gives them at that moment.
 #include "animation/animator.h"
 #include "animation/clock.h"
+#include "colouring.h"
 #include "dual_contouring.h"
 #include "field_names.h"
 #include "mesh.h"
@@ -100,9 +101,20 @@ struct ShapeMesh {
     SurfaceLook look;
     bool functionGeometry = true;          // FGeometry (false: standard geometry)
     const scene::Node* geometry = nullptr; // the FGeometry (function shapes)
-    Box3 domain;                           // its domain box, in the shape's coordinates
-    double resolution = 0;                 // what it was meshed at
-    double t = 0;                          // the geometry's t at the moment meshed
+    // The FGeometry whose lod and lodRange it is drawn with: its own, or for
+    // a combined shape (an FTransform's set operation) its first child's with
+    // lod TRUE; null without level of detail. The viewer keys the resolution
+    // it picks by `geometry`, else by the combining FTransform (`shape`).
+    const scene::Node* levelOfDetail = nullptr;
+    // The appearance it is drawn with: its shape's, or for a combined shape
+    // (an FTransform's set operation) its first child's.
+    const scene::Node* appearance = nullptr;
+    // The colour its FMaterial gives at the moment meshed (null without one):
+    // the grader colours points of a shape too small for its coarse mesh.
+    std::shared_ptr<const ColourField> colourField;
+    Box3 domain;           // its domain box, in the shape's coordinates
+    double resolution = 0; // what it was meshed at
+    double t = 0;          // the geometry's t at the moment meshed
     std::vector<std::pair<std::string, double>> parameters; // `param` values used
     // Implicit, explicit and combined (FTransform) shapes: the field exactly
     // as it was meshed — definition, displacement, parameters, t, box — for
@@ -148,6 +160,10 @@ animation::Instant momentOf(const SceneMeshOptions& options);
 
 // A function node's domain box (domainMin .. domainMax).
 Box3 domainOf(const scene::Node& node);
+
+// A grouping node's or FShape's bboxCenter/bboxSize as a box, when one is
+// given (a positive size on every axis; X3D's -1 -1 -1 means none).
+std::optional<Box3> boundingBoxOf(const scene::Node& node);
 
 // All shapes' meshes of one kind (triangles, or point clouds) as one.
 Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive = Primitive::Triangles);

@@ -3,6 +3,7 @@
 #include "field_access.h"
 #include "node_graph.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -203,6 +204,58 @@ std::string num(double v) {
 }
 
 } // namespace
+
+std::unordered_map<const Node*, std::vector<const Node*>> lendingShapes(const Scene& scene) {
+    // The grouping nodes that hold a lender, found in one pass.
+    std::vector<std::pair<const Node*, const Node*>> groups; // (group, lender)
+    scene.forEachNode([&](const Node& n) {
+        for (const Field& f : n.fields)
+            for (const Node* c : f.value.nodes) {
+                const Node* child = effectiveNode(c);
+                if (child && child->type == "FShape" &&
+                    !effectiveNode(nodeField(*child, "geometry")))
+                    groups.emplace_back(&n, child);
+            }
+    });
+    std::unordered_map<const Node*, std::vector<const Node*>> out;
+    for (const auto& [group, lender] : groups) {
+        std::vector<const Node*> todo{group};
+        std::size_t visits = 0; // a shared subtree is walked again under each lender: bounded
+        while (!todo.empty() && ++visits < 100000) {
+            const Node* n = todo.back();
+            todo.pop_back();
+            for (const Field& f : n->fields)
+                for (const Node* c : f.value.nodes) {
+                    const Node* child = effectiveNode(c);
+                    if (!child) continue;
+                    if (child->type == "Shape") {
+                        auto& lenders = out[child];
+                        if (std::find(lenders.begin(), lenders.end(), lender) == lenders.end())
+                            lenders.push_back(lender);
+                    } else if (child->type != "FShape") {
+                        todo.push_back(child);
+                    }
+                }
+        }
+    }
+    return out;
+}
+
+std::unordered_map<const Node*, const PlanEntry*> lentPhysics(const Scene& scene,
+                                                              const EffectsPlan& plan) {
+    std::unordered_map<const Node*, const PlanEntry*> tangible;
+    for (const PlanEntry& e : plan.entries)
+        if (e.node && e.appliesToSiblings && !e.tangible.empty()) tangible.emplace(e.node, &e);
+    std::unordered_map<const Node*, const PlanEntry*> out;
+    if (tangible.empty()) return out;
+    for (const auto& [shape, lenders] : lendingShapes(scene))
+        for (const Node* lender : lenders)
+            if (auto it = tangible.find(lender); it != tangible.end()) {
+                out.emplace(shape, it->second);
+                break;
+            }
+    return out;
+}
 
 std::string_view tangibleKindName(TangibleKind kind) {
     switch (kind) {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace fl::scene {
@@ -57,6 +58,17 @@ struct EffectsPlan {
 };
 
 EffectsPlan makeEffectsPlan(const Scene& scene);
+
+// The standard shapes an FShape without geometry lends its appearance and
+// physics to (the paper's way of making a Box tangible or coloured by a
+// function): every Shape below the group the FShape is a child of, each with
+// its lenders in the order found.
+std::unordered_map<const Node*, std::vector<const Node*>> lendingShapes(const Scene& scene);
+
+// Those that borrow physics, each with the lender's plan entry. The haptic
+// loop feels them; the grader counts them.
+std::unordered_map<const Node*, const PlanEntry*> lentPhysics(const Scene& scene,
+                                                              const EffectsPlan& plan);
 
 std::vector<std::string_view> timeVaryingNames(unsigned bits); // {"geometry", "colour"}
 std::string timeVaryingText(unsigned bits);                    // "geometry, colour" or "static"

@@ -432,3 +432,43 @@ TEST(SceneStandardShapes, LineSetsTakeTheEmissiveColourAndExportAsLines) {
     std::string error;
     EXPECT_FALSE(writeMesh(merged, testing::TempDir() + "lines.stl", error));
 }
+
+// The paper's way of colouring a standard shape by a function: an FShape
+// without geometry lends its appearance to the shapes grouped with it, mapped
+// onto its bboxCenter/bboxSize box (else onto their bounds), in its own
+// coordinates; a shape with an appearance of its own keeps it.
+TEST(SceneMeshing, AnFShapeWithoutGeometryLendsItsColour) {
+    auto r = fl::scene::readSceneBytes(R"x(#X3D V3.3 utf8
+PROFILE Full
+COMPONENT FunctionLab:1
+Transform { translation 5 0 0 children [
+  FShape { bboxCenter 0 0 0 bboxSize 2 2 2
+    appearance FAppearance { material FMaterial { type "parametric"
+      definition "r = u; g = 0; b = 1 - u;" } } }
+  Transform { translation 0.5 0 0 children Shape { geometry Box { size 1 1 1 } } }
+  Shape { appearance Appearance { material Material { diffuseColor 0 1 0 } }
+          geometry Sphere { radius 0.2 } } ] })x",
+                                       "lend.x3dv");
+    ASSERT_TRUE(r.ok());
+    for (bool placeInScene : {true, false}) {
+        SceneMeshOptions o;
+        o.placeInScene = placeInScene;
+        const SceneMeshes meshes = meshScene(*r.scene, o);
+        ASSERT_EQ(meshes.shapes.size(), 2u);
+        const ShapeMesh& box = meshes.shapes[0];
+        ASSERT_EQ(box.mesh.colours.size(), box.mesh.positions.size());
+        ASSERT_TRUE(box.appearance) << "the lent appearance";
+        // The box spans x = 0 .. 1 in the lender's box -1 .. 1: u from 0.5 to 1.
+        float lo = 1, hi = 0;
+        for (const auto& c : box.mesh.colours) {
+            lo = std::min(lo, c[0]);
+            hi = std::max(hi, c[0]);
+            EXPECT_NEAR(c[0] + c[2], 1, 1e-5);
+        }
+        EXPECT_NEAR(lo, 0.5, 1e-4) << placeInScene;
+        EXPECT_NEAR(hi, 1.0, 1e-4) << placeInScene;
+        const ShapeMesh& ball = meshes.shapes[1];
+        ASSERT_FALSE(ball.mesh.colours.empty());
+        EXPECT_EQ(ball.mesh.colours[0][1], 1) << "its own Material stays";
+    }
+}

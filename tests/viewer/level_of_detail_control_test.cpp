@@ -63,3 +63,29 @@ TEST(LevelOfDetail, LodFalseKeepsTheFilesResolution) {
     EXPECT_TRUE(lod.resolutions().empty());
     EXPECT_EQ(meshes.shapes[0].resolution, 20);
 }
+
+// A shape combined by an FTransform is drawn with its first lod child's
+// range, its resolution keyed by the FTransform, and meshed at what is picked.
+TEST(LevelOfDetail, ACombinedShapeVariesWithItsChildsRange) {
+    auto scene = read(R"x(DEF U FTransform { operation "union" children [
+  FShape { geometry FGeometry { definition "0.3 - x*x - y*y - z*z" lodRange 8 64 } }
+  FShape { geometry FGeometry { definition "0.2 - (x-0.5)^2 - y*y - z*z" lod FALSE } } ] })x");
+    mesh::SceneMeshOptions o;
+    o.placeInScene = false;
+    const mesh::SceneMeshes meshes = mesh::meshScene(*scene, o);
+    ASSERT_EQ(meshes.shapes.size(), 1u);
+    ASSERT_TRUE(meshes.shapes[0].levelOfDetail);
+    EXPECT_EQ(meshes.shapes[0].geometry, nullptr);
+    viewer::LevelOfDetail lod;
+    lod.update(meshes, at(1e4f), QSize(800, 600));
+    ASSERT_EQ(lod.resolutions().size(), 1u);
+    const scene::Node* ft = meshes.shapes[0].shape;
+    ASSERT_TRUE(lod.resolutions().count(ft));
+    EXPECT_EQ(lod.resolutions().at(ft), 8) << "far away: the coarsest of the child's range";
+    lod.update(meshes, at(1.5f), QSize(800, 600));
+    EXPECT_GT(lod.resolutions().at(ft), 8);
+    EXPECT_LE(lod.resolutions().at(ft), 64);
+    o.resolutions = {lod.resolutions().begin(), lod.resolutions().end()};
+    const mesh::SceneMeshes again = mesh::meshScene(*scene, o);
+    EXPECT_EQ(again.shapes[0].resolution, lod.resolutions().at(ft));
+}
