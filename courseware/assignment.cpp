@@ -234,6 +234,14 @@ class ManifestReader {
             if (auto p = number(o, at, "points", 0, 1e6, true)) r.points = *p;
             if (auto m = number(o, at, "minimum", 1, 1000, false)) r.minimum = int(*m);
             if (auto m = number(o, at, "minimum_kinds", 1, 3, false)) r.minimumKinds = int(*m);
+            if (auto varies = text(o, at, "varies", false)) {
+                if (*varies == "over-shape")
+                    r.variesOverShape = true;
+                else if (*varies != "over-shape-or-time")
+                    problem(at + "/varies", "'" + *varies + "' is not a way a colour varies",
+                            "write \"over-shape\" (a colour that only changes in time does "
+                            "not count) or \"over-shape-or-time\" (the default)");
+            }
             a_.requirements.push_back(std::move(r));
         }
     }

@@ -67,13 +67,19 @@ std::vector<AssignmentLoad> listAssignments(const std::filesystem::path& folder)
 
 AssignmentLoad findAssignment(const std::string& idOrFolder) {
     std::error_code ec;
-    if (std::filesystem::is_directory(idOrFolder, ec)) return loadAssignment(idOrFolder);
     const bool plainId =
         !idOrFolder.empty() && std::all_of(idOrFolder.begin(), idOrFolder.end(), [](char c) {
             return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
         });
+    // A folder of the working directory named like an id ("time") is the
+    // assignment only when it holds a manifest; else the id is the course's.
+    const bool isFolder = std::filesystem::is_directory(idOrFolder, ec);
+    if (isFolder &&
+        (!plainId || std::filesystem::exists(std::filesystem::path(idOrFolder) / "manifest.json")))
+        return loadAssignment(idOrFolder);
     const auto folder = coursewareFolder() / "assignments" / idOrFolder;
     if (plainId && std::filesystem::is_directory(folder, ec)) return loadAssignment(folder);
+    if (isFolder) return loadAssignment(idOrFolder); // says what the folder lacks
     AssignmentLoad load;
     std::string known;
     for (const AssignmentLoad& a : listAssignments())

@@ -27,9 +27,9 @@ RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Bud
     case RequirementKind::LevelOfDetail:
         return checkLevelOfDetail(view, r);
     case RequirementKind::FunctionColour:
-        return checkFunctionColour(view, r);
+        return checkFunctionColour(view, r, budget);
     case RequirementKind::Tangible:
-        return checkTangible(view, r);
+        return checkTangible(view, r, budget);
     }
     return {r.id, r.kind, false, 0, r.points, "unknown requirement", {}};
 }
@@ -46,15 +46,28 @@ CheckReport checkScene(const scene::Scene& scene, const std::vector<Requirement>
     const SubmissionView view(scene, options.moments);
     report.viewMilliseconds =
         std::chrono::duration<double, std::milli>(Clock::now() - started).count();
+    std::string cutShort; // requirements not met whose judging was cut short
     for (const Requirement& r : requirements) {
         started = Clock::now();
+        const std::size_t cutBefore = budget.cutShort;
         report.requirements.push_back(checkOne(view, r, budget, options.compare));
+        if (budget.cutShort > cutBefore && !report.requirements.back().met)
+            cutShort += (cutShort.empty() ? "" : ", ") + r.id;
         report.requirementMilliseconds.push_back(
             std::chrono::duration<double, std::milli>(Clock::now() - started).count());
         report.score += report.requirements.back().points;
         report.maxScore += r.points;
     }
-    report.budgetExceeded = budget.exceeded;
+    // Whenever a verdict was cut short, the JSON says so (docs/grading.md).
+    report.budgetExceeded = budget.exceeded || !cutShort.empty();
+    if (!cutShort.empty() && !budget.exceeded)
+        report.diagnostics.push_back(
+            {scene::Severity::Warning,
+             scene.pathOf(0),
+             {1, 1},
+             "the checker could not finish judging " + cutShort +
+                 " within its limits: what it could not judge is not counted",
+             "ask your instructor to look at it (the limits are in docs/grading.md)"});
     if (budget.exceeded)
         report.diagnostics.push_back(
             {scene::Severity::Warning,

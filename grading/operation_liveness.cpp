@@ -1,5 +1,9 @@
 #include "operation_liveness.h"
 
+#include "formula/opcodes.h"
+
+#include <vector>
+
 namespace fl::grading {
 namespace {
 
@@ -11,16 +15,93 @@ field::ImplicitField withTape(const field::ImplicitField& f, formula::Tape tape)
     return out;
 }
 
-// Min and Max equal operand `kept` wherever the gap (other - kept for min,
-// kept - other for max) ... is such that the kept one wins: the activity is
-// > 0 only where the result and the kept operand may differ.
+bool readsRegister(const formula::Instruction& in, const std::vector<bool>& marked) {
+    const formula::Operand* operands[3] = {&in.a, &in.b, &in.c};
+    for (int k = 0; k < formula::opArity(in.op); ++k)
+        if (!operands[k]->isConst() && marked[std::size_t(operands[k]->reg)]) return true;
+    return false;
+}
+
+// Whether the sign of the field (inside or not) is decided by the sign of
+// the value instruction `index` writes, wherever the other operands are:
+// every use on the way to the output is a set operation (min, max, the
+// R-functions: R∩ > 0 exactly where both are, R∪ where either is), a
+// negation, adding 0 or scaling by a positive constant.
+bool signCarriesThrough(const formula::Tape& tape, std::size_t index) {
+    std::vector<bool> carries(std::size_t(tape.registerCount), false);
+    carries[std::size_t(tape.code[index].out)] = true;
+    for (std::size_t i = index + 1; i < tape.code.size(); ++i) {
+        const formula::Instruction& in = tape.code[i];
+        if (!readsRegister(in, carries)) continue;
+        const auto constantOther = [&](double& value) {
+            const bool aMarked = !in.a.isConst() && carries[std::size_t(in.a.reg)];
+            const formula::Operand& other = aMarked ? in.b : in.a;
+            value = other.value;
+            return other.isConst();
+        };
+        double c = 0;
+        switch (in.op) {
+        case Op::Min:
+        case Op::Max:
+        case Op::RIntersect:
+        case Op::RUnion:
+        case Op::Neg:
+            break;
+        case Op::Add:
+            if (!constantOther(c) || c != 0) return false;
+            break;
+        case Op::Mul:
+            if (!constantOther(c) || !(c > 0)) return false;
+            break;
+        default:
+            return false;
+        }
+        carries[std::size_t(in.out)] = true;
+    }
+    return true;
+}
+
+// A tape whose value is > 0 only where the field's sign may change when the
+// set operation at `index` is replaced by its operand `kept`: cells where it
+// stays <= 0 are the same solid without looking further.
+// - Where the sign carries through (see above), the signs decide: an
+//   intersection (min, R∩) differs from its kept operand a only where a is
+//   inside and the other outside, min(a, -b); a union (max, R∪) only where
+//   a is outside and the other inside, min(-a, b).
+// - Else, for min and max, where the values differ: min(a, b) is a where
+//   a <= b (activity a - b); max(a, b) where a >= b (activity b - a).
+// - Else (an R-function feeding arithmetic): none.
 std::optional<formula::Tape> activityOf(const formula::Tape& tape, std::size_t index, int kept) {
     const Op op = tape.code[index].op;
+    const bool intersection = op == Op::Min || op == Op::RIntersect;
+    const bool setOperation = intersection || op == Op::Max || op == Op::RUnion;
+    if (setOperation && signCarriesThrough(tape, index)) {
+        formula::Tape t = tape;
+        const formula::Instruction at = tape.code[index];
+        t.code.resize(index);
+        const formula::Operand keptOperand = kept == 0 ? at.a : at.b;
+        const formula::Operand other = kept == 0 ? at.b : at.a;
+        auto emit = [&](Op o, formula::Operand a, formula::Operand b = {}) {
+            formula::Instruction in;
+            in.op = o;
+            in.out = t.registerCount++;
+            in.a = a;
+            in.b = b;
+            in.origin = at.origin;
+            t.code.push_back(in);
+            return formula::Operand::ofReg(in.out);
+        };
+        const formula::Operand result = intersection
+                                            ? emit(Op::Min, keptOperand, emit(Op::Neg, other))
+                                            : emit(Op::Min, emit(Op::Neg, keptOperand), other);
+        t.outputs = {{"value", result}};
+        return t;
+    }
     // min(a, b) differs from a where b < a: activity a - b; from b where a < b.
     if (op == Op::Min) return operandGap(tape, index, kept);
     // max(a, b) differs from a where b > a: activity b - a.
     if (op == Op::Max) return operandGap(tape, index, 1 - kept);
-    return std::nullopt; // R-functions differ from both operands almost everywhere
+    return std::nullopt;
 }
 
 OperandSign signOver(const field::ImplicitField& f, const formula::Tape& tape, std::size_t index,

@@ -35,6 +35,9 @@ struct Requirement {
     double points = 1;
     int minimum = 1;      // SetOperations: how many live operations; Tangible: effect kinds
     int minimumKinds = 1; // SetOperations: of how many different kinds
+    // FunctionColour: a colour that changes only in time does not count
+    // (manifest "varies": "over-shape"; "over-shape-or-time" by default).
+    bool variesOverShape = false;
 };
 
 struct Location {

@@ -1,9 +1,12 @@
 // The set-operations requirement: count the operations that change the
 // shown solid, at any judged moment; explain the ones that do not.
 #include "checks.h"
+
+#include "formula/builtins.h"
 #include "operation_liveness.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -12,6 +15,28 @@
 
 namespace fl::grading {
 namespace {
+
+// Whether `text` is one call of a library primitive, `box(0.5, 0.4, 0.5)`:
+// an operation whose source is that call is the library's, not the student's.
+bool isPrimitiveCall(std::string_view text) {
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
+        text.remove_prefix(1);
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        text.remove_suffix(1);
+    std::size_t name = 0;
+    while (name < text.size() &&
+           (std::isalnum(static_cast<unsigned char>(text[name])) || text[name] == '_'))
+        ++name;
+    if (name == 0 || name >= text.size() || text[name] != '(' || text.back() != ')') return false;
+    // The parenthesis opened after the name closes at the very end.
+    int depth = 0;
+    for (std::size_t i = name; i < text.size(); ++i) {
+        depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+        if (depth == 0 && i + 1 < text.size()) return false;
+    }
+    const formula::BuiltinInfo* b = formula::findBuiltin(text.substr(0, name));
+    return b && b->readsCoordinates;
+}
 
 // One operation as written: its text, and the place in it.
 using OperationKey = std::tuple<const scene::Node*, std::string, std::size_t, std::size_t>;
@@ -122,12 +147,15 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
     std::vector<OperationKey> order; // as first met, for stable messages
     for (const mesh::SceneMeshes& frame : view.frames())
         for (const mesh::ShapeMesh& s : frame.shapes) {
-            if (!s.field || !SubmissionView::visible(s)) continue;
+            if (!s.field || !SubmissionView::shown(s)) continue;
             for (const TapeSetOperation& op : setOperationsIn(s.field->tape)) {
                 const std::int32_t origin = s.field->tape.code[op.instruction].origin;
                 const mesh::DefinitionText* text = view.textSource(s, origin);
-                // The box a child of an FTransform is cut by is not the student's.
+                // The box a child of an FTransform is cut by is not the student's,
+                // and neither are the operations inside a library primitive
+                // (box() is one shape, not the intersections that make it).
                 if (!text || text->field == "domainMin") continue;
+                if (isPrimitiveCall(view.textOf(s, origin))) continue;
                 const formula::SourceRange& range = s.field->tape.origins[std::size_t(origin)];
                 // An FTransform's operation over n children is n - 1 operations,
                 // all from one word: told apart by their place in the tape.
@@ -144,10 +172,16 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
                         text->field == "operation"
                             ? view.locationOf(*text->node, "operation")
                             : view.locationOf(s, origin, operatorOffset(view.textOf(s, origin)));
+                    // "union of FTransform U's children at line 22" (with
+                    // describe's kind and line): never "the the", never
+                    // the line twice.
                     f.text =
                         text->field == "operation"
-                            ? "the " + SubmissionView::nameOf(*text->node) + "'s " +
-                                  std::string(setOperationKindName(op.kind))
+                            ? "of " +
+                                  (text->node->defName.empty()
+                                       ? std::string("an FTransform's")
+                                       : text->node->type + " " + text->node->defName + "'s") +
+                                  " children"
                             : "`" + shortened(withoutOuterParentheses(view.textOf(s, origin)), 50) +
                                   "`";
                 }

@@ -7,13 +7,31 @@
 #include "scene/function_kinds.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace fl::grading {
 namespace {
 
 using scene::GeometryType;
 
+// Continuous level of detail counts when the finest resolution is at least
+// this many times the coarsest (docs/grading.md).
+constexpr double kLodRatio = 2;
+
+std::string numberText(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+// An FTransform's set operation (union, difference, morph ...) over its
+// children: meshed as one solid f >= 0.
+bool isComposite(const mesh::ShapeMesh& s) {
+    return !s.geometry && s.field && s.shape && s.shape->type == "FTransform";
+}
+
 std::optional<GeometryType> typeOf(const mesh::ShapeMesh& s) {
+    if (isComposite(s)) return GeometryType::Explicit;
     if (!s.geometry || s.geometry->type != "FGeometry") return std::nullopt;
     return scene::geometryTypeNamed(scene::stringField(*s.geometry, "type"));
 }
@@ -56,7 +74,7 @@ RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& 
     std::string near; // a shape of the kind that shows nothing
     for (const mesh::SceneMeshes& frame : view.frames())
         for (const mesh::ShapeMesh& s : frame.shapes) {
-            if (typeOf(s) != wanted || !SubmissionView::visible(s)) continue;
+            if (typeOf(s) != wanted || !SubmissionView::shown(s)) continue;
             bool shows = false;
             if (wanted == GeometryType::Parametric) {
                 shows = !s.mesh.empty();
@@ -77,6 +95,12 @@ RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& 
             }
             out.met = true;
             out.points = r.points;
+            if (isComposite(s)) {
+                out.evidence = name + ": an explicit solid, the " +
+                               scene::stringField(*s.shape, "operation") + " of its children";
+                out.locations.push_back(view.locationOf(*s.shape, "operation"));
+                return out;
+            }
             out.evidence = name + ": " + std::string(scene::geometryTypeName(wanted)) + " `" +
                            definitionOf(s) + "`";
             out.locations.push_back(view.locationOf(*s.geometry, "definition"));
@@ -95,20 +119,38 @@ RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& 
 
 RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requirement& r) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
-    for (const mesh::ShapeMesh& s : view.frames().front().shapes) {
-        if (!typeOf(s) || !SubmissionView::visible(s)) continue;
+    const mesh::ShapeMesh* narrow = nullptr; // a range chosen, but one that hardly varies
+    for (const auto [moment, shape] : view.firstShown()) {
+        const mesh::ShapeMesh& s = *shape;
+        // Drawn with level of detail: its own FGeometry's, or for a combined
+        // shape its first child's with lod TRUE (ShapeMesh::levelOfDetail).
+        const scene::Node* lod = s.levelOfDetail;
+        if (!typeOf(s) || !lod) continue;
         // The default (lod TRUE, 8 to 256) is every shape's: the requirement
         // asks that the student chose the range.
-        const auto range = scene::numbersField(*s.geometry, "lodRange");
-        if (!s.geometry->field("lodRange") || !scene::boolField(*s.geometry, "lod") ||
-            range.size() != 2 || !(range[0] < range[1]))
+        // A range that really varies: the finest at least twice the coarsest
+        // (docs/grading.md; the viewer re-meshes at 25% changes).
+        const auto range = scene::numbersField(*lod, "lodRange");
+        if (!lod->field("lodRange") || range.size() != 2 ||
+            !(range[0] > 0 && range[1] >= kLodRatio * range[0])) {
+            if (range.size() == 2 && lod->field("lodRange") && !narrow) narrow = &s;
             continue;
+        }
         out.met = true;
         out.points = r.points;
         out.evidence = SubmissionView::nameOf(*s.shape) +
-                       ": continuous level of detail from resolution " +
-                       std::to_string(int(range[0])) + " to " + std::to_string(int(range[1]));
-        out.locations.push_back(view.locationOf(*s.geometry, "lodRange"));
+                       ": continuous level of detail from resolution " + numberText(range[0]) +
+                       " to " + numberText(range[1]);
+        out.locations.push_back(view.locationOf(*lod, "lodRange"));
+        return out;
+    }
+    if (narrow) {
+        const auto range = scene::numbersField(*narrow->levelOfDetail, "lodRange");
+        out.evidence = SubmissionView::nameOf(*narrow->shape) + "'s lodRange " +
+                       numberText(range[0]) + " " + numberText(range[1]) +
+                       " hardly varies: the finest resolution must be at least twice the "
+                       "coarsest (e.g. lodRange 8 128)";
+        out.locations.push_back(view.locationOf(*narrow->levelOfDetail, "lodRange"));
         return out;
     }
     out.evidence = "no function shape is drawn with continuous level of detail: set lod TRUE "

@@ -57,7 +57,7 @@ ModelFingerprint modelFingerprint(const scene::Scene& scene) {
     ModelFingerprint out;
     const SubmissionView view(scene, 1);
     for (const mesh::ShapeMesh& s : view.frames().front().shapes)
-        if (s.field && SubmissionView::visible(s)) addShapes(s.field->tape, out);
+        if (s.field && SubmissionView::shown(s)) addShapes(s.field->tape, out);
     return out;
 }
 

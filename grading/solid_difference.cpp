@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <vector>
 
 namespace fl::grading {
@@ -10,6 +11,18 @@ namespace {
 
 bool inside(double f) {
     return f > 0;
+}
+
+// Where a comparison cut short still looks: this many queued cells' centres
+// and this many points of a Halton spread over the box.
+constexpr std::size_t kLastLookCells = 4096;
+constexpr int kLastLookSpread = 1024;
+
+double radicalInverse(int i, int base) {
+    double result = 0, f = 1.0 / base;
+    for (; i > 0; i /= base, f /= base)
+        result += f * (i % base);
+    return result;
 }
 
 // Both intervals one side of zero, the same side.
@@ -75,14 +88,50 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
     };
     const std::size_t costAB = cost(openA) + cost(openB);
     const std::size_t costActivity = openActivity ? cost(*openActivity) : 0;
-    std::vector<Cell> stack{{openA.box, 0}};
+    std::deque<Cell> queue{{openA.box, 0}};
     const std::size_t stopAt = budget.left > options.cap ? budget.left - options.cap : 0;
-    while (!stack.empty()) {
-        const Cell cell = stack.back();
-        stack.pop_back();
+    // A point where one is inside and the other not ends the comparison.
+    auto witnessAt = [&](const field::Vec3& p) {
+        const double va = fa.value(p), vb = fb.value(p);
+        if (!std::isfinite(va) || !std::isfinite(vb) || inside(va) == inside(vb)) return false;
+        out.result = Sameness::Different;
+        out.witness = p;
+        out.witnessA = va;
+        out.witnessB = vb;
+        return true;
+    };
+    // Cut short: the queued cells' centres and a fixed spread of the box are
+    // the last places looked at (paid from the budget beyond the cap).
+    auto lastLook = [&] {
+        out.cutShort = true;
+        ++budget.cutShort;
+        std::size_t tried = 0;
+        for (const Cell& c : queue) {
+            if (tried++ >= kLastLookCells || !budget.spend(costAB)) break;
+            if (witnessAt(field::scaled(field::plus(c.box.lo, c.box.hi), 0.5))) break;
+        }
+        for (int i = 1; out.result == Sameness::Unknown && i <= kLastLookSpread; ++i) {
+            if (!budget.spend(costAB)) break;
+            const field::Vec3 u{radicalInverse(i, 2), radicalInverse(i, 3), radicalInverse(i, 5)};
+            field::Vec3 p;
+            for (std::size_t k = 0; k < 3; ++k)
+                p[k] = openA.box.lo[k] + u[k] * (openA.box.hi[k] - openA.box.lo[k]);
+            witnessAt(p);
+        }
+        if (out.result == Sameness::Different) {
+            out.cutShort = false; // found after all: a verdict, not cut short
+            --budget.cutShort;
+        }
+        return out;
+    };
+    while (!queue.empty()) {
+        const Cell cell = queue.front();
+        queue.pop_front();
         // Two or three intervals, at four times a point's cost.
-        if (budget.left <= stopAt || !budget.spend(4 * (costAB + costActivity)))
-            return out; // Unknown
+        if (budget.left <= stopAt || !budget.spend(4 * (costAB + costActivity))) {
+            queue.push_front(cell);
+            return lastLook(); // Unknown, unless a last look finds a witness
+        }
         if (active) {
             const formula::Interval g = active->interval(cell.box.lo, cell.box.hi);
             if (g.empty() || (!g.nan && g.hi <= 0)) continue; // equal here
@@ -100,28 +149,25 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
                                   c & 2 ? cell.box.hi[1] : cell.box.lo[1],
                                   c & 4 ? cell.box.hi[2] : cell.box.lo[2]});
         for (const field::Vec3& p : points) {
-            if (!budget.spend(costAB)) return out;
-            const double va = fa.value(p), vb = fb.value(p);
-            if (std::isfinite(va) && std::isfinite(vb) && inside(va) != inside(vb)) {
-                out.result = Sameness::Different;
-                out.witness = p;
-                out.witnessA = va;
-                out.witnessB = vb;
-                return out;
+            if (!budget.spend(costAB)) {
+                queue.push_front(cell);
+                return lastLook();
             }
+            if (witnessAt(p)) return out;
         }
         if (cell.depth >= options.maxDepth) {
             ++out.unresolvedCells;
             continue;
         }
-        // Halve every side; the children are visited in a fixed order.
-        for (int c = 7; c >= 0; --c) {
+        // Halve every side; the children are visited in a fixed order,
+        // after every cell of this depth.
+        for (int c = 0; c < 8; ++c) {
             Cell child{cell.box, cell.depth + 1};
             for (std::size_t k = 0; k < 3; ++k) {
                 const double m = 0.5 * (cell.box.lo[k] + cell.box.hi[k]);
                 (c >> k & 1 ? child.box.lo[k] : child.box.hi[k]) = m;
             }
-            stack.push_back(child);
+            queue.push_back(child);
         }
     }
     out.result = Sameness::Same;

@@ -3,8 +3,12 @@
 // compared cell by cell: the interval evaluator proves cells where both
 // have one sign (or where an `activity` field shows they are equal), sample
 // points look for a witness where they differ, and undecided cells are
-// halved down to a depth. Deterministic (a fixed order) and bounded (an
-// evaluation budget shared by a whole submission).
+// halved down to a depth, breadth first (every cell of a depth before the
+// next: a difference anywhere is found at the coarsest depth that shows it,
+// not after a corner is searched to the bottom). Before giving up, the
+// centres of the cells still queued and a fixed spread of points are tried as
+// witnesses. Deterministic (a fixed order) and bounded (an evaluation budget
+// shared by a whole submission).
 #include "field/field_sampler.h"
 
 #include <cstddef>
@@ -18,6 +22,9 @@ namespace fl::grading {
 struct Budget {
     std::size_t left = 400'000'000;
     bool exceeded = false;
+    // Verdicts cut short by a comparison's cap (CompareOptions::cap) or by
+    // the budget: a submission's JSON says budget_exceeded when any was.
+    std::size_t cutShort = 0;
     bool spend(std::size_t n) {
         if (left < n) {
             exceeded = true;
@@ -43,6 +50,7 @@ struct SolidComparison {
     field::Vec3 witness{};             // with Different
     double witnessA = 0, witnessB = 0; // the two values there
     std::size_t unresolvedCells = 0;   // at the finest depth, neither proven nor witnessed
+    bool cutShort = false;             // Unknown: the cap or the budget ended it
 };
 
 struct CompareOptions {

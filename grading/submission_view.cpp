@@ -5,8 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace fl::grading {
+
+namespace {
+// A shape placed smaller than this (scene units, its box's diagonal), or
+// whose placement shrinks volumes by more than this factor, is not shown.
+constexpr double kLeastPlacedSize = 1e-3;
+constexpr double kLeastPlacedVolumeScale = 1e-12;
+} // namespace
 
 double longestCycle(const scene::Scene& scene) {
     double longest = 0;
@@ -47,6 +55,58 @@ bool SubmissionView::visible(const mesh::ShapeMesh& shape) {
     if (tangible || shape.mesh.colours.empty()) return true;
     return std::any_of(shape.mesh.colours.begin(), shape.mesh.colours.end(),
                        [](const auto& c) { return c[3] > 0; });
+}
+
+bool SubmissionView::shown(const mesh::ShapeMesh& shape) {
+    if (!visible(shape)) return false;
+    // The placement is column-major: shape coordinates to the scene's.
+    const mesh::Matrix4& m = shape.placement;
+    const double det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+                       m[8] * (m[1] * m[6] - m[5] * m[2]);
+    if (!std::isfinite(det) || std::abs(det) < kLeastPlacedVolumeScale) return false;
+    // Its size as placed: the corners of its box (its field's, else its
+    // mesh's) through the placement.
+    field::Box3 box;
+    if (shape.field)
+        box = shape.field->box;
+    else if (!shape.mesh.positions.empty()) {
+        box = {{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
+        for (const auto& p : shape.mesh.positions)
+            for (std::size_t k = 0; k < 3; ++k) {
+                box.lo[k] = std::min(box.lo[k], double(p[k]));
+                box.hi[k] = std::max(box.hi[k], double(p[k]));
+            }
+    } else {
+        return true; // nothing to measure (a tangible shape without a mesh): placed as it is
+    }
+    field::Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (int c = 0; c < 8; ++c) {
+        const double x = c & 1 ? box.hi[0] : box.lo[0], y = c & 2 ? box.hi[1] : box.lo[1],
+                     z = c & 4 ? box.hi[2] : box.lo[2];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double v = m[k] * x + m[4 + k] * y + m[8 + k] * z + m[12 + k];
+            lo[k] = std::min(lo[k], v);
+            hi[k] = std::max(hi[k], v);
+        }
+    }
+    return field::length(field::minus(hi, lo)) >= kLeastPlacedSize;
+}
+
+std::vector<SubmissionView::FirstShown> SubmissionView::firstShown() const {
+    std::vector<FirstShown> out;
+    std::set<std::pair<const scene::Node*, const scene::Node*>> seen;
+    for (std::size_t i = 0; i < frames_.size(); ++i)
+        for (const mesh::ShapeMesh& s : frames_[i].shapes)
+            if (shown(s) && seen.insert({s.shape, s.geometry}).second) out.push_back({i, &s});
+    return out;
+}
+
+const mesh::ShapeMesh* SubmissionView::shownAt(std::size_t moment,
+                                               const mesh::ShapeMesh& shape) const {
+    if (moment >= frames_.size()) return nullptr;
+    for (const mesh::ShapeMesh& o : frames_[moment].shapes)
+        if (o.shape == shape.shape && o.geometry == shape.geometry) return shown(o) ? &o : nullptr;
+    return nullptr;
 }
 
 Location SubmissionView::locationOf(const scene::Node& node) const {
@@ -96,6 +156,11 @@ std::string SubmissionView::textOf(const mesh::ShapeMesh& shape, std::int32_t or
 std::string SubmissionView::nameOf(const scene::Node& node) {
     if (!node.defName.empty()) return node.type + " " + node.defName;
     return "the " + node.type + " at line " + std::to_string(node.where.line);
+}
+
+std::string SubmissionView::nameAndLine(const scene::Node& node) {
+    if (node.defName.empty()) return nameOf(node);
+    return nameOf(node) + " at line " + std::to_string(node.where.line);
 }
 
 std::string shortened(std::string text, std::size_t limit) {

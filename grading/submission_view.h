@@ -28,6 +28,21 @@ class SubmissionView {
 
     // Is this shape shown at all? Fully transparent and without physics: no.
     static bool visible(const mesh::ShapeMesh& shape);
+    // Visible, and placed where it can be seen: not under a scale of zero,
+    // nor flattened, nor shrunk below a thousandth of a unit (docs/grading.md,
+    // "What shown means"). Every check counts only what is shown.
+    static bool shown(const mesh::ShapeMesh& shape);
+
+    // Each shape once (its FShape and geometry), at the first judged moment
+    // it is shown: a shape hidden at t = 0 (grown from a scale of zero) is
+    // judged from the moment it appears.
+    struct FirstShown {
+        std::size_t moment = 0; // index into frames() and moments()
+        const mesh::ShapeMesh* shape = nullptr;
+    };
+    std::vector<FirstShown> firstShown() const;
+    // The same shape at another moment, when it is shown then (else null).
+    const mesh::ShapeMesh* shownAt(std::size_t moment, const mesh::ShapeMesh& shape) const;
 
     Location locationOf(const scene::Node& node) const;
     Location locationOf(const scene::Node& node, std::string_view field) const;
@@ -41,6 +56,8 @@ class SubmissionView {
     const mesh::DefinitionText* textSource(const mesh::ShapeMesh& shape, std::int32_t origin) const;
     // "FShape BALL" or "the FShape at line 12".
     static std::string nameOf(const scene::Node& node);
+    // "FMaterial M at line 10", or "the FMaterial at line 10": the line once.
+    static std::string nameAndLine(const scene::Node& node);
 
   private:
     const scene::Scene& scene_;

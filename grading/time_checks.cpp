@@ -3,6 +3,9 @@
 // colour (a function colour that varies over the shape or in time).
 // Constant factors do not count: the checks compare what is shown.
 #include "checks.h"
+#include "shape_samples.h"
+
+#include "mesh/colouring.h"
 
 #include "scene/field_access.h"
 
@@ -19,18 +22,14 @@ std::string seconds(double s) {
     return buf;
 }
 
-const mesh::ShapeMesh* sameShape(const mesh::SceneMeshes& frame, const mesh::ShapeMesh& s) {
-    for (const mesh::ShapeMesh& o : frame.shapes)
-        if (o.shape == s.shape && o.geometry == s.geometry) return &o;
-    return nullptr;
-}
-
-const scene::Node* functionMaterial(const mesh::ShapeMesh& s) {
-    if (!s.shape) return nullptr;
-    const scene::Node* appearance = scene::effectiveNode(scene::nodeField(*s.shape, "appearance"));
+// The FMaterial that colours the shape by a formula: the appearance it was
+// drawn with (an FTransform's combined shape takes its first child's), and a
+// definition the scene compiled — a plain FMaterial gives no colour function.
+const scene::Node* functionMaterial(const SubmissionView& view, const mesh::ShapeMesh& s) {
     const scene::Node* material =
-        appearance ? scene::effectiveNode(scene::nodeField(*appearance, "material")) : nullptr;
-    return material && material->type == "FMaterial" ? material : nullptr;
+        s.appearance ? scene::effectiveNode(scene::nodeField(*s.appearance, "material")) : nullptr;
+    if (!material || material->type != "FMaterial") return nullptr;
+    return view.scene().definition(*material, "definition") ? material : nullptr;
 }
 
 float colourSpread(const mesh::Mesh& m) {
@@ -47,10 +46,11 @@ float colourSpread(const mesh::Mesh& m) {
 RequirementResult checkMorphing(const SubmissionView& view, const Requirement& r, Budget& budget) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
     const auto& frames = view.frames();
-    for (const mesh::ShapeMesh& s : frames.front().shapes) {
-        if (!s.field || !SubmissionView::visible(s)) continue;
-        for (std::size_t i = 1; i < frames.size(); ++i) {
-            const mesh::ShapeMesh* later = sameShape(frames[i], s);
+    for (const auto [first, shape] : view.firstShown()) {
+        const mesh::ShapeMesh& s = *shape;
+        if (!s.field) continue;
+        for (std::size_t i = first + 1; i < frames.size(); ++i) {
+            const mesh::ShapeMesh* later = view.shownAt(i, s);
             if (!later || !later->field || identicalFields(*s.field, *later->field)) continue;
             if (!(later->field->box.lo == s.field->box.lo &&
                   later->field->box.hi == s.field->box.hi))
@@ -66,7 +66,7 @@ RequirementResult checkMorphing(const SubmissionView& view, const Requirement& r
             out.points = r.points;
             out.evidence = SubmissionView::nameOf(*s.shape) + ": its geometry at " +
                            seconds(view.moments()[i]) + " differs from the one at " +
-                           seconds(view.moments().front()) + " (e.g. near (" +
+                           seconds(view.moments()[first]) + " (e.g. near (" +
                            std::to_string(c.witness[0]) + ", " + std::to_string(c.witness[1]) +
                            ", " + std::to_string(c.witness[2]) + "))";
             out.locations.push_back(view.locationOf(*s.shape));
@@ -85,10 +85,11 @@ RequirementResult checkMorphing(const SubmissionView& view, const Requirement& r
 RequirementResult checkAnimation(const SubmissionView& view, const Requirement& r) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
     const auto& frames = view.frames();
-    for (const mesh::ShapeMesh& s : frames.front().shapes) {
-        if (!s.shape || !SubmissionView::visible(s)) continue;
-        for (std::size_t i = 1; i < frames.size(); ++i) {
-            const mesh::ShapeMesh* later = sameShape(frames[i], s);
+    for (const auto [first, shape] : view.firstShown()) {
+        const mesh::ShapeMesh& s = *shape;
+        if (!s.shape) continue;
+        for (std::size_t i = first + 1; i < frames.size(); ++i) {
+            const mesh::ShapeMesh* later = view.shownAt(i, s);
             if (!later) continue;
             double moved = 0;
             for (std::size_t k = 0; k < 16; ++k)
@@ -98,7 +99,7 @@ RequirementResult checkAnimation(const SubmissionView& view, const Requirement& 
             out.points = r.points;
             out.evidence = SubmissionView::nameOf(*s.shape) + " is placed differently at " +
                            seconds(view.moments()[i]) + " than at " +
-                           seconds(view.moments().front());
+                           seconds(view.moments()[first]);
             out.locations.push_back(view.locationOf(*s.shape));
             return out;
         }
@@ -109,31 +110,79 @@ RequirementResult checkAnimation(const SubmissionView& view, const Requirement& 
     return out;
 }
 
-RequirementResult checkFunctionColour(const SubmissionView& view, const Requirement& r) {
+// Where a shape's colour is looked at: its mesh's vertices, or — a shape too
+// small for the checker's coarse mesh (a ball of radius 0.2 in a box of 2) —
+// points inside its field on a finer grid of its box, coloured as the viewer
+// colours them.
+struct ColourSamples {
+    std::vector<mesh::Vec3f> points; // empty: the mesh's own vertices
+    std::vector<std::array<float, 4>> colours;
+};
+
+std::vector<std::array<float, 4>> coloursAt(const mesh::ShapeMesh& s,
+                                            const std::vector<mesh::Vec3f>& points) {
+    if (points.empty()) return s.mesh.colours;
+    if (!s.colourField) return {};
+    mesh::Mesh m;
+    m.positions = points;
+    mesh::applyColour(m, *s.colourField);
+    return m.colours;
+}
+
+float spreadOf(const std::vector<std::array<float, 4>>& colours) {
+    mesh::Mesh m;
+    m.colours = colours;
+    return colourSpread(m);
+}
+
+RequirementResult checkFunctionColour(const SubmissionView& view, const Requirement& r,
+                                      Budget& budget) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
     const auto& frames = view.frames();
     std::string constant; // a function colour that does not vary
-    for (const mesh::ShapeMesh& s : frames.front().shapes) {
-        const scene::Node* material = functionMaterial(s);
-        if (!material || !SubmissionView::visible(s) || s.mesh.colours.empty()) continue;
-        bool varies = colourSpread(s.mesh) > 1e-4f;
-        std::string how = "over the shape";
-        for (std::size_t i = 1; i < frames.size() && !varies; ++i) {
-            const mesh::ShapeMesh* later = sameShape(frames[i], s);
-            if (later && later->mesh.colours.size() == s.mesh.colours.size())
-                for (std::size_t v = 0; v < s.mesh.colours.size() && !varies; ++v)
-                    for (std::size_t k = 0; k < 3; ++k)
-                        if (std::abs(later->mesh.colours[v][k] - s.mesh.colours[v][k]) > 1e-4f) {
-                            varies = true;
-                            how = "in time (between " + seconds(view.moments().front()) + " and " +
-                                  seconds(view.moments()[i]) + ")";
-                        }
+    std::string onlyInTime;
+    for (const auto [first, shape] : view.firstShown()) {
+        const mesh::ShapeMesh& s = *shape;
+        const scene::Node* material = functionMaterial(view, s);
+        if (!material) continue;
+        std::vector<mesh::Vec3f> points; // none: the mesh's vertices
+        if (s.mesh.colours.empty() && s.field && s.colourField)
+            points = pointsInside(*s.field, budget);
+        const auto here = coloursAt(s, points);
+        if (here.empty()) continue;
+        // Over the shape at some moment it is shown, else between moments.
+        std::string overShape = spreadOf(here) > 1e-4f ? "over the shape" : "";
+        std::string inTime;
+        for (std::size_t i = first + 1; i < frames.size() && overShape.empty(); ++i) {
+            const mesh::ShapeMesh* later = view.shownAt(i, s);
+            if (!later) continue;
+            const auto then = coloursAt(*later, points);
+            if (spreadOf(then) > 1e-4f) {
+                overShape = "over the shape (at " + seconds(view.moments()[i]) + ")";
+                break;
+            }
+            if (!inTime.empty() || then.size() != here.size()) continue;
+            for (std::size_t v = 0; v < here.size() && inTime.empty(); ++v)
+                for (std::size_t k = 0; k < 3; ++k)
+                    if (std::abs(then[v][k] - here[v][k]) > 1e-4f) {
+                        inTime = "in time (between " + seconds(view.moments()[first]) + " and " +
+                                 seconds(view.moments()[i]) + ")";
+                        break;
+                    }
         }
-        if (!varies) {
+        if (overShape.empty() && !inTime.empty() && r.variesOverShape) {
+            // The colour changes with t but is one colour over the shape.
+            if (onlyInTime.empty())
+                onlyInTime = SubmissionView::nameAndLine(*material) +
+                             " changes only in time: at any moment it is one colour over the "
+                             "shape";
+            continue;
+        }
+        const std::string how = !overShape.empty() ? overShape : inTime;
+        if (how.empty()) {
             if (constant.empty())
-                constant = SubmissionView::nameOf(*material) + " at line " +
-                           std::to_string(material->where.line) +
-                           " gives one colour everywhere and always";
+                constant =
+                    SubmissionView::nameAndLine(*material) + " gives the shape one colour, always";
             continue;
         }
         out.met = true;
@@ -142,10 +191,14 @@ RequirementResult checkFunctionColour(const SubmissionView& view, const Requirem
         out.locations.push_back(view.locationOf(*material, "definition"));
         return out;
     }
-    out.evidence = constant.empty()
+    const std::string needed = r.variesOverShape ? "x, y, z, u, v or w" : "x, y, z, u, v, w or t";
+    out.evidence = !onlyInTime.empty() ? onlyInTime + ": its definition must depend on the point"
+                   : constant.empty()
                        ? "no shown shape has a colour defined by a function: give one an "
-                         "FMaterial whose definition reads x, y, z, u, v, w or t"
-                       : constant + ": its definition must depend on the point or on t";
+                         "FMaterial whose definition reads " +
+                             needed
+                       : constant + ": its definition must depend on the point" +
+                             (r.variesOverShape ? std::string() : std::string(" or on t"));
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace fl::formula {
 
@@ -255,8 +256,18 @@ bool lowerBuiltin(const BuiltinInfo& info, BuiltinContext& ctx, std::span<const 
             result = tb.sub(tb.sub(tb.square(s2), tb.square(tb.sub(radial, s1))), tb.square(p.y));
         }
     } else if (n == "halfspace") {
-        result = tb.add(
-            tb.add(tb.add(tb.mul(a[0], ctx.x), tb.mul(a[1], ctx.y)), tb.mul(a[2], ctx.z)), a[3]);
+        // a x + b y + c z + d without the terms a zero coefficient makes
+        // (0 * x is not folded in general; coordinates are finite) and with
+        // no factor of one: halfspace(0, 1, 0, -0.2) is y - 0.2, whose
+        // intervals are as tight as the plane written by hand.
+        std::optional<Val> sum;
+        const Val coordinates[3] = {ctx.x, ctx.y, ctx.z};
+        for (int i = 0; i < 3; ++i) {
+            if (a[i].isConst(0.0)) continue;
+            const Val term = a[i].isConst(1.0) ? coordinates[i] : tb.mul(a[i], coordinates[i]);
+            sum = sum ? tb.add(*sum, term) : term;
+        }
+        result = !sum ? a[3] : a[3].isConst(0.0) ? *sum : tb.add(*sum, a[3]);
     } else if (n == "superellipsoid") {
         Local p = centred(ctx, a, true);
         Val e1 = a[6], e2 = a[7];

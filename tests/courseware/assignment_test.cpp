@@ -133,6 +133,39 @@ TEST(Manifest, ProblemsAreLocated) {
     EXPECT_FALSE(parse("\xff\xfe{").assignment);
 }
 
+// "varies": a colour requirement can ask for a colour that varies over the
+// shape itself (parametric-colour), not only in time.
+TEST(Manifest, AColourRequirementSaysHowItMustVary) {
+    const auto load = [](const std::string& extra) {
+        std::string text = R"({
+  "schema": "functionlab-assignment/1", "id": "implicit-fantasies", "title": "T",
+  "instructions": "instructions.md", "starters": ["starter.x3d"],
+  "requirements": [
+    {"id": "c", "kind": "function-colour", "points": 5, "description": "d")" +
+                           extra + R"(}
+  ]
+})";
+        return parse(text);
+    };
+    const AssignmentLoad plain = load("");
+    ASSERT_TRUE(plain.assignment) << firstProblem(plain);
+    EXPECT_FALSE(plain.assignment->requirements.at(0).variesOverShape);
+    const AssignmentLoad shape = load(R"(, "varies": "over-shape")");
+    ASSERT_TRUE(shape.assignment) << firstProblem(shape);
+    EXPECT_TRUE(shape.assignment->requirements.at(0).variesOverShape);
+    const AssignmentLoad wrong = load(R"(, "varies": "sometimes")");
+    ASSERT_FALSE(wrong.diagnostics.empty());
+    EXPECT_EQ(wrong.diagnostics.front().pos.line, 5) << firstProblem(wrong);
+    EXPECT_NE(wrong.diagnostics.front().suggestion.find("over-shape"), std::string::npos);
+    // The course's parametric-colour lab asks for it.
+    const AssignmentLoad lab = findAssignment("parametric-colour");
+    ASSERT_TRUE(lab.assignment);
+    bool found = false;
+    for (const auto& r : lab.assignment->requirements)
+        found = found || (r.kind == grading::RequirementKind::FunctionColour && r.variesOverShape);
+    EXPECT_TRUE(found);
+}
+
 TEST(Manifest, UnknownKeysAreWarnedAboutNotFatal) {
     std::string text = kGood;
     text.insert(text.find("\"title\""), "\"colour_scheme\": 1,\n  ");
