@@ -1,11 +1,11 @@
 // functionlab-bench: the benchmarks that compare with peers the product does
 // not link (muParser, and through it OpenMP). `functionlab bench eval` runs
 // this executable, found next to functionlab; its options are the ones
-// declared in suite/cli/bench_eval_command.cpp, read by the same table.
+// declared in measure/bench_eval_spec.cpp, read by the same table.
 //
 //   functionlab-bench eval [--json] [--side N] [--seconds S]
-#include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "measure/bench_eval_spec.h"
+#include "platform/exit_codes.h"
 
 #include "eval_table.h"
 
@@ -13,6 +13,7 @@
 
 int main(int argc, char** argv) {
     using namespace fl::cli;
+    using fl::measure::benchEvalSpec;
     const Args all(argv + 1, argv + argc);
     if (all.empty() || all[0] != "eval") {
         if (!all.empty() && (all[0] == "--help" || all[0] == "-h")) {

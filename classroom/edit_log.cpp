@@ -1,6 +1,6 @@
 #include "edit_log.h"
 
-#include "sqlite_database.h"
+#include "platform/sqlite_database.h"
 
 #include <array>
 #include <chrono>
@@ -27,7 +27,7 @@ EditKind kindNamed(std::string_view name) {
     return EditKind::Edit;
 }
 
-LoggedVersion readRow(grading::SqliteStatement& s, bool withScene) {
+LoggedVersion readRow(platform::SqliteStatement& s, bool withScene) {
     LoggedVersion v;
     v.version = s.integer(0);
     v.author = s.text(1);
@@ -79,13 +79,13 @@ EditLog::EditLog(const std::filesystem::path& dataDir, bool startNew) : dir_(dat
             " is missing or empty: restore it from a backup, or start a new class there with "
             "--new (the old versions are then gone)");
     try {
-        db_ = std::make_unique<grading::SqliteDatabase>(logPath.string());
+        db_ = std::make_unique<platform::SqliteDatabase>(logPath.string());
         auto check = db_->prepare("PRAGMA quick_check");
         std::string verdict;
         while (check.step())
             verdict += (verdict.empty() ? "" : "; ") + check.text(0);
-        if (verdict != "ok") throw grading::SqliteError(verdict.substr(0, 300));
-    } catch (const grading::SqliteError& e) {
+        if (verdict != "ok") throw platform::SqliteError(verdict.substr(0, 300));
+    } catch (const platform::SqliteError& e) {
         db_.reset();
         throw EditLogRefused(
             "the class log " + logPath.string() + " is damaged (" + e.what() +
@@ -141,7 +141,7 @@ std::vector<LoggedVersion> EditLog::after(std::int64_t version, std::size_t limi
 }
 
 void EditLog::append(const LoggedVersion& entry) {
-    grading::SqliteDatabase::Transaction t(*db_);
+    platform::SqliteDatabase::Transaction t(*db_);
     auto s = db_->prepare(
         "INSERT INTO versions (version, author, kind, unix_ms, scene) VALUES (?1, ?2, ?3, ?4, ?5)");
     s.bind(1, entry.version)

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace fl::grading {
+namespace fl::platform {
 class SqliteDatabase;
 }
 
@@ -59,7 +59,7 @@ class EditLog {
     // Opens (creating) DIR/classroom.sqlite and holds DIR for this process.
     // Throws EditLogRefused when another server holds DIR, the log is
     // damaged, or the folder held a class whose log is gone (unless
-    // `startNew`), and grading::SqliteError when SQLite cannot open it.
+    // `startNew`), and platform::SqliteError when SQLite cannot open it.
     explicit EditLog(const std::filesystem::path& dataDir, bool startNew = false);
     ~EditLog();
     EditLog(const EditLog&) = delete;
@@ -89,7 +89,7 @@ class EditLog {
     std::filesystem::path dir_;
     std::unique_ptr<FolderLock> lock_;
     bool marked_ = false;
-    std::unique_ptr<grading::SqliteDatabase> db_;
+    std::unique_ptr<platform::SqliteDatabase> db_;
 };
 
 std::string_view nameOf(EditKind kind);

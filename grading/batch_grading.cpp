@@ -40,7 +40,7 @@ double hoursBetween(const std::string& dueUtc, const std::string& submittedUtc) 
 }
 
 // Why a child did not give a verdict, for a student and an instructor.
-std::string failureOf(const ChildResult& r, const IsolationLimits& limits) {
+std::string failureOf(const platform::ChildResult& r, const platform::IsolationLimits& limits) {
     if (!r.startError.empty()) return r.startError;
     if (r.timedOut)
         return "the checker ran out of time (" + std::to_string(int(limits.wallSeconds)) + " s)";
@@ -170,7 +170,8 @@ BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,
         for (std::size_t i = next++; i < jobs.size(); i = next++) {
             const Job& job = jobs[i];
             const auto started = std::chrono::steady_clock::now();
-            const ChildResult r = runIsolated(options.command(*job.submission), options.limits);
+            const platform::ChildResult r =
+                platform::runIsolated(options.command(*job.submission), options.limits);
             const double seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
             GradeRecord g;
@@ -185,7 +186,7 @@ BatchSummary gradeBatch(Gradebook& book, const AssignmentRecord& assignment,
             g.rubricHash = assignment.rubricHash;
             g.gradedAt = utcNow();
             g.maxScore = assignment.maxAutomatic;
-            g.isolation = std::string(isolationName(r.isolation));
+            g.isolation = std::string(platform::isolationName(r.isolation));
             std::string failure = failureOf(r, options.limits);
             if (failure.empty() && !gradeFromCheckJson(r.out, g))
                 failure = "the checker gave no verdict (exit " + std::to_string(r.exitCode) + ")";

@@ -5,7 +5,7 @@
 // is in — so a killed batch loses no finished result, and a batch run again
 // skips what is unchanged (same content hash, checker version and rubric).
 #include "gradebook.h"
-#include "isolated_run.h"
+#include "platform/isolated_run.h"
 
 #include <filesystem>
 #include <functional>
@@ -26,7 +26,7 @@ std::vector<BatchSubmission> findSubmissions(const std::filesystem::path& folder
 
 struct BatchOptions {
     int jobs = 2;
-    IsolationLimits limits;
+    platform::IsolationLimits limits;
     // The checker's command line for one submission (it prints `grade check
     // --json`'s object on stdout).
     std::function<std::vector<std::string>(const BatchSubmission&)> command;

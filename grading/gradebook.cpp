@@ -1,6 +1,7 @@
 #include "gradebook.h"
 
 #include "gradebook_log.h"
+#include "platform/csv.h"
 
 #include <QCryptographicHash>
 #include <QDateTime>
@@ -84,32 +85,6 @@ CREATE TABLE overrides (
 CREATE INDEX grades_by_submission ON grades(submission_id);
 )sql";
 
-// Fields of one CSV line (RFC 4180 quoting).
-std::vector<std::string> csvFields(const std::string& line) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-                out.back() += '"';
-                ++i;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                out.back() += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            out.emplace_back();
-        } else if (c != '\r') {
-            out.back() += c;
-        }
-    }
-    return out;
-}
-
 std::string trimmed(std::string s) {
     const auto b = s.find_first_not_of(" \t");
     const auto e = s.find_last_not_of(" \t");
@@ -134,29 +109,29 @@ int Gradebook::schemaVersion() {
 void Gradebook::migrate() {
     const int version = schemaVersion();
     if (version > kGradebookSchemaVersion)
-        throw SqliteError("this gradebook was written by a newer FunctionLab (schema " +
-                          std::to_string(version) + "; this one reads up to " +
-                          std::to_string(kGradebookSchemaVersion) + ")");
+        throw platform::SqliteError("this gradebook was written by a newer FunctionLab (schema " +
+                                    std::to_string(version) + "; this one reads up to " +
+                                    std::to_string(kGradebookSchemaVersion) + ")");
     if (version < 1) {
-        SqliteDatabase::Transaction t(db_);
+        platform::SqliteDatabase::Transaction t(db_);
         db_.execute(kSchemaV1);
         db_.execute("PRAGMA user_version = 1");
         t.commit();
     }
     if (schemaVersion() < 2) { // 2: where each submission was found (grade similar reads it)
-        SqliteDatabase::Transaction t(db_);
+        platform::SqliteDatabase::Transaction t(db_);
         db_.execute("ALTER TABLE submissions ADD COLUMN path TEXT NOT NULL DEFAULT ''");
         db_.execute("PRAGMA user_version = 2");
         t.commit();
     }
     if (schemaVersion() < 3) { // 3: the isolation each check ran under
-        SqliteDatabase::Transaction t(db_);
+        platform::SqliteDatabase::Transaction t(db_);
         db_.execute("ALTER TABLE grades ADD COLUMN isolation TEXT NOT NULL DEFAULT ''");
         db_.execute("PRAGMA user_version = 3");
         t.commit();
     }
     if (schemaVersion() < 4) { // 4: the log of every change, and signed heads
-        SqliteDatabase::Transaction t(db_);
+        platform::SqliteDatabase::Transaction t(db_);
         db_.execute(kLogSchema);
         importStateIntoLog();
         db_.execute("PRAGMA user_version = 4");
@@ -166,15 +141,15 @@ void Gradebook::migrate() {
 
 std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
     std::vector<RosterProblem> problems;
-    std::istringstream in(csv);
-    std::string line;
-    int number = 0;
+    const platform::CsvText text = platform::readCsv(csv);
     int idColumn = -1, nameColumn = -1, emailColumn = -1;
-    SqliteDatabase::Transaction t(db_);
-    while (std::getline(in, line)) {
-        ++number;
-        if (trimmed(line).empty()) continue;
-        const std::vector<std::string> fields = csvFields(line);
+    platform::SqliteDatabase::Transaction t(db_);
+    for (const platform::CsvRecord& record : text.records) {
+        const std::vector<std::string>& fields = record.fields;
+        bool blank = true;
+        for (const std::string& f : fields)
+            blank = blank && trimmed(f).empty();
+        if (blank) continue;
         if (idColumn < 0) { // the header names the columns
             for (std::size_t i = 0; i < fields.size(); ++i) {
                 const std::string f = trimmed(fields[i]);
@@ -183,8 +158,8 @@ std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
                 if (f == "email") emailColumn = int(i);
             }
             if (idColumn < 0) {
-                problems.push_back({number, "the first line must name the columns, one of "
-                                            "them id (e.g. id,name,email)"});
+                problems.push_back({record.line, "the first line must name the columns, one of "
+                                                 "them id (e.g. id,name,email)"});
                 return problems;
             }
             continue;
@@ -195,11 +170,12 @@ std::vector<RosterProblem> Gradebook::importRoster(const std::string& csv) {
         };
         Student s{field(idColumn), field(nameColumn), field(emailColumn)};
         if (s.id.empty()) {
-            problems.push_back({number, "no id"});
+            problems.push_back({record.line, "no id"});
             continue;
         }
         addStudent(s);
     }
+    if (!text.error.empty()) problems.push_back({text.errorLine, text.error});
     t.commit();
     return problems;
 }
@@ -304,7 +280,7 @@ void Gradebook::applyGrade(const GradeRecord& g) {
     auto find = db_.prepare("SELECT id FROM submissions WHERE student_id = ?1 AND "
                             "assignment_id = ?2 AND content_hash = ?3");
     find.bind(1, g.student).bind(2, g.assignment).bind(3, g.contentHash);
-    if (!find.step()) throw SqliteError("the submission row vanished");
+    if (!find.step()) throw platform::SqliteError("the submission row vanished");
     const std::int64_t submission = find.integer(0);
     auto last = db_.prepare("SELECT row_hash FROM grades ORDER BY id DESC LIMIT 1");
     const std::string previous = last.step() ? last.text(0) : std::string(64, '0');

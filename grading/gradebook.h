@@ -15,8 +15,8 @@
 // kept outside the gradebook) signs the log's head; a signed head in an
 // export, or the public key, finds the tail deleted or the whole log
 // re-hashed by someone without the key.
+#include "platform/sqlite_database.h"
 #include "requirement.h"
-#include "sqlite_database.h"
 
 #include <cstdint>
 #include <optional>
@@ -175,7 +175,7 @@ class Gradebook {
                        const std::string& who, const std::string& why, const std::string& at);
     std::string rowHash(const GradeRecord& g, const std::string& previous);
 
-    SqliteDatabase db_;
+    platform::SqliteDatabase db_;
 };
 
 // An ISO 8601 UTC time of now ("2026-11-23T22:44:11Z").

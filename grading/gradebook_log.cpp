@@ -164,7 +164,7 @@ std::string headMessage(const LogHead& head) {
 // ---------------------------------------------------------------- writing
 
 void Gradebook::change(std::string_view kind, const std::string& payload) {
-    SqliteDatabase::Transaction t(db_);
+    platform::SqliteDatabase::Transaction t(db_);
     appendEntry(kind, payload);
     apply(kind, payload);
     t.commit();
@@ -229,8 +229,8 @@ void Gradebook::apply(std::string_view kind, const std::string& payload) {
         applyOverride(text(o, "student"), text(o, "assignment"), number(o, "score"), text(o, "who"),
                       text(o, "why"), text(o, "at"));
     } else {
-        throw SqliteError("the gradebook log holds an entry of an unknown kind '" +
-                          std::string(kind) + "' (written by a newer FunctionLab?)");
+        throw platform::SqliteError("the gradebook log holds an entry of an unknown kind '" +
+                                    std::string(kind) + "' (written by a newer FunctionLab?)");
     }
 }
 
@@ -378,7 +378,7 @@ constexpr View kViews[] = {
                   "BY id"},
 };
 
-std::vector<std::vector<std::string>> rowsOf(SqliteDatabase& db, const char* sql,
+std::vector<std::vector<std::string>> rowsOf(platform::SqliteDatabase& db, const char* sql,
                                              std::vector<std::string>& columns) {
     auto s = db.prepare(sql);
     std::vector<std::vector<std::string>> rows;

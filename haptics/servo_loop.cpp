@@ -1,5 +1,7 @@
 #include "servo_loop.h"
 
+#include "measure/percentiles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <pthread.h>
@@ -10,15 +12,11 @@ namespace fl::haptics {
 JitterFigures jitterOf(std::vector<double> e) {
     JitterFigures j;
     j.samples = e.size();
-    if (e.empty()) return j;
-    std::sort(e.begin(), e.end());
-    auto at = [&](double q) {
-        return e[std::min(e.size() - 1, std::size_t(q * double(e.size() - 1) + 0.5))];
-    };
-    j.p50 = at(0.5);
-    j.p99 = at(0.99);
-    j.p999 = at(0.999);
-    j.max = e.back();
+    const measure::Spread s = measure::spreadOf(std::move(e));
+    j.p50 = s.p50;
+    j.p99 = s.p99;
+    j.p999 = s.p999;
+    j.max = s.max;
     return j;
 }
 

@@ -2,7 +2,7 @@
 // the suite window; with a subcommand it serves scripts, CI and instructors.
 // The subcommands and their help come from one table (cli/commands.cpp).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 #include "window/gui.h"
 
 #include <iostream>

@@ -1,10 +1,10 @@
 // `functionlab bench accuracy`: what accuracy costs in time (bench/accuracy_sweep).
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
-#include "accuracy_sweep.h"
 #include "formula/compiler.h"
+#include "measure/accuracy_sweep.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 #include "scene/scene_reader.h"
@@ -119,7 +119,7 @@ int benchAccuracyCommand(const Args& args) {
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{});
     const bool json = a->flag("json");
-    bench::SweepOptions sweep;
+    measure::SweepOptions sweep;
     sweep.threads = int(a->integer("threads", 0));
     sweep.memoryBudgetBytes = std::size_t(a->integer("memory", 2048)) * 1024 * 1024;
     if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
@@ -138,14 +138,14 @@ int benchAccuracyCommand(const Args& args) {
         return kExitDiagnostic;
     }
     std::vector<std::string> skipped;
-    const std::vector<bench::AccuracyRow> rows =
-        bench::runAccuracySweep(field, resolutions, sweep, &skipped);
+    const std::vector<measure::AccuracyRow> rows =
+        measure::runAccuracySweep(field, resolutions, sweep, &skipped);
     for (const std::string& s : skipped)
         std::cerr << "note: no row for " << s << "\n";
-    std::cout << (json ? bench::accuracyJson(rows) : bench::accuracyTableText(rows));
+    std::cout << (json ? measure::accuracyJson(rows) : measure::accuracyTableText(rows));
     if (!plot.empty()) {
         std::ofstream out(plot);
-        out << bench::accuracyPlotSvg(rows, "error against time: " + name);
+        out << measure::accuracyPlotSvg(rows, "error against time: " + name);
         if (!out) {
             std::cerr << "functionlab bench accuracy: cannot write " << plot << "\n";
             return kExitDiagnostic;

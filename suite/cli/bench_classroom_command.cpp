@@ -7,8 +7,9 @@
 // (it must not raise the others' p99). The server's CPU and peak memory come
 // from /proc. Bounded in count and time; loopback only.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/json.h"
+#include "measure/percentiles.h"
+#include "platform/exit_codes.h"
 
 #include "starter_scene.h"
 
@@ -45,13 +46,6 @@ struct Phase {
     int sent = 0, applied = 0, refused = 0, skipped = 0;
     double serverCpuPercent = 0;
 };
-
-double percentile(std::vector<double> v, double p) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const auto i = static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5);
-    return v[std::min(i, v.size() - 1)];
-}
 
 // utime + stime of a process, in seconds.
 double cpuSeconds(qint64 pid) {
@@ -339,10 +333,10 @@ int benchClassroomCommand(const Args& args) {
                    ",\"skipped\":" + std::to_string(p.skipped) +
                    ",\"editsReachingEveryone\":" + std::to_string(p.everyoneMs.size()) +
                    ",\"deliveries\":" + std::to_string(p.eachMs.size()) +
-                   ",\"everyoneP50Ms\":" + jsonNumber(percentile(p.everyoneMs, 0.5)) +
-                   ",\"everyoneP99Ms\":" + jsonNumber(percentile(p.everyoneMs, 0.99)) +
-                   ",\"deliveryP50Ms\":" + jsonNumber(percentile(p.eachMs, 0.5)) +
-                   ",\"deliveryP99Ms\":" + jsonNumber(percentile(p.eachMs, 0.99)) +
+                   ",\"everyoneP50Ms\":" + jsonNumber(measure::percentile(p.everyoneMs, 0.5)) +
+                   ",\"everyoneP99Ms\":" + jsonNumber(measure::percentile(p.everyoneMs, 0.99)) +
+                   ",\"deliveryP50Ms\":" + jsonNumber(measure::percentile(p.eachMs, 0.5)) +
+                   ",\"deliveryP99Ms\":" + jsonNumber(measure::percentile(p.eachMs, 0.99)) +
                    ",\"serverCpuPercent\":" + jsonNumber(p.serverCpuPercent) + "}";
         };
         std::cout << "{\"clients\":" << clients << ",\"rate\":" << jsonNumber(rate)
@@ -362,8 +356,9 @@ int benchClassroomCommand(const Args& args) {
             line, sizeof line,
             "%-16s edits %d sent, %d applied, %d refused, %d skipped; to everyone p50 %.1f ms, p99 "
             "%.1f ms (%zu edits, %zu of %zu deliveries); server CPU %.0f%%\n",
-            label, p->sent, p->applied, p->refused, p->skipped, percentile(p->everyoneMs, 0.5),
-            percentile(p->everyoneMs, 0.99), p->everyoneMs.size(), p->eachMs.size(),
+            label, p->sent, p->applied, p->refused, p->skipped,
+            measure::percentile(p->everyoneMs, 0.5), measure::percentile(p->everyoneMs, 0.99),
+            p->everyoneMs.size(), p->eachMs.size(),
             static_cast<std::size_t>(p->applied) * static_cast<std::size_t>(clients),
             p->serverCpuPercent);
         std::cout << line;

@@ -1,49 +1,17 @@
 // `functionlab bench eval`: the evaluator benchmark table (bench/eval_table).
 // It compares with muParser, a peer the product does not link: the table runs
 // in the sibling executable functionlab-bench (bench/functionlab_bench.cpp),
-// which reads the same options from this file's spec. functionlab checks the
+// which reads the same options (measure/bench_eval_spec.h). functionlab checks the
 // command line, then hands it on; the output and exit status are the peer's.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "measure/bench_eval_spec.h"
+#include "platform/exit_codes.h"
 
 #include <filesystem>
 #include <iostream>
 #include <unistd.h>
 
 namespace fl::cli {
-
-const CommandSpec& benchEvalSpec() {
-    static const CommandSpec spec{
-        .name = "bench eval",
-        .summary = "evaluator speed: FunctionLab vs hand-written C++ vs muParser",
-        .synopsis = {"bench eval [--json] [--side N] [--seconds S]"},
-        .description =
-            "Evaluates the benchmark formulas over an N^3 grid with FunctionLab's batch\n"
-            "evaluator, the same formulas hand-written in C++, and muParser, all on one\n"
-            "thread; prints nanoseconds per point and the ratios. The engines take turns\n"
-            "for at least S seconds and each reports its best turn. The work is done by\n"
-            "the executable functionlab-bench next to functionlab.\n",
-        .options = {{.name = "json",
-                     .help = "print a list of {\"formula\", \"ns_per_point\": {\"functionlab\", "
-                             "\"native\", \"muparser\"}} instead of the table"},
-                    {.name = "side",
-                     .kind = OptionKind::Integer,
-                     .valueName = "N",
-                     .help = "points along each side of the grid",
-                     .defaultValue = "64",
-                     .min = 2,
-                     .max = 512},
-                    {.name = "seconds",
-                     .kind = OptionKind::Number,
-                     .valueName = "S",
-                     .help = "how long the engines take turns, at least",
-                     .defaultValue = "0.2",
-                     .min = 0,
-                     .max = 60}},
-        .exitStatus = "0 measured, 1 functionlab-bench is missing or failed, 2 usage error",
-    };
-    return spec;
-}
 
 namespace {
 

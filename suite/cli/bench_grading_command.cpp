@@ -1,9 +1,9 @@
 // `functionlab bench grading`: a generated class graded as a batch, and what
 // the checker's time goes to (bench/grading_bench.h).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
-#include "grading_bench.h"
+#include "courseware/grading_bench.h"
 
 #include <filesystem>
 #include <iostream>
@@ -51,7 +51,7 @@ int benchGradingCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(benchGradingSpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    bench::GradingBenchOptions o;
+    courseware::GradingBenchOptions o;
     o.submissions = int(a->integer("submissions", 200));
     o.jobs = int(a->integer("jobs", 2));
     o.work = a->given("work")
@@ -61,9 +61,9 @@ int benchGradingCommand(const Args& args) {
     o.functionlab = std::filesystem::read_symlink("/proc/self/exe", ec).string();
     try {
         std::filesystem::create_directories(o.work);
-        const bench::GradingBenchResult r = bench::runGradingBench(o);
-        std::cout << (a->flag("json") ? bench::gradingBenchJson(r) + "\n"
-                                      : bench::gradingBenchText(r));
+        const courseware::GradingBenchResult r = courseware::runGradingBench(o);
+        std::cout << (a->flag("json") ? courseware::gradingBenchJson(r) + "\n"
+                                      : courseware::gradingBenchText(r));
     } catch (const std::exception& e) {
         std::cerr << "functionlab bench grading: " << e.what() << "\n";
         return kExitDiagnostic;

@@ -2,10 +2,10 @@
 // tangible scenes, function against polygon contact, and the real-time
 // loop's jitter (bench/haptics_bench.h). Figures are printed, never judged.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "catalogue.h"
-#include "haptics_bench.h"
+#include "haptics/haptics_bench.h"
 
 #include <iostream>
 
@@ -57,13 +57,13 @@ int benchHapticsCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(benchHapticsSpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    bench::HapticsBenchOptions o;
+    haptics::HapticsBenchOptions o;
     o.examples = courseware::coursewareFolder() / "examples";
     o.passes = int(a->number("passes", 5));
     o.loopSeconds = a->number("loop-seconds", 2);
     o.rateHz = a->number("rate", 1000);
-    const bench::HapticsBenchResult r = bench::runHapticsBench(o);
-    std::cout << (a->flag("json") ? bench::hapticsBenchJson(r) : bench::hapticsBenchText(r));
+    const haptics::HapticsBenchResult r = haptics::runHapticsBench(o);
+    std::cout << (a->flag("json") ? haptics::hapticsBenchJson(r) : haptics::hapticsBenchText(r));
     return kExitOk;
 }
 

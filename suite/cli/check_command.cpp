@@ -1,9 +1,9 @@
 // `functionlab check FILE [--json] [--plan]`: load a scene and report what is
 // wrong with it, located as FILE:LINE:COL.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/json.h"
 #include "cli/scene_diagnostic_json.h"
+#include "platform/exit_codes.h"
 
 #include "animation/animator.h"
 #include "scene/effects_plan.h"

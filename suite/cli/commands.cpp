@@ -2,7 +2,7 @@
 // subcommands, `functionlab help [COMMAND]` and `functionlab help --markdown`
 // (the option lists of docs/cli.md).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include <algorithm>
 #include <iostream>

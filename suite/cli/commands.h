@@ -2,7 +2,8 @@
 // Subcommands of the `functionlab` executable. Each declares its options in
 // the shared table (option_table.h) and takes the arguments after its own
 // name, returning an exit code (see exit_codes.h).
-#include "cli/option_table.h"
+#include "measure/bench_eval_spec.h"
+#include "platform/option_table.h"
 
 #include <iosfwd>
 #include <string>
@@ -16,7 +17,7 @@ const CommandSpec& checkSpec();
 const CommandSpec& convertSpec();
 const CommandSpec& meshSpec();
 const CommandSpec& renderSpec();
-const CommandSpec& benchEvalSpec();
+using measure::benchEvalSpec; // measure/bench_eval_spec.h: functionlab-bench reads it too
 const CommandSpec& benchAccuracySpec();
 const CommandSpec& benchGradingSpec();
 const CommandSpec& benchHapticsSpec();

@@ -1,7 +1,7 @@
 // `functionlab convert IN OUT`: between X3D XML, ClassicVRML and VRML97 (and
 // their gzip forms), chosen by OUT's extension.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "mesh/scene_preview.h"
 #include "scene/gzip.h"

@@ -1,8 +1,8 @@
 // `functionlab formula check|eval`: the formula engine from the command line.
 #include "arguments.h"
 #include "commands.h"
-#include "exit_codes.h"
 #include "json.h"
+#include "platform/exit_codes.h"
 
 #include "formula/compiler.h"
 #include "formula/eval_gradient.h"

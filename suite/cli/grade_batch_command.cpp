@@ -2,9 +2,9 @@
 // [--roster CSV] [--json]`: a class's submissions, each checked by
 // `functionlab grade check` in its own isolated child process.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/grade_options.h"
 #include "cli/json.h"
+#include "platform/exit_codes.h"
 
 #include "batch_grading.h"
 #include "catalogue.h"
@@ -106,14 +106,15 @@ int gradeBatchCommand(const Args& args) {
     if (a->given("isolation") && a->flag("no-isolation"))
         return usageError(gradeBatchSpec(), "--isolation and --no-isolation exclude each other",
                           std::cerr);
-    grading::IsolationLimits limits;
+    platform::IsolationLimits limits;
     limits.wallSeconds = a->number("time-limit", 60);
     limits.cpuSeconds = limits.wallSeconds / 2;
     limits.isolate = !a->flag("no-isolation");
     if (a->given("isolation"))
-        limits.isolation = a->text("isolation") == "bubblewrap" ? grading::Isolation::Bubblewrap
-                                                                : grading::Isolation::SyscallFilter;
-    else if (limits.isolate && grading::bestIsolation() == grading::Isolation::LimitsOnly) {
+        limits.isolation = a->text("isolation") == "bubblewrap"
+                               ? platform::Isolation::Bubblewrap
+                               : platform::Isolation::SyscallFilter;
+    else if (limits.isolate && platform::bestIsolation() == platform::Isolation::LimitsOnly) {
         std::cerr << "functionlab grade batch: this machine can isolate no check: neither "
                      "bubblewrap nor a seccomp filter works here. Install bubblewrap "
                      "(apt-get install bubblewrap), or run with --no-isolation for submissions "
@@ -169,9 +170,9 @@ int gradeBatchCommand(const Args& args) {
             out += ",\"not_gradable\":" + std::to_string(summary.notGradable);
             out += ",\"failed\":" + std::to_string(summary.failed);
             out += ",\"isolation\":" +
-                   jsonString(limits.isolate ? std::string(grading::isolationName(
+                   jsonString(limits.isolate ? std::string(platform::isolationName(
                                                    limits.isolation ? *limits.isolation
-                                                                    : grading::bestIsolation()))
+                                                                    : platform::bestIsolation()))
                                              : std::string("limits only"));
             out += ",\"head\":" + headJson(book.head(), signedHead);
             out += ",\"problems\":[";
@@ -184,7 +185,7 @@ int gradeBatchCommand(const Args& args) {
             std::cout << summary.graded << " graded, " << summary.skipped << " unchanged, "
                       << summary.notGradable << " not gradable, " << summary.failed << " failed\n";
         }
-    } catch (const grading::SqliteError& e) {
+    } catch (const platform::SqliteError& e) {
         std::cerr << "functionlab grade batch: " << a->text("db") << ": " << e.what() << "\n";
         return kExitDiagnostic;
     }

@@ -3,10 +3,10 @@
 // this repository read its JSON; its fields and exit codes are a contract
 // (docs/grading.md).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/grade_options.h"
 #include "cli/json.h"
 #include "cli/scene_diagnostic_json.h"
+#include "platform/exit_codes.h"
 
 #include "catalogue.h"
 #include "checker.h"

@@ -1,8 +1,8 @@
 // `functionlab grade export --db GRADEBOOK --assignment ID --format
 // canvas|moodle|gradescope|csv -o OUT`: a class's grades for an LMS.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/grade_options.h"
+#include "platform/exit_codes.h"
 
 #include "catalogue.h"
 #include "grade_export.h"

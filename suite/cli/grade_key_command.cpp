@@ -2,7 +2,7 @@
 // gradebooks (Ed25519): the secret in FILE (mode 0600, never overwritten),
 // the public key in FILE.pub and on stdout.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "signing.h"
 

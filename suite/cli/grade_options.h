@@ -2,7 +2,7 @@
 // What the `grade` commands share: their --assignment and --db options
 // (one wording in every command's help), finding the assignment with its
 // located problems printed, and refusing a gradebook that is not there.
-#include "cli/option_table.h"
+#include "platform/option_table.h"
 
 #include "assignment.h"
 #include "gradebook.h"

@@ -2,13 +2,13 @@
 // page per student and the class summary (grading/grade_report.h), with
 // pictures drawn by `functionlab render` in child processes.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/grade_options.h"
+#include "platform/exit_codes.h"
 
 #include "catalogue.h"
 #include "checker.h"
 #include "grade_report.h"
-#include "isolated_run.h"
+#include "platform/isolated_run.h"
 #include "submission_view.h"
 
 #include "scene/effects_plan.h"
@@ -64,7 +64,7 @@ int gradeReportCommand(const Args& args) {
                        const std::filesystem::path& png) {
             // Drawing needs files (the picture, xvfb's) and much address
             // space (the software OpenGL): limits for a renderer, not a checker.
-            grading::IsolationLimits l;
+            platform::IsolationLimits l;
             l.wallSeconds = 60;
             l.cpuSeconds = 60;
             l.memoryBytes = std::size_t(16) << 30;
@@ -72,10 +72,10 @@ int gradeReportCommand(const Args& args) {
             l.isolate = false;
             char time[32];
             std::snprintf(time, sizeof time, "%g", seconds);
-            const grading::ChildResult r =
-                grading::runIsolated({self, "render", grading::sceneFileOf(submission), "-o",
-                                      png.string(), "--size", "320x240", "--time", time},
-                                     l);
+            const platform::ChildResult r =
+                platform::runIsolated({self, "render", grading::sceneFileOf(submission), "-o",
+                                       png.string(), "--size", "320x240", "--time", time},
+                                      l);
             return r.exitCode == 0 && std::filesystem::is_regular_file(png);
         };
         o.moments = [](const std::string& submission) {

@@ -3,9 +3,9 @@
 // the order of commutative operations, constants and placement, with what
 // the starter scene already has subtracted (grading/similarity.h).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/grade_options.h"
 #include "cli/json.h"
+#include "platform/exit_codes.h"
 
 #include "catalogue.h"
 #include "checker.h"

@@ -3,9 +3,9 @@
 // signed? The first entry that breaks the chain, or the table row changed
 // behind the log's back, with what changed (grading/gradebook.h).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/grade_options.h"
 #include "cli/json.h"
+#include "platform/exit_codes.h"
 
 #include "gradebook.h"
 #include "signing.h"

@@ -1,7 +1,7 @@
 // `functionlab haptics devices [--json]`: the haptic devices connected, and
 // for each one present but not accessible what to do (docs/haptics.md).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "device/device_enumeration.h"
 

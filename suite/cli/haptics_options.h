@@ -2,7 +2,7 @@
 // What the `haptics` commands share: the options of a run on the simulated
 // clock (one wording in every command's help), reading the scene with its
 // diagnostics printed, and printing a run's ticks and what it had to say.
-#include "cli/option_table.h"
+#include "platform/option_table.h"
 
 #include "probe.h"
 

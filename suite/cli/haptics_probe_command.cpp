@@ -3,8 +3,8 @@
 // simulated device's tool point walks the path while the servo loop runs on
 // the simulated clock. Tests outside this repository read its JSON.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/haptics_options.h"
+#include "platform/exit_codes.h"
 
 #include "device/polyline_path.h"
 #include "probe.h"

@@ -2,8 +2,8 @@
 // device session against a scene, written as a device log (docs/haptics.md,
 // "Device logs") that `haptics replay` plays back.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/haptics_options.h"
+#include "platform/exit_codes.h"
 
 #include "device/device_enumeration.h"
 #include "device/device_recorder.h"

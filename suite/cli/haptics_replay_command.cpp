@@ -2,8 +2,8 @@
 // recorded device session played back through the servo loop on the
 // simulated clock against a scene — the same forces every time.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
 #include "cli/haptics_options.h"
+#include "platform/exit_codes.h"
 
 #include "device/replay_device.h"
 #include "probe.h"

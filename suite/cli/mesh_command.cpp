@@ -2,7 +2,7 @@
 // and write STL, OBJ, PLY, glTF binary or X3D.
 #include "cli/arguments.h"
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "field/field_sampler.h"
 #include "formula/compiler.h"

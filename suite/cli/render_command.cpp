@@ -1,6 +1,6 @@
 // `functionlab render`: one frame of a scene, drawn off screen into a PNG.
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "mesh/scene_meshing.h"
 #include "offscreen_render.h"

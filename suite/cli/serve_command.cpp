@@ -4,7 +4,7 @@
 // connections; stops cleanly on SIGINT and SIGTERM (every applied version is
 // already in DIR's log, so a restart with the same DIR goes on from there).
 #include "cli/commands.h"
-#include "cli/exit_codes.h"
+#include "platform/exit_codes.h"
 
 #include "class_session.h"
 #include "edit_log.h"

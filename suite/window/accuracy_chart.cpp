@@ -14,9 +14,12 @@ ChartCurves ChartCurves::meshing() {
     c.xLabel = AccuracyChart::tr("time per mesh (ms, log scale)");
     c.yLabel = AccuracyChart::tr("max error (of the box diagonal, log scale)");
     c.timeUnit = QStringLiteral("ms");
-    c.lines = {{"dense", AccuracyChart::tr("● dense marching cubes"), QColor(0x86, 0x8e, 0x96)},
-               {"adaptive", AccuracyChart::tr("● adaptive (ours)"), QColor(0x1c, 0x7e, 0xd6)}};
-    c.operatingMethod = c.bandMethod = "adaptive";
+    c.lines = {{measure::Method::Dense, AccuracyChart::tr("● dense marching cubes"),
+                QColor(0x86, 0x8e, 0x96)},
+               {measure::Method::Adaptive, AccuracyChart::tr("● adaptive (ours)"),
+                QColor(0x1c, 0x7e, 0xd6)}};
+    c.operatingMethod = measure::Method::Adaptive;
+    c.bandMethod = measure::Method::Adaptive;
     return c;
 }
 
@@ -26,12 +29,14 @@ ChartCurves ChartCurves::touch() {
     // The mean: a path's few ticks at sharp edges would make the max say little.
     c.yLabel = AccuracyChart::tr("mean contact error (of the diagonal, log scale)");
     c.timeUnit = QStringLiteral("µs");
+    c.unitsPerMillisecond = 1000;
     c.xFloor = 0.01;
     c.yFloor = 1e-17; // touching the function is exact to rounding
-    c.lines = {
-        {"polygons", AccuracyChart::tr("● polygon contact (its mesh)"), QColor(0xe0, 0x8a, 0x1c)},
-        {"function", AccuracyChart::tr("● function contact (ours)"), QColor(0x2a, 0xa0, 0x4a)}};
-    c.operatingMethod = "polygons";
+    c.lines = {{measure::Method::Polygons, AccuracyChart::tr("● polygon contact (its mesh)"),
+                QColor(0xe0, 0x8a, 0x1c)},
+               {measure::Method::Function, AccuracyChart::tr("● function contact (ours)"),
+                QColor(0x2a, 0xa0, 0x4a)}};
+    c.operatingMethod = measure::Method::Polygons;
     return c;
 }
 
@@ -45,12 +50,13 @@ void AccuracyChart::setCurves(ChartCurves curves) {
     setRows({});
 }
 
-void AccuracyChart::setRows(std::vector<bench::AccuracyRow> rows) {
+void AccuracyChart::setRows(std::vector<measure::AccuracyRow> rows) {
     rows_ = std::move(rows);
     // Whole decades round everything measured (time at least 0.01 ms, error at least 1e-7).
     double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-    for (const bench::AccuracyRow& r : rows_) {
-        const double x = std::log10(std::max(r.ms, curves_.xFloor)),
+    for (const measure::AccuracyRow& r : rows_) {
+        const double x = std::log10(
+                         std::max(r.milliseconds * curves_.unitsPerMillisecond, curves_.xFloor)),
                      y = std::log10(std::max(r.maxError, curves_.yFloor));
         xmin = std::min(xmin, x), xmax = std::max(xmax, x);
         ymin = std::min(ymin, y), ymax = std::max(ymax, y);
@@ -85,9 +91,12 @@ QRectF AccuracyChart::plotArea() const {
 }
 
 QPointF AccuracyChart::pointOf(std::size_t i) const {
-    const bench::AccuracyRow& r = rows_[i];
+    const measure::AccuracyRow& r = rows_[i];
     const QRectF a = plotArea();
-    const double x = (std::log10(std::max(r.ms, curves_.xFloor)) - xLo_) / (xHi_ - xLo_);
+    const double x =
+        (std::log10(std::max(r.milliseconds * curves_.unitsPerMillisecond, curves_.xFloor)) -
+         xLo_) /
+        (xHi_ - xLo_);
     const double y = (std::log10(std::max(r.maxError, curves_.yFloor)) - yLo_) / (yHi_ - yLo_);
     return {a.left() + x * a.width(), a.bottom() - y * a.height()};
 }
@@ -139,7 +148,7 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         QPainterPath band;
         bool first = true;
         for (std::size_t i = 0; i < rows_.size(); ++i) {
-            const bench::AccuracyRow& r = rows_[i];
+            const measure::AccuracyRow& r = rows_[i];
             if (r.method != curves_.bandMethod || r.resolution < lod_.first ||
                 r.resolution > lod_.second)
                 continue;
@@ -155,7 +164,7 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
     }
     // One line per method, in resolution order.
     for (const ChartCurves::Line& l : curves_.lines) {
-        const std::string& method = l.method;
+        const measure::Method method = l.method;
         const QColor& colour = l.colour;
         QPainterPath line;
         bool first = true;
@@ -187,7 +196,7 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         p.drawText(q + QPointF(10, -8), tr("now (%1)").arg(rows_[std::size_t(now)].resolution));
     }
     // The legend, in the plot's corner with the fewest points.
-    const bool band = lod_.second > 0 && !curves_.bandMethod.empty();
+    const bool band = lod_.second > 0 && curves_.bandMethod.has_value();
     const double legendHeight = 14.0 * double(curves_.lines.size() + (band ? 1 : 0)) + 4;
     QRectF legend;
     std::size_t fewest = rows_.size() + 1;
@@ -222,14 +231,14 @@ void AccuracyChart::mouseMoveEvent(QMouseEvent* event) {
         QToolTip::hideText();
         return;
     }
-    const bench::AccuracyRow& r = rows_[std::size_t(i)];
+    const measure::AccuracyRow& r = rows_[std::size_t(i)];
     QToolTip::showText(event->globalPosition().toPoint(),
                        tr("%1 at resolution %2\n%3 triangles, %4 evaluations\n%5 %6, max error %7")
-                           .arg(QString::fromStdString(r.method))
+                           .arg(QString::fromLatin1(measure::methodName(r.method)))
                            .arg(r.resolution)
                            .arg(r.triangles)
                            .arg(r.evaluations)
-                           .arg(r.ms, 0, 'g', 3)
+                           .arg(r.milliseconds * curves_.unitsPerMillisecond, 0, 'g', 3)
                            .arg(curves_.timeUnit)
                            .arg(r.maxError, 0, 'g', 3),
                        this);

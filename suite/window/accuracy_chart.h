@@ -5,11 +5,12 @@
 // point — the resolution the view uses now — is ringed, the level of
 // detail's range is a band along the adaptive line; hovering a point
 // says its resolution, triangles and evaluations; clicking one chooses it.
-#include "accuracy_sweep.h"
+#include "measure/accuracy_sweep.h"
 
 #include <QColor>
 #include <QWidget>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,17 +23,20 @@ namespace fl::suite {
 // contact against polygon contact, haptics) the second; more costs come the
 // same way.
 struct ChartCurves {
-    QString xLabel, yLabel, timeUnit; // the rows' `ms` field is in timeUnit
+    QString xLabel, yLabel, timeUnit; // the chart shows time in timeUnit
+    double unitsPerMillisecond = 1;   // the rows' milliseconds in timeUnit
     double xFloor = 0.01;             // the least time shown
     double yFloor = 1e-7;             // the least error shown
     struct Line {
-        std::string method;
+        measure::Method method;
         QString legend;
         QColor colour;
     };
     std::vector<Line> lines;
-    std::string operatingMethod; // whose row nearest the operating resolution is ringed
-    std::string bandMethod;      // whose rows within the level of detail's range are banded
+    measure::Method operatingMethod =
+        measure::Method::Adaptive; // whose row nearest the operating resolution is ringed
+    std::optional<measure::Method>
+        bandMethod; // whose rows within the level of detail's range are banded
     static ChartCurves meshing();
     static ChartCurves touch();
 };
@@ -45,8 +49,8 @@ class AccuracyChart : public QWidget {
     void setCurves(ChartCurves curves);
     const ChartCurves& curves() const { return curves_; }
 
-    void setRows(std::vector<bench::AccuracyRow> rows);
-    const std::vector<bench::AccuracyRow>& rows() const { return rows_; }
+    void setRows(std::vector<measure::AccuracyRow> rows);
+    const std::vector<measure::AccuracyRow>& rows() const { return rows_; }
     void setOperatingResolution(double resolution);
     double operatingResolution() const { return operating_; }
     // The level of detail's range (coarsest, finest), drawn as a band along
@@ -71,7 +75,7 @@ class AccuracyChart : public QWidget {
   private:
     QRectF plotArea() const;
 
-    std::vector<bench::AccuracyRow> rows_;
+    std::vector<measure::AccuracyRow> rows_;
     ChartCurves curves_ = ChartCurves::meshing();
     double operating_ = 0;
     std::pair<double, double> lod_{0, 0};

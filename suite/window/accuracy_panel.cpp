@@ -2,7 +2,8 @@
 
 #include "plain_text.h"
 
-#include "haptics_bench.h"
+#include "haptics/haptics_bench.h"
+#include "measure/accuracy_sweep.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 
@@ -175,14 +176,14 @@ void AccuracyPanel::setCost(Cost cost) {
 
 namespace {
 
-// A touch row as the chart draws it: µs per tick in `ms`, the mean contact
-// error where the chart reads its error (ChartCurves::touch's y label).
-bench::AccuracyRow touchRow(const bench::TickCost& t) {
-    bench::AccuracyRow r;
-    r.method = t.resolution > 0 ? "polygons" : "function";
+// A touch row as the chart draws it: the median tick's time, the mean
+// contact error where the chart reads its error (ChartCurves::touch's y label).
+measure::AccuracyRow touchRow(const haptics::TickCost& t) {
+    measure::AccuracyRow r;
+    r.method = t.resolution > 0 ? measure::Method::Polygons : measure::Method::Function;
     r.resolution = t.resolution;
     r.triangles = t.triangles;
-    r.ms = t.p50Us;
+    r.milliseconds = t.p50Us / 1000;
     r.maxError = t.meanError;
     r.meanError = t.meanError;
     return r;
@@ -202,7 +203,7 @@ void AccuracyPanel::measure() {
     status_->setText(tr("measuring…"));
     running_ = true;
     // What the worker says, on the interface thread (nothing once the panel is gone).
-    auto progress = [this, alive = alive_](std::vector<bench::AccuracyRow> rows, int done) {
+    auto progress = [this, alive = alive_](std::vector<measure::AccuracyRow> rows, int done) {
         QMetaObject::invokeMethod(
             this,
             [this, rows = std::move(rows), done, alive] {
@@ -212,7 +213,7 @@ void AccuracyPanel::measure() {
             },
             Qt::QueuedConnection);
     };
-    auto finish = [this, alive = alive_](std::vector<bench::AccuracyRow> rows, QString summary) {
+    auto finish = [this, alive = alive_](std::vector<measure::AccuracyRow> rows, QString summary) {
         QMetaObject::invokeMethod(
             this,
             [this, rows = std::move(rows), summary, alive] {
@@ -233,12 +234,13 @@ void AccuracyPanel::measure() {
             if (r <= 128) resolutions.push_back(r);
         progress_->setRange(0, int(resolutions.size()) + 1);
         worker_ = std::thread([this, field, resolutions, progress, finish] {
-            std::vector<bench::AccuracyRow> rows;
-            const auto path = bench::pathUnderSurface(*field);
-            bench::touchSweep(*field, path, resolutions, 1, &stop_, [&](const bench::TickCost& t) {
-                rows.push_back(touchRow(t));
-                progress(rows, int(rows.size()));
-            });
+            std::vector<measure::AccuracyRow> rows;
+            const auto path = haptics::pathUnderSurface(*field);
+            haptics::touchSweep(*field, path, resolutions, 1, &stop_,
+                                [&](const haptics::TickCost& t) {
+                                    rows.push_back(touchRow(t));
+                                    progress(rows, int(rows.size()));
+                                });
             finish(rows, stop_          ? tr("cancelled")
                          : path.empty() ? tr("no surface to touch was found in the box")
                                         : touchSummary(rows));
@@ -247,43 +249,43 @@ void AccuracyPanel::measure() {
     }
     progress_->setRange(0, int(resolutions_.size()));
     worker_ = std::thread([this, field, resolutions = resolutions_, progress, finish] {
-        std::vector<bench::AccuracyRow> rows;
-        bench::SweepOptions o;
+        std::vector<measure::AccuracyRow> rows;
+        measure::SweepOptions o;
         o.threads = 1; // the interface keeps a core
         int done = 0;
         for (double r : resolutions) {
             if (stop_) break;
-            const auto more = bench::runAccuracySweep(*field, {r}, o);
+            const auto more = measure::runAccuracySweep(*field, {r}, o);
             rows.insert(rows.end(), more.begin(), more.end());
             progress(rows, ++done);
         }
         finish(rows,
-               stop_ ? tr("cancelled") : QString::fromStdString(bench::accuracySummary(rows)));
+               stop_ ? tr("cancelled") : QString::fromStdString(measure::accuracySummary(rows)));
     });
 }
 
-QString AccuracyPanel::touchSummary(const std::vector<bench::AccuracyRow>& rows) {
-    const bench::AccuracyRow* function = nullptr;
-    for (const bench::AccuracyRow& r : rows)
-        if (r.method == "function") function = &r;
+QString AccuracyPanel::touchSummary(const std::vector<measure::AccuracyRow>& rows) {
+    const measure::AccuracyRow* function = nullptr;
+    for (const measure::AccuracyRow& r : rows)
+        if (r.method == measure::Method::Function) function = &r;
     if (!function) return {};
     QString out = tr("touching the function: %1 µs a tick, mean error %2")
-                      .arg(function->ms, 0, 'g', 3)
+                      .arg(function->milliseconds * 1000, 0, 'g', 3)
                       .arg(function->maxError, 0, 'e', 1);
-    for (const bench::AccuracyRow& r : rows)
-        if (r.method == "polygons")
+    for (const measure::AccuracyRow& r : rows)
+        if (r.method == measure::Method::Polygons)
             out += tr("\nits %1 triangles (resolution %2): %3 µs, mean error %4")
                        .arg(r.triangles)
                        .arg(r.resolution)
-                       .arg(r.ms, 0, 'g', 3)
+                       .arg(r.milliseconds * 1000, 0, 'g', 3)
                        .arg(r.maxError, 0, 'e', 1);
     return out;
 }
 
 bool AccuracyPanel::chooseTargetError(double target) {
     double best = 0;
-    const std::string& method = chart_->curves().operatingMethod;
-    for (const bench::AccuracyRow& r : chart_->rows())
+    const measure::Method method = chart_->curves().operatingMethod;
+    for (const measure::AccuracyRow& r : chart_->rows())
         if (r.method == method && r.maxError <= target && (best == 0 || r.resolution < best))
             best = r.resolution;
     if (best == 0) return false;

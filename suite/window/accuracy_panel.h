@@ -42,7 +42,7 @@ class AccuracyPanel : public Panel {
     // The resolutions a sweep measures (by default 8 to 256).
     static std::vector<double> sweepResolutions();
     // The touch sweep's rows in words (the status line after a touch sweep).
-    static QString touchSummary(const std::vector<bench::AccuracyRow>& rows);
+    static QString touchSummary(const std::vector<measure::AccuracyRow>& rows);
     void setResolutions(std::vector<double> resolutions);
     const std::vector<double>& resolutions() const { return resolutions_; }
 

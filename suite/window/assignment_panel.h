@@ -9,7 +9,7 @@
 #include "assignment.h"
 #include "checker.h"
 
-#include "newest_only_worker.h"
+#include "platform/newest_only_worker.h"
 
 #include <memory>
 #include <optional>
@@ -73,7 +73,7 @@ class AssignmentPanel : public Panel {
         int assignment; // current_ when asked
         std::vector<grading::Requirement> requirements;
     };
-    NewestOnlyWorker<Check, grading::CheckReport> checker_;
+    platform::NewestOnlyWorker<Check, grading::CheckReport> checker_;
 };
 
 } // namespace fl::suite

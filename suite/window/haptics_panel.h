@@ -8,8 +8,8 @@
 // pressed a little into the surface, and the view draws the tool, the proxy
 // and the force as an arrow.
 #include "force_graph.h"
-#include "newest_only_worker.h"
 #include "panel.h"
+#include "platform/newest_only_worker.h"
 
 #include "field/box3.h"
 #include "field/vec3.h"
@@ -123,13 +123,13 @@ class HapticsPanel : public Panel {
     std::unique_ptr<haptics::ServoLoop> loop_;
     std::shared_ptr<const haptics::TangibleScene> snapshot_;
     double sceneSize_ = 1;
-    NewestOnlyWorker<Request, std::shared_ptr<const haptics::TangibleScene>> worker_;
+    platform::NewestOnlyWorker<Request, std::shared_ptr<const haptics::TangibleScene>> worker_;
     struct ColourRequest {
         std::shared_ptr<const mesh::SceneMeshes> frame;
         std::shared_ptr<const haptics::TangibleScene> tangible;
         int kind = 0; // scene::TangibleKind
     };
-    NewestOnlyWorker<ColourRequest, std::shared_ptr<const mesh::SceneMeshes>> colourer_;
+    platform::NewestOnlyWorker<ColourRequest, std::shared_ptr<const mesh::SceneMeshes>> colourer_;
 };
 
 } // namespace fl::suite

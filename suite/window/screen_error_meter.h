@@ -6,7 +6,7 @@
 // thread. Only the newest request is measured; the interface never waits.
 #include "mesh/scene_meshing.h"
 
-#include "newest_only_worker.h"
+#include "platform/newest_only_worker.h"
 
 #include <QObject>
 
@@ -43,7 +43,7 @@ class ScreenErrorMeter : public QObject {
   private:
     std::shared_ptr<const mesh::SceneMeshes> frame_;
     const scene::Node* focus_ = nullptr;
-    NewestOnlyWorker<Request, QString> worker_;
+    platform::NewestOnlyWorker<Request, QString> worker_;
 };
 
 } // namespace fl::suite

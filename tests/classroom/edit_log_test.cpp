@@ -2,7 +2,7 @@
 // a new class on the same folder; any version can be fetched for replay.
 #include "class_session.h"
 #include "edit_log.h"
-#include "sqlite_database.h"
+#include "platform/sqlite_database.h"
 
 #include "scenes.h"
 #include "session_harness.h"
@@ -216,7 +216,7 @@ TEST(EditLog, ALogThatFailsUnderneathCostsOneRequestNotTheClass) {
     const ConnectionId ana = h.join("Ana");
     h.send(ana, test::editFrame(1, test::classScene("sphere(0, 0, 0, 2)")));
     {
-        grading::SqliteDatabase other((dir / EditLog::kLogFile).string());
+        fl::platform::SqliteDatabase other((dir / EditLog::kLogFile).string());
         other.execute("DROP TABLE versions");
     }
     h.send(ana, R"({"type":"history","version":1})");

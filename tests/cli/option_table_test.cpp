@@ -1,6 +1,6 @@
 // The option table every `functionlab` subcommand reads its command line
 // through: each kind of option, its errors, and the help made from it.
-#include "cli/option_table.h"
+#include "platform/option_table.h"
 
 #include <gtest/gtest.h>
 

@@ -61,6 +61,21 @@ void raw(const std::string& path, const std::string& sql) {
 
 } // namespace
 
+TEST(Gradebook, ARosterNameMayHoldALineBreak) {
+    // An LMS export quotes a name with a line break in it: one student, not
+    // two broken rows (the roster was once read line by line).
+    Gradebook book(freshPath("roster-newline"));
+    const auto problems = book.importRoster(
+        "\xEF\xBB\xBFid,name\r\nalice,\"Alice\nLiddell\"\r\nbob,Bob\r\ncarol,\"Carol");
+    ASSERT_EQ(problems.size(), 1u); // the unclosed quote, on the line it opens
+    EXPECT_EQ(problems[0].line, 5);
+    const auto students = book.students();
+    ASSERT_EQ(students.size(), 2u);
+    EXPECT_EQ(students[0].id, "alice");
+    EXPECT_EQ(students[0].name, "Alice\nLiddell");
+    EXPECT_EQ(students[1].id, "bob");
+}
+
 TEST(Gradebook, RosterGradesAndResultsRoundTrip) {
     const std::string path = freshPath("roundtrip");
     Gradebook book(path);
@@ -110,8 +125,8 @@ TEST(Gradebook, ANewerSchemaIsRefusedNotDamaged) {
     const std::string path = freshPath("newer");
     { Gradebook book(path); }
     raw(path, "PRAGMA user_version = 99");
-    EXPECT_THROW(Gradebook{path}, SqliteError);
-    EXPECT_THROW(Gradebook{"/nonexistent/folder/gb.sqlite"}, SqliteError);
+    EXPECT_THROW(Gradebook{path}, fl::platform::SqliteError);
+    EXPECT_THROW(Gradebook{"/nonexistent/folder/gb.sqlite"}, fl::platform::SqliteError);
 }
 
 TEST(GradeExport, FormulasAreEscapedAndQuotesDoubled) {

@@ -53,7 +53,7 @@ class AccuracyPanelTest : public QObject {
         // Finer is more accurate: the adaptive error falls from 8 to 96.
         double first = 0, last = 0;
         for (const auto& r : rows)
-            if (r.method == "adaptive") (first == 0 ? first : last) = r.maxError;
+            if (r.method == fl::measure::Method::Adaptive) (first == 0 ? first : last) = r.maxError;
         QVERIFY2(last < first, qPrintable(QStringLiteral("%1 -> %2").arg(first).arg(last)));
         // Clicking a point chooses its resolution.
         QSignalSpy chosen(&panel, &suite::AccuracyPanel::resolutionChosen);
@@ -129,11 +129,11 @@ class AccuracyPanelTest : public QObject {
         QVERIFY(done.wait(120000));
         const auto& rows = panel.chart()->rows();
         QCOMPARE(rows.size(), std::size_t(4));
-        QCOMPARE(rows[0].method, std::string("function"));
+        QVERIFY(rows[0].method == fl::measure::Method::Function);
         QVERIFY2(rows[0].maxError < 1e-12, qPrintable(QString::number(rows[0].maxError)));
         for (std::size_t i = 1; i < rows.size(); ++i) {
-            QCOMPARE(rows[i].method, std::string("polygons"));
-            QVERIFY(rows[i].triangles > 0 && rows[i].ms > 0);
+            QVERIFY(rows[i].method == fl::measure::Method::Polygons);
+            QVERIFY(rows[i].triangles > 0 && rows[i].milliseconds > 0);
             QVERIFY(rows[i].maxError > rows[0].maxError); // the chart's error: the mean
         }
         QVERIFY2(rows.back().maxError < rows[1].maxError,

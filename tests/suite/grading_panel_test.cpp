@@ -111,7 +111,7 @@ class GradingPanelTest : public QObject {
         }
         QVERIFY(QFile::copy(path_, copy));
         {
-            grading::SqliteDatabase db(copy.toStdString());
+            fl::platform::SqliteDatabase db(copy.toStdString());
             db.execute("UPDATE results SET points = 0");
         }
         suite::GradingPanel panel;

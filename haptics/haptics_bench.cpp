@@ -1,5 +1,7 @@
 #include "haptics_bench.h"
 
+#include "measure/percentiles.h"
+
 #include "device/device_limits.h"
 #include "field/ray_march.h"
 #include "force_model.h"
@@ -16,10 +18,9 @@
 #include <numbers>
 #include <thread>
 
-namespace fl::bench {
+namespace fl::haptics {
 
 using field::Vec3;
-using haptics::ContactKind;
 
 namespace {
 
@@ -27,21 +28,18 @@ using Clock = std::chrono::steady_clock;
 
 void percentiles(std::vector<double> us, TickCost& row) {
     if (us.empty()) return;
-    std::sort(us.begin(), us.end());
-    auto at = [&](double q) {
-        return us[std::min(us.size() - 1, std::size_t(q * double(us.size() - 1) + 0.5))];
-    };
-    row.p50Us = at(0.5);
-    row.p99Us = at(0.99);
-    row.p999Us = at(0.999);
-    row.maxUs = us.back();
+    const measure::Spread s = measure::spreadOf(std::move(us));
+    row.p50Us = s.p50;
+    row.p99Us = s.p99;
+    row.p999Us = s.p999;
+    row.maxUs = s.max;
 }
 
 // Ticks the model along `points` (scene coordinates) at 1 kHz, `passes`
 // times; each tick timed alone. `error(tick, force sample)` says how far that
 // tick's touch is from the true one (negative: not counted).
 template <class Error>
-TickCost walk(const std::string& name, std::shared_ptr<const haptics::TangibleScene> scene,
+TickCost walk(const std::string& name, std::shared_ptr<const TangibleScene> scene,
               const std::vector<Vec3>& points, double seconds, int passes, Error error) {
     TickCost row;
     row.name = name;
@@ -50,8 +48,7 @@ TickCost walk(const std::string& name, std::shared_ptr<const haptics::TangibleSc
     std::size_t errorCount = 0;
     const double rate = 1000;
     for (int pass = 0; pass < passes; ++pass) {
-        haptics::ForceModel model(
-            haptics::settingsFor(haptics::limitsOf(haptics::DeviceModel::Simulated), rate));
+        ForceModel model(settingsFor(limitsOf(DeviceModel::Simulated), rate));
         model.setScene(scene);
         const int ticks = int(seconds * rate);
         // Along the polyline at constant speed, by arc length.
@@ -72,7 +69,7 @@ TickCost walk(const std::string& name, std::shared_ptr<const haptics::TangibleSc
                                          span > 0 ? at.back() / seconds / span : 0);
             const std::int64_t ns = std::int64_t(double(k) * 1e6);
             const auto begin = Clock::now();
-            const haptics::ForceSample f = model.tick({p, v, {ns, ns, 0}});
+            const ForceSample f = model.tick({p, v, {ns, ns, 0}});
             const auto end = Clock::now();
             us.push_back(std::chrono::duration<double, std::micro>(end - begin).count());
             ++row.ticks;
@@ -98,9 +95,9 @@ std::unique_ptr<scene::Scene> read(const std::filesystem::path& file,
 }
 
 // Corner to corner through the tangible shapes' boxes, and back.
-std::vector<Vec3> throughShapes(const haptics::TangibleScene& t) {
+std::vector<Vec3> throughShapes(const TangibleScene& t) {
     field::Box3 all{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-    for (const haptics::TangibleShape& s : t.shapes) {
+    for (const TangibleShape& s : t.shapes) {
         const field::Box3 b = field::boundsOf(s.container, s.toScene);
         for (std::size_t k = 0; k < 3; ++k) {
             all.lo[k] = std::min(all.lo[k], b.lo[k]);
@@ -144,8 +141,8 @@ std::vector<TickCost> touchSweep(const field::ImplicitField& field, const std::v
     std::vector<TickCost> rows;
     if (path.size() < 2) return rows;
     // The shape as a surface with nothing else: contact alone is measured.
-    haptics::TangibleScene scene;
-    haptics::TangibleShape shape;
+    TangibleScene scene;
+    TangibleShape shape;
     shape.name = "shape";
     shape.field = std::make_shared<const field::ImplicitField>(field);
     shape.container = field.box;
@@ -157,8 +154,8 @@ std::vector<TickCost> touchSweep(const field::ImplicitField& field, const std::v
     // distance from the true proxy), a fraction of the box diagonal.
     const double diagonal = field.box.diagonal();
     field::FieldSampler sampler(field);
-    std::vector<haptics::ForceSample> truth;
-    auto onSurface = [&](std::size_t, const haptics::ForceSample& f) {
+    std::vector<ForceSample> truth;
+    auto onSurface = [&](std::size_t, const ForceSample& f) {
         if (truth.size() < 1u << 24) truth.push_back(f);
         if (f.contact != ContactKind::Surface) return -1.0;
         const formula::Dual d = sampler.gradient(f.proxy);
@@ -169,11 +166,10 @@ std::vector<TickCost> touchSweep(const field::ImplicitField& field, const std::v
         rows.push_back(row);
         if (onRow) onRow(row);
     };
-    add(walk("function", std::make_shared<haptics::TangibleScene>(scene), path, 2, passes,
-             onSurface));
-    auto againstTruth = [&](std::size_t k, const haptics::ForceSample& f) {
+    add(walk("function", std::make_shared<TangibleScene>(scene), path, 2, passes, onSurface));
+    auto againstTruth = [&](std::size_t k, const ForceSample& f) {
         if (k >= truth.size()) return -1.0;
-        const haptics::ForceSample& t = truth[k];
+        const ForceSample& t = truth[k];
         if (t.contact != ContactKind::Surface && f.contact != ContactKind::Surface) return -1.0;
         return field::length(field::minus(f.proxy, t.proxy)) / diagonal;
     };
@@ -190,12 +186,12 @@ std::vector<TickCost> touchSweep(const field::ImplicitField& field, const std::v
                                  (m.error.empty() ? "no triangles" : m.error));
             continue;
         }
-        haptics::TangibleScene polygons = scene;
-        polygons.shapes.front().triangles = std::make_shared<const haptics::TriangleBvh>(m.mesh);
+        TangibleScene polygons = scene;
+        polygons.shapes.front().triangles = std::make_shared<const TriangleBvh>(m.mesh);
         char name[48];
         std::snprintf(name, sizeof name, "polygons at %g", r);
-        TickCost row = walk(name, std::make_shared<haptics::TangibleScene>(polygons), path, 2,
-                            passes, againstTruth);
+        TickCost row =
+            walk(name, std::make_shared<TangibleScene>(polygons), path, 2, passes, againstTruth);
         row.resolution = r;
         row.triangles = m.mesh.triangleCount();
         add(row);
@@ -205,7 +201,7 @@ std::vector<TickCost> touchSweep(const field::ImplicitField& field, const std::v
 
 HapticsBenchResult runHapticsBench(const HapticsBenchOptions& o) {
     HapticsBenchResult out;
-    auto none = [](std::size_t, const haptics::ForceSample&) { return -1.0; };
+    auto none = [](std::size_t, const ForceSample&) { return -1.0; };
     // 1. One force tick, per example scene.
     for (const auto& [name, file, at] :
          {std::tuple<const char*, const char*, double>{"watermelon", "watermelon.x3d", 0},
@@ -213,8 +209,7 @@ HapticsBenchResult runHapticsBench(const HapticsBenchOptions& o) {
           {"shark", "shark.x3d", 0}}) {
         const auto scene = read(o.examples / file, out.notes);
         if (!scene) continue;
-        auto t =
-            std::make_shared<const haptics::TangibleScene>(haptics::makeTangibleScene(*scene, at));
+        auto t = std::make_shared<const TangibleScene>(makeTangibleScene(*scene, at));
         if (t->empty()) {
             out.notes.push_back(std::string(name) + ": nothing tangible");
             continue;
@@ -226,7 +221,7 @@ HapticsBenchResult runHapticsBench(const HapticsBenchOptions& o) {
     // 2. Function against polygon contact on the watermelon's surface: a
     // circle 0.6 mm under the sphere's skin, clear of the cut.
     if (const auto melon = read(o.examples / "watermelon.x3d", out.notes)) {
-        const haptics::TangibleScene whole = haptics::makeTangibleScene(*melon, 0);
+        const TangibleScene whole = makeTangibleScene(*melon, 0);
         if (!whole.shapes.empty()) {
             std::vector<Vec3> path{{0.6, 0, -1.3}};
             for (int k = 0; k <= 64; ++k) {
@@ -240,18 +235,17 @@ HapticsBenchResult runHapticsBench(const HapticsBenchOptions& o) {
 
     // 3. The real-time loop: the mouse's device resting inside the watermelon.
     if (const auto melon = read(o.examples / "watermelon.x3d", out.notes)) {
-        haptics::PointerDevice device(haptics::limitsOf(haptics::DeviceModel::Simulated));
+        PointerDevice device(limitsOf(DeviceModel::Simulated));
         device.moveTo({0, 0, -0.9});
-        haptics::ServoOptions so;
+        ServoOptions so;
         so.rateHz = o.rateHz;
-        haptics::ServoLoop loop(device, so);
-        loop.setScene(
-            std::make_shared<const haptics::TangibleScene>(haptics::makeTangibleScene(*melon, 0)));
+        ServoLoop loop(device, so);
+        loop.setScene(std::make_shared<const TangibleScene>(makeTangibleScene(*melon, 0)));
         loop.start();
         std::this_thread::sleep_for(std::chrono::duration<double>(o.loopSeconds));
         loop.stop();
-        const haptics::JitterFigures j = loop.jitter();
-        const haptics::ServoStatus s = loop.status();
+        const JitterFigures j = loop.jitter();
+        const ServoStatus s = loop.status();
         out.loopRateHz = s.measuredRateHz;
         out.loopTicks = s.ticks;
         out.realTime = s.realTime;
@@ -337,4 +331,4 @@ std::string hapticsBenchJson(const HapticsBenchResult& r) {
     return s;
 }
 
-} // namespace fl::bench
+} // namespace fl::haptics

@@ -12,7 +12,7 @@
 struct sqlite3;
 struct sqlite3_stmt;
 
-namespace fl::grading {
+namespace fl::platform {
 
 struct SqliteError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -81,4 +81,4 @@ class SqliteStatement {
     sqlite3_stmt* statement_ = nullptr;
 };
 
-} // namespace fl::grading
+} // namespace fl::platform

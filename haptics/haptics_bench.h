@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace fl::bench {
+namespace fl::haptics {
 
 struct HapticsBenchOptions {
     std::filesystem::path examples; // courseware/examples
@@ -67,4 +67,4 @@ std::vector<field::Vec3> pathUnderSurface(const field::ImplicitField& field, dou
 std::string hapticsBenchText(const HapticsBenchResult& r);
 std::string hapticsBenchJson(const HapticsBenchResult& r);
 
-} // namespace fl::bench
+} // namespace fl::haptics

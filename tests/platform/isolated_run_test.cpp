@@ -3,7 +3,7 @@
 // a child that really tries cannot reach the network, write, truncate or
 // delete a file, or leave a process behind (issue 27 §2). Ordinary exits
 // come back as they were.
-#include "isolated_run.h"
+#include "platform/isolated_run.h"
 
 #include "../common/required_tool.h"
 
@@ -21,7 +21,7 @@
 #include <thread>
 #include <unistd.h>
 
-using namespace fl::grading;
+using namespace fl::platform;
 
 namespace {
 

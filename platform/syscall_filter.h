@@ -13,11 +13,11 @@
 // Everything else is allowed. x86-64 and AArch64; elsewhere it is not
 // installed (installSyscallFilter says so).
 
-namespace fl::grading {
+namespace fl::platform {
 
 // Installs the filter on the calling thread and all it will execute (with
 // no_new_privs). False when the kernel or the architecture cannot.
 // Async-signal-safe: it is called between fork and exec.
 bool installSyscallFilter();
 
-} // namespace fl::grading
+} // namespace fl::platform

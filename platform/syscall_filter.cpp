@@ -1,4 +1,4 @@
-#include "syscall_filter.h"
+#include "platform/syscall_filter.h"
 
 #include <cerrno>
 #include <cstddef>
@@ -10,7 +10,7 @@
 #include <sys/socket.h>
 #include <sys/syscall.h>
 
-namespace fl::grading {
+namespace fl::platform {
 
 #if defined(__x86_64__) || defined(__aarch64__)
 
@@ -188,4 +188,4 @@ bool installSyscallFilter() {
 
 #endif
 
-} // namespace fl::grading
+} // namespace fl::platform

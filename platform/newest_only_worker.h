@@ -14,7 +14,7 @@
 #include <optional>
 #include <thread>
 
-namespace fl::suite {
+namespace fl::platform {
 
 template <class Input, class Result>
 class NewestOnlyWorker {
@@ -79,4 +79,4 @@ class NewestOnlyWorker {
     std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
 };
 
-} // namespace fl::suite
+} // namespace fl::platform

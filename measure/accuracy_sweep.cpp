@@ -1,4 +1,4 @@
-#include "accuracy_sweep.h"
+#include "measure/accuracy_sweep.h"
 
 #include "mesh/dual_contouring.h"
 #include "mesh/marching_cubes.h"
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <limits>
 
-namespace fl::bench {
+namespace fl::measure {
 
 namespace {
 std::string num(double v, const char* format = "%.4g") {
@@ -18,6 +18,20 @@ std::string num(double v, const char* format = "%.4g") {
     return buf;
 }
 } // namespace
+
+const char* methodName(Method method) {
+    switch (method) {
+    case Method::Adaptive:
+        return "adaptive";
+    case Method::Dense:
+        return "dense";
+    case Method::Function:
+        return "function";
+    case Method::Polygons:
+        return "polygons";
+    }
+    return "adaptive";
+}
 
 std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
                                           const std::vector<double>& resolutions,
@@ -36,7 +50,7 @@ std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
         const mesh::MeshResult a = mesh::meshImplicit(open, o);
         if (a.ok()) {
             const mesh::SurfaceError e = mesh::measureSurfaceError(open, a.mesh);
-            rows.push_back({"adaptive", res, a.mesh.triangleCount(),
+            rows.push_back({Method::Adaptive, res, a.mesh.triangleCount(),
                             a.stats.evaluations.points + a.stats.evaluations.gradients,
                             a.stats.evaluations.intervals, a.stats.milliseconds, e.max, e.mean});
         } else if (skipped) {
@@ -45,7 +59,7 @@ std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
         }
         const mesh::DenseResult d = mesh::marchingCubes(open, res, options.threads);
         const mesh::SurfaceError e = mesh::measureSurfaceError(open, d.mesh);
-        rows.push_back({"dense", res, d.mesh.triangleCount(), d.evaluations.points, 0,
+        rows.push_back({Method::Dense, res, d.mesh.triangleCount(), d.evaluations.points, 0,
                         d.milliseconds, e.max, e.mean});
     }
     return rows;
@@ -57,8 +71,8 @@ std::string accuracyTableText(const std::vector<AccuracyRow>& rows) {
     for (const AccuracyRow& r : rows) {
         char line[200];
         std::snprintf(line, sizeof line, "%-9s %10.4g %10zu %12zu %9.1f %11.3e %11.3e\n",
-                      r.method.c_str(), r.resolution, r.triangles, r.evaluations, r.ms, r.maxError,
-                      r.meanError);
+                      methodName(r.method), r.resolution, r.triangles, r.evaluations,
+                      r.milliseconds, r.maxError, r.meanError);
         out += line;
     }
     return out + accuracySummary(rows);
@@ -69,10 +83,12 @@ std::string accuracyJson(const std::vector<AccuracyRow>& rows) {
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const AccuracyRow& r = rows[i];
         out += i ? ",\n " : "";
-        out += "{\"method\":\"" + r.method + "\",\"resolution\":" + num(r.resolution, "%.17g") +
+        out += "{\"method\":\"" + std::string(methodName(r.method)) +
+               "\",\"resolution\":" + num(r.resolution, "%.17g") +
                ",\"triangles\":" + std::to_string(r.triangles) +
                ",\"evaluations\":" + std::to_string(r.evaluations) +
-               ",\"ms\":" + num(r.ms, "%.6g") + ",\"max_error\":" + num(r.maxError, "%.6g") +
+               ",\"ms\":" + num(r.milliseconds, "%.6g") +
+               ",\"max_error\":" + num(r.maxError, "%.6g") +
                ",\"mean_error\":" + num(r.meanError, "%.6g") + "}";
     }
     return out + "]\n";
@@ -82,11 +98,11 @@ namespace {
 // A method's `value` at a max error, read off the log-log line between its
 // two rows whose errors bracket it; the row itself when only finer rows exist.
 template <class Value>
-std::optional<double> atError(const std::vector<AccuracyRow>& rows, const std::string& method,
-                              double error, Value value) {
+std::optional<double> atError(const std::vector<AccuracyRow>& rows, Method method, double error,
+                              Value value) {
     const AccuracyRow *above = nullptr, *below = nullptr;
     for (const AccuracyRow& r : rows) {
-        if (r.method != method || r.ms <= 0 || r.maxError <= 0) continue;
+        if (r.method != method || r.milliseconds <= 0 || r.maxError <= 0) continue;
         if (r.maxError > error && (!above || r.maxError < above->maxError)) above = &r;
         if (r.maxError <= error && (!below || r.maxError > below->maxError)) below = &r;
     }
@@ -99,13 +115,13 @@ std::optional<double> atError(const std::vector<AccuracyRow>& rows, const std::s
 }
 } // namespace
 
-std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
+std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, Method method,
                                   double error) {
-    return atError(rows, method, error, [](const AccuracyRow& r) { return r.ms; });
+    return atError(rows, method, error, [](const AccuracyRow& r) { return r.milliseconds; });
 }
 
-std::optional<double> evaluationsAtError(const std::vector<AccuracyRow>& rows,
-                                         const std::string& method, double error) {
+std::optional<double> evaluationsAtError(const std::vector<AccuracyRow>& rows, Method method,
+                                         double error) {
     return atError(rows, method, error, [](const AccuracyRow& r) { return double(r.evaluations); });
 }
 
@@ -117,43 +133,48 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
         top = std::max(top, r.resolution);
     const AccuracyRow *a = nullptr, *d = nullptr;
     for (const AccuracyRow& r : rows)
-        if (r.resolution == top) (r.method == "adaptive" ? a : d) = &r;
-    if (a && d && a->ms > 0 && a->evaluations > 0)
-        out += "at resolution " + num(top) + ": adaptive " + num(d->ms / a->ms, "%.1f") +
-               "x faster, " + num(double(d->evaluations) / double(a->evaluations), "%.1f") +
+        if (r.resolution == top) (r.method == Method::Adaptive ? a : d) = &r;
+    if (a && d && a->milliseconds > 0 && a->evaluations > 0)
+        out += "at resolution " + num(top) + ": adaptive " +
+               num(d->milliseconds / a->milliseconds, "%.1f") + "x faster, " +
+               num(double(d->evaluations) / double(a->evaluations), "%.1f") +
                "x fewer evaluations; max error adaptive " + num(a->maxError, "%.2e") + ", dense " +
                num(d->maxError, "%.2e") + "\n";
     // The finest error both reach: each method's fastest row at or below it.
     double adaptiveBest = std::numeric_limits<double>::infinity(), denseBest = adaptiveBest;
     for (const AccuracyRow& r : rows)
-        (r.method == "adaptive" ? adaptiveBest : denseBest) =
-            std::min(r.method == "adaptive" ? adaptiveBest : denseBest, r.maxError);
+        (r.method == Method::Adaptive ? adaptiveBest : denseBest) =
+            std::min(r.method == Method::Adaptive ? adaptiveBest : denseBest, r.maxError);
     const double common = std::max(adaptiveBest, denseBest);
-    auto fastest = [&](const char* method) {
+    auto fastest = [&](Method method) {
         const AccuracyRow* best = nullptr;
         for (const AccuracyRow& r : rows)
-            if (r.method == method && r.maxError <= common && (!best || r.ms < best->ms)) best = &r;
+            if (r.method == method && r.maxError <= common &&
+                (!best || r.milliseconds < best->milliseconds))
+                best = &r;
         return best;
     };
-    const AccuracyRow *fa = fastest("adaptive"), *fd = fastest("dense");
-    if (fa && fd && fa->ms > 0)
+    const AccuracyRow *fa = fastest(Method::Adaptive), *fd = fastest(Method::Dense);
+    if (fa && fd && fa->milliseconds > 0)
         out += "finest error both reach (" + num(common, "%.2e") + "): adaptive " +
-               num(fa->ms, "%.1f") + " ms at resolution " + num(fa->resolution) + ", dense " +
-               num(fd->ms, "%.1f") + " ms at resolution " + num(fd->resolution) + " (" +
-               num(fd->ms / fa->ms, "%.1f") + "x)\n";
+               num(fa->milliseconds, "%.1f") + " ms at resolution " + num(fa->resolution) +
+               ", dense " + num(fd->milliseconds, "%.1f") + " ms at resolution " +
+               num(fd->resolution) + " (" + num(fd->milliseconds / fa->milliseconds, "%.1f") +
+               "x)\n";
     // The swept resolutions rarely hit that error exactly: each method's
     // time there, read off the straight line (log-log) between its two rows
     // whose errors bracket it (the method whose finest row sets the error
     // takes that row's time).
-    const auto a2 = timeAtError(rows, "adaptive", common), d2 = timeAtError(rows, "dense", common);
+    const auto a2 = timeAtError(rows, Method::Adaptive, common),
+               d2 = timeAtError(rows, Method::Dense, common);
     if (a2 && d2 && *a2 > 0)
         out += "  interpolated at that error: adaptive " + num(*a2, "%.1f") + " ms, dense " +
                num(*d2, "%.1f") + " ms (" + num(*d2 / *a2, "%.1f") + "x)\n";
     // "256^3-equivalent": what the adaptive mesher evaluates to reach the
     // error of dense marching cubes at 256 (read off its own line).
     for (const AccuracyRow& r : rows) {
-        if (r.method != "dense" || r.resolution != 256 || r.evaluations == 0) continue;
-        if (const auto e = evaluationsAtError(rows, "adaptive", r.maxError))
+        if (r.method != Method::Dense || r.resolution != 256 || r.evaluations == 0) continue;
+        if (const auto e = evaluationsAtError(rows, Method::Adaptive, r.maxError))
             out += "at dense 256's error (" + num(r.maxError, "%.2e") + "): adaptive " +
                    num(*e, "%.0f") + " evaluations, dense " + std::to_string(r.evaluations) + " (" +
                    num(double(r.evaluations) / *e, "%.1f") + "x fewer)\n";
@@ -165,8 +186,8 @@ std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::str
     const double W = 640, H = 420, left = 70, right = 20, top = 40, bottom = 50;
     double tLo = 1e300, tHi = 0, eLo = 1e300, eHi = 0;
     for (const AccuracyRow& r : rows) {
-        if (r.ms <= 0 || r.maxError <= 0) continue;
-        tLo = std::min(tLo, r.ms), tHi = std::max(tHi, r.ms);
+        if (r.milliseconds <= 0 || r.maxError <= 0) continue;
+        tLo = std::min(tLo, r.milliseconds), tHi = std::max(tHi, r.milliseconds);
         eLo = std::min(eLo, r.maxError), eHi = std::max(eHi, r.maxError);
     }
     if (tHi <= 0) return "<svg xmlns='http://www.w3.org/2000/svg'/>\n";
@@ -203,17 +224,17 @@ std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::str
     s += "<text transform='translate(16 " + num((top + H - bottom) / 2) +
          ") rotate(-90)' text-anchor='middle'>max error / box diagonal</text>\n";
     const struct {
-        const char* method;
+        Method method;
         const char* colour;
-    } series[] = {{"adaptive", "#1f77b4"}, {"dense", "#d62728"}};
+    } series[] = {{Method::Adaptive, "#1f77b4"}, {Method::Dense, "#d62728"}};
     int legend = 0;
     for (const auto& se : series) {
         std::string points;
         for (const AccuracyRow& r : rows)
-            if (r.method == se.method && r.ms > 0 && r.maxError > 0) {
-                points += num(X(r.ms)) + "," + num(Y(r.maxError)) + " ";
-                s += "<circle cx='" + num(X(r.ms)) + "' cy='" + num(Y(r.maxError)) +
-                     "' r='3' fill='" + se.colour + "'><title>" + se.method + " " +
+            if (r.method == se.method && r.milliseconds > 0 && r.maxError > 0) {
+                points += num(X(r.milliseconds)) + "," + num(Y(r.maxError)) + " ";
+                s += "<circle cx='" + num(X(r.milliseconds)) + "' cy='" + num(Y(r.maxError)) +
+                     "' r='3' fill='" + se.colour + "'><title>" + methodName(se.method) + " " +
                      num(r.resolution) + "</title></circle>\n";
             }
         s += "<polyline fill='none' stroke='" + std::string(se.colour) +
@@ -227,4 +248,4 @@ std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::str
     return s + "</svg>\n";
 }
 
-} // namespace fl::bench
+} // namespace fl::measure

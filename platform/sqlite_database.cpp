@@ -1,8 +1,8 @@
-#include "sqlite_database.h"
+#include "platform/sqlite_database.h"
 
 #include <sqlite3.h>
 
-namespace fl::grading {
+namespace fl::platform {
 namespace {
 
 [[noreturn]] void fail(sqlite3* db, const std::string& what) {
@@ -147,4 +147,4 @@ std::string SqliteStatement::columnName(int column) const {
     return name ? name : "";
 }
 
-} // namespace fl::grading
+} // namespace fl::platform

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace fl::bench {
+namespace fl::courseware {
 
 struct GradingBenchOptions {
     int submissions = 200;
@@ -50,4 +50,4 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options);
 std::string gradingBenchText(const GradingBenchResult& r);
 std::string gradingBenchJson(const GradingBenchResult& r);
 
-} // namespace fl::bench
+} // namespace fl::courseware

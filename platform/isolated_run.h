@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fl::grading {
+namespace fl::platform {
 
 enum class Isolation : unsigned char { Bubblewrap, SyscallFilter, LimitsOnly };
 std::string_view
@@ -51,4 +51,4 @@ struct ChildResult {
 
 ChildResult runIsolated(const std::vector<std::string>& argv, const IsolationLimits& limits);
 
-} // namespace fl::grading
+} // namespace fl::platform

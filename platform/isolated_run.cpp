@@ -1,6 +1,6 @@
-#include "isolated_run.h"
+#include "platform/isolated_run.h"
 
-#include "syscall_filter.h"
+#include "platform/syscall_filter.h"
 
 #include <cerrno>
 #include <chrono>
@@ -14,7 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace fl::grading {
+namespace fl::platform {
 namespace {
 
 std::string bubblewrapPath() {
@@ -217,4 +217,4 @@ ChildResult runIsolated(const std::vector<std::string>& command, const Isolation
     return result;
 }
 
-} // namespace fl::grading
+} // namespace fl::platform

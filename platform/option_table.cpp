@@ -1,4 +1,4 @@
-#include "cli/option_table.h"
+#include "platform/option_table.h"
 
 #include <algorithm>
 #include <cctype>

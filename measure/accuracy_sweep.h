@@ -9,16 +9,26 @@
 #include <string>
 #include <vector>
 
-namespace fl::bench {
+namespace fl::measure {
+
+// Who produced a row: the meshers of `bench accuracy` and the Accuracy
+// panel's meshing curve, or the contacts of its touch curve.
+enum class Method : unsigned char {
+    Adaptive, // the adaptive mesher (dual contouring)
+    Dense,    // dense marching cubes
+    Function, // touch: contact with the function itself
+    Polygons, // touch: contact with its triangles
+};
+const char* methodName(Method method); // "adaptive", "dense", "function", "polygons"
 
 struct AccuracyRow {
-    std::string method; // "adaptive" or "dense"
+    Method method = Method::Adaptive;
     double resolution = 0;
     std::size_t triangles = 0;
     std::size_t evaluations = 0; // points + gradients (intervals apart)
     std::size_t intervals = 0;
-    double ms = 0;
-    double maxError = 0; // fraction of the box diagonal
+    double milliseconds = 0; // a mesh's time, or a touch row's median tick
+    double maxError = 0;     // fraction of the box diagonal
     double meanError = 0;
 };
 
@@ -42,10 +52,10 @@ std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::str
 std::string accuracySummary(const std::vector<AccuracyRow>& rows);
 // A method's time at a given max error, read off the log-log line between
 // its two rows whose errors bracket it; none when no row reaches the error.
-std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, const std::string& method,
+std::optional<double> timeAtError(const std::vector<AccuracyRow>& rows, Method method,
                                   double error);
 // The same for its evaluations (points + gradients).
-std::optional<double> evaluationsAtError(const std::vector<AccuracyRow>& rows,
-                                         const std::string& method, double error);
+std::optional<double> evaluationsAtError(const std::vector<AccuracyRow>& rows, Method method,
+                                         double error);
 
-} // namespace fl::bench
+} // namespace fl::measure

@@ -1,8 +1,10 @@
 #include "grading_bench.h"
 
-#include "batch_grading.h"
+#include "measure/percentiles.h"
+
 #include "catalogue.h"
-#include "checker.h"
+#include "grading/batch_grading.h"
+#include "grading/checker.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,7 +14,7 @@
 #include <random>
 #include <sstream>
 
-namespace fl::bench {
+namespace fl::courseware {
 namespace {
 
 std::string readText(const std::filesystem::path& p) {
@@ -20,13 +22,6 @@ std::string readText(const std::filesystem::path& p) {
     std::stringstream s;
     s << in.rdbuf();
     return s.str();
-}
-
-double percentile(std::vector<double> v, double q) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const std::size_t i = std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5));
-    return v[i];
 }
 
 std::string number(double v, const char* format = "%.3g") {
@@ -42,7 +37,7 @@ void replaceOnce(std::string& text, const std::string& from, const std::string& 
 // One generated submission: its text and what kind of variant it is.
 class ClassGenerator {
   public:
-    ClassGenerator(std::uint32_t seed, const courseware::Assignment& finalLab,
+    ClassGenerator(std::uint32_t seed, const Assignment& finalLab,
                    const std::vector<std::filesystem::path>& otherSolutions)
         : rng_(seed), solution_(readText(finalLab.solutions.front())),
           starter_(readText(finalLab.starters.front())) {
@@ -106,10 +101,10 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
     GradingBenchResult result;
     result.submissions = options.submissions;
     result.jobs = options.jobs;
-    const courseware::AssignmentLoad lab = courseware::findAssignment("implicit-fantasies");
+    const AssignmentLoad lab = findAssignment("implicit-fantasies");
     if (!lab.assignment) throw std::runtime_error("implicit-fantasies is not there");
     std::vector<std::filesystem::path> others;
-    for (const courseware::AssignmentLoad& a : courseware::listAssignments())
+    for (const AssignmentLoad& a : listAssignments())
         if (a.assignment && a.assignment->id != "implicit-fantasies")
             others.insert(others.end(), a.assignment->solutions.begin(),
                           a.assignment->solutions.end());
@@ -148,9 +143,9 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
         grading::gradeBatch(book, lab.assignment->record(), submissions, batch);
     result.classSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    result.p50 = percentile(summary.secondsPerSubmission, 0.50);
-    result.p95 = percentile(summary.secondsPerSubmission, 0.95);
-    result.max = percentile(summary.secondsPerSubmission, 1.0);
+    result.p50 = measure::percentile(summary.secondsPerSubmission, 0.50);
+    result.p95 = measure::percentile(summary.secondsPerSubmission, 0.95);
+    result.max = measure::percentile(summary.secondsPerSubmission, 1.0);
     result.graded = summary.graded;
     result.notGradable = summary.notGradable;
     result.failed = summary.failed;
@@ -174,7 +169,7 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
         for (double v : t)
             sum += v;
         result.requirements.push_back(
-            {q.id, t.empty() ? 0 : sum / double(t.size()), percentile(t, 0.95)});
+            {q.id, t.empty() ? 0 : sum / double(t.size()), measure::percentile(t, 0.95)});
     }
     double sum = 0;
     for (double v : views)
@@ -254,4 +249,4 @@ std::string gradingBenchJson(const GradingBenchResult& r) {
     return out.str();
 }
 
-} // namespace fl::bench
+} // namespace fl::courseware

@@ -1,0 +1,40 @@
+#include "measure/bench_eval_spec.h"
+
+namespace fl::measure {
+
+using namespace fl::cli;
+
+const CommandSpec& benchEvalSpec() {
+    static const CommandSpec spec{
+        .name = "bench eval",
+        .summary = "evaluator speed: FunctionLab vs hand-written C++ vs muParser",
+        .synopsis = {"bench eval [--json] [--side N] [--seconds S]"},
+        .description =
+            "Evaluates the benchmark formulas over an N^3 grid with FunctionLab's batch\n"
+            "evaluator, the same formulas hand-written in C++, and muParser, all on one\n"
+            "thread; prints nanoseconds per point and the ratios. The engines take turns\n"
+            "for at least S seconds and each reports its best turn. The work is done by\n"
+            "the executable functionlab-bench next to functionlab.\n",
+        .options = {{.name = "json",
+                     .help = "print a list of {\"formula\", \"ns_per_point\": {\"functionlab\", "
+                             "\"native\", \"muparser\"}} instead of the table"},
+                    {.name = "side",
+                     .kind = OptionKind::Integer,
+                     .valueName = "N",
+                     .help = "points along each side of the grid",
+                     .defaultValue = "64",
+                     .min = 2,
+                     .max = 512},
+                    {.name = "seconds",
+                     .kind = OptionKind::Number,
+                     .valueName = "S",
+                     .help = "how long the engines take turns, at least",
+                     .defaultValue = "0.2",
+                     .min = 0,
+                     .max = 60}},
+        .exitStatus = "0 measured, 1 functionlab-bench is missing or failed, 2 usage error",
+    };
+    return spec;
+}
+
+} // namespace fl::measure
