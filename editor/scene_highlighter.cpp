@@ -2,6 +2,7 @@
 
 #include "formula/builtins.h"
 #include "scene/node_catalogue.h"
+#include "scene/scene_writer.h"
 
 #include <QRegularExpression>
 #include <QSet>
@@ -51,12 +52,10 @@ QTextCharFormat make(const QColor& colour, bool bold = false, bool italic = fals
 } // namespace
 
 SceneSyntax syntaxFor(const QString& fileName, const QString& text) {
-    const QString lower = fileName.toLower();
-    if (lower.endsWith(".x3d") || lower.endsWith(".x3d.gz") || lower.endsWith(".x3dz"))
-        return SceneSyntax::Xml;
-    if (lower.endsWith(".x3dv") || lower.endsWith(".wrl") || lower.endsWith(".x3dvz") ||
-        lower.endsWith(".wrl.gz"))
-        return SceneSyntax::Classic;
+    scene::Encoding encoding{};
+    bool gzipped = false;
+    if (scene::encodingForPath(fileName.toStdString(), encoding, gzipped))
+        return encoding == scene::Encoding::Xml ? SceneSyntax::Xml : SceneSyntax::Classic;
     return text.trimmed().startsWith('<') ? SceneSyntax::Xml : SceneSyntax::Classic;
 }
 

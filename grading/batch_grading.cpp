@@ -1,11 +1,10 @@
 #include "batch_grading.h"
 
+#include "grading/check_report_json.h"
+#include "scene/scene_writer.h"
 #include "submission_hash.h"
 
 #include <QDateTime>
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 
 #include <algorithm>
 #include <atomic>
@@ -77,9 +76,7 @@ std::vector<BatchSubmission> findSubmissions(const std::filesystem::path& folder
         if (e.is_regular_file(ec)) {
             // alice.x3d, alice.x3dv.gz, bob.wrl: the student is the name before the first dot.
             student = name.substr(0, name.find('.'));
-            const bool scene = name.find(".x3d") != std::string::npos ||
-                               name.find(".wrl") != std::string::npos || name.ends_with(".wrz");
-            if (!scene) {
+            if (!scene::isSceneFileName(name)) {
                 skipped.push_back(name + ": not a scene file");
                 continue;
             }
@@ -100,38 +97,15 @@ std::vector<BatchSubmission> findSubmissions(const std::filesystem::path& folder
 }
 
 bool gradeFromCheckJson(const std::string& json, GradeRecord& g) {
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(json), &error);
-    if (error.error != QJsonParseError::NoError || !doc.isObject()) return false;
-    const QJsonObject o = doc.object();
-    if (!o.value("gradable").isBool() || !o.value("requirements").isArray()) return false;
-    g.gradable = o.value("gradable").toBool();
-    g.score = o.value("score").toDouble();
-    g.maxScore = o.value("max_score").toDouble();
-    for (const QJsonValue& v : o.value("requirements").toArray()) {
-        const QJsonObject r = v.toObject();
-        RequirementResult q;
-        q.id = r.value("id").toString().toStdString();
-        q.met = r.value("met").toBool();
-        q.points = r.value("points").toDouble();
-        q.maxPoints = r.value("max_points").toDouble();
-        q.evidence = r.value("evidence").toString().toStdString();
-        for (const QJsonValue& l : r.value("locations").toArray()) {
-            const QJsonObject p = l.toObject();
-            q.locations.push_back({p.value("file").toString().toStdString(),
-                                   p.value("line").toInt(), p.value("column").toInt()});
-        }
-        g.requirements.push_back(std::move(q));
-    }
+    const std::optional<CheckReportDocument> d = readCheckReportJson(json);
+    if (!d) return false;
+    g.gradable = d->report.gradable;
+    g.score = d->report.score;
+    g.maxScore = d->report.maxScore;
+    g.requirements = d->report.requirements;
     std::string diagnostics;
-    for (const QJsonValue& v : o.value("diagnostics").toArray()) {
-        const QJsonObject d = v.toObject();
-        diagnostics += d.value("file").toString().toStdString() + ":" +
-                       std::to_string(d.value("line").toInt()) + ":" +
-                       std::to_string(d.value("column").toInt()) + ": " +
-                       d.value("severity").toString().toStdString() + ": " +
-                       d.value("message").toString().toStdString() + "\n";
-    }
+    for (const scene::SceneDiagnostic& diagnostic : d->report.diagnostics)
+        diagnostics += scene::formatSceneDiagnostic(diagnostic) + "\n";
     g.diagnostics = diagnostics;
     return true;
 }

@@ -4,6 +4,7 @@
 #include "submission_view.h"
 
 #include "scene/scene_reader.h"
+#include "scene/scene_writer.h"
 
 #include <chrono>
 #include <filesystem>
@@ -87,11 +88,7 @@ std::string sceneFileOf(const std::filesystem::path& submission, std::string* pr
     std::vector<std::filesystem::path> scenes;
     for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
         const std::string name = e.path().filename().string();
-        for (const char* ext :
-             {".x3d", ".x3dv", ".wrl", ".x3d.gz", ".x3dv.gz", ".wrl.gz", ".x3dz", ".x3dvz", ".wrz"})
-            if (name.size() > std::string(ext).size() && name.ends_with(ext) &&
-                e.is_regular_file(ec))
-                scenes.push_back(e.path());
+        if (scene::isSceneFileName(name) && e.is_regular_file(ec)) scenes.push_back(e.path());
     }
     std::sort(scenes.begin(), scenes.end());
     scenes.erase(std::unique(scenes.begin(), scenes.end()), scenes.end());

@@ -71,23 +71,6 @@ std::string sha256(const std::string& textToHash) {
         .toStdString();
 }
 
-std::string locationsJson(const std::vector<Location>& locations) {
-    QJsonArray a;
-    for (const Location& l : locations)
-        a.append(QJsonObject{{"file", q(l.file)}, {"line", l.line}, {"column", l.column}});
-    return QJsonDocument(a).toJson(QJsonDocument::Compact).toStdString();
-}
-
-std::vector<Location> locationsOf(const std::string& json) {
-    std::vector<Location> out;
-    for (const QJsonValue& v : QJsonDocument::fromJson(QByteArray::fromStdString(json)).array()) {
-        const QJsonObject o = v.toObject();
-        out.push_back({o.value("file").toString().toStdString(), o.value("line").toInt(),
-                       o.value("column").toInt()});
-    }
-    return out;
-}
-
 std::string studentPayload(const Student& s) {
     return canonical({{"id", q(s.id)}, {"name", q(s.name)}, {"email", q(s.email)}});
 }

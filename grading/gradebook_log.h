@@ -3,6 +3,7 @@
 // of entry's JSON payload (written and read back by the same functions, so
 // a replay applies exactly what was written), and the hashes.
 #include "gradebook.h"
+#include "grading/check_report_json.h" // locationsJson, locationsOf
 
 #include <string>
 #include <vector>
@@ -15,8 +16,6 @@ namespace fl::grading {
 extern const char* const kLogSchema;
 
 std::string sha256(const std::string& text);
-std::string locationsJson(const std::vector<Location>& locations);
-std::vector<Location> locationsOf(const std::string& json);
 
 // Each kind of change as the log holds it: canonical JSON (keys sorted,
 // numbers written to round-trip exactly).

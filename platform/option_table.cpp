@@ -1,5 +1,7 @@
 #include "platform/option_table.h"
 
+#include "text/edit_distance.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -212,27 +214,10 @@ bool parseWholeNumber(std::string_view text, std::int64_t& out) {
 }
 
 std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates) {
-    // Edits between the two (insert, delete, replace, swap two neighbours).
-    auto distance = [](std::string_view a, std::string_view b) {
-        std::vector<std::vector<std::size_t>> d(a.size() + 1,
-                                                std::vector<std::size_t>(b.size() + 1));
-        for (std::size_t i = 0; i <= a.size(); ++i)
-            d[i][0] = i;
-        for (std::size_t j = 0; j <= b.size(); ++j)
-            d[0][j] = j;
-        for (std::size_t i = 1; i <= a.size(); ++i)
-            for (std::size_t j = 1; j <= b.size(); ++j) {
-                d[i][j] = std::min(
-                    {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-                if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                    d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-            }
-        return d[a.size()][b.size()];
-    };
     std::string best;
     std::size_t bestDistance = std::string::npos;
     for (const std::string& c : candidates) {
-        const std::size_t d = distance(word, c);
+        const std::size_t d = text::editDistance(word, c);
         // A prefix ("--res" for "--resolution") is a likely meaning too.
         const bool prefix = word.size() >= 4 && c.rfind(word, 0) == 0;
         const std::size_t score = prefix ? 1 : d;

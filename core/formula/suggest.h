@@ -6,8 +6,6 @@
 
 namespace fl::formula {
 
-std::size_t editDistance(std::string_view a, std::string_view b);
-
 // The candidate nearest to `name` if it is close enough to be a plausible
 // typo (distance <= 2, and less than half the name); empty otherwise.
 std::string closestName(std::string_view name, const std::vector<std::string>& candidates);

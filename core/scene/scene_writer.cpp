@@ -532,24 +532,53 @@ std::string writeScene(const Scene& scene, Encoding encoding) {
     return encoding == Encoding::Xml ? writeXml(scene) : writeClassic(scene, encoding);
 }
 
-bool encodingForPath(const std::string& path, Encoding& encoding, bool& gzipped) {
-    std::string lower(path);
+namespace {
+
+struct SceneSuffix {
+    std::string_view text;
+    Encoding encoding;
+    bool gzipped;
+};
+
+// No suffix ends another one, so the order does not matter.
+constexpr SceneSuffix kSceneSuffixes[] = {
+    {".x3d", Encoding::Xml, false},
+    {".x3dv", Encoding::ClassicVrml, false},
+    {".wrl", Encoding::Vrml97, false},
+    {".x3d.gz", Encoding::Xml, true},
+    {".x3dv.gz", Encoding::ClassicVrml, true},
+    {".wrl.gz", Encoding::Vrml97, true},
+    {".x3dz", Encoding::Xml, true},
+    {".x3dvz", Encoding::ClassicVrml, true},
+    {".wrz", Encoding::Vrml97, true},
+};
+
+std::string lowered(const std::string& text) {
+    std::string lower(text);
     for (char& c : lower)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    struct Suffix {
-        std::string_view text;
-        Encoding encoding;
-        bool gzipped;
-    };
-    // No suffix ends another one, so the order does not matter.
-    static constexpr Suffix kSuffixes[] = {
-        {".x3d.gz", Encoding::Xml, true},        {".x3dv.gz", Encoding::ClassicVrml, true},
-        {".wrl.gz", Encoding::Vrml97, true},     {".x3dz", Encoding::Xml, true},
-        {".x3dvz", Encoding::ClassicVrml, true}, {".wrz", Encoding::Vrml97, true},
-        {".x3d", Encoding::Xml, false},          {".x3dv", Encoding::ClassicVrml, false},
-        {".wrl", Encoding::Vrml97, false},
-    };
-    for (const Suffix& s : kSuffixes)
+    return lower;
+}
+
+} // namespace
+
+bool isSceneFileName(const std::string& name) {
+    const std::string lower = lowered(name);
+    for (const SceneSuffix& s : kSceneSuffixes)
+        if (lower.size() > s.text.size() && lower.ends_with(s.text)) return true;
+    return false;
+}
+
+std::string sceneFilePatterns() {
+    std::string out;
+    for (const SceneSuffix& s : kSceneSuffixes)
+        out += (out.empty() ? "*" : " *") + std::string(s.text);
+    return out;
+}
+
+bool encodingForPath(const std::string& path, Encoding& encoding, bool& gzipped) {
+    const std::string lower = lowered(path);
+    for (const SceneSuffix& s : kSceneSuffixes)
         if (lower.ends_with(s.text)) {
             encoding = s.encoding;
             gzipped = s.gzipped;

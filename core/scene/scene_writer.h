@@ -17,6 +17,13 @@ std::string writeScene(const Scene& scene, Encoding encoding);
 // .x3dz/.x3dvz/.wrz for gzip); false when the extension is not a scene's.
 bool encodingForPath(const std::string& path, Encoding& encoding, bool& gzipped);
 
+// A scene file's name: one of those extensions after at least one character
+// (the one list: the window, the grader and the batch ask here).
+bool isSceneFileName(const std::string& name);
+
+// The extensions as file-dialog patterns: "*.x3d *.x3dv *.wrl *.x3d.gz ...".
+std::string sceneFilePatterns();
+
 // Shortest text that reads back as exactly the same double.
 std::string formatNumber(double v);
 

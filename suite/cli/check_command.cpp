@@ -2,8 +2,8 @@
 // wrong with it, located as FILE:LINE:COL.
 #include "cli/commands.h"
 #include "cli/json.h"
-#include "cli/scene_diagnostic_json.h"
 #include "platform/exit_codes.h"
+#include "scene/scene_diagnostic_json.h"
 
 #include "animation/animator.h"
 #include "scene/effects_plan.h"
@@ -134,7 +134,7 @@ int checkCommand(const Args& args) {
         out += ",\"diagnostics\":[";
         for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
             if (i) out += ",";
-            out += sceneDiagnosticJson(r.diagnostics[i]);
+            out += scene::sceneDiagnosticJson(r.diagnostics[i]);
         }
         out += "]";
         if (plan && r.ok()) {

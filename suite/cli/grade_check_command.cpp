@@ -5,60 +5,16 @@
 #include "cli/commands.h"
 #include "cli/grade_options.h"
 #include "cli/json.h"
-#include "cli/scene_diagnostic_json.h"
 #include "platform/exit_codes.h"
 
 #include "catalogue.h"
 #include "checker.h"
+#include "grading/check_report_json.h"
 
 #include <iostream>
 
 namespace fl::cli {
 namespace {
-
-std::string reportJson(const std::string& assignment, const grading::CheckReport& r,
-                       double manualMax) {
-    std::string out = "{\"assignment\":";
-    out += jsonString(assignment);
-    out += ",\"gradable\":";
-    out += r.gradable ? "true" : "false";
-    out += ",\"score\":" + jsonNumber(r.score);
-    out += ",\"max_score\":" + jsonNumber(r.maxScore);
-    out += ",\"checker_version\":";
-    out += jsonString(grading::kCheckerVersion);
-    out += ",\"requirements\":[";
-    for (std::size_t i = 0; i < r.requirements.size(); ++i) {
-        const grading::RequirementResult& q = r.requirements[i];
-        if (i) out += ",";
-        out += "{\"id\":";
-        out += jsonString(q.id);
-        out += ",\"met\":";
-        out += q.met ? "true" : "false";
-        out += ",\"points\":" + jsonNumber(q.points);
-        out += ",\"max_points\":" + jsonNumber(q.maxPoints);
-        out += ",\"evidence\":";
-        out += jsonString(q.evidence);
-        out += ",\"locations\":[";
-        for (std::size_t k = 0; k < q.locations.size(); ++k) {
-            if (k) out += ",";
-            out += "{\"file\":";
-            out += jsonString(q.locations[k].file);
-            out += ",\"line\":" + std::to_string(q.locations[k].line);
-            out += ",\"column\":" + std::to_string(q.locations[k].column);
-            out += "}";
-        }
-        out += "]}";
-    }
-    out += "],\"manual_max\":" + jsonNumber(manualMax);
-    out += ",\"budget_exceeded\":";
-    out += r.budgetExceeded ? "true" : "false";
-    out += ",\"diagnostics\":[";
-    for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
-        if (i) out += ",";
-        out += sceneDiagnosticJson(r.diagnostics[i]);
-    }
-    return out + "]}";
-}
 
 void reportText(const grading::CheckReport& r, const courseware::Assignment& a, std::ostream& out,
                 std::ostream& err) {
@@ -120,9 +76,10 @@ int gradeCheckCommand(const Args& args) {
     const courseware::AssignmentLoad load = courseware::findAssignment(id);
     if (!load.assignment) {
         if (a->flag("json")) {
-            grading::CheckReport none;
-            none.diagnostics = load.diagnostics;
-            std::cout << reportJson(id, none, 0) << "\n";
+            grading::CheckReportDocument none;
+            none.assignment = id;
+            none.report.diagnostics = load.diagnostics;
+            std::cout << grading::checkReportJson(none) << "\n";
         } else {
             for (const auto& d : load.diagnostics)
                 std::cerr << scene::formatSceneDiagnostic(d) << "\n";
@@ -133,7 +90,9 @@ int gradeCheckCommand(const Args& args) {
     grading::CheckReport r =
         grading::checkSubmission(a->positional("SUBMISSION"), assignment.requirements);
     if (a->flag("json"))
-        std::cout << reportJson(assignment.id, r, assignment.manualPoints()) << "\n";
+        std::cout << grading::checkReportJson(
+                         {assignment.id, grading::kCheckerVersion, r, assignment.manualPoints()})
+                  << "\n";
     else
         reportText(r, assignment, std::cout, std::cerr);
     return r.gradable ? kExitOk : kExitDiagnostic;

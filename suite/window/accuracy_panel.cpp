@@ -46,24 +46,32 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
                           "dense marching cubes), or in time per force tick (touching the "
                           "function against touching its triangles)"));
     top->addWidget(costs_);
-    top->addWidget(measure_);
-    top->addWidget(cancel_);
     layout->addLayout(top);
+    // The buttons on a row of their own: the panel stays narrow enough
+    // for the view to be the largest thing on a 1366-pixel screen.
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(measure_);
+    buttons->addWidget(cancel_);
+    buttons->addStretch(1);
+    layout->addLayout(buttons);
     layout->addWidget(chart_, 1);
     layout->addWidget(progress_);
     auto* targetRow = new QHBoxLayout;
     targetRow->addWidget(new QLabel(tr("Target error:")));
     target_->setPlaceholderText(tr("e.g. 0.001 of the diagonal"));
     targetRow->addWidget(target_, 1);
-    targetRow->addWidget(write_);
     layout->addLayout(targetRow);
+    auto* writeRow = new QHBoxLayout;
+    writeRow->addStretch(1);
+    writeRow->addWidget(write_);
+    layout->addLayout(writeRow);
     write_->setToolTip(tr("Make the chosen resolution part of the scene text (resolution, and "
                           "the finest end of lodRange): undo with Ctrl+Z in the editor"));
     write_->setEnabled(false);
     status_->setWordWrap(true);
     layout->addWidget(status_);
     shapes_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    shapes_->setMinimumContentsLength(12);
+    shapes_->setMinimumContentsLength(10);
     setWidget(box);
     cancel_->setEnabled(false);
     progress_->setRange(0, int(resolutions_.size()));

@@ -80,8 +80,11 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
     name_->setPlaceholderText(tr("your name"));
     key_->setEchoMode(QLineEdit::Password);
     key_->setPlaceholderText(tr("instructor key"));
-    role_->addItems(
-        {QStringLiteral("student"), QStringLiteral("instructor"), QStringLiteral("observer")});
+    for (const classroom::Role r :
+         {classroom::Role::Student, classroom::Role::Instructor, classroom::Role::Observer})
+        role_->addItem(QString::fromLatin1(classroom::nameOf(r).data(),
+                                           qsizetype(classroom::nameOf(r).size())),
+                       int(r));
     form->addRow(tr("Server:"), url_);
     form->addRow(tr("Class:"), code_);
     form->addRow(tr("Name:"), name_);
@@ -173,7 +176,7 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
 
     connect(join_, &QPushButton::clicked, this, [this] {
         if (client_->state() == ClassroomClient::State::Disconnected)
-            join(url_->text(), code_->text(), name_->text(), role_->currentText(), key_->text());
+            join(url_->text(), code_->text(), name_->text(), chosenRole(), key_->text());
         else
             leave();
     });
@@ -273,8 +276,12 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
 
 ClassroomPanel::~ClassroomPanel() = default;
 
+classroom::Role ClassroomPanel::chosenRole() const {
+    return classroom::Role(role_->currentData().toInt());
+}
+
 void ClassroomPanel::join(const QString& url, const QString& classCode, const QString& name,
-                          const QString& role, const QString& key) {
+                          classroom::Role role, const QString& key) {
     const QUrl u(url.trimmed());
     if (!u.isValid() ||
         (u.scheme() != QStringLiteral("ws") && u.scheme() != QStringLiteral("wss"))) {
@@ -288,12 +295,12 @@ void ClassroomPanel::join(const QString& url, const QString& classCode, const QS
     url_->setText(url);
     code_->setText(classCode);
     name_->setText(name);
-    role_->setCurrentText(role);
+    role_->setCurrentIndex(role_->findData(int(role)));
     ClassroomClient::JoinOptions o;
     o.url = u;
     o.classCode = classCode.trimmed();
     o.name = name.trimmed();
-    o.role = classroom::roleNamed(role.toStdString()).value_or(classroom::Role::Student);
+    o.role = role;
     o.key = key;
     client_->join(o);
     refreshState();
@@ -442,11 +449,11 @@ void ClassroomPanel::refreshState() {
     join_->setText(s == ClassroomClient::State::Disconnected ? tr("Join") : tr("Leave"));
     for (QWidget* w : std::initializer_list<QWidget*>{url_, code_, name_, role_, key_})
         w->setEnabled(s == ClassroomClient::State::Disconnected);
-    const bool observer = role_->currentText() == QStringLiteral("observer");
+    const bool observer = chosenRole() == classroom::Role::Observer;
     send_->setEnabled(in && !observer);
     useTool_->setEnabled(in && !observer && toolPoint_.has_value());
     say_->setEnabled(in);
-    instructor_->setVisible(role_->currentText() == QStringLiteral("instructor"));
+    instructor_->setVisible(chosenRole() == classroom::Role::Instructor);
     refreshLock();
     if (in) refreshMembers();
 }

@@ -10,6 +10,7 @@
 // anonymised and takes or breaks locks.
 #include "panel.h"
 
+#include "classroom/protocol.h"
 #include "field/vec3.h"
 
 #include <functional>
@@ -43,7 +44,8 @@ class ClassroomPanel : public Panel {
     // Joins (a student unless `role` says otherwise); the answer comes as
     // signals and in the panel.
     void join(const QString& url, const QString& classCode, const QString& name,
-              const QString& role = QStringLiteral("student"), const QString& key = {});
+              classroom::Role role = classroom::Role::Student, const QString& key = {});
+    classroom::Role chosenRole() const;
     void leave();
     // Sends the editor's text as an edit (taking the lock).
     void sendEdit();

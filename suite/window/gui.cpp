@@ -3,6 +3,8 @@
 #include "examples.h"
 #include "main_window.h"
 
+#include "platform/option_table.h"
+#include "scene/scene_writer.h"
 #include "surface_format.h"
 #include <QApplication>
 #include <QDir>
@@ -13,48 +15,63 @@
 
 namespace fl::suite {
 
+const cli::CommandSpec& joinSpec() {
+    static const cli::CommandSpec spec{
+        .name = "--join",
+        .summary = "open the window and join a class",
+        .synopsis = {"--join ws://HOST:PORT --class CODE --name NAME [--role ROLE] [--key KEY]"},
+        .options = {{.name = "join",
+                     .kind = cli::OptionKind::Text,
+                     .valueName = "URL",
+                     .help = "the class server's address, ws://HOST:PORT or wss://HOST:PORT"},
+                    {.name = "class",
+                     .kind = cli::OptionKind::Text,
+                     .valueName = "CODE",
+                     .help = "the class code the instructor gave"},
+                    {.name = "name",
+                     .kind = cli::OptionKind::Text,
+                     .valueName = "NAME",
+                     .help = "your name as the class sees it"},
+                    {.name = "role",
+                     .kind = cli::OptionKind::Choice,
+                     .valueName = "ROLE",
+                     .help = "who you are in the class",
+                     .defaultValue = "student",
+                     .choices = {"student", "instructor", "observer"}},
+                    {.name = "key",
+                     .kind = cli::OptionKind::Text,
+                     .valueName = "KEY",
+                     .help = "the instructor key (instructors only)"}},
+    };
+    return spec;
+}
+
 std::optional<JoinRequest> parseJoinArguments(const std::vector<std::string>& args,
                                               std::string& error) {
     error.clear();
     if (args.empty() || args[0] != "--join") return std::nullopt;
-    JoinRequest r;
-    for (std::size_t i = 0; i < args.size(); i += 2) {
-        if (i + 1 >= args.size()) {
-            error = args[i] + " needs a value";
-            return std::nullopt;
-        }
-        const std::string& v = args[i + 1];
-        if (args[i] == "--join")
-            r.url = v;
-        else if (args[i] == "--class")
-            r.classCode = v;
-        else if (args[i] == "--name")
-            r.name = v;
-        else if (args[i] == "--role")
-            r.role = v;
-        else if (args[i] == "--key")
-            r.key = v;
-        else {
-            error = "unknown option " + args[i] +
-                    " (use --join URL --class CODE --name NAME "
-                    "[--role student|instructor|observer] [--key KEY])";
-            return std::nullopt;
-        }
+    const cli::ParseResult parsed = cli::parseArguments(joinSpec(), args);
+    if (!parsed.ok()) {
+        error = parsed.error.message;
+        return std::nullopt;
     }
+    const cli::ParsedArgs& a = *parsed.args;
+    JoinRequest r;
+    r.url = a.text("join");
+    r.classCode = a.text("class");
+    r.name = a.text("name");
+    r.role = classroom::roleNamed(a.text("role")).value_or(classroom::Role::Student);
+    r.key = a.text("key");
     if (r.url.rfind("ws://", 0) != 0 && r.url.rfind("wss://", 0) != 0)
         error = "--join takes the server's address, ws://HOST:PORT";
     else if (r.classCode.empty() || r.name.empty())
         error = "--join needs --class CODE and --name NAME";
-    else if (r.role != "student" && r.role != "instructor" && r.role != "observer")
-        error = "--role is student, instructor or observer";
     if (!error.empty()) return std::nullopt;
     return r;
 }
 
 bool looksLikeSceneFile(const std::string& argument) {
-    const QString a = QString::fromStdString(argument).toLower();
-    for (const char* ext : {".x3d", ".x3dv", ".wrl", ".x3dz", ".x3dvz", ".gz"})
-        if (a.endsWith(QLatin1String(ext))) return true;
+    if (scene::isSceneFileName(argument)) return true;
     return QFileInfo::exists(QString::fromStdString(argument));
 }
 
@@ -90,7 +107,7 @@ int runWindow(int argc, char** argv, const std::string& file,
     }
     if (join)
         window.joinClass(QString::fromStdString(join->url), QString::fromStdString(join->classCode),
-                         QString::fromStdString(join->name), QString::fromStdString(join->role),
+                         QString::fromStdString(join->name), join->role,
                          QString::fromStdString(join->key));
     return app.exec();
 }

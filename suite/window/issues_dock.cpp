@@ -19,6 +19,8 @@ IssuesDock::IssuesDock(QWidget* parent)
 }
 
 void IssuesDock::showDiagnostics(const std::vector<scene::SceneDiagnostic>& diagnostics) {
+    // The strip takes room from the view only while there is something in it.
+    setVisible(!diagnostics.empty());
     list_->clear();
     for (const auto& d : diagnostics) {
         auto* item =

@@ -26,6 +26,7 @@
 #include "scene/field_access.h"
 #include "scene/gzip.h"
 #include "scene/scene_reader.h"
+#include "scene/scene_writer.h"
 #include "scene_player.h"
 #include "scene_policy.h"
 #include "scene_text_dock.h"
@@ -53,6 +54,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSaveFile>
+#include <QScreen>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -217,7 +219,12 @@ MainWindow::MainWindow(QWidget* parent)
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     fillRecentMenu();
-    resize(settings.contains(QStringLiteral("window/geometry")) ? size() : QSize(1280, 800));
+    // Never taller or wider than the screen: on a 1366×768 laptop the status
+    // bar with its error figure stays in sight (room left for the title bar).
+    QSize wanted = settings.contains(QStringLiteral("window/geometry")) ? size() : QSize(1280, 800);
+    if (const QScreen* s = screen())
+        wanted = wanted.boundedTo(s->availableGeometry().size() - QSize(0, 32));
+    resize(wanted);
 }
 
 MainWindow::~MainWindow() = default;
@@ -249,30 +256,45 @@ QListWidget* MainWindow::examples() const {
 }
 
 void MainWindow::buildDocks() {
-    addPanel(new SceneTextDock(editor_, find_));
+    // The layout: the scene's text and its tree on the left, the 3D view in
+    // the middle and the largest thing on screen, the other panels on the
+    // right as one bar whose tabs run down its edge, so that every panel's
+    // name reads in full (seven tabs across a dock read "Sce…", "Ex…"); the
+    // issues strip only while there are issues. It fits 1366×768.
+    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
+    // The sides run the full height, so the issues strip lies under the view
+    // alone and never shortens the panel bar.
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    auto* text = addPanel(new SceneTextDock(editor_, find_));
+    tree_ = addPanel(new SceneTreeDock, true);
+    text->raise();
     issues_ = addPanel(new IssuesDock);
-    // A few lines tall: sized once the window has its layout (a saved state wins).
-    QTimer::singleShot(0, this, [this] {
+    issues_->hide(); // IssuesDock::showDiagnostics shows it when there are some
+    // Sized once the window has its layout (a saved state wins): the sides
+    // take about a quarter and a fifth of the width, the view the rest.
+    QTimer::singleShot(0, this, [this, text] {
         if (!QSettings().contains(QStringLiteral("window/state"))) {
             resizeDocks({issues_}, {110}, Qt::Vertical);
-            // The panels on the right start narrow: the view comes first.
-            resizeDocks({examples_}, {300}, Qt::Horizontal);
+            resizeDocks({text, examples_},
+                        {std::clamp(width() * 27 / 100, 330, 520),
+                         std::clamp(width() * 21 / 100, 290, 420)},
+                        Qt::Horizontal);
         }
     });
-    tree_ = addPanel(new SceneTreeDock);
-    examples_ = addPanel(new ExamplesDock, true);
+    examples_ = addPanel(new ExamplesDock);
     parameters_ = addPanel(new ParametersDock, true);
     assignment_ = addPanel(new AssignmentPanel, true);
     accuracy_ = addPanel(new AccuracyPanel, true);
     haptics_ = addPanel(new HapticsPanel, true);
     classroom_ = addPanel(new ClassroomPanel, true);
     examples_->raise();
-    // Tabbed docks must not widen their side to fit every tab's title: the
-    // view would shrink with each panel added. Their tab bars scroll.
+    // Tab titles are never cut short; should a screen be too short for the
+    // bar, it scrolls rather than squeezing the view.
     QTimer::singleShot(0, this, [this] {
         for (QTabBar* bar : findChildren<QTabBar*>()) {
             bar->setUsesScrollButtons(true);
-            bar->setElideMode(Qt::ElideRight);
+            bar->setElideMode(Qt::ElideNone);
         }
     });
 
@@ -578,7 +600,7 @@ void MainWindow::openDialog() {
     if (!maybeKeepChanges()) return;
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open scene"), path_.isEmpty() ? examplesFolder() : QFileInfo(path_).path(),
-        tr("Scenes (*.x3d *.x3dv *.wrl);;All files (*)"));
+        tr("Scenes (%1);;All files (*)").arg(QString::fromStdString(scene::sceneFilePatterns())));
     if (!path.isEmpty()) openFile(path);
 }
 
@@ -649,7 +671,7 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
 }
 
 void MainWindow::joinClass(const QString& url, const QString& classCode, const QString& name,
-                           const QString& role, const QString& key) {
+                           classroom::Role role, const QString& key) {
     // The class's scene will take the editor: unsaved work is saved or kept first.
     if (!maybeKeepChanges()) return;
     lastSharedScene_.clear();

@@ -4,6 +4,8 @@
 // docks; the timeline below; a status bar with triangles, meshing time,
 // frame rate and t. Every file operation reports problems in the window,
 // never by crashing, and unsaved text is kept in a recovery file.
+#include "classroom/protocol.h"
+
 #include <QMainWindow>
 #include <QPointF>
 #include <QTimer>
@@ -102,7 +104,7 @@ class MainWindow : public QMainWindow {
     ClassroomPanel* classroomPanel() const { return classroom_; }
     // Joins a class (File → Join Class…, or `functionlab --join`).
     void joinClass(const QString& url, const QString& classCode, const QString& name,
-                   const QString& role = QStringLiteral("student"), const QString& key = {});
+                   classroom::Role role = classroom::Role::Student, const QString& key = {});
     // Feeling with the mouse: the tool to the surface under this pixel.
     void touchAt(QPointF pixel);
     // The window's panels, in the order they were added.

@@ -15,7 +15,9 @@ SceneTextDock::SceneTextDock(editor::CodeEditor* editor, editor::FindBar* find, 
     column->addWidget(editor, 1);
     column->addWidget(find);
     setWidget(panel);
-    setMinimumWidth(420);
+    // Room for a formula line, while leaving the view the most on a 1366-pixel
+    // screen (the window widens it to about a quarter of its width).
+    setMinimumWidth(320);
 }
 
 } // namespace fl::suite

@@ -10,7 +10,7 @@
 namespace fl::suite {
 
 SceneTreeDock::SceneTreeDock(QWidget* parent)
-    : Panel(tr("Scene tree"), QStringLiteral("tree"), Qt::RightDockWidgetArea, parent),
+    : Panel(tr("Scene tree"), QStringLiteral("tree"), Qt::LeftDockWidgetArea, parent),
       tree_(new QTreeWidget) {
     tree_->setHeaderLabels({tr("Node"), tr("DEF")});
     setWidget(tree_);

@@ -16,6 +16,7 @@
 #include "screen_error_meter.h"
 #include "timeline_bar.h"
 #include "window_screenshot.h"
+#include "window_settle.h"
 
 #include "surface_format.h"
 #include <QApplication>
@@ -79,19 +80,7 @@ bool shown(suite::MainWindow& w) {
 }
 
 // Waits until the parse and the meshing for the current text are done.
-bool settle(suite::MainWindow& w, int timeoutMs = 30000) {
-    QElapsedTimer clock;
-    clock.start();
-    QTest::qWait(50);
-    while (clock.elapsed() < timeoutMs) {
-        if (!w.busy()) {
-            QTest::qWait(200); // the last frame reaches the view (and the LOD looks at it)
-            if (!w.busy()) return true;
-        }
-        QTest::qWait(20);
-    }
-    return false;
-}
+using test::settle;
 
 } // namespace
 
@@ -221,7 +210,7 @@ class WindowTest : public QObject {
         QStringList names;
         for (suite::Panel* p : w.panels())
             names << p->objectName();
-        QCOMPARE(names, (QStringList{"editor", "issues", "tree", "examples", "parameters",
+        QCOMPARE(names, (QStringList{"editor", "tree", "issues", "examples", "parameters",
                                      "assignment", "accuracy", "haptics", "classroom"}));
         auto* counting = w.addPanel(new Counting, true);
         QCOMPARE(w.dockWidgetArea(counting), Qt::RightDockWidgetArea);
