@@ -956,6 +956,12 @@ Box3 domainOf(const scene::Node& node) {
     return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
+std::optional<field::Vec3> shapeCoordinates(const ShapeMesh& shape, const field::Vec3& point) {
+    const auto back = field::Affine::fromMatrix(shape.placement).inverse();
+    if (!back) return std::nullopt;
+    return back->point(point);
+}
+
 std::optional<Box3> boundingBoxOf(const scene::Node& node) {
     const auto centre = scene::numbersField(node, "bboxCenter");
     const auto size = scene::numbersField(node, "bboxSize");

@@ -165,6 +165,10 @@ Box3 domainOf(const scene::Node& node);
 // given (a positive size on every axis; X3D's -1 -1 -1 means none).
 std::optional<Box3> boundingBoxOf(const scene::Node& node);
 
+// A point of the scene in a shape's own coordinates (its placement undone);
+// none when the placement cannot be undone (a zero scale).
+std::optional<field::Vec3> shapeCoordinates(const ShapeMesh& shape, const field::Vec3& point);
+
 // All shapes' meshes of one kind (triangles, or point clouds) as one.
 Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive = Primitive::Triangles);
 

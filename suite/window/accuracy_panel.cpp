@@ -1,5 +1,6 @@
 #include "accuracy_panel.h"
 
+#include "code_editor.h"
 #include "plain_text.h"
 
 #include "haptics/haptics_bench.h"
@@ -13,6 +14,9 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QStatusBar>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -341,6 +345,48 @@ std::vector<scene::TextEdit> AccuracyPanel::resolutionEdits(const scene::Scene& 
     std::stable_sort(edits.begin(), edits.end(),
                      [](const auto& a, const auto& b) { return a.offset > b.offset; });
     return edits;
+}
+
+void AccuracyPanel::attach(PanelContext& context) {
+    context_ = &context;
+    connect(this, &AccuracyPanel::resolutionChosen, this,
+            [&context](const scene::Node* geometry, double resolution) {
+                context.chooseResolution(geometry, resolution);
+            });
+    connect(this, &AccuracyPanel::writeRequested, this, &AccuracyPanel::writeResolution);
+}
+
+bool AccuracyPanel::writeResolution(const scene::Node* geometry, double resolution) {
+    PanelContext& c = *context_;
+    // The edits are offsets into the text the scene was read from: only when
+    // that is still the editor's text.
+    const std::string text = c.editor->toPlainText().toStdString();
+    const auto scene = c.scene();
+    if (!scene || scene->files.empty() || scene->files[0].text != text || !geometry) {
+        c.problem(tr("The text changed since it was last read: wait for it to parse, then write "
+                     "the resolution again."));
+        return false;
+    }
+    std::string why;
+    const auto edits = resolutionEdits(*scene, *geometry, resolution, &why);
+    if (edits.empty()) {
+        c.problem(tr("The resolution cannot be written into the text: %1")
+                      .arg(QString::fromStdString(why)));
+        return false;
+    }
+    // One undoable step in the editor; offsets in bytes become characters.
+    QTextCursor cursor(c.editor->document());
+    cursor.beginEditBlock();
+    for (const scene::TextEdit& e : edits) {
+        const auto at = QString::fromUtf8(text.data(), qsizetype(e.offset)).size();
+        const auto end = QString::fromUtf8(text.data(), qsizetype(e.offset + e.length)).size();
+        cursor.setPosition(int(at));
+        cursor.setPosition(int(end), QTextCursor::KeepAnchor);
+        cursor.insertText(QString::fromStdString(e.text));
+    }
+    cursor.endEditBlock();
+    c.status->showMessage(tr("resolution %1 written into the scene").arg(resolution), 5000);
+    return true;
 }
 
 } // namespace fl::suite

@@ -71,6 +71,13 @@ class AccuracyPanel : public Panel {
                                                         double resolution, std::string* why);
     void writeChoice(); // asks the window to write the current choice
 
+    // Its place in the window: a chosen resolution is meshed from then on;
+    // Write into the scene edits the editor's text.
+    void attach(PanelContext& context) override;
+    // Writes the choice of resolution for `geometry` into the editor's text
+    // (one undoable edit). False, said through the window, if not.
+    bool writeResolution(const scene::Node* geometry, double resolution);
+
     AccuracyChart* chart() const { return chart_; }
     QPushButton* writeButton() const { return write_; }
     QComboBox* shapes() const { return shapes_; }
@@ -87,6 +94,7 @@ class AccuracyPanel : public Panel {
     void writeRequested(const fl::scene::Node* geometry, double resolution);
 
   private:
+    PanelContext* context_ = nullptr;
     struct Candidate {
         const scene::Node* geometry; // the FGeometry (its FShape's), or the FTransform
         QString name;

@@ -1,14 +1,21 @@
 #include "assignment_panel.h"
 
 #include "catalogue.h"
+#include "code_editor.h"
+#include "hand_in.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMenu>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTextBrowser>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -168,6 +175,75 @@ void AssignmentPanel::showReport(const grading::CheckReport& report) {
                                .arg(points(assignment() ? assignment()->manualPoints() : 0))
                          : tr("the scene cannot be graded yet: fix the errors in Issues"));
     Q_EMIT checked();
+}
+
+void AssignmentPanel::attach(PanelContext& context) {
+    context_ = &context;
+    connect(this, &AssignmentPanel::locationActivated, this,
+            [&context](int line, int column) { context.goTo(line, column); });
+    connect(this, &AssignmentPanel::starterChosen, this, [&context](const QString& path) {
+        if (context.keepChanges()) context.open(path);
+    });
+    context.fileMenu->addAction(tr("&Hand In…"), this, &AssignmentPanel::handInDialog);
+}
+
+void AssignmentPanel::handInDialog() {
+    PanelContext& c = *context_;
+    if (!assignment()) {
+        c.problem(tr("Choose the assignment in the Assignment panel first."));
+        return;
+    }
+    const QString path = c.path();
+    const QString parent = QFileDialog::getExistingDirectory(
+        c.window, tr("Hand in: where to put the submission"),
+        path.isEmpty() ? QDir::homePath() : QFileInfo(path).path());
+    if (parent.isEmpty()) return;
+    const QString name =
+        QStringLiteral("%1-%2")
+            .arg(QFileInfo(path.isEmpty() ? QStringLiteral("scene") : path).completeBaseName())
+            .arg(QString::fromStdString(assignment()->id));
+    if (handIn(QDir(parent).filePath(name)) && c.prompts())
+        informPlainly(c.window, tr("Handed in"),
+                      tr("Your submission is in %1.\n%2")
+                          .arg(QDir(parent).filePath(name), c.status->currentMessage()));
+}
+
+bool AssignmentPanel::handIn(const QString& folder) {
+    PanelContext& c = *context_;
+    const courseware::Assignment* a = assignment();
+    if (!a) {
+        c.problem(tr("Choose the assignment in the Assignment panel first."));
+        return false;
+    }
+    const QString path = c.path();
+    if (path.isEmpty()) {
+        c.problem(tr("Save the scene first: a submission is a scene file and what it uses."));
+        return false;
+    }
+    const auto scene = c.scene();
+    if (!scene || !c.textParses()) {
+        c.problem(tr("The scene has errors: fix them (see Issues) before handing in."));
+        return false;
+    }
+    // The last check, on this very text, before it leaves.
+    const grading::CheckReport report = grading::checkScene(*scene, a->requirements);
+    const courseware::HandIn done = courseware::packSubmission(
+        *scene, path.toStdString(), c.editor->toPlainText().toStdString(), folder.toStdString());
+    if (!done.ok) {
+        c.problem(tr("Not handed in: %1")
+                      .arg(QString::fromStdString(done.problems.empty() ? "" : done.problems[0])));
+        return false;
+    }
+    c.status->showMessage(tr("Handed in %1 file(s); the checker gives %2 of %3 points%4")
+                              .arg(done.packed.size())
+                              .arg(report.score)
+                              .arg(report.maxScore)
+                              .arg(done.problems.empty()
+                                       ? QString()
+                                       : tr(" (%1 file(s) not packed: %2)")
+                                             .arg(done.problems.size())
+                                             .arg(QString::fromStdString(done.problems[0]))));
+    return true;
 }
 
 } // namespace fl::suite

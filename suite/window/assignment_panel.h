@@ -41,6 +41,14 @@ class AssignmentPanel : public Panel {
     QTextBrowser* instructions() const;
     QLabel* status() const { return status_; }
 
+    // Its place in the window: requirements and the starter open in the
+    // editor; File → Hand In.
+    void attach(PanelContext& context) override;
+    // Hand in: checks once more, then packs the scene and the files it uses
+    // into `folder` (a new one). False, said through the window, if not.
+    bool handIn(const QString& folder);
+    bool busy() const override { return checking(); }
+
   public Q_SLOTS:
     void sceneChanged(std::shared_ptr<const fl::scene::Scene> scene) override;
 
@@ -53,6 +61,7 @@ class AssignmentPanel : public Panel {
     void checked();
 
   private:
+    void handInDialog();
     void showAssignment();
     void check(std::shared_ptr<const scene::Scene> scene);
     void showReport(const grading::CheckReport& report);
@@ -66,6 +75,7 @@ class AssignmentPanel : public Panel {
     QPushButton* starter_;
     std::shared_ptr<const scene::Scene> scene_;
     std::optional<grading::CheckReport> report_;
+    PanelContext* context_ = nullptr;
 
     // One check at a time on a worker, the newest scene next.
     struct Check {

@@ -1,8 +1,13 @@
 #include "classroom_panel.h"
 
+#include "code_editor.h"
+#include "live_parser.h"
 #include "plain_text.h"
+#include "scene_widget.h"
 
 #include "client.h"
+#include "mesh/scene_meshing.h"
+#include "scene_policy.h"
 
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
@@ -16,10 +21,13 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QShortcut>
 #include <QSlider>
+#include <QStatusBar>
+#include <QTextDocument>
 #include <QUrl>
 #include <QVBoxLayout>
 
@@ -282,6 +290,11 @@ classroom::Role ClassroomPanel::chosenRole() const {
 
 void ClassroomPanel::join(const QString& url, const QString& classCode, const QString& name,
                           classroom::Role role, const QString& key) {
+    // The class's scene will take the editor: unsaved work is saved or kept first.
+    if (context_ && !context_->keepChanges()) return;
+    lastSharedScene_.clear();
+    show();
+    raise();
     const QUrl u(url.trimmed());
     if (!u.isValid() ||
         (u.scheme() != QStringLiteral("ws") && u.scheme() != QStringLiteral("wss"))) {
@@ -456,6 +469,84 @@ void ClassroomPanel::refreshState() {
     instructor_->setVisible(chosenRole() == classroom::Role::Instructor);
     refreshLock();
     if (in) refreshMembers();
+}
+
+void ClassroomPanel::attach(PanelContext& context) {
+    context_ = &context;
+    setTextSource([&context] { return context.editor->toPlainText(); });
+    // In a class, the text is (or becomes) the class's scene: it is read with
+    // the class's bounds on size and work, as the server checks it.
+    connect(client_.get(), &ClassroomClient::stateChanged, this, [this, &context] {
+        const bool inClass = client_->state() != ClassroomClient::State::Disconnected;
+        context.parser->setLimits(inClass ? editor::ParseLimits{classroom::readOptionsFor({}),
+                                                                classroom::workBudgetFor({})}
+                                          : editor::ParseLimits{});
+    });
+    connect(this, &ClassroomPanel::sharedSceneChanged, this, &ClassroomPanel::showSharedScene);
+    // Replaying the class's history: the view shows a past version; the
+    // editor keeps the present (and anything unsent).
+    connect(this, &ClassroomPanel::historyShown, this,
+            [&context](const QString& text, qint64 version) {
+                if (text.isEmpty()) { // back to now: the editor's scene again
+                    if (const auto now = context.parser->lastGoodScene()) context.showScene(now);
+                    context.status->showMessage(tr("the class scene as it is now"), 3000);
+                    return;
+                }
+                scene::ReadResult r = scene::readSceneBytes(text.toStdString(), "class.x3d");
+                if (!r.ok()) return;
+                context.showScene(std::shared_ptr<const scene::Scene>(std::move(r.scene)));
+                context.status->showMessage(
+                    tr("replaying the class: version %1 (press Now to come back)").arg(version));
+            });
+    // The tools go to the point chosen: on the clicked shape, or on the
+    // function shape the haptic tool touches, in that shape's coordinates.
+    connect(&context, &PanelContext::pointChosen, this,
+            [this, &context](field::Vec3 point, int shape) {
+                const auto meshes = context.view->meshes();
+                if (!meshes) return;
+                for (std::size_t i = 0; i < meshes->shapes.size(); ++i) {
+                    const mesh::ShapeMesh& s = meshes->shapes[i];
+                    if (shape >= 0 && i != std::size_t(shape)) continue;
+                    if (shape < 0 && !s.field) continue;
+                    const auto local = mesh::shapeCoordinates(s, point);
+                    if (shape < 0 && (!local || !s.field->box.contains(*local))) continue;
+                    setToolPoint(local, s.field ? s.field->box.diagonal() : s.domain.diagonal());
+                    return;
+                }
+            });
+    context.fileMenu->addAction(tr("&Join Class…"), this, [this] {
+        show();
+        raise();
+        url_->setFocus();
+    });
+}
+
+void ClassroomPanel::showSharedScene(const QString& text, qint64 version, const QString& author) {
+    PanelContext& c = *context_;
+    const QString mine = c.editor->toPlainText();
+    // Unsent work in the editor is never overwritten: the student sends it
+    // (refused as stale, it is kept and applied on the new version) or
+    // discards it with Undo.
+    if (!lastSharedScene_.isEmpty() && mine != lastSharedScene_ && mine != text) {
+        lastSharedScene_ = text;
+        c.status->showMessage(
+            tr("The class scene is at version %1 (%2); your unsent edit stays in the editor: "
+               "send it, or undo it to see the class's")
+                .arg(version)
+                .arg(visibleText(author)));
+        return;
+    }
+    const bool first = lastSharedScene_.isEmpty();
+    lastSharedScene_ = text;
+    // The class's scene is nobody's file: Save asks where, never over the
+    // file that was open before joining.
+    if (first) c.forgetPath();
+    if (mine != text) {
+        c.editor->setPlainText(text);
+        c.editor->document()->setModified(false);
+    }
+    c.status->showMessage(tr("class scene, version %1 by %2").arg(version).arg(visibleText(author)),
+                          5000);
 }
 
 } // namespace fl::suite

@@ -41,8 +41,13 @@ class ClassroomPanel : public Panel {
     // Where the scene the student edits comes from (the window's editor).
     void setTextSource(std::function<QString()> source) { text_ = std::move(source); }
 
-    // Joins (a student unless `role` says otherwise); the answer comes as
-    // signals and in the panel.
+    // Its place in the window: the editor's text is what it sends, the
+    // class's scene comes into the editor and the view, a chosen point of
+    // the scene is the tools' place; File → Join Class.
+    void attach(PanelContext& context) override;
+
+    // Joins (a student unless `role` says otherwise), once unsaved work in
+    // the editor is saved or kept; the answer comes as signals and in the panel.
     void join(const QString& url, const QString& classCode, const QString& name,
               classroom::Role role = classroom::Role::Student, const QString& key = {});
     classroom::Role chosenRole() const;
@@ -83,11 +88,16 @@ class ClassroomPanel : public Panel {
     void sharedSceneChanged(const QString& text, qint64 version, const QString& author);
 
   private:
+    // The class's scene into the editor, never over unsent work (the
+    // student sends it, or undoes it to see the class's).
+    void showSharedScene(const QString& text, qint64 version, const QString& author);
     void refreshMembers();
     void refreshLock();
     void refreshState();
     void say(const QString& line); // into the chat view, as the panel's own note
 
+    PanelContext* context_ = nullptr;
+    QString lastSharedScene_; // the class's scene as last shown in the editor
     std::unique_ptr<classroom::ClassroomClient> client_;
     std::function<QString()> text_;
     std::optional<field::Vec3> toolPoint_;

@@ -24,4 +24,10 @@ ExamplesDock::ExamplesDock(QWidget* parent, const QString& folder)
     });
 }
 
+void ExamplesDock::attach(PanelContext& context) {
+    connect(this, &ExamplesDock::exampleChosen, this, [&context](const QString& path) {
+        if (context.keepChanges()) context.open(path);
+    });
+}
+
 } // namespace fl::suite

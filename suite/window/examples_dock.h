@@ -12,6 +12,7 @@ class ExamplesDock : public Panel {
   public:
     // The examples of `folder` (default: examplesFolder()).
     explicit ExamplesDock(QWidget* parent = nullptr, const QString& folder = {});
+    void attach(PanelContext& context) override;
 
     QListWidget* list() const { return list_; }
 

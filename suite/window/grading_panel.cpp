@@ -1,6 +1,7 @@
 #include "grading_panel.h"
 
 #include "catalogue.h"
+#include "checker.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
 #include "signing.h"
@@ -8,11 +9,13 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
@@ -344,6 +347,57 @@ bool GradingPanel::exportTo(const QString& path, grading::ExportFormat format, Q
         return false;
     }
     return true;
+}
+
+void GradingPanel::attach(PanelContext& context) {
+    context_ = &context;
+    hide(); // until a gradebook is open
+    connect(this, &GradingPanel::openSubmission, this, [&context](const QString& where) {
+        const QString file = QString::fromStdString(grading::sceneFileOf(where.toStdString()));
+        if (context.keepChanges()) context.open(file.isEmpty() ? where : file);
+    });
+    context.courseMenu->addAction(tr("Open &Gradebook…"), this, &GradingPanel::gradebookDialog);
+    context.courseMenu->addAction(tr("&Export Grades…"), this, &GradingPanel::exportDialog);
+}
+
+void GradingPanel::gradebookDialog() {
+    const QString path =
+        QFileDialog::getOpenFileName(context_->window, tr("Open a gradebook"), QString(),
+                                     tr("Gradebooks (*.sqlite *.db);;All (*)"));
+    if (path.isEmpty()) return;
+    QString why;
+    if (!openGradebook(path, {}, &why)) {
+        context_->problem(tr("Cannot open the gradebook %1: %2").arg(path, why));
+        return;
+    }
+    show();
+    raise();
+}
+
+void GradingPanel::exportDialog() {
+    if (!book_) {
+        context_->problem(tr("Open a gradebook first (Course → Open Gradebook)."));
+        return;
+    }
+    // The format is the chosen line, matched whole (a translated label is
+    // never read for its first word).
+    const std::pair<QString, grading::ExportFormat> formats[] = {
+        {tr("Canvas CSV (*.csv)"), grading::ExportFormat::Canvas},
+        {tr("Moodle CSV (*.csv)"), grading::ExportFormat::Moodle},
+        {tr("Full CSV (*.csv)"), grading::ExportFormat::Csv},
+        {tr("Gradescope folder (*)"), grading::ExportFormat::Gradescope}};
+    QStringList filters;
+    for (const auto& [label, format] : formats)
+        filters << label;
+    QString chosen;
+    const QString path = QFileDialog::getSaveFileName(context_->window, tr("Export grades"),
+                                                      QString(), filters.join(";;"), &chosen);
+    if (path.isEmpty()) return;
+    grading::ExportFormat format = grading::ExportFormat::Csv;
+    for (const auto& [label, f] : formats)
+        if (label == chosen) format = f;
+    QString why;
+    if (!exportTo(path, format, &why)) context_->problem(tr("Not exported: %1").arg(why));
 }
 
 } // namespace fl::suite

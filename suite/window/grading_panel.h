@@ -29,6 +29,9 @@ class GradingPanel : public Panel {
     Q_OBJECT
   public:
     explicit GradingPanel(QWidget* parent = nullptr);
+    // Its place in the window: Course → Open Gradebook and Export Grades; a
+    // submission opens in the editor. Hidden until a gradebook is open.
+    void attach(PanelContext& context) override;
 
     // Opens a gradebook and shows `assignmentId` (or its first assignment).
     // False, with `error`, when it cannot be read.
@@ -54,6 +57,9 @@ class GradingPanel : public Panel {
     void openSubmission(const QString& path);
 
   private:
+    void gradebookDialog();
+    void exportDialog();
+    PanelContext* context_ = nullptr;
     void fillTable();
     // After a change: the head signed with the instructor's key when there is
     // one (FUNCTIONLAB_GRADING_KEY or ~/.config/functionlab/grading.key),

@@ -1,5 +1,6 @@
 #include "gui.h"
 
+#include "classroom_panel.h"
 #include "examples.h"
 #include "main_window.h"
 
@@ -106,9 +107,9 @@ int runWindow(int argc, char** argv, const std::string& file,
         if (!QFileInfo::exists(melon) || !window.openFile(melon)) window.newScene();
     }
     if (join)
-        window.joinClass(QString::fromStdString(join->url), QString::fromStdString(join->classCode),
-                         QString::fromStdString(join->name), join->role,
-                         QString::fromStdString(join->key));
+        window.classroomPanel()->join(
+            QString::fromStdString(join->url), QString::fromStdString(join->classCode),
+            QString::fromStdString(join->name), join->role, QString::fromStdString(join->key));
     return app.exec();
 }
 

@@ -1,6 +1,10 @@
 #include "haptics_panel.h"
 
+#include "picking.h"
 #include "plain_text.h"
+#include "render_scene.h"
+#include "scene_player.h"
+#include "scene_widget.h"
 
 #include "device/device_enumeration.h"
 #include "device/device_limits.h"
@@ -280,6 +284,58 @@ void HapticsPanel::refresh() {
     for (const std::string& r : loop_->reports())
         reports << QString::fromStdString(r);
     if (!reports.isEmpty()) notes_->setText(reports.join(QLatin1Char('\n')));
+}
+
+void HapticsPanel::attach(PanelContext& context) {
+    context_ = &context;
+    viewer::SceneWidget* view = context.view;
+    connect(view, &viewer::SceneWidget::hovered, this, [this](QPointF pixel) {
+        if (feeling()) touchPixel(pixel);
+    });
+    connect(this, &HapticsPanel::touchChanged, this, [view, &context](std::optional<TouchMarks> m) {
+        if (!m) {
+            view->setTouch(std::nullopt);
+            return;
+        }
+        // In contact, the proxy is a point of the scene the student chose
+        // (the classroom's tools go there).
+        if (m->contact) Q_EMIT context.pointChosen(m->proxy, -1);
+        auto q = [](const field::Vec3& v) {
+            return QVector3D(float(v[0]), float(v[1]), float(v[2]));
+        };
+        view->setTouch(
+            viewer::RenderScene::Touch{q(m->tool), q(m->proxy), q(m->force), float(m->maxForce)});
+    });
+    connect(context.player, &viewer::ScenePlayer::timeChanged, this, &HapticsPanel::setSceneTime);
+    // Friction or density as colour: each frame coloured on the panel's worker.
+    connect(context.player, &viewer::ScenePlayer::meshesReady, this,
+            [this](std::shared_ptr<const mesh::SceneMeshes> frame, double) {
+                lastFrame_ = frame;
+                if (colours()) colour(frame);
+            });
+    connect(this, &HapticsPanel::showOnSurfaceChanged, this, [this, view] {
+        if (!lastFrame_) return;
+        if (colours())
+            colour(lastFrame_);
+        else
+            view->setMeshes(lastFrame_);
+    });
+    connect(this, &HapticsPanel::frameColoured, this,
+            [this, view](std::shared_ptr<const mesh::SceneMeshes> coloured) {
+                if (lastFrame_ && coloured->source == lastFrame_->source) view->setMeshes(coloured);
+            });
+}
+
+void HapticsPanel::touchPixel(QPointF pixel) {
+    viewer::SceneWidget* view = context_->view;
+    const auto meshes = view->meshes();
+    if (!meshes || meshes->source != context_->scene()) return;
+    const auto p =
+        viewer::pick(*meshes, viewer::rayThroughPixel(view->pose(), view->size(), pixel));
+    if (p)
+        touchAt(p->point, p->normal);
+    else
+        touchAt(std::nullopt);
 }
 
 } // namespace fl::suite

@@ -14,6 +14,7 @@
 #include "field/box3.h"
 #include "field/vec3.h"
 
+#include <QPointF>
 #include <QTimer>
 
 #include <memory>
@@ -63,7 +64,14 @@ class HapticsPanel : public Panel {
     // Something in the current scene is tangible.
     bool tangible() const { return tangible_; }
     // Snapshot work running or waiting.
-    bool busy() const { return worker_.busy() || colourer_.busy(); }
+    bool busy() const override { return worker_.busy() || colourer_.busy(); }
+
+    // Its place in the window: the mouse over the view is the tool while
+    // feeling; the view draws the tool, the proxy and the force; each frame
+    // is coloured by friction or density when asked; the timeline's time.
+    void attach(PanelContext& context) override;
+    // The mouse at this pixel of the view: the tool to the surface under it.
+    void touchPixel(QPointF pixel);
 
     // The mouse over the view: the point under it on a surface and the
     // surface's outward normal there (scene coordinates); none: off the shapes.
@@ -96,6 +104,8 @@ class HapticsPanel : public Panel {
     void showOnSurfaceChanged(); // the window shows the frame again, coloured or not
 
   private:
+    PanelContext* context_ = nullptr;
+    std::shared_ptr<const mesh::SceneMeshes> lastFrame_; // the view's, uncoloured
     struct Request {
         std::shared_ptr<const scene::Scene> scene;
         double seconds = 0;

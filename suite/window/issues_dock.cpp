@@ -1,5 +1,6 @@
 #include "issues_dock.h"
 
+#include "live_parser.h"
 #include "scene/scene_diagnostic.h"
 
 #include <QListWidget>
@@ -16,6 +17,13 @@ IssuesDock::IssuesDock(QWidget* parent)
     };
     connect(list_, &QListWidget::itemActivated, this, activated);
     connect(list_, &QListWidget::itemClicked, this, activated);
+}
+
+void IssuesDock::attach(PanelContext& context) {
+    connect(this, &IssuesDock::issueActivated, this,
+            [&context](int line, int column) { context.goTo(line, column); });
+    connect(context.parser, &editor::LiveParser::parsed, this,
+            [this](const editor::ParseOutcome& outcome) { showDiagnostics(outcome.all); });
 }
 
 void IssuesDock::showDiagnostics(const std::vector<scene::SceneDiagnostic>& diagnostics) {

@@ -14,6 +14,7 @@ class IssuesDock : public Panel {
     Q_OBJECT
   public:
     explicit IssuesDock(QWidget* parent = nullptr);
+    void attach(PanelContext& context) override;
 
     QListWidget* list() const { return list_; }
 

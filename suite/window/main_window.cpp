@@ -110,8 +110,11 @@ MainWindow::MainWindow(QWidget* parent)
       screenError_(plainLabel()), errorMeter_(new ScreenErrorMeter(this)) {
     setWindowTitle(QStringLiteral("FunctionLab[*]"));
     setCentralWidget(view_);
-    buildDocks();
+    buildContext();
     buildMenus();
+    buildDocks();
+    context_.fileMenu->addSeparator();
+    context_.fileMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     auto* timeBar = new QToolBar(tr("Timeline"));
     timeBar->setObjectName(QStringLiteral("timeline"));
@@ -124,13 +127,6 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QString& text) { screenError_->setText(visibleText(text)); });
 
     connect(editor_, &QPlainTextEdit::textChanged, this, [this] {
-        // In a class, the text is (or becomes) the class's scene: it is read
-        // with the class's bounds on size and work, as the server checks it.
-        const bool inClass =
-            classroom_->client()->state() != classroom::ClassroomClient::State::Disconnected;
-        parser_->setLimits(inClass ? editor::ParseLimits{classroom::readOptionsFor({}),
-                                                         classroom::workBudgetFor({})}
-                                   : editor::ParseLimits{});
         parser_->setText(editor_->toPlainText(), path_);
         recoveryTimer_.start();
         setWindowModified(isModified());
@@ -173,14 +169,7 @@ MainWindow::MainWindow(QWidget* parent)
             return;
         }
         view_->setMarker(QVector3D(float(p->point[0]), float(p->point[1]), float(p->point[2])));
-        // The classroom tools go there, in the clicked shape's own coordinates.
-        {
-            const mesh::ShapeMesh& s = meshes->shapes[p->shapeIndex];
-            const auto back = field::Affine::fromMatrix(s.placement).inverse();
-            const double size = s.field ? s.field->box.diagonal() : s.domain.diagonal();
-            classroom_->setToolPoint(back ? std::optional(back->point(p->point)) : std::nullopt,
-                                     size);
-        }
+        Q_EMIT context_.pointChosen(p->point, int(p->shapeIndex)); // the classroom's tools
         // A TouchSensor over the shape hears the click (the fan starts).
         if (meshes->source == scene_)
             for (const scene::Node* sensor : p->touchSensors)
@@ -205,7 +194,6 @@ MainWindow::MainWindow(QWidget* parent)
     connect(view_, &viewer::SceneWidget::hovered, this, [this](QPointF pixel) {
         hoverPixel_ = pixel;
         hoverTimer_.start();
-        if (haptics_->feeling()) touchAt(pixel);
     });
     connect(&hoverTimer_, &QTimer::timeout, this, [this] {
         const auto meshes = view_->meshes();
@@ -227,7 +215,13 @@ MainWindow::MainWindow(QWidget* parent)
     resize(wanted);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The panels go first, while what they were handed (context_, the
+    // editor, the parser) is still there: one leaving a class on its way
+    // out still talks to the parser.
+    qDeleteAll(panels_);
+    panels_.clear();
+}
 
 void MainWindow::dockPanel(Panel* panel, bool tabbed) {
     panel->setParent(this);
@@ -237,6 +231,30 @@ void MainWindow::dockPanel(Panel* panel, bool tabbed) {
     addDockWidget(panel->area(), panel);
     if (tabbed && beside) tabifyDockWidget(beside, panel);
     panels_.push_back(panel);
+    panel->attach(context_);
+}
+
+void MainWindow::buildContext() {
+    context_.window = this;
+    context_.editor = editor_;
+    context_.parser = parser_;
+    context_.view = view_;
+    context_.player = player_;
+    context_.status = statusBar();
+    context_.keepChanges = [this] { return maybeKeepChanges(); };
+    context_.open = [this](const QString& path) { return openFile(path); };
+    context_.goTo = [this](int line, int column) { editor_->goTo(line, column); };
+    context_.problem = [this](const QString& text) { problem(text); };
+    context_.path = [this] { return path_; };
+    context_.forgetPath = [this] { setPath(QString()); };
+    context_.scene = [this] { return scene_; };
+    context_.textParses = [this] { return textParses_; };
+    context_.showScene = [this](std::shared_ptr<const scene::Scene> scene) { sceneChanged(scene); };
+    context_.chooseResolution = [this](const scene::Node* geometry, double resolution) {
+        chosenResolutions_[geometry] = resolution;
+        playResolutions();
+    };
+    context_.prompts = [this] { return prompts_; };
 }
 
 QListWidget* MainWindow::issues() const {
@@ -288,6 +306,7 @@ void MainWindow::buildDocks() {
     accuracy_ = addPanel(new AccuracyPanel, true);
     haptics_ = addPanel(new HapticsPanel, true);
     classroom_ = addPanel(new ClassroomPanel, true);
+    grading_ = addPanel(new GradingPanel);
     examples_->raise();
     // Tab titles are never cut short; should a screen be too short for the
     // bar, it scrolls rather than squeezing the view.
@@ -297,85 +316,6 @@ void MainWindow::buildDocks() {
             bar->setElideMode(Qt::ElideNone);
         }
     });
-
-    auto goTo = [this](int line, int column) { editor_->goTo(line, column); };
-    connect(issues_, &IssuesDock::issueActivated, this, goTo);
-    connect(assignment_, &AssignmentPanel::locationActivated, this, goTo);
-    // The Accuracy panel's choice: this shape at that resolution, now.
-    connect(accuracy_, &AccuracyPanel::resolutionChosen, this,
-            [this](const scene::Node* geometry, double resolution) {
-                chosenResolutions_[geometry] = resolution;
-                playResolutions();
-            });
-    connect(accuracy_, &AccuracyPanel::writeRequested, this, &MainWindow::writeResolution);
-    // Feeling with the mouse: the tool follows the point under the cursor;
-    // the view draws the tool, the proxy and the force.
-    connect(haptics_, &HapticsPanel::touchChanged, this, [this](std::optional<TouchMarks> m) {
-        if (!m) {
-            view_->setTouch(std::nullopt);
-            return;
-        }
-        // With a device (or the mouse's stand-in) touching a function shape,
-        // the classroom tools go where the proxy is, in that shape's coordinates.
-        if (m->contact)
-            if (const auto meshes = view_->meshes())
-                for (const mesh::ShapeMesh& s : meshes->shapes) {
-                    if (!s.field) continue;
-                    const auto back = field::Affine::fromMatrix(s.placement).inverse();
-                    if (!back) continue;
-                    const field::Vec3 local = back->point(m->proxy);
-                    if (!s.field->box.contains(local)) continue;
-                    classroom_->setToolPoint(local, s.field->box.diagonal());
-                    break;
-                }
-        auto q = [](const field::Vec3& v) {
-            return QVector3D(float(v[0]), float(v[1]), float(v[2]));
-        };
-        view_->setTouch(
-            viewer::RenderScene::Touch{q(m->tool), q(m->proxy), q(m->force), float(m->maxForce)});
-    });
-    connect(player_, &viewer::ScenePlayer::timeChanged, haptics_, &HapticsPanel::setSceneTime);
-    // The class's shared scene in the editor and the view; the editor's text
-    // is what the student sends.
-    classroom_->setTextSource([this] { return editor_->toPlainText(); });
-    connect(classroom_, &ClassroomPanel::sharedSceneChanged, this, &MainWindow::showSharedScene);
-    // Replaying the class's history: the view shows a past version; the
-    // editor keeps the present (and anything unsent).
-    connect(classroom_, &ClassroomPanel::historyShown, this,
-            [this](const QString& text, qint64 version) {
-                if (text.isEmpty()) { // back to now: the editor's scene again
-                    if (const auto now = parser_->lastGoodScene()) sceneChanged(now);
-                    statusBar()->showMessage(tr("the class scene as it is now"), 3000);
-                    return;
-                }
-                scene::ReadResult r = scene::readSceneBytes(text.toStdString(), "class.x3d");
-                if (!r.ok()) return;
-                sceneChanged(std::shared_ptr<const scene::Scene>(std::move(r.scene)));
-                statusBar()->showMessage(
-                    tr("replaying the class: version %1 (press Now to come back)").arg(version));
-            });
-    // Friction or density as colour: each frame coloured on the panel's worker.
-    connect(haptics_, &HapticsPanel::showOnSurfaceChanged, this, [this] {
-        if (!shownFrame_) return;
-        if (haptics_->colours())
-            haptics_->colour(shownFrame_);
-        else
-            view_->setMeshes(shownFrame_);
-    });
-    connect(haptics_, &HapticsPanel::frameColoured, this,
-            [this](std::shared_ptr<const mesh::SceneMeshes> coloured) {
-                if (shownFrame_ && coloured->source == shownFrame_->source)
-                    view_->setMeshes(coloured);
-            });
-    connect(assignment_, &AssignmentPanel::starterChosen, this, [this](const QString& path) {
-        if (maybeKeepChanges()) openFile(path);
-    });
-    connect(tree_, &SceneTreeDock::nodeActivated, this, goTo);
-    connect(examples_, &ExamplesDock::exampleChosen, this, [this](const QString& path) {
-        if (maybeKeepChanges()) openFile(path);
-    });
-    connect(parameters_, &ParametersDock::valuesChanged, player_,
-            [this](const ParametersDock::Values& values) { player_->setParameters(values); });
 }
 
 void MainWindow::buildMenus() {
@@ -387,21 +327,12 @@ void MainWindow::buildMenus() {
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
-    file->addAction(tr("&Join Class…"), this, [this] {
-        classroom_->show();
-        classroom_->raise();
-        classroom_->urlField()->setFocus();
-    });
     file->addSeparator();
     file->addAction(tr("Export &Mesh…"), this, &MainWindow::exportMesh);
     file->addAction(tr("Export &Image…"), this, &MainWindow::exportImage);
-    file->addSeparator();
-    file->addAction(tr("&Hand In…"), this, &MainWindow::handInDialog);
-    QMenu* course = menuBar()->addMenu(tr("&Course"));
-    course->addAction(tr("Open &Gradebook…"), this, &MainWindow::gradebookDialog);
-    course->addAction(tr("&Export Grades…"), this, &MainWindow::exportGradesDialog);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    file->addSeparator(); // the panels' actions (Hand In, Join Class), then Quit
+    context_.fileMenu = file;
+    context_.courseMenu = menuBar()->addMenu(tr("&Course"));
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(tr("&Undo"), QKeySequence::Undo, editor_, &QPlainTextEdit::undo);
@@ -497,7 +428,7 @@ QString MainWindow::screenErrorText() const {
 
 bool MainWindow::busy() const {
     return parser_->pending() || player_->busy() || lodTimer_.isActive() || errorMeter_->busy() ||
-           haptics_->busy();
+           std::any_of(panels_.begin(), panels_.end(), [](const Panel* p) { return p->busy(); });
 }
 
 bool MainWindow::isModified() const {
@@ -649,7 +580,6 @@ void MainWindow::fillRecentMenu() {
 
 void MainWindow::parsed(const editor::ParseOutcome& outcome) {
     editor_->setDiagnostics(outcome.inThisFile);
-    issues_->showDiagnostics(outcome.all);
     textParses_ = outcome.scene != nullptr;
     if (!outcome.scene)
         statusBar()->showMessage(tr("The text has errors: the view shows the last good scene"));
@@ -670,54 +600,6 @@ void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     player_->setScene(scene);
 }
 
-void MainWindow::joinClass(const QString& url, const QString& classCode, const QString& name,
-                           classroom::Role role, const QString& key) {
-    // The class's scene will take the editor: unsaved work is saved or kept first.
-    if (!maybeKeepChanges()) return;
-    lastSharedScene_.clear();
-    classroom_->show();
-    classroom_->raise();
-    classroom_->join(url, classCode, name, role, key);
-}
-
-void MainWindow::showSharedScene(const QString& text, qint64 version, const QString& author) {
-    const QString mine = editor_->toPlainText();
-    // Unsent work in the editor is never overwritten: the student sends it
-    // (refused as stale, it is kept and applied on the new version) or
-    // discards it with Undo.
-    if (!lastSharedScene_.isEmpty() && mine != lastSharedScene_ && mine != text) {
-        lastSharedScene_ = text;
-        statusBar()->showMessage(
-            tr("The class scene is at version %1 (%2); your unsent edit stays in the editor: "
-               "send it, or undo it to see the class's")
-                .arg(version)
-                .arg(visibleText(author)));
-        return;
-    }
-    const bool first = lastSharedScene_.isEmpty();
-    lastSharedScene_ = text;
-    // The class's scene is nobody's file: Save asks where, never over the
-    // file that was open before joining.
-    if (first) setPath(QString());
-    if (mine != text) {
-        editor_->setPlainText(text);
-        editor_->document()->setModified(false);
-    }
-    statusBar()->showMessage(
-        tr("class scene, version %1 by %2").arg(version).arg(visibleText(author)), 5000);
-}
-
-void MainWindow::touchAt(QPointF pixel) {
-    const auto meshes = view_->meshes();
-    if (!meshes || meshes->source != scene_) return;
-    const auto p =
-        viewer::pick(*meshes, viewer::rayThroughPixel(view_->pose(), view_->size(), pixel));
-    if (p)
-        haptics_->touchAt(p->point, p->normal);
-    else
-        haptics_->touchAt(std::nullopt);
-}
-
 void MainWindow::playResolutions() {
     // The level of detail's resolutions, but a shape whose resolution was
     // chosen in the Accuracy panel keeps that choice.
@@ -725,37 +607,6 @@ void MainWindow::playResolutions() {
     for (const auto& [geometry, resolution] : chosenResolutions_)
         resolutions[geometry] = resolution;
     player_->setResolutions(std::move(resolutions));
-}
-
-bool MainWindow::writeResolution(const scene::Node* geometry, double resolution) {
-    // The edits are offsets into the text the scene was read from: only when
-    // that is still the editor's text.
-    const std::string text = editor_->toPlainText().toStdString();
-    if (!scene_ || scene_->files.empty() || scene_->files[0].text != text || !geometry) {
-        problem(tr("The text changed since it was last read: wait for it to parse, then write "
-                   "the resolution again."));
-        return false;
-    }
-    std::string why;
-    const auto edits = AccuracyPanel::resolutionEdits(*scene_, *geometry, resolution, &why);
-    if (edits.empty()) {
-        problem(tr("The resolution cannot be written into the text: %1")
-                    .arg(QString::fromStdString(why)));
-        return false;
-    }
-    // One undoable step in the editor; offsets in bytes become characters.
-    QTextCursor cursor(editor_->document());
-    cursor.beginEditBlock();
-    for (const scene::TextEdit& e : edits) {
-        const auto at = QString::fromUtf8(text.data(), qsizetype(e.offset)).size();
-        const auto end = QString::fromUtf8(text.data(), qsizetype(e.offset + e.length)).size();
-        cursor.setPosition(int(at));
-        cursor.setPosition(int(end), QTextCursor::KeepAnchor);
-        cursor.insertText(QString::fromStdString(e.text));
-    }
-    cursor.endEditBlock();
-    statusBar()->showMessage(tr("resolution %1 written into the scene").arg(resolution), 5000);
-    return true;
 }
 
 void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double) {
@@ -773,8 +624,6 @@ void MainWindow::meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, do
         (walk ? walkAction_ : examineAction_)->trigger();
     }
     view_->setMeshes(meshes);
-    shownFrame_ = meshes;
-    if (haptics_->colours()) haptics_->colour(meshes);
     viewpoints_->showViewpoints(view_->viewpointNames());
     double ms = 0;
     for (const auto& s : meshes->shapes)
@@ -864,105 +713,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/state"), saveState());
     if (!isModified()) QFile::remove(recoveryPath());
     event->accept();
-}
-
-void MainWindow::handInDialog() {
-    if (!assignment_->assignment()) {
-        problem(tr("Choose the assignment in the Assignment panel first."));
-        return;
-    }
-    const QString parent = QFileDialog::getExistingDirectory(
-        this, tr("Hand in: where to put the submission"),
-        path_.isEmpty() ? QDir::homePath() : QFileInfo(path_).path());
-    if (parent.isEmpty()) return;
-    const QString name =
-        QStringLiteral("%1-%2")
-            .arg(QFileInfo(path_.isEmpty() ? QStringLiteral("scene") : path_).completeBaseName())
-            .arg(QString::fromStdString(assignment_->assignment()->id));
-    if (handIn(QDir(parent).filePath(name)) && prompts_)
-        informPlainly(this, tr("Handed in"),
-                      tr("Your submission is in %1.\n%2")
-                          .arg(QDir(parent).filePath(name), statusBar()->currentMessage()));
-}
-
-bool MainWindow::handIn(const QString& folder) {
-    const courseware::Assignment* a = assignment_->assignment();
-    if (!a) {
-        problem(tr("Choose the assignment in the Assignment panel first."));
-        return false;
-    }
-    if (path_.isEmpty()) {
-        problem(tr("Save the scene first: a submission is a scene file and what it uses."));
-        return false;
-    }
-    if (!scene_ || !textParses_) {
-        problem(tr("The scene has errors: fix them (see Issues) before handing in."));
-        return false;
-    }
-    // The last check, on this very text, before it leaves.
-    const grading::CheckReport report = grading::checkScene(*scene_, a->requirements);
-    const courseware::HandIn done = courseware::packSubmission(
-        *scene_, path_.toStdString(), editor_->toPlainText().toStdString(), folder.toStdString());
-    if (!done.ok) {
-        problem(tr("Not handed in: %1")
-                    .arg(QString::fromStdString(done.problems.empty() ? "" : done.problems[0])));
-        return false;
-    }
-    statusBar()->showMessage(tr("Handed in %1 file(s); the checker gives %2 of %3 points%4")
-                                 .arg(done.packed.size())
-                                 .arg(report.score)
-                                 .arg(report.maxScore)
-                                 .arg(done.problems.empty()
-                                          ? QString()
-                                          : tr(" (%1 file(s) not packed: %2)")
-                                                .arg(done.problems.size())
-                                                .arg(QString::fromStdString(done.problems[0]))));
-    return true;
-}
-
-bool MainWindow::openGradebook(const QString& path, QString* error) {
-    if (!grading_) {
-        grading_ = addPanel(new GradingPanel);
-        connect(grading_, &GradingPanel::openSubmission, this, [this](const QString& where) {
-            const QString file = QString::fromStdString(grading::sceneFileOf(where.toStdString()));
-            if (maybeKeepChanges()) openFile(file.isEmpty() ? where : file);
-        });
-    }
-    QString why;
-    if (!grading_->openGradebook(path, {}, &why)) {
-        problem(tr("Cannot open the gradebook %1: %2").arg(path, why));
-        if (error) *error = why;
-        return false;
-    }
-    grading_->show();
-    grading_->raise();
-    return true;
-}
-
-void MainWindow::gradebookDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open a gradebook"), QString(),
-                                                      tr("Gradebooks (*.sqlite *.db);;All (*)"));
-    if (!path.isEmpty()) openGradebook(path);
-}
-
-void MainWindow::exportGradesDialog() {
-    if (!grading_) {
-        problem(tr("Open a gradebook first (Course → Open Gradebook)."));
-        return;
-    }
-    QString filter;
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export grades"), QString(),
-        tr("Canvas CSV (*.csv);;Moodle CSV (*.csv);;Full CSV (*.csv);;Gradescope folder (*)"),
-        &filter);
-    if (path.isEmpty()) return;
-    const grading::ExportFormat format =
-        filter.startsWith(QStringLiteral("Canvas"))       ? grading::ExportFormat::Canvas
-        : filter.startsWith(QStringLiteral("Moodle"))     ? grading::ExportFormat::Moodle
-        : filter.startsWith(QStringLiteral("Gradescope")) ? grading::ExportFormat::Gradescope
-                                                          : grading::ExportFormat::Csv;
-    QString why;
-    if (!grading_->exportTo(path, format, &why)) problem(tr("Not exported: %1").arg(why));
 }
 
 } // namespace fl::suite

@@ -4,7 +4,7 @@
 // docks; the timeline below; a status bar with triangles, meshing time,
 // frame rate and t. Every file operation reports problems in the window,
 // never by crashing, and unsaved text is kept in a recovery file.
-#include "classroom/protocol.h"
+#include "panel_context.h"
 
 #include <QMainWindow>
 #include <QPointF>
@@ -89,30 +89,19 @@ class MainWindow : public QMainWindow {
     QListWidget* examples() const;
     const viewer::LevelOfDetail& levelOfDetail() const { return *lod_; }
     AssignmentPanel* assignmentPanel() const { return assignment_; }
-    // The instructor's grading panel (made when a gradebook is first opened).
+    // The instructor's grading panel (hidden until a gradebook is open).
     GradingPanel* gradingPanel() const { return grading_; }
-    bool openGradebook(const QString& path, QString* error = nullptr);
-    // File → Hand in: checks once more, then packs the scene and the files
-    // it uses into `folder` (a new one). False, with lastProblem(), if not.
-    bool handIn(const QString& folder);
-    // Writes the Accuracy panel's choice of resolution for `geometry` into
-    // the editor's text (one undoable edit). False, with lastProblem(), if not.
-    bool writeResolution(const scene::Node* geometry, double resolution);
     ScreenErrorMeter* errorMeter() const { return errorMeter_; }
     AccuracyPanel* accuracyPanel() const { return accuracy_; }
     HapticsPanel* hapticsPanel() const { return haptics_; }
     ClassroomPanel* classroomPanel() const { return classroom_; }
-    // Joins a class (File → Join Class…, or `functionlab --join`).
-    void joinClass(const QString& url, const QString& classCode, const QString& name,
-                   classroom::Role role = classroom::Role::Student, const QString& key = {});
-    // Feeling with the mouse: the tool to the surface under this pixel.
-    void touchAt(QPointF pixel);
     // The window's panels, in the order they were added.
     const std::vector<Panel*>& panels() const { return panels_; }
 
     // Docks a panel on its side (tabbed with the panels already there when
-    // `tabbed`) and hands it every scene the window shows from now on. One
-    // line per panel: the assignment, haptics and classroom panels plug in so.
+    // `tabbed`), lets it wire itself (Panel::attach with the window's
+    // PanelContext) and hands it every scene the window shows from now on.
+    // One line per panel.
     template <class P>
     P* addPanel(P* panel, bool tabbed = false) {
         dockPanel(panel, tabbed);
@@ -123,6 +112,7 @@ class MainWindow : public QMainWindow {
     void closeEvent(QCloseEvent* event) override;
 
   private:
+    void buildContext();
     void buildMenus();
     void buildDocks();
     void dockPanel(Panel* panel, bool tabbed);
@@ -131,9 +121,6 @@ class MainWindow : public QMainWindow {
     bool saveAs();
     void exportMesh();
     void exportImage();
-    void handInDialog();
-    void gradebookDialog();
-    void exportGradesDialog();
     bool maybeKeepChanges(); // false: the user cancelled
     void problem(const QString& text);
     void setPath(const QString& path);
@@ -144,10 +131,10 @@ class MainWindow : public QMainWindow {
     void meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds);
     void writeRecovery();
     void playResolutions(); // the level of detail's, with the Accuracy panel's choices
-    void showSharedScene(const QString& text, qint64 version, const QString& author);
 
     QString recoveryPath() const;
 
+    PanelContext context_; // what the panels use of the window
     editor::CodeEditor* editor_;
     editor::FindBar* find_;
     editor::LiveParser* parser_;
@@ -163,7 +150,6 @@ class MainWindow : public QMainWindow {
     AccuracyPanel* accuracy_ = nullptr;
     HapticsPanel* haptics_ = nullptr;
     ClassroomPanel* classroom_ = nullptr;
-    QString lastSharedScene_; // the class's scene as last shown
     std::unordered_map<const scene::Node*, double> chosenResolutions_; // by the Accuracy panel
     GradingPanel* grading_ = nullptr;
     bool textParses_ = true; // the editor's text, as last parsed, has no errors
@@ -184,7 +170,6 @@ class MainWindow : public QMainWindow {
     bool prompts_ = true;
     std::size_t framesAtLastRate_ = 0;
     std::shared_ptr<const scene::Scene> scene_;
-    std::shared_ptr<const mesh::SceneMeshes> shownFrame_; // the last frame, uncoloured
 };
 
 } // namespace fl::suite

@@ -8,6 +8,8 @@ Panel::Panel(const QString& title, const QString& objectName, Qt::DockWidgetArea
     setObjectName(objectName);
 }
 
+void Panel::attach(PanelContext&) {}
+
 void Panel::showScene(const scene::Scene&) {}
 
 void Panel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {

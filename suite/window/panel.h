@@ -1,14 +1,17 @@
 #pragma once
 // A panel of the FunctionLab window: a dock with its title, the object name
 // its place is saved under, and the side it goes to. Each panel is its own
-// class with a narrow interface (slots to show something, signals for what
-// the student did); the main window only assembles them:
+// class: it wires itself to the window's editor, view, player and menus in
+// attach() (panel_context.h), and the window only adds it:
 //
-//     addPanel(new IssuesDock(this));
+//     addPanel(new IssuesDock);
 //
-// and hands each the scene when it changes (showScene). The assignment,
-// haptics and classroom panels plug in the same way.
+// and hands it the scene when it changes (showScene). Hand-in lives in the
+// Assignment panel, gradebooks in the Grading panel, joining a class and
+// the shared scene in the Classroom panel.
 #include <QDockWidget>
+
+#include "panel_context.h"
 
 #include <memory>
 
@@ -25,6 +28,12 @@ class Panel : public QDockWidget {
           QWidget* parent = nullptr);
 
     Qt::DockWidgetArea area() const { return area_; }
+
+    // Called once, when the window adds the panel: it wires itself to the
+    // editor, the view, the player and the menus it needs (panel_context.h).
+    virtual void attach(PanelContext& context);
+    // Working on something the window should wait for (tests ask).
+    virtual bool busy() const { return false; }
 
   public Q_SLOTS:
     // The scene the window now shows (a new one after every good edit). Most

@@ -1,6 +1,7 @@
 #include "parameters_dock.h"
 
 #include "mesh/scene_meshing.h"
+#include "scene_player.h"
 
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -61,6 +62,11 @@ void ParametersDock::showScene(const scene::Scene& scene) {
             Q_EMIT valuesChanged(values_);
         });
     }
+}
+
+void ParametersDock::attach(PanelContext& context) {
+    connect(this, &ParametersDock::valuesChanged, context.player,
+            [&context](const Values& values) { context.player->setParameters(values); });
 }
 
 } // namespace fl::suite

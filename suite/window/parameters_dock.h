@@ -19,6 +19,7 @@ class ParametersDock : public Panel {
     using Values = std::vector<std::pair<std::string, double>>;
 
     explicit ParametersDock(QWidget* parent = nullptr);
+    void attach(PanelContext& context) override;
 
     // The values set with the sliders (parameters left at their defaults are
     // not listed): what the scene is to be meshed with.

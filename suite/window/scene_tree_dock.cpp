@@ -49,4 +49,9 @@ void SceneTreeDock::showScene(const scene::Scene& scene) {
     tree_->expandToDepth(1);
 }
 
+void SceneTreeDock::attach(PanelContext& context) {
+    connect(this, &SceneTreeDock::nodeActivated, this,
+            [&context](int line, int column) { context.goTo(line, column); });
+}
+
 } // namespace fl::suite

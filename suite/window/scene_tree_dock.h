@@ -12,6 +12,7 @@ class SceneTreeDock : public Panel {
     Q_OBJECT
   public:
     explicit SceneTreeDock(QWidget* parent = nullptr);
+    void attach(PanelContext& context) override;
 
     QTreeWidget* tree() const { return tree_; }
 

@@ -73,8 +73,8 @@ class ClassroomWindowTest : public QObject {
             w->show();
             QVERIFY(QTest::qWaitForWindowExposed(w));
         }
-        ada.joinClass(url, QStringLiteral("LAB1"), QStringLiteral("Ada"));
-        ben.joinClass(url, QStringLiteral("LAB1"), QStringLiteral("Ben"));
+        ada.classroomPanel()->join(url, QStringLiteral("LAB1"), QStringLiteral("Ada"));
+        ben.classroomPanel()->join(url, QStringLiteral("LAB1"), QStringLiteral("Ben"));
         auto* adaPanel = ada.classroomPanel();
         auto* benPanel = ben.classroomPanel();
         using State = classroom::ClassroomClient::State;
@@ -187,8 +187,8 @@ class ClassroomWindowTest : public QObject {
             w->show();
             QVERIFY(QTest::qWaitForWindowExposed(w));
         }
-        mallory.joinClass(url, QStringLiteral("LAB2"), evil);
-        ben.joinClass(url, QStringLiteral("LAB2"), QStringLiteral("Ben"));
+        mallory.classroomPanel()->join(url, QStringLiteral("LAB2"), evil);
+        ben.classroomPanel()->join(url, QStringLiteral("LAB2"), QStringLiteral("Ben"));
         auto* m = mallory.classroomPanel();
         auto* b = ben.classroomPanel();
         using State = classroom::ClassroomClient::State;

@@ -211,7 +211,7 @@ class WindowTest : public QObject {
         for (suite::Panel* p : w.panels())
             names << p->objectName();
         QCOMPARE(names, (QStringList{"editor", "tree", "issues", "examples", "parameters",
-                                     "assignment", "accuracy", "haptics", "classroom"}));
+                                     "assignment", "accuracy", "haptics", "classroom", "grading"}));
         auto* counting = w.addPanel(new Counting, true);
         QCOMPARE(w.dockWidgetArea(counting), Qt::RightDockWidgetArea);
         QVERIFY(!w.tabifiedDockWidgets(counting).isEmpty());
@@ -474,19 +474,19 @@ class WindowTest : public QObject {
         QVERIFY(settle(w));
         const QString out = QDir::temp().filePath(QStringLiteral("functionlab-handin-test"));
         QDir(out).removeRecursively();
-        QVERIFY(!w.handIn(out)); // no assignment chosen yet
+        QVERIFY(!w.assignmentPanel()->handIn(out)); // no assignment chosen yet
         QVERIFY(w.lastProblem().contains(QStringLiteral("Assignment panel")));
         QVERIFY(w.assignmentPanel()->choose(QStringLiteral("implicit-fantasies")));
-        QVERIFY(w.handIn(out));
+        QVERIFY(w.assignmentPanel()->handIn(out));
         QVERIFY(QFileInfo::exists(out + QStringLiteral("/fantasy.x3d")));
         QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("100 of 100")));
-        QVERIFY(!w.handIn(out)); // not into a folder that holds something
+        QVERIFY(!w.assignmentPanel()->handIn(out)); // not into a folder that holds something
         // A text with errors is not handed in.
         w.editor()->setPlainText(w.editor()->toPlainText().replace(
             QStringLiteral("ball = 0.8^2"), QStringLiteral("ball = 0.8^^2")));
         QVERIFY(settle(w));
         QDir(out).removeRecursively();
-        QVERIFY(!w.handIn(out));
+        QVERIFY(!w.assignmentPanel()->handIn(out));
         QVERIFY(w.lastProblem().contains(QStringLiteral("errors")));
         QDir(out).removeRecursively();
     }
@@ -571,7 +571,7 @@ class WindowTest : public QObject {
         QCOMPARE(shown(), 12.0);
         // Written into the text: one undoable edit; the scene read again says so.
         const QString before = w.editor()->toPlainText();
-        QVERIFY(!w.writeResolution(nullptr, 12)); // no shape: refused, said why
+        QVERIFY(!w.accuracyPanel()->writeResolution(nullptr, 12)); // no shape: refused, said why
         QVERIFY(!w.lastProblem().isEmpty());
         accuracy->writeButton()->click();
         const QString after = w.editor()->toPlainText();
