@@ -4,6 +4,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QTextCursor>
@@ -48,6 +49,14 @@ FindBar::FindBar(QPlainTextEdit* editor, QWidget* parent)
         editor_->setFocus();
     });
     hide();
+}
+
+void FindBar::fillEditMenu(QMenu* edit) {
+    edit->addAction(tr("&Undo"), QKeySequence::Undo, editor_, &QPlainTextEdit::undo);
+    edit->addAction(tr("&Redo"), QKeySequence::Redo, editor_, &QPlainTextEdit::redo);
+    edit->addSeparator();
+    edit->addAction(tr("&Find…"), QKeySequence::Find, this, [this] { open(false); });
+    edit->addAction(tr("&Replace…"), QKeySequence::Replace, this, [this] { open(true); });
 }
 
 void FindBar::open(bool withReplace) {

@@ -6,6 +6,7 @@
 class QLineEdit;
 class QCheckBox;
 class QLabel;
+class QMenu;
 class QPlainTextEdit;
 
 namespace fl::editor {
@@ -16,6 +17,8 @@ class FindBar : public QWidget {
     explicit FindBar(QPlainTextEdit* editor, QWidget* parent = nullptr);
 
     void open(bool withReplace);
+    // Edit menu: undo, redo (the editor's), find, replace.
+    void fillEditMenu(QMenu* menu);
     bool findNext(bool backwards = false);
     int replaceAll();
     void setPattern(const QString& find, const QString& replace = {});

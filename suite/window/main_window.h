@@ -50,6 +50,11 @@ class AccuracyPanel;
 class HapticsPanel;
 class ClassroomPanel;
 class ScreenErrorMeter;
+class StatusFigures;
+class RecentFilesMenu;
+class ExportActions;
+class DetailDriver;
+class ViewControls;
 class AssignmentPanel;
 class GradingPanel;
 class TimelineBar;
@@ -87,7 +92,7 @@ class MainWindow : public QMainWindow {
     TimelineBar* timeline() const { return timeline_; }
     QWidget* parametersPanel() const;
     QListWidget* examples() const;
-    const viewer::LevelOfDetail& levelOfDetail() const { return *lod_; }
+    const viewer::LevelOfDetail& levelOfDetail() const;
     AssignmentPanel* assignmentPanel() const { return assignment_; }
     // The instructor's grading panel (hidden until a gradebook is open).
     GradingPanel* gradingPanel() const { return grading_; }
@@ -119,20 +124,13 @@ class MainWindow : public QMainWindow {
     void openDialog();
     bool save();
     bool saveAs();
-    void exportMesh();
-    void exportImage();
     bool maybeKeepChanges(); // false: the user cancelled
     void problem(const QString& text);
     void setPath(const QString& path);
-    void addRecent(const QString& path);
-    void fillRecentMenu();
     void parsed(const editor::ParseOutcome& outcome);
     void sceneChanged(std::shared_ptr<const scene::Scene> scene);
     void meshesReady(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds);
     void writeRecovery();
-    void playResolutions(); // the level of detail's, with the Accuracy panel's choices
-
-    QString recoveryPath() const;
 
     PanelContext context_; // what the panels use of the window
     editor::CodeEditor* editor_;
@@ -150,25 +148,20 @@ class MainWindow : public QMainWindow {
     AccuracyPanel* accuracy_ = nullptr;
     HapticsPanel* haptics_ = nullptr;
     ClassroomPanel* classroom_ = nullptr;
-    std::unordered_map<const scene::Node*, double> chosenResolutions_; // by the Accuracy panel
     GradingPanel* grading_ = nullptr;
     bool textParses_ = true; // the editor's text, as last parsed, has no errors
     ViewpointBox* viewpoints_;
-    QAction *examineAction_ = nullptr, *walkAction_ = nullptr;
+    ViewControls* views_;
     bool firstFrameOfScene_ = true;
-    bool lodPending_ = false;
-    std::shared_ptr<const scene::Scene> lodScene_; // the scene whose first frame the LOD saw
-    QMenu* recentMenu_;
-    QLabel *triangles_, *meshTime_, *frameRate_, *timeLabel_;
-    QLabel* screenError_; // the measured max error of what is on screen
+    RecentFilesMenu* recentMenu_ = nullptr;
     ScreenErrorMeter* errorMeter_;
-    QTimer recoveryTimer_, rateTimer_, lodTimer_, hoverTimer_;
-    QPointF hoverPixel_;
-    std::unique_ptr<viewer::LevelOfDetail> lod_;
+    StatusFigures* figures_;
+    ExportActions* exports_ = nullptr;
+    DetailDriver* detail_; // the level of detail, with the Accuracy panel's choices
+    QTimer recoveryTimer_;
     QString path_;
     QString lastProblem_;
     bool prompts_ = true;
-    std::size_t framesAtLastRate_ = 0;
     std::shared_ptr<const scene::Scene> scene_;
 };
 

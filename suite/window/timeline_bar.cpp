@@ -1,5 +1,7 @@
 #include "timeline_bar.h"
 
+#include "scene/field_access.h"
+#include "scene/scene.h"
 #include "scene_player.h"
 
 #include <QDoubleSpinBox>
@@ -9,6 +11,8 @@
 #include <QSlider>
 #include <QStyle>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace fl::suite {
 
@@ -42,6 +46,15 @@ TimelineBar::TimelineBar(viewer::ScenePlayer* player, QWidget* parent)
     QObject::connect(speed_, &QDoubleSpinBox::valueChanged, this,
                      [this](double s) { player_->setSpeed(s); });
     showTime(0);
+}
+
+void TimelineBar::fitTo(const scene::Scene& scene) {
+    double span = 0;
+    scene.forEachNode([&](const scene::Node& n) {
+        if (n.inProtoBody || !n.spec || !scene::findFieldSpec(*n.spec, "cycleInterval")) return;
+        span = std::max(span, scene::numberField(n, "cycleInterval", 0, 1));
+    });
+    setSpan(span > 0 ? std::clamp(span, 1.0, 120.0) : 10.0);
 }
 
 void TimelineBar::setSpan(double seconds) {

@@ -7,6 +7,9 @@ class QLabel;
 class QSlider;
 class QToolButton;
 
+namespace fl::scene {
+struct Scene;
+}
 namespace fl::viewer {
 class ScenePlayer;
 }
@@ -17,6 +20,9 @@ class TimelineBar : public QWidget {
   public:
     TimelineBar(viewer::ScenePlayer* player, QWidget* parent = nullptr);
     void setSpan(double seconds); // the slider's range: 0 .. seconds
+    // Spans the longest cycle among the scene's timed nodes (TimeSensors and
+    // function nodes), within 1 .. 120 s; 10 s when none has one.
+    void fitTo(const scene::Scene& scene);
     void showTime(double seconds);
     QToolButton* playButton() const { return play_; }
     QSlider* slider() const { return slider_; }

@@ -1,0 +1,58 @@
+#include "export_actions.h"
+
+#include "mesh/mesh_export.h"
+#include "mesh/scene_meshing.h"
+#include "panel_context.h"
+#include "scene_player.h"
+#include "scene_widget.h"
+#include "text_outliner.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QImage>
+#include <QMenu>
+#include <QStatusBar>
+
+namespace fl::suite {
+
+ExportActions::ExportActions(PanelContext& context, std::function<Parameters()> parameters,
+                             QObject* parent)
+    : QObject(parent), context_(context), parameters_(std::move(parameters)) {}
+
+void ExportActions::fillMenu(QMenu* file) {
+    file->addAction(tr("Export &Mesh…"), this, &ExportActions::exportMesh);
+    file->addAction(tr("Export &Image…"), this, &ExportActions::exportImage);
+}
+
+void ExportActions::exportMesh() {
+    const auto scene = context_.scene();
+    if (!scene)
+        return context_.problem(tr("There is no scene to export yet: fix the errors listed first"));
+    const QString path = QFileDialog::getSaveFileName(
+        context_.window, tr("Export mesh"), QDir::homePath(),
+        tr("glTF binary (*.glb);;STL (*.stl);;OBJ (*.obj);;PLY (*.ply);;X3D (*.x3d)"));
+    if (path.isEmpty()) return;
+    mesh::SceneMeshOptions o;
+    o.sceneSeconds = context_.player->sceneSeconds();
+    o.parameters = parameters_();
+    o.text = viewer::qtTextOutliner();
+    const mesh::SceneMeshes meshes = mesh::meshScene(*scene, o);
+    std::string error;
+    if (!mesh::writeMesh(mesh::mergeMeshes(meshes.shapes), path.toStdString(), error))
+        context_.problem(QString::fromStdString(error));
+    else
+        context_.status->showMessage(tr("Wrote %1").arg(path), 5000);
+}
+
+void ExportActions::exportImage() {
+    const QString path = QFileDialog::getSaveFileName(context_.window, tr("Export image"),
+                                                      QDir::homePath(), tr("PNG image (*.png)"));
+    if (path.isEmpty()) return;
+    const QImage image = context_.view->grabFrame();
+    if (image.isNull() || !image.save(path))
+        context_.problem(tr("Cannot write the image %1").arg(path));
+    else
+        context_.status->showMessage(tr("Wrote %1").arg(path), 5000);
+}
+
+} // namespace fl::suite
