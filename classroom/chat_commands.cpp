@@ -2,6 +2,7 @@
 
 #include "formula/lexer.h"
 #include "scene/field_access.h"
+#include "scene/field_text_edit.h"
 #include "scene/node_catalogue.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
@@ -84,7 +85,15 @@ std::string number(double v) {
     return scene::formatNumber(v);
 }
 
-scene::Node* makeNode(scene::Scene& s, const char* type) {
+// What a command changed: string fields of nodes written in the text (kept
+// in place), or new nodes (the scene is then written anew).
+struct ModelEdits {
+    bool created = false;
+    std::vector<std::pair<const scene::Node*, std::string>> strings;
+};
+
+scene::Node* makeNode(scene::Scene& s, ModelEdits& edits, const char* type) {
+    edits.created = true;
     scene::Node* n = s.newNode();
     n->type = type;
     n->spec = scene::findNodeSpec(type);
@@ -103,9 +112,11 @@ scene::Field& fieldOf(scene::Node& node, std::string_view name, scene::FieldType
     return *f;
 }
 
-void setStrings(scene::Node& node, std::string_view name, std::vector<std::string> strings,
+void setStrings(ModelEdits& edits, scene::Node& node, std::string_view name,
+                std::vector<std::string> strings,
                 scene::FieldType type = scene::FieldType::MFString) {
     fieldOf(node, name, type).value.strings = std::move(strings);
+    edits.strings.emplace_back(&node, std::string(name));
 }
 
 void setNumbers(scene::Node& node, std::string_view name, std::vector<double> numbers) {
@@ -222,18 +233,18 @@ std::string combined(const std::string& old, ShapeOperation op, const std::strin
            ") " + opText + " (" + toolText + ")" + old.substr(exprEnd);
 }
 
-std::string addShape(scene::Scene& s, const ChatCommand& c, std::string& why) {
+std::string addShape(scene::Scene& s, ModelEdits& edits, const ChatCommand& c, std::string& why) {
     scene::Node* shape = classShape(s);
     if (!shape) {
         if (c.operation != ShapeOperation::Union) {
             why = "the scene has no shape to cut or intersect yet; start with /add FORMULA";
             return {};
         }
-        shape = makeNode(s, "FShape");
+        shape = makeNode(s, edits, "FShape");
         shape->defName = std::string(kClassShapeName);
-        scene::Node* geometry = makeNode(s, "FGeometry");
-        setStrings(*geometry, "type", {"implicit"}, scene::FieldType::SFString);
-        setStrings(*geometry, "definition", {c.formula});
+        scene::Node* geometry = makeNode(s, edits, "FGeometry");
+        setStrings(edits, *geometry, "type", {"implicit"}, scene::FieldType::SFString);
+        setStrings(edits, *geometry, "definition", {c.formula});
         setNumbers(*geometry, "domainMin", {-2, -2, -2});
         setNumbers(*geometry, "domainMax", {2, 2, 2});
         setNode(*shape, "geometry", geometry);
@@ -252,18 +263,19 @@ std::string addShape(scene::Scene& s, const ChatCommand& c, std::string& why) {
     }
     scene::Field* definition = geometry->field("definition");
     if (!definition || definition->value.strings.empty()) {
-        setStrings(*geometry, "definition", {c.formula});
+        setStrings(edits, *geometry, "definition", {c.formula});
         return "ok";
     }
     const std::string next = combined(scene::formulaText(*definition), c.operation, c.formula, why);
     if (next.empty()) return {};
-    setStrings(*geometry, "definition", {next});
+    setStrings(edits, *geometry, "definition", {next});
     return "ok";
 }
 
 // The material to paint on: the class shape's parametric FMaterial, made
 // from a standard Material's diffuse colour (or grey) when it has none.
-scene::Node* paintableMaterial(scene::Scene& s, scene::Node& shape, std::string& why) {
+scene::Node* paintableMaterial(scene::Scene& s, ModelEdits& edits, scene::Node& shape,
+                               std::string& why) {
     scene::Node* appearance = childNode(shape, "appearance");
     scene::Node* material = appearance ? childNode(*appearance, "material") : nullptr;
     if (material && material->type == "FMaterial") {
@@ -277,12 +289,12 @@ scene::Node* paintableMaterial(scene::Scene& s, scene::Node& shape, std::string&
     if (material && material->type == "Material")
         if (auto d = scene::numbersField(*material, "diffuseColor"); d.size() == 3) base = d;
     if (!appearance || appearance->type != "FAppearance") {
-        appearance = makeNode(s, "FAppearance");
+        appearance = makeNode(s, edits, "FAppearance");
         setNode(shape, "appearance", appearance);
     }
-    material = makeNode(s, "FMaterial");
-    setStrings(*material, "type", {"parametric"}, scene::FieldType::SFString);
-    setStrings(*material, "definition",
+    material = makeNode(s, edits, "FMaterial");
+    setStrings(edits, *material, "type", {"parametric"}, scene::FieldType::SFString);
+    setStrings(edits, *material, "definition",
                {"r = " + number(base[0]) + ";", "g = " + number(base[1]) + ";",
                 "b = " + number(base[2]) + ";"});
     // The material's x, y, z are the geometry's when both have the same box.
@@ -295,13 +307,13 @@ scene::Node* paintableMaterial(scene::Scene& s, scene::Node& shape, std::string&
     return material;
 }
 
-std::string paintShape(scene::Scene& s, const ChatCommand& c, std::string& why) {
+std::string paintShape(scene::Scene& s, ModelEdits& edits, const ChatCommand& c, std::string& why) {
     scene::Node* shape = classShape(s);
     if (!shape) {
         why = "the scene has no shape to paint";
         return {};
     }
-    scene::Node* material = paintableMaterial(s, *shape, why);
+    scene::Node* material = paintableMaterial(s, edits, *shape, why);
     if (!material) return {};
     scene::Field* definition = material->field("definition");
     std::vector<std::string> lines =
@@ -317,7 +329,7 @@ std::string paintShape(scene::Scene& s, const ChatCommand& c, std::string& why) 
     lines.push_back("r = mix(r, " + number(c.colour.r) + ", paint);");
     lines.push_back("g = mix(g, " + number(c.colour.g) + ", paint);");
     lines.push_back("b = mix(b, " + number(c.colour.b) + ", paint);");
-    setStrings(*material, "definition", std::move(lines));
+    setStrings(edits, *material, "definition", std::move(lines));
     return "ok";
 }
 
@@ -410,15 +422,37 @@ std::string applyChatCommand(const ChatCommand& command, const std::string& scen
         return {};
     }
     scene::Scene& s = *read.scene;
+    ModelEdits edits;
     std::string done;
     if (command.kind == ChatCommandKind::Add)
-        done = addShape(s, command, why);
+        done = addShape(s, edits, command, why);
     else if (command.kind == ChatCommandKind::Paint)
-        done = paintShape(s, command, why);
+        done = paintShape(s, edits, command, why);
     else
         why = "this command does not change the scene";
     if (done.empty()) return {};
-    return scene::writeScene(s, s.encoding);
+    const std::string rewritten = scene::writeScene(s, s.encoding);
+    if (edits.created) return rewritten; // new nodes: the writer places them
+    // Only definitions changed: each replaced where it is written, so the
+    // class scene keeps its comments and layout. Kept only when it reads
+    // back as the same model as the rewritten scene.
+    std::vector<scene::TextEdit> textEdits;
+    for (const auto& [node, field] : edits.strings) {
+        const scene::Field* f = node->field(field);
+        auto e = f ? scene::setStringsFieldEdit(s, *node, field, f->value.strings) : std::nullopt;
+        if (!e) return rewritten;
+        textEdits.push_back(std::move(*e));
+    }
+    std::sort(
+        textEdits.begin(), textEdits.end(),
+        [](const scene::TextEdit& a, const scene::TextEdit& b) { return a.offset > b.offset; });
+    std::string text = sceneText;
+    for (const scene::TextEdit& e : textEdits)
+        text = scene::applied(text, e);
+    scene::ReadResult again = scene::readSceneBytes(text, "scene", options);
+    if (!again.ok() || scene::writeScene(*again.scene, again.scene->encoding) != rewritten)
+        return rewritten;
+    return text;
 }
 
 } // namespace fl::classroom

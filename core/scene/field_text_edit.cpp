@@ -1,5 +1,6 @@
 #include "field_text_edit.h"
 
+#include "scene_writer.h"
 #include "source_map.h"
 
 #include <cctype>
@@ -73,9 +74,59 @@ void say(std::string* why, std::string text) {
 
 } // namespace
 
-std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node,
-                                            std::string_view field, std::string_view value,
-                                            std::string* why) {
+namespace {
+
+// Classic: name "s" or name [ "s1", "s2" ] — the value after the name, with
+// strings (and their escapes) and # comments skipped over.
+std::optional<TextEdit> classicStrings(std::string_view text, std::size_t at, std::string_view name,
+                                       std::string_view value) {
+    std::size_t i = at + name.size();
+    auto skipBlank = [&] {
+        while (i < text.size()) {
+            if (isSpace(text[i])) {
+                ++i;
+            } else if (text[i] == '#') {
+                while (i < text.size() && text[i] != '\n' && text[i] != '\r')
+                    ++i;
+            } else {
+                return;
+            }
+        }
+    };
+    auto skipString = [&] { // at the opening quote
+        for (++i; i < text.size(); ++i) {
+            if (text[i] == '\\') {
+                ++i;
+            } else if (text[i] == '"') {
+                ++i;
+                return true;
+            }
+        }
+        return false;
+    };
+    skipBlank();
+    const std::size_t start = i;
+    if (i < text.size() && text[i] == '"') {
+        if (!skipString()) return std::nullopt;
+        return TextEdit{start, i - start, std::string(value)};
+    }
+    if (i >= text.size() || text[i] != '[') return std::nullopt;
+    for (++i;;) {
+        skipBlank();
+        if (i >= text.size()) return std::nullopt;
+        if (text[i] == ']') return TextEdit{start, i + 1 - start, std::string(value)};
+        if (text[i] != '"' || !skipString()) return std::nullopt;
+    }
+}
+
+// The one edit that writes `field` of `node`: where its value is written,
+// `replace(text, offset of the field, xml)` gives the edit; where it is not,
+// the field is added at the start of the node with `xmlValue` (already
+// escaped for an attribute) or `classicValue`.
+template <class Replace>
+std::optional<TextEdit> fieldEdit(const Scene& scene, const Node& node, std::string_view field,
+                                  Replace replace, const std::string& xmlValue,
+                                  const std::string& classicValue, std::string* why) {
     if (node.file != 0 || scene.files.empty()) {
         say(why, node.file < 0
                      ? "the node was not read from a file"
@@ -95,10 +146,7 @@ std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node
         }
         const auto at = offsetOf(text, f->where);
         std::optional<TextEdit> edit;
-        if (at && xml)
-            edit = xmlValue(text, *at, value);
-        else if (at && startsWithName(text, *at, field))
-            edit = classicValue(text, *at, field, value, f->value.numbers.size());
+        if (at) edit = replace(text, *at, xml, *f);
         if (!edit) say(why, "the text at the field's position does not hold its value");
         return edit;
     }
@@ -117,7 +165,7 @@ std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node
         ++i;
         while (i < text.size() && !isSpace(text[i]) && text[i] != '>' && text[i] != '/')
             ++i;
-        return TextEdit{i, 0, " " + std::string(field) + "='" + std::string(value) + "'"};
+        return TextEdit{i, 0, " " + std::string(field) + "='" + xmlValue + "'"};
     }
     // Just inside the node's brace: FGeometry { resolution 48 ...
     const std::size_t brace = text.find('{', *at);
@@ -125,7 +173,39 @@ std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node
         say(why, "the node's opening brace is not in the text");
         return std::nullopt;
     }
-    return TextEdit{brace + 1, 0, " " + std::string(field) + " " + std::string(value)};
+    return TextEdit{brace + 1, 0, " " + std::string(field) + " " + classicValue};
+}
+
+} // namespace
+
+std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node,
+                                            std::string_view field, std::string_view value,
+                                            std::string* why) {
+    auto replace = [&](std::string_view text, std::size_t at, bool xml, const Field& f) {
+        if (xml) return xmlValue(text, at, value);
+        if (!startsWithName(text, at, field)) return std::optional<TextEdit>{};
+        return classicValue(text, at, field, value, f.value.numbers.size());
+    };
+    return fieldEdit(scene, node, field, replace, std::string(value), std::string(value), why);
+}
+
+std::optional<TextEdit> setStringsFieldEdit(const Scene& scene, const Node& node,
+                                            std::string_view field,
+                                            const std::vector<std::string>& strings,
+                                            std::string* why) {
+    std::string quoted;
+    for (const std::string& s : strings)
+        quoted += (quoted.empty() ? "" : " ") + quotedString(s);
+    const std::string classic = strings.size() == 1 ? quoted : "[ " + quoted + " ]";
+    auto replace = [&](std::string_view text, std::size_t at, bool isXml, const Field&) {
+        if (isXml) {
+            if (at == 0 || at > text.size()) return std::optional<TextEdit>{};
+            return xmlValue(text, at, xmlAttributeText(quoted, text[at - 1]));
+        }
+        if (!startsWithName(text, at, field)) return std::optional<TextEdit>{};
+        return classicStrings(text, at, field, classic);
+    };
+    return fieldEdit(scene, node, field, replace, xmlAttributeText(quoted, '\''), classic, why);
 }
 
 std::string applied(std::string_view text, const TextEdit& edit) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fl::scene {
 
@@ -28,6 +29,13 @@ struct TextEdit {
 // said.
 std::optional<TextEdit> setNumbersFieldEdit(const Scene& scene, const Node& node,
                                             std::string_view field, std::string_view value,
+                                            std::string* why = nullptr);
+
+// The same for a string field (SFString or MFString, e.g. a definition):
+// the value written as X3D quoted strings, the rest of the text untouched.
+std::optional<TextEdit> setStringsFieldEdit(const Scene& scene, const Node& node,
+                                            std::string_view field,
+                                            const std::vector<std::string>& strings,
                                             std::string* why = nullptr);
 
 // The text with the edit applied.

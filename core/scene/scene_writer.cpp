@@ -15,7 +15,7 @@ std::string formatNumber(double v) {
     return ec == std::errc() ? std::string(buf, p) : std::string("0");
 }
 
-std::string xmlEscape(std::string_view s) {
+std::string xmlAttributeText(std::string_view s, char quote) {
     std::string out;
     for (char c : s) {
         switch (c) {
@@ -28,12 +28,6 @@ std::string xmlEscape(std::string_view s) {
         case '>':
             out += "&gt;";
             break;
-        case '\'':
-            out += "&apos;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
         case '\n':
             out += "&#10;";
             break;
@@ -43,6 +37,12 @@ std::string xmlEscape(std::string_view s) {
         case '\t':
             out += "&#9;";
             break;
+        case '\'':
+            out += quote == '"' ? "'" : "&apos;";
+            break;
+        case '"':
+            out += quote == '\'' ? "\"" : "&quot;";
+            break;
         default:
             out += c;
         }
@@ -50,15 +50,23 @@ std::string xmlEscape(std::string_view s) {
     return out;
 }
 
-namespace {
+std::string xmlEscape(std::string_view s) {
+    return xmlAttributeText(s, 0);
+}
 
-std::string quoteClassic(std::string_view s) {
+std::string quotedString(std::string_view s) {
     std::string out = "\"";
     for (char c : s) {
         if (c == '"' || c == '\\') out += '\\';
         out += c;
     }
     return out + "\"";
+}
+
+namespace {
+
+std::string quoteClassic(std::string_view s) {
+    return quotedString(s);
 }
 
 std::string element(const FieldValue& v, FieldType single, std::size_t index, bool xml) {

@@ -31,5 +31,12 @@ std::string formatNumber(double v);
 // line breaks and tabs attribute normalization would fold, as character
 // references. Valid in HTML5 text and attributes as well (grade reports).
 std::string xmlEscape(std::string_view s);
+// The same inside an attribute delimited by `quote` (' or "): the other
+// quote is left as it is, so a definition reads as the student wrote it.
+std::string xmlAttributeText(std::string_view s, char quote);
+
+// A string as X3D writes it inside an SFString or MFString: in double
+// quotes, with " and \ escaped by a backslash.
+std::string quotedString(std::string_view s);
 
 } // namespace fl::scene

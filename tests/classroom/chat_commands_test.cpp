@@ -146,5 +146,42 @@ TEST(ChatCommands, AnInvalidToolFormulaGivesAnInvalidScene) {
     EXPECT_FALSE(checkClassroomScene(s).ok);
 }
 
+TEST(ChatCommands, TheClassScenesCommentsSurviveTenCommands) {
+    // Commands change definitions in place: the class's comments, layout
+    // and every other value stay as typed (the scene was once rewritten).
+    std::string scene = starterScene();
+    scene.insert(scene.find("<FShape"), "<!-- the class's notes: keep the stem thin -->\n    ");
+    const char* commands[] = {"/add sphere(0.8, 0, 0, 0.5)",
+                              "/remove box(0.2, 0.2, 0.2)",
+                              "/paint red sphere(0, 1, 0, 0.3)",
+                              "/add torus(1, 0.8) union",
+                              "/paint 0.1,0.2,0.3 50% sphere(0, 0, 1, 0.2)",
+                              "/add cylinder(0.1, 2) union",
+                              "/remove sphere(0, 0, 0, 0.1)",
+                              "/paint blue sphere(-1, 0, 0, 0.4)",
+                              "/add sphere(0, -0.8, 0, 0.3)",
+                              "/paint green 20% box(0.5, 0.5, 0.5)"};
+    for (const char* c : commands) {
+        scene = applied(c, scene);
+        EXPECT_NE(scene.find("<!-- the class's notes: keep the stem thin -->"), std::string::npos)
+            << c << "\n"
+            << scene;
+        EXPECT_NE(scene.find("resolution='48'"), std::string::npos) << c;
+    }
+    EXPECT_NE(definitionOf(scene, "FGeometry").find("sphere(0, -0.8, 0, 0.3)"), std::string::npos);
+    EXPECT_NE(definitionOf(scene, "FMaterial").find("mix(r, 0, paint)"), std::string::npos);
+}
+
+TEST(ChatCommands, ClassicClassScenesKeepTheirCommentsToo) {
+    const std::string scene = "#X3D V3.3 utf8\nPROFILE Immersive\n# the class's notes\n"
+                              "DEF CLASS FShape { geometry FGeometry { type \"implicit\"\n"
+                              "  definition [ \"sphere(0, 0, 0, 1)\" ] # first try\n"
+                              "  domainMin -2 -2 -2 domainMax 2 2 2 } }\n";
+    const std::string s = applied("/add sphere(1, 0, 0, 0.5)", scene);
+    EXPECT_NE(s.find("# the class's notes"), std::string::npos) << s;
+    EXPECT_NE(s.find("# first try"), std::string::npos) << s;
+    EXPECT_NE(definitionOf(s, "FGeometry").find("sphere(1, 0, 0, 0.5)"), std::string::npos);
+}
+
 } // namespace
 } // namespace fl::classroom

@@ -146,3 +146,73 @@ P {}
     EXPECT_FALSE(setNumbersFieldEdit(*p.scene, *expanded, "resolution", "48", &why));
     EXPECT_NE(why.find("PROTO"), std::string::npos) << why;
 }
+
+namespace {
+
+// Sets FGeometry's definition to `strings` and reads the result back.
+std::vector<std::string> setStringsAndReread(const std::string& text, const std::string& path,
+                                             const std::vector<std::string>& strings,
+                                             std::string* edited = nullptr) {
+    // The strings are not all formulas: read as text only.
+    ReadOptions asText;
+    asText.compileFunctions = false;
+    const ReadResult r = readSceneBytes(text, path, asText);
+    EXPECT_TRUE(r.ok());
+    if (!r.ok()) return {};
+    const Node* g = findType(r.scene->roots, "FGeometry");
+    std::string why;
+    const auto edit = setStringsFieldEdit(*r.scene, *g, "definition", strings, &why);
+    EXPECT_TRUE(edit) << why;
+    if (!edit) return {};
+    const std::string out = applied(text, *edit);
+    if (edited) *edited = out;
+    const ReadResult again = readSceneBytes(out, path, asText);
+    EXPECT_TRUE(again.ok()) << out;
+    if (!again.ok()) return {};
+    return findType(again.scene->roots, "FGeometry")->field("definition")->value.strings;
+}
+
+// Strings a script may hold: quotes, backslashes, markup, what ends a
+// classic list or starts a comment, and a line break.
+const std::vector<std::string> kHostile = {
+    "r = 0.8; // \"quoted\" ]", "g = 1 \\ 2; # not a comment",
+    "b = x < 1 && y > 0 ? 1 : 0; <b>'&amp;'</b>", "line\nbreak"};
+
+} // namespace
+
+TEST(FieldTextEdit, StringsAreReplacedInPlaceInXml) {
+    std::string out;
+    EXPECT_EQ(setStringsAndReread(kXml, "a.x3d", kHostile, &out), kHostile);
+    EXPECT_NE(out.find("<!-- a comment that stays -->"), std::string::npos) << out;
+    EXPECT_NE(out.find("resolution=\"32\""), std::string::npos) << out;
+    // Single-quoted attributes keep double quotes as they are.
+    const std::string single =
+        R"(<X3D profile='Immersive' version='3.3'><Scene><FShape><FGeometry definition='"1 - x*x"'/></FShape></Scene></X3D>)";
+    EXPECT_EQ(setStringsAndReread(single, "a.x3d", {"2 - y", "z"}, &out),
+              (std::vector<std::string>{"2 - y", "z"}));
+    EXPECT_NE(out.find(R"(definition='"2 - y" "z"')"), std::string::npos) << out;
+}
+
+TEST(FieldTextEdit, StringsAreReplacedInPlaceInClassicEvenInLists) {
+    std::string out;
+    EXPECT_EQ(setStringsAndReread(kClassic, "a.x3dv", kHostile, &out), kHostile);
+    EXPECT_NE(out.find("# a comment that stays"), std::string::npos) << out;
+    EXPECT_NE(out.find("lodRange 8 256"), std::string::npos) << out;
+    // A list with comments and ] inside strings, replaced whole.
+    const std::string list = "#X3D V3.3 utf8\nPROFILE Immersive\nFShape { geometry FGeometry {\n"
+                             "  definition [ \"a ] # b\" # a comment ]\n \"c\\\"d\" ]\n"
+                             "  resolution 16 } }\n";
+    EXPECT_EQ(setStringsAndReread(list, "a.x3dv", {"x"}, &out), (std::vector<std::string>{"x"}));
+    EXPECT_NE(out.find("resolution 16"), std::string::npos) << out;
+}
+
+TEST(FieldTextEdit, AStringFieldLeftOutIsAdded) {
+    const std::string xml = "<X3D profile='Immersive' version='3.3'><Scene><FShape><FGeometry "
+                            "resolution='8'/></FShape></Scene></X3D>";
+    EXPECT_EQ(setStringsAndReread(xml, "a.x3d", {"1 - x*x"}),
+              (std::vector<std::string>{"1 - x*x"}));
+    const std::string classic =
+        "#X3D V3.3 utf8\nPROFILE Immersive\nFShape { geometry FGeometry { resolution 8 } }\n";
+    EXPECT_EQ(setStringsAndReread(classic, "a.x3dv", {"1 - x*x", "y"}),
+              (std::vector<std::string>{"1 - x*x", "y"}));
+}
