@@ -6,7 +6,7 @@
 // anything; a version is in the log before anyone hears of it.
 #include "chat_commands.h"
 #include "classroom_limits.h"
-#include "clock.h"
+#include "class_clock.h"
 #include "edit_log.h"
 #include "protocol.h"
 #include "rate_limit.h"

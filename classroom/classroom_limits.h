@@ -2,7 +2,7 @@
 // Every bound the classroom puts on what clients send (docs/classroom-protocol.md,
 // "Limits"). Messages from others are hostile: each bound, when exceeded, is a
 // refusal or an error naming it, never a crash or unbounded memory.
-#include "clock.h"
+#include "class_clock.h"
 
 #include <cstddef>
 

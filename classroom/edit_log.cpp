@@ -1,6 +1,7 @@
 #include "edit_log.h"
 
 #include "platform/sqlite_database.h"
+#include "text/kind_names.h"
 
 #include <array>
 #include <chrono>
@@ -16,15 +17,14 @@ namespace fl::classroom {
 
 namespace {
 
-constexpr std::array kKindNames{
-    std::pair{EditKind::Start, "start"}, std::pair{EditKind::Edit, "edit"},
-    std::pair{EditKind::Command, "command"}, std::pair{EditKind::Push, "push"},
-    std::pair{EditKind::Undo, "undo"}};
+constexpr text::KindNames<EditKind, 5> kKindNames{{{"start", EditKind::Start},
+                                                   {"edit", EditKind::Edit},
+                                                   {"command", EditKind::Command},
+                                                   {"push", EditKind::Push},
+                                                   {"undo", EditKind::Undo}}};
 
 EditKind kindNamed(std::string_view name) {
-    for (const auto& [k, n] : kKindNames)
-        if (name == n) return k;
-    return EditKind::Edit;
+    return text::kindNamed(kKindNames, name).value_or(EditKind::Edit);
 }
 
 LoggedVersion readRow(platform::SqliteStatement& s, bool withScene) {
@@ -40,9 +40,7 @@ LoggedVersion readRow(platform::SqliteStatement& s, bool withScene) {
 } // namespace
 
 std::string_view nameOf(EditKind kind) {
-    for (const auto& [k, n] : kKindNames)
-        if (k == kind) return n;
-    return "edit";
+    return text::nameOfKind(kKindNames, kind);
 }
 
 struct EditLog::FolderLock {

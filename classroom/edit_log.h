@@ -10,7 +10,7 @@
 // checked (PRAGMA quick_check) when opened; a folder that held a class (its
 // marker, classroom.id) but whose log is missing or empty is refused unless a
 // new class is asked for; and one server at a time holds the folder.
-#include "clock.h"
+#include "class_clock.h"
 
 #include <cstdint>
 #include <filesystem>

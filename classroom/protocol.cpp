@@ -1,6 +1,7 @@
 #include "protocol.h"
 
 #include "member_name.h"
+#include "text/kind_names.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -15,61 +16,48 @@ namespace fl::classroom {
 
 namespace {
 
-constexpr std::array kMessageNames{
-    std::pair{MessageType::Join, "join"},           std::pair{MessageType::Edit, "edit"},
-    std::pair{MessageType::Release, "release"},     std::pair{MessageType::Chat, "chat"},
-    std::pair{MessageType::Heartbeat, "heartbeat"}, std::pair{MessageType::History, "history"},
-    std::pair{MessageType::TakeLock, "take-lock"},  std::pair{MessageType::BreakLock, "break-lock"},
-    std::pair{MessageType::Freeze, "freeze"},       std::pair{MessageType::Push, "push"},
-    std::pair{MessageType::Snapshot, "snapshot"},   std::pair{MessageType::Anonymise, "anonymise"},
-    std::pair{MessageType::Welcome, "welcome"},     std::pair{MessageType::Error, "error"},
-    std::pair{MessageType::Scene, "scene"},         std::pair{MessageType::Refused, "refused"},
-    std::pair{MessageType::Presence, "presence"},   std::pair{MessageType::Lock, "lock"},
-    std::pair{MessageType::Frozen, "frozen"},       std::pair{MessageType::Notice, "notice"},
-    std::pair{MessageType::Saved, "saved"},         std::pair{MessageType::Version, "version"},
-};
-constexpr std::array kRoleNames{std::pair{Role::Student, "student"},
-                                std::pair{Role::Instructor, "instructor"},
-                                std::pair{Role::Observer, "observer"}};
-constexpr std::array kReasonNames{
-    std::pair{RefusalReason::Locked, "locked"},
-    std::pair{RefusalReason::Stale, "stale"},
-    std::pair{RefusalReason::Invalid, "invalid"},
-    std::pair{RefusalReason::ReadOnly, "read-only"},
-    std::pair{RefusalReason::Rate, "rate"},
-    std::pair{RefusalReason::TooLarge, "too-large"},
-    std::pair{RefusalReason::TooCostly, "too-costly"},
-};
-constexpr std::array kErrorNames{
-    std::pair{ErrorCode::Malformed, "malformed"},
-    std::pair{ErrorCode::UnknownType, "unknown-type"},
-    std::pair{ErrorCode::WrongClass, "wrong-class"},
-    std::pair{ErrorCode::BadKey, "bad-key"},
-    std::pair{ErrorCode::BadName, "bad-name"},
-    std::pair{ErrorCode::NotJoined, "not-joined"},
-    std::pair{ErrorCode::AlreadyJoined, "already-joined"},
-    std::pair{ErrorCode::Forbidden, "forbidden"},
-    std::pair{ErrorCode::TooManyJoins, "too-many-joins"},
-    std::pair{ErrorCode::ClassFull, "class-full"},
-    std::pair{ErrorCode::TooLarge, "too-large"},
-    std::pair{ErrorCode::NotFound, "not-found"},
-    std::pair{ErrorCode::Server, "server"},
-};
-
-template <class Table, class Kind>
-std::string_view lookupName(const Table& table, Kind kind) {
-    for (const auto& [k, name] : table)
-        if (k == kind) return name;
-    return "?";
-}
-
-template <class Table>
-auto lookupKind(const Table& table, std::string_view name)
-    -> std::optional<typename Table::value_type::first_type> {
-    for (const auto& [k, n] : table)
-        if (name == n) return k;
-    return std::nullopt;
-}
+constexpr text::KindNames<MessageType, 22> kMessageNames{{
+    {"join", MessageType::Join},           {"edit", MessageType::Edit},
+    {"release", MessageType::Release},     {"chat", MessageType::Chat},
+    {"heartbeat", MessageType::Heartbeat}, {"history", MessageType::History},
+    {"take-lock", MessageType::TakeLock},  {"break-lock", MessageType::BreakLock},
+    {"freeze", MessageType::Freeze},       {"push", MessageType::Push},
+    {"snapshot", MessageType::Snapshot},   {"anonymise", MessageType::Anonymise},
+    {"welcome", MessageType::Welcome},     {"error", MessageType::Error},
+    {"scene", MessageType::Scene},         {"refused", MessageType::Refused},
+    {"presence", MessageType::Presence},   {"lock", MessageType::Lock},
+    {"frozen", MessageType::Frozen},       {"notice", MessageType::Notice},
+    {"saved", MessageType::Saved},         {"version", MessageType::Version},
+}};
+constexpr text::KindNames<Role, 3> kRoleNames{{
+    {"student", Role::Student},
+    {"instructor", Role::Instructor},
+    {"observer", Role::Observer},
+}};
+constexpr text::KindNames<RefusalReason, 7> kReasonNames{{
+    {"locked", RefusalReason::Locked},
+    {"stale", RefusalReason::Stale},
+    {"invalid", RefusalReason::Invalid},
+    {"read-only", RefusalReason::ReadOnly},
+    {"rate", RefusalReason::Rate},
+    {"too-large", RefusalReason::TooLarge},
+    {"too-costly", RefusalReason::TooCostly},
+}};
+constexpr text::KindNames<ErrorCode, 13> kErrorNames{{
+    {"malformed", ErrorCode::Malformed},
+    {"unknown-type", ErrorCode::UnknownType},
+    {"wrong-class", ErrorCode::WrongClass},
+    {"bad-key", ErrorCode::BadKey},
+    {"bad-name", ErrorCode::BadName},
+    {"not-joined", ErrorCode::NotJoined},
+    {"already-joined", ErrorCode::AlreadyJoined},
+    {"forbidden", ErrorCode::Forbidden},
+    {"too-many-joins", ErrorCode::TooManyJoins},
+    {"class-full", ErrorCode::ClassFull},
+    {"too-large", ErrorCode::TooLarge},
+    {"not-found", ErrorCode::NotFound},
+    {"server", ErrorCode::Server},
+}};
 
 struct FieldReader {
     const QJsonObject& object;
@@ -193,28 +181,28 @@ ClientBody readBody(MessageType type, FieldReader& r, const ClassroomLimits& lim
 } // namespace
 
 std::string_view nameOf(MessageType type) {
-    return lookupName(kMessageNames, type);
+    return text::nameOfKind(kMessageNames, type);
 }
 std::string_view nameOf(Role role) {
-    return lookupName(kRoleNames, role);
+    return text::nameOfKind(kRoleNames, role);
 }
 std::string_view nameOf(RefusalReason reason) {
-    return lookupName(kReasonNames, reason);
+    return text::nameOfKind(kReasonNames, reason);
 }
 std::string_view nameOf(ErrorCode code) {
-    return lookupName(kErrorNames, code);
+    return text::nameOfKind(kErrorNames, code);
 }
 std::optional<MessageType> messageTypeNamed(std::string_view name) {
-    return lookupKind(kMessageNames, name);
+    return text::kindNamed(kMessageNames, name);
 }
 std::optional<Role> roleNamed(std::string_view name) {
-    return lookupKind(kRoleNames, name);
+    return text::kindNamed(kRoleNames, name);
 }
 std::optional<RefusalReason> refusalReasonNamed(std::string_view name) {
-    return lookupKind(kReasonNames, name);
+    return text::kindNamed(kReasonNames, name);
 }
 std::optional<ErrorCode> errorCodeNamed(std::string_view name) {
-    return lookupKind(kErrorNames, name);
+    return text::kindNamed(kErrorNames, name);
 }
 
 bool isCleanText(std::string_view s, bool allowLineBreaks) {

@@ -2,7 +2,7 @@
 // Throttles: a token bucket per member for edits and chat, token buckets per
 // peer address (joins), a count of wrong class codes per address, and one
 // growing delay for the instructor key, whoever guesses it.
-#include "clock.h"
+#include "class_clock.h"
 
 #include <deque>
 #include <map>

@@ -6,7 +6,7 @@
 // the grace keeps it). A holder whose lock the instructor breaks cannot take
 // it again for `cooldown`. Time comes from the caller, so tests run on a
 // ManualClock.
-#include "clock.h"
+#include "class_clock.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,11 +1,11 @@
 #include "requirement.h"
 
-#include "scene/kind_names.h"
+#include "text/kind_names.h"
 
 namespace fl::grading {
 namespace {
 
-constexpr scene::KindNames<RequirementKind, 9> kKinds{{
+constexpr text::KindNames<RequirementKind, 9> kKinds{{
     {"implicit-surface", RequirementKind::ImplicitSurface},
     {"explicit-solid", RequirementKind::ExplicitSolid},
     {"parametric", RequirementKind::Parametric},
@@ -20,11 +20,11 @@ constexpr scene::KindNames<RequirementKind, 9> kKinds{{
 } // namespace
 
 std::optional<RequirementKind> requirementKindNamed(std::string_view word) {
-    return scene::kindNamed(kKinds, word);
+    return text::kindNamed(kKinds, word);
 }
 
 std::string_view requirementKindName(RequirementKind kind) {
-    return scene::nameOfKind(kKinds, kind);
+    return text::nameOfKind(kKinds, kind);
 }
 
 } // namespace fl::grading

@@ -1,9 +1,13 @@
 #include "function_kinds.h"
 
-#include "kind_names.h"
+#include "text/kind_names.h"
 
 namespace fl::scene {
 namespace {
+
+using text::kindNamed;
+using text::KindNames;
+using text::nameOfKind;
 
 constexpr KindNames<GeometryType, 3> kGeometryTypes{{
     {"implicit", GeometryType::Implicit},

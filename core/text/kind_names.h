@@ -1,13 +1,14 @@
 #pragma once
-// A kind (an enum) and the word a file or a manifest writes for it: one
-// table per kind, read once at the edge in both directions.
+// A kind (an enum) and the word a file, a manifest or a message writes for
+// it: one table per kind, read once at the edge in both directions. The one
+// form of enum-to-name table in the program.
 #include <array>
 #include <cstddef>
 #include <optional>
 #include <string_view>
 #include <utility>
 
-namespace fl::scene {
+namespace fl::text {
 
 template <class Kind, std::size_t N>
 using KindNames = std::array<std::pair<std::string_view, Kind>, N>;
@@ -26,4 +27,4 @@ constexpr std::string_view nameOfKind(const KindNames<Kind, N>& table, Kind kind
     return "?";
 }
 
-} // namespace fl::scene
+} // namespace fl::text
