@@ -136,7 +136,7 @@ scene::Node* classShape(scene::Scene& s) {
     scene::Node* first = nullptr;
     scene::Node* named = nullptr;
     s.forEachNode([&](scene::Node& n) {
-        if (n.type != "FShape" || !isShown(n)) return;
+        if (n.kind() != scene::NodeKind::FShape || !isShown(n)) return;
         if (!first) first = &n;
         if (!named && n.defName == kClassShapeName) named = &n;
     });
@@ -252,7 +252,7 @@ std::string addShape(scene::Scene& s, ModelEdits& edits, const ChatCommand& c, s
         return "ok";
     }
     scene::Node* geometry = childNode(*shape, "geometry");
-    if (!geometry || geometry->type != "FGeometry") {
+    if (!geometry || geometry->kind() != scene::NodeKind::FGeometry) {
         why = "the class shape has no FGeometry to change";
         return {};
     }
@@ -278,7 +278,7 @@ scene::Node* paintableMaterial(scene::Scene& s, ModelEdits& edits, scene::Node& 
                                std::string& why) {
     scene::Node* appearance = childNode(shape, "appearance");
     scene::Node* material = appearance ? childNode(*appearance, "material") : nullptr;
-    if (material && material->type == "FMaterial") {
+    if (material && material->kind() == scene::NodeKind::FMaterial) {
         if (scene::stringField(*material, "type") != "parametric") {
             why = "the class shape's FMaterial is not parametric (r = ...; g = ...; b = ...;)";
             return nullptr;
@@ -286,9 +286,9 @@ scene::Node* paintableMaterial(scene::Scene& s, ModelEdits& edits, scene::Node& 
         return material;
     }
     std::vector<double> base{0.8, 0.8, 0.8};
-    if (material && material->type == "Material")
+    if (material && material->kind() == scene::NodeKind::Material)
         if (auto d = scene::numbersField(*material, "diffuseColor"); d.size() == 3) base = d;
-    if (!appearance || appearance->type != "FAppearance") {
+    if (!appearance || appearance->kind() != scene::NodeKind::FAppearance) {
         appearance = makeNode(s, edits, "FAppearance");
         setNode(shape, "appearance", appearance);
     }
@@ -299,7 +299,7 @@ scene::Node* paintableMaterial(scene::Scene& s, ModelEdits& edits, scene::Node& 
                 "b = " + number(base[2]) + ";"});
     // The material's x, y, z are the geometry's when both have the same box.
     if (scene::Node* geometry = childNode(shape, "geometry");
-        geometry && geometry->spec && geometry->type == "FGeometry") {
+        geometry && geometry->spec && geometry->kind() == scene::NodeKind::FGeometry) {
         setNumbers(*material, "domainMin", scene::numbersField(*geometry, "domainMin"));
         setNumbers(*material, "domainMax", scene::numbersField(*geometry, "domainMax"));
     }

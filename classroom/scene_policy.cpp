@@ -77,10 +77,11 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
                    "EXTERNPROTO " + proto->name + ": a class scene may not refer to other files",
                    "declare it with PROTO in the scene itself");
     s.forEachNode([&](const scene::Node& node) {
-        if (node.type == "Inline" || node.type == "Script" || hasUrl(node))
+        if (node.kind() == scene::NodeKind::Inline || node.kind() == scene::NodeKind::Script ||
+            hasUrl(node))
             refuse(check, node.where,
                    node.type + ": a class scene may not hold urls or scripts (" +
-                       (node.type == "Script" ? "a Script's code" : "a url") +
+                       (node.kind() == scene::NodeKind::Script ? "a Script's code" : "a url") +
                        " is never fetched or run here)",
                    "put the shape itself in the scene, written with function nodes");
         for (const scene::Field& field : node.fields) {

@@ -11,7 +11,8 @@ namespace {
 std::string titleOf(const scene::Scene& s, std::string fallback, std::string& description) {
     std::string title;
     for (const scene::Node* root : s.roots)
-        if (const scene::Node* n = scene::effectiveNode(root); n && n->type == "WorldInfo") {
+        if (const scene::Node* n = scene::effectiveNode(root);
+            n && n->kind() == scene::NodeKind::WorldInfo) {
             title = scene::stringField(*n, "title");
             break;
         }

@@ -72,7 +72,9 @@ HandIn packSubmission(const scene::Scene& scene, const std::filesystem::path& sc
     // Images: the first url of each texture that names a file next to its scene.
     for (const scene::Scene* s : scene::scenesShownBy(scene))
         s->forEachNode([&](const scene::Node& n) {
-            if (n.type != "ImageTexture" && n.type != "MovieTexture") return;
+            if (n.kind() != scene::NodeKind::ImageTexture &&
+                n.kind() != scene::NodeKind::MovieTexture)
+                return;
             const auto base = std::filesystem::path(scene.pathOf(n.file)).parent_path();
             for (const std::string& url : scene::stringsField(n, "url")) {
                 if (url.find("://") != std::string::npos || url.empty()) continue;

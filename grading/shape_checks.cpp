@@ -27,12 +27,12 @@ std::string numberText(double v) {
 // An FTransform's set operation (union, difference, morph ...) over its
 // children: meshed as one solid f >= 0.
 bool isComposite(const mesh::ShapeMesh& s) {
-    return !s.geometry && s.field && s.shape && s.shape->type == "FTransform";
+    return !s.geometry && s.field && s.shape && s.shape->kind() == scene::NodeKind::FTransform;
 }
 
 std::optional<GeometryType> typeOf(const mesh::ShapeMesh& s) {
     if (isComposite(s)) return GeometryType::Explicit;
-    if (!s.geometry || s.geometry->type != "FGeometry") return std::nullopt;
+    if (!s.geometry || s.geometry->kind() != scene::NodeKind::FGeometry) return std::nullopt;
     return scene::geometryTypeNamed(scene::stringField(*s.geometry, "type"));
 }
 

@@ -28,7 +28,7 @@ std::string seconds(double s) {
 const scene::Node* functionMaterial(const SubmissionView& view, const mesh::ShapeMesh& s) {
     const scene::Node* material =
         s.appearance ? scene::effectiveNode(scene::nodeField(*s.appearance, "material")) : nullptr;
-    if (!material || material->type != "FMaterial") return nullptr;
+    if (!material || material->kind() != scene::NodeKind::FMaterial) return nullptr;
     return view.scene().definition(*material, "definition") ? material : nullptr;
 }
 

@@ -17,7 +17,7 @@ const EffectField* TangibleShape::effect(scene::TangibleKind kind) const {
 namespace {
 
 bool polygonal(const scene::Node* geometry) {
-    return geometry && geometry->type == "FGeometry" &&
+    return geometry && geometry->kind() == scene::NodeKind::FGeometry &&
            scene::stringField(*geometry, "collision") == "polygonal";
 }
 

@@ -81,7 +81,7 @@ void ScenePlayer::refresh() {
 }
 
 bool ScenePlayer::touch(const scene::Node& sensor) {
-    if (!scene_ || sensor.type != "TouchSensor") return false;
+    if (!scene_ || sensor.kind() != scene::NodeKind::TouchSensor) return false;
     bool ours = false;
     for (const scene::Scene* s : scene::scenesShownBy(*scene_))
         s->forEachNode([&](const scene::Node& n) { ours = ours || &n == &sensor; });

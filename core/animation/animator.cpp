@@ -142,7 +142,7 @@ struct Animator::Impl final : ResponseContext {
             if (!isLive(n)) return;
             for (const scene::Route& r : n.expansionRoutes)
                 addRoute(r);
-            if (n.type == "TimeSensor") {
+            if (n.kind() == scene::NodeKind::TimeSensor) {
                 sensorIndex[&n] = sensors.size();
                 sensors.push_back({&n, {}});
             }
@@ -178,7 +178,7 @@ struct Animator::Impl final : ResponseContext {
     void checkScene(const scene::Scene& scene) {
         scene.forEachNode([&](const Node& n) {
             if (!isLive(n) || n.instance) return; // expansions: warned once, at the body
-            if (const auto kind = interpolatorKind(n.type)) {
+            if (const auto kind = interpolatorKind(n.kind())) {
                 const std::vector<double> key = value(n, "key").numbers;
                 const std::vector<double> keyValue = value(n, "keyValue").numbers;
                 if (key.empty() && keyValue.empty()) return; // X3D's default: idle, not wrong
@@ -288,7 +288,7 @@ struct Animator::Impl final : ResponseContext {
     // X3D ignores startTime / cycleInterval changes while a time-dependent
     // node is active, and a stopTime at or before its startTime.
     bool ignoresTimingEvent(const Node& node, const std::string& field, const FieldValue& v) {
-        const bool sensor = node.type == "TimeSensor";
+        const bool sensor = node.kind() == scene::NodeKind::TimeSensor;
         if (!sensor && !hasTiming(node)) return false;
         if (field != "startTime" && field != "cycleInterval" && field != "stopTime") return false;
         bool active = false;
@@ -304,7 +304,7 @@ struct Animator::Impl final : ResponseContext {
 
     void deliver(const Event& e) {
         const Node& node = *e.node;
-        if (node.type == "Script") return; // never executed (warned at load)
+        if (node.kind() == scene::NodeKind::Script) return; // never executed (warned at load)
         if (node.proto) {
             store(node, e.field, e.value);
             if (auto it = isInbound.find(&node); it != isInbound.end())

@@ -60,41 +60,51 @@ bool interpolate(const Node& node, InterpolatorKind kind, std::string_view field
 
 } // namespace
 
-std::optional<BindableKind> bindableKindOf(std::string_view type) {
-    if (type == "Viewpoint" || type == "OrthoViewpoint" || type == "GeoViewpoint")
+std::optional<BindableKind> bindableKindOf(scene::NodeKind node) {
+    using scene::NodeKind;
+    switch (node) {
+    case NodeKind::Viewpoint:
+    case NodeKind::OrthoViewpoint:
         return BindableKind::Viewpoint;
-    if (type == "NavigationInfo") return BindableKind::NavigationInfo;
-    if (type == "Background" || type == "TextureBackground") return BindableKind::Background;
-    if (type == "Fog") return BindableKind::Fog;
-    return std::nullopt;
+    case NodeKind::NavigationInfo:
+        return BindableKind::NavigationInfo;
+    case NodeKind::Background:
+    case NodeKind::TextureBackground:
+        return BindableKind::Background;
+    case NodeKind::Fog:
+        return BindableKind::Fog;
+    default: // not a bindable node
+        return std::nullopt;
+    }
 }
 
 bool respond(const Node& node, std::string_view field, const FieldValue& in, ResponseContext& ctx) {
-    if (const auto kind = interpolatorKind(node.type))
+    if (const auto kind = interpolatorKind(node.kind()))
         return interpolate(node, *kind, field, in, ctx);
     if (field == "set_bind")
-        if (const auto kind = bindableKindOf(node.type)) {
+        if (const auto kind = bindableKindOf(node.kind())) {
             ctx.bind(node, *kind, first(in));
             return true;
         }
-    const std::string_view type = node.type;
-    if (type == "BooleanFilter" && field == "set_boolean") {
+    using scene::NodeKind;
+    const NodeKind type = node.kind();
+    if (type == NodeKind::BooleanFilter && field == "set_boolean") {
         const bool b = first(in);
         ctx.emit(node, b ? "inputTrue" : "inputFalse", singleValue(FieldType::SFBool, b));
         ctx.emit(node, "inputNegate", singleValue(FieldType::SFBool, !b));
         return true;
     }
-    if (type == "BooleanToggle" && field == "set_boolean") {
+    if (type == NodeKind::BooleanToggle && field == "set_boolean") {
         if (first(in))
             ctx.set(node, "toggle",
                     singleValue(FieldType::SFBool, !first(ctx.value(node, "toggle"))));
         return true;
     }
-    if (type == "BooleanTrigger" && field == "set_triggerTime") {
+    if (type == NodeKind::BooleanTrigger && field == "set_triggerTime") {
         ctx.emit(node, "triggerTrue", singleValue(FieldType::SFBool, 1));
         return true;
     }
-    if (type == "IntegerTrigger" && field == "set_boolean") {
+    if (type == NodeKind::IntegerTrigger && field == "set_boolean") {
         if (first(in)) {
             const FieldValue key = ctx.value(node, "integerKey");
             ctx.emit(node, "triggerValue",
@@ -102,7 +112,7 @@ bool respond(const Node& node, std::string_view field, const FieldValue& in, Res
         }
         return true;
     }
-    if (type == "TimeTrigger" && field == "set_boolean") {
+    if (type == NodeKind::TimeTrigger && field == "set_boolean") {
         ctx.emit(node, "triggerTime", singleValue(FieldType::SFTime, ctx.nowSeconds()));
         return true;
     }

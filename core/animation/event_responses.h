@@ -16,7 +16,7 @@ namespace fl::animation {
 // X3D 7.2.2: each kind of bindable node has its own binding stack; all
 // viewpoint types share one, Background and TextureBackground another.
 enum class BindableKind : std::uint8_t { Viewpoint, NavigationInfo, Background, Fog };
-std::optional<BindableKind> bindableKindOf(std::string_view nodeType);
+std::optional<BindableKind> bindableKindOf(scene::NodeKind node);
 
 class ResponseContext {
   public:

@@ -78,18 +78,32 @@ std::array<double, 3> slerpUnit(std::span<const double> rawA, std::span<const do
 
 } // namespace
 
-std::optional<InterpolatorKind> interpolatorKind(std::string_view type) {
-    if (type == "ScalarInterpolator") return InterpolatorKind::Scalar;
-    if (type == "PositionInterpolator") return InterpolatorKind::Position;
-    if (type == "PositionInterpolator2D") return InterpolatorKind::Position2D;
-    if (type == "ColorInterpolator") return InterpolatorKind::Color;
-    if (type == "OrientationInterpolator") return InterpolatorKind::Orientation;
-    if (type == "NormalInterpolator") return InterpolatorKind::Normal;
-    if (type == "CoordinateInterpolator") return InterpolatorKind::Coordinate;
-    if (type == "CoordinateInterpolator2D") return InterpolatorKind::Coordinate2D;
-    if (type == "BooleanSequencer") return InterpolatorKind::Boolean;
-    if (type == "IntegerSequencer") return InterpolatorKind::Integer;
-    return std::nullopt;
+std::optional<InterpolatorKind> interpolatorKind(scene::NodeKind node) {
+    using scene::NodeKind;
+    switch (node) {
+    case NodeKind::ScalarInterpolator:
+        return InterpolatorKind::Scalar;
+    case NodeKind::PositionInterpolator:
+        return InterpolatorKind::Position;
+    case NodeKind::PositionInterpolator2D:
+        return InterpolatorKind::Position2D;
+    case NodeKind::ColorInterpolator:
+        return InterpolatorKind::Color;
+    case NodeKind::OrientationInterpolator:
+        return InterpolatorKind::Orientation;
+    case NodeKind::NormalInterpolator:
+        return InterpolatorKind::Normal;
+    case NodeKind::CoordinateInterpolator:
+        return InterpolatorKind::Coordinate;
+    case NodeKind::CoordinateInterpolator2D:
+        return InterpolatorKind::Coordinate2D;
+    case NodeKind::BooleanSequencer:
+        return InterpolatorKind::Boolean;
+    case NodeKind::IntegerSequencer:
+        return InterpolatorKind::Integer;
+    default: // the other 134 kinds interpolate nothing
+        return std::nullopt;
+    }
 }
 
 int numbersPerKey(InterpolatorKind kind) {

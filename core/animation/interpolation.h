@@ -2,6 +2,7 @@
 // X3D interpolators and sequencers (ISO/IEC 19775-1 §19, §30) as pure
 // functions: a fraction, the `key` list and the `keyValue` list in, the
 // value_changed value out. Plain numbers, as FieldValue stores them.
+#include "scene/node_kind.h"
 #include <optional>
 #include <span>
 #include <string>
@@ -23,7 +24,7 @@ enum class InterpolatorKind : std::uint8_t {
     Integer,      // IntegerSequencer: steps, no blending
 };
 
-std::optional<InterpolatorKind> interpolatorKind(std::string_view nodeType);
+std::optional<InterpolatorKind> interpolatorKind(scene::NodeKind node);
 // Numbers one key's value holds for the single-valued kinds (Scalar 1,
 // Orientation 4 ...); 0 for the kinds with n values per key.
 int numbersPerKey(InterpolatorKind kind);

@@ -84,8 +84,8 @@ class Walker {
             overBudget_ = true;
             return;
         }
-        const std::string& type = n->type;
-        if (type == "FShape" || type == "Shape") {
+        const scene::NodeKind kind = n->kind();
+        if (kind == scene::NodeKind::FShape || kind == scene::NodeKind::Shape) {
             const std::size_t first = out_.shapes.size();
             shape(*n, m);
             senseTouches(first);
@@ -94,8 +94,8 @@ class Walker {
         const SensorScope sensors(*this, *n);
         if (viewNode(*n, m)) return;
         Affine here = m;
-        if (type == "Transform") here = m * transformOf(*n, moment_);
-        if (type == "FTransform") {
+        if (kind == scene::NodeKind::Transform) here = m * transformOf(*n, moment_);
+        if (kind == scene::NodeKind::FTransform) {
             here = m * functionTransform(*n);
             if (operationOf(*n) != SetOperation::Group) {
                 const std::size_t first = out_.shapes.size();
@@ -104,14 +104,14 @@ class Walker {
                 return;
             }
         }
-        if (type == "Switch") {
+        if (kind == scene::NodeKind::Switch) {
             const auto choice = moment_.number(*n, "whichChoice", 0, -1);
             const auto children = moment_.nodes(*n, "children");
             if (choice >= 0 && choice < double(children.size()))
                 walk(children[std::size_t(choice)], here);
             return;
         }
-        if (type == "LOD") { // the most detailed level
+        if (kind == scene::NodeKind::LOD) { // the most detailed level
             const auto levels = moment_.nodes(*n, "level");
             const auto children = moment_.nodes(*n, "children");
             if (!children.empty())
@@ -139,7 +139,8 @@ class Walker {
             std::vector<const Node*> here;
             for (const Node* child : w.moment_.nodes(group, "children")) {
                 const Node* sensor = scene::effectiveNode(child);
-                if (sensor && sensor->type == "TouchSensor" && w.moment_.flag(*sensor, "enabled"))
+                if (sensor && sensor->kind() == scene::NodeKind::TouchSensor &&
+                    w.moment_.flag(*sensor, "enabled"))
                     here.push_back(sensor);
             }
             if (here.empty()) return;
@@ -182,17 +183,18 @@ class Walker {
     // coordinates. Returns whether `n` was one of them.
     bool viewNode(const Node& n, const Affine& m) {
         SceneView& view = out_.view;
-        const std::string& type = n.type;
+        const scene::NodeKind kind = n.kind();
         auto rgb = [&](const char* field, std::array<float, 3>& out) {
             const auto v = moment_.numbers(n, field);
             if (v.size() >= 3) out = {float(v[0]), float(v[1]), float(v[2])};
         };
-        if (type == "DirectionalLight" || type == "PointLight" || type == "SpotLight") {
+        if (kind == scene::NodeKind::DirectionalLight || kind == scene::NodeKind::PointLight ||
+            kind == scene::NodeKind::SpotLight) {
             if (!moment_.flag(n, "on")) return true;
             ViewLight l;
-            l.kind = type == "DirectionalLight" ? ViewLight::Kind::Directional
-                     : type == "PointLight"     ? ViewLight::Kind::Point
-                                                : ViewLight::Kind::Spot;
+            l.kind = kind == scene::NodeKind::DirectionalLight ? ViewLight::Kind::Directional
+                     : kind == scene::NodeKind::PointLight     ? ViewLight::Kind::Point
+                                                               : ViewLight::Kind::Spot;
             rgb("color", l.colour);
             l.intensity = float(moment_.number(n, "intensity", 0, 1));
             l.ambientIntensity = float(moment_.number(n, "ambientIntensity"));
@@ -214,7 +216,7 @@ class Walker {
             view.lights.push_back(l);
             return true;
         }
-        if (type == "Viewpoint" || type == "OrthoViewpoint") {
+        if (kind == scene::NodeKind::Viewpoint || kind == scene::NodeKind::OrthoViewpoint) {
             ViewPoint v;
             v.name = moment_.string(n, "description");
             if (v.name.empty()) v.name = n.defName;
@@ -226,7 +228,7 @@ class Walker {
             v.up = turn(frame, {0, 1, 0});
             const auto c = moment_.numbers(n, "centerOfRotation");
             if (c.size() == 3) v.centerOfRotation = apply(m, c);
-            if (type == "Viewpoint")
+            if (kind == scene::NodeKind::Viewpoint)
                 v.fieldOfView = moment_.number(n, "fieldOfView", 0, v.fieldOfView);
             // The first is bound at load; a set_bind event binds another.
             if (view.viewpoints.empty() || moment_.flag(n, "isBound"))
@@ -235,14 +237,14 @@ class Walker {
             return true;
         }
         // Backgrounds and NavigationInfos: the first, unless an event bound another.
-        if (type == "Background" || type == "TextureBackground") {
+        if (kind == scene::NodeKind::Background || kind == scene::NodeKind::TextureBackground) {
             if (!view.hasBackground || moment_.flag(n, "isBound")) {
                 rgb("skyColor", view.background);
                 view.hasBackground = true;
             }
             return true;
         }
-        if (type == "NavigationInfo") {
+        if (kind == scene::NodeKind::NavigationInfo) {
             if (!view.hasNavigation || moment_.flag(n, "isBound")) {
                 view.navigation.types = moment_.strings(n, "type");
                 view.navigation.headlight = moment_.flag(n, "headlight");
@@ -300,10 +302,10 @@ class Walker {
     void shape(const Node& n, const Affine& m) {
         const Node* geometry = scene::effectiveNode(moment_.node(n, "geometry"));
         if (!geometry) { // lends its properties to the shapes grouped with it
-            if (n.type == "FShape") out_.lenders.push_back({&n, m.matrix()});
+            if (n.kind() == scene::NodeKind::FShape) out_.lenders.push_back({&n, m.matrix()});
             return;
         }
-        if (geometry->type != "FGeometry") {
+        if (geometry->kind() != scene::NodeKind::FGeometry) {
             standardShape(n, *geometry, m);
             return;
         }
@@ -343,7 +345,7 @@ class Walker {
         const Node* texture =
             appearance ? scene::effectiveNode(moment_.node(*appearance, "texture")) : nullptr;
         std::optional<Displacement> displacement;
-        if (texture && texture->type == "FTexture3D")
+        if (texture && texture->kind() == scene::NodeKind::FTexture3D)
             if (const formula::Tape* d = scene_.definition(*texture, "definition"))
                 displacement = Displacement{*d, domainOf(*texture)};
         if (type != GeometryType::Parametric) field.displacement = displacement;
@@ -426,7 +428,7 @@ class Walker {
             sm.warnings.insert(sm.warnings.end(), w.begin(), w.end());
         }
         colour(appearance, field.box, sm);
-        sm.look = lookOf(appearance, n.type == "FShape");
+        sm.look = lookOf(appearance, n.kind() == scene::NodeKind::FShape);
         sm.appearance = appearance;
         if (surface && !sm.mesh.isPointCloud()) sm.look.solid = r.closedSurface;
         // A parametric surface has two sides and no inside: both are drawn.
@@ -477,7 +479,7 @@ class Walker {
         sm.mesh = std::move(r.mesh);
         sm.warnings = std::move(r.warnings);
         const Node* appearance = scene::effectiveNode(moment_.node(n, "appearance"));
-        sm.look = lookOf(appearance, n.type == "FShape");
+        sm.look = lookOf(appearance, n.kind() == scene::NodeKind::FShape);
         sm.appearance = appearance;
         sm.look.solid = r.solid;
         sm.look.texture =
@@ -603,9 +605,9 @@ class Walker {
         const Node* n = scene::effectiveNode(raw);
         const scene::WalkPath::Step step(path_, n);
         if (!n || refused(step)) return;
-        if (n->type == "FShape") {
+        if (n->kind() == scene::NodeKind::FShape) {
             const Node* geometry = scene::effectiveNode(moment_.node(*n, "geometry"));
-            if (!geometry || geometry->type != "FGeometry" ||
+            if (!geometry || geometry->kind() != scene::NodeKind::FGeometry ||
                 geometryTypeOf(*geometry) == GeometryType::Parametric) {
                 out_.notes.push_back(nameOf(*n) +
                                      ": only implicit and explicit geometry takes part in "
@@ -640,14 +642,15 @@ class Walker {
                            moment_.flag(*geometry, "lod") ? geometry : nullptr});
             return;
         }
-        if (n->type == "Transform" || n->type == "FTransform") {
-            const Affine inner = toLocal * (n->type == "Transform" ? transformOf(*n, moment_)
+        if (n->kind() == scene::NodeKind::Transform || n->kind() == scene::NodeKind::FTransform) {
+            const Affine inner =
+                toLocal * (n->kind() == scene::NodeKind::Transform ? transformOf(*n, moment_)
                                                                    : functionTransform(*n));
             std::vector<Piece> pieces;
             for (const Node* child : moment_.nodes(*n, "children"))
                 collect(child, inner, b, local, pieces);
-            if (n->type == "FTransform" && operationOf(*n) != SetOperation::Group &&
-                !pieces.empty()) {
+            if (n->kind() == scene::NodeKind::FTransform &&
+                operationOf(*n) != SetOperation::Group && !pieces.empty()) {
                 out.push_back(combine(*n, pieces, b, local));
                 return;
             }
@@ -906,7 +909,7 @@ class Walker {
         const auto diffuse = moment_.numbers(*material, "diffuseColor");
         if (diffuse.size() == 3) cf.fallback = {diffuse[0], diffuse[1], diffuse[2]};
         cf.constantTransparency = moment_.number(*material, "transparency");
-        if (material->type == "FMaterial") {
+        if (material->kind() == scene::NodeKind::FMaterial) {
             if (const formula::Tape* tape = scene_.definition(*material, "definition"))
                 cf.colour = *tape;
             if (const formula::Tape* tape = scene_.definition(*material, "transparencyDefinition"))

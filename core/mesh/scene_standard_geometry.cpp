@@ -119,7 +119,7 @@ std::vector<std::array<float, 4>> coloursOf(const FieldSource& fields, const Nod
     const Node* c = scene::effectiveNode(fields.node(n, "color"));
     if (!c) return out;
     const auto v = fields.numbers(*c, "color");
-    const std::size_t stride = c->type == "ColorRGBA" ? 4 : 3;
+    const std::size_t stride = c->kind() == scene::NodeKind::ColorRGBA ? 4 : 3;
     for (std::size_t i = 0; i + stride - 1 < v.size(); i += stride)
         out.push_back(
             {float(v[i]), float(v[i + 1]), float(v[i + 2]), stride == 4 ? float(v[i + 3]) : 1.0f});
@@ -138,7 +138,7 @@ std::vector<Point2> pairsOf(const std::vector<double>& v) {
 // leave X3D's default mapping.
 std::vector<Point2> texCoordsOf(const FieldSource& fields, const Node& n) {
     const Node* holder = scene::effectiveNode(fields.node(n, "texCoord"));
-    if (!holder || holder->type != "TextureCoordinate") return {};
+    if (!holder || holder->kind() != scene::NodeKind::TextureCoordinate) return {};
     return pairsOf(fields.numbers(*holder, "point"));
 }
 
@@ -359,7 +359,7 @@ std::vector<Contour2> trimmingContours(const FieldSource& fields, const Node& g,
             if (!piece) continue;
             const auto points = pairsOf(fields.numbers(*piece, "controlPoint"));
             std::vector<Point2> along;
-            if (piece->type == "NurbsCurve2D")
+            if (piece->kind() == scene::NodeKind::NurbsCurve2D)
                 along = nurbsCurve2DPoints(
                     int(fields.number(*piece, "order", 0, 3)), points,
                     fields.numbers(*piece, "weight"), fields.numbers(*piece, "knot"),

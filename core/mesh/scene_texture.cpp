@@ -15,7 +15,7 @@ const Node* textureNode(const Node* appearance) {
     if (!appearance) return nullptr;
     const Node* t = scene::effectiveNode(scene::nodeField(*appearance, "texture"));
     // MultiTexture: its first texture (the others need multi-texturing).
-    if (t && t->type == "MultiTexture") {
+    if (t && t->kind() == scene::NodeKind::MultiTexture) {
         const auto all = scene::nodesField(*t, "texture");
         t = all.empty() ? nullptr : scene::effectiveNode(all.front());
     }
@@ -78,7 +78,7 @@ std::optional<SurfaceTexture> textureOf(const scene::Scene& scene, const Node* a
     const Node* t = textureNode(appearance);
     if (!t) return std::nullopt;
     SurfaceTexture s;
-    if (t->type == "ImageTexture") {
+    if (t->kind() == scene::NodeKind::ImageTexture) {
         const std::filesystem::path folder =
             std::filesystem::path(scene.pathOf(t->file)).parent_path();
         const auto urls = scene::stringsField(*t, "url");
@@ -96,7 +96,7 @@ std::optional<SurfaceTexture> textureOf(const scene::Scene& scene, const Node* a
                 " next to the scene (remote urls are not fetched); drawn without it");
             return std::nullopt;
         }
-    } else if (t->type == "PixelTexture") {
+    } else if (t->kind() == scene::NodeKind::PixelTexture) {
         s = pixelTexture(*t, warnings);
         if (s.rgba.empty()) return std::nullopt;
     } else {
@@ -110,7 +110,7 @@ std::optional<SurfaceTexture> textureOf(const scene::Scene& scene, const Node* a
 void applyTextureTransform(const Node* appearance, Mesh& mesh) {
     if (!appearance || mesh.texCoords.empty()) return;
     const Node* tt = scene::effectiveNode(scene::nodeField(*appearance, "textureTransform"));
-    if (!tt || tt->type != "TextureTransform") return;
+    if (!tt || tt->kind() != scene::NodeKind::TextureTransform) return;
     const double cx = scene::numberField(*tt, "center", 0),
                  cy = scene::numberField(*tt, "center", 1);
     const double sx = scene::numberField(*tt, "scale", 0, 1),

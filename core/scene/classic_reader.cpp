@@ -275,7 +275,7 @@ void ClassicReader::nodeBody(Node& n) {
 void ClassicReader::fieldDeclaration(Node& n) {
     ClassicTokenInfo accessTok = next();
     AccessType access = *parseAccessType(accessTok.text);
-    if (access == AccessType::InputOutput && b_.vrml97() && n.type == "Script")
+    if (access == AccessType::InputOutput && b_.vrml97() && n.kind() == scene::NodeKind::Script)
         b_.error(accessTok.pos, "a VRML97 Script cannot declare an exposedField",
                  "use a field with an eventIn and an eventOut");
     ClassicTokenInfo typeTok = expect(T::Identifier, "a field type");

@@ -59,17 +59,24 @@ class Planner {
             std::string f = r.toField;
             if (f.starts_with("set_")) f = f.substr(4);
             unsigned bits = kStatic;
-            if (to->type == "Transform" && (f == "translation" || f == "rotation" || f == "scale" ||
-                                            f == "center" || f == "scaleOrientation"))
+            if (to->kind() == scene::NodeKind::Transform &&
+                (f == "translation" || f == "rotation" || f == "scale" || f == "center" ||
+                 f == "scaleOrientation"))
                 bits = kTransform;
-            else if (to->type == "Material" || to->type == "Color" || to->type == "ColorRGBA" ||
-                     to->type == "TwoSidedMaterial")
+            else if (to->kind() == scene::NodeKind::Material ||
+                     to->kind() == scene::NodeKind::Color ||
+                     to->kind() == scene::NodeKind::ColorRGBA ||
+                     to->kind() == scene::NodeKind::TwoSidedMaterial)
                 bits = kColour;
-            else if (to->type == "Coordinate" || to->type == "Normal" || to->type == "Sphere" ||
-                     to->type == "Box" || to->type == "Cone" || to->type == "Cylinder" ||
-                     to->type == "FGeometry")
+            else if (to->kind() == scene::NodeKind::Coordinate ||
+                     to->kind() == scene::NodeKind::Normal ||
+                     to->kind() == scene::NodeKind::Sphere || to->kind() == scene::NodeKind::Box ||
+                     to->kind() == scene::NodeKind::Cone ||
+                     to->kind() == scene::NodeKind::Cylinder ||
+                     to->kind() == scene::NodeKind::FGeometry)
                 bits = kGeometry;
-            else if (to->type == "Switch" || to->type == "FTransform")
+            else if (to->kind() == scene::NodeKind::Switch ||
+                     to->kind() == scene::NodeKind::FTransform)
                 bits = kTransform;
             if (bits) {
                 routed_[to] |= bits;
@@ -91,9 +98,9 @@ class Planner {
         const Node* n = effectiveNode(raw);
         const WalkPath::Step step(path_, n);
         if (!step.entered() || !visited_.insert(n).second) return;
-        if (n->type == "FShape")
+        if (n->kind() == scene::NodeKind::FShape)
             shape(*n);
-        else if (n->type == "FTransform")
+        else if (n->kind() == scene::NodeKind::FTransform)
             transform(*n);
         else if (auto it = routed_.find(n); it != routed_.end())
             standard(*n, it->second);
@@ -124,7 +131,7 @@ class Planner {
         if (!geometry) {
             e.geometry = "none";
             e.appliesToSiblings = true;
-        } else if (geometry->type == "FGeometry") {
+        } else if (geometry->kind() == scene::NodeKind::FGeometry) {
             e.geometry = stringField(*geometry, "type");
             if (definitionReadsT(scene_, geometry, "definition")) e.timeVarying |= kGeometry;
             e.usesWallClock |= wallClock(geometry);
@@ -135,10 +142,11 @@ class Planner {
         if (appearance) {
             const Node* material = effectiveNode(nodeField(*appearance, "material"));
             const Node* texture = effectiveNode(nodeField(*appearance, "texture"));
-            if (material && material->type == "FMaterial" && anyDefinitionReadsT(scene_, material))
+            if (material && material->kind() == scene::NodeKind::FMaterial &&
+                anyDefinitionReadsT(scene_, material))
                 e.timeVarying |= kColour;
             if (material && routed_.count(material)) e.timeVarying |= kColour;
-            if (texture && texture->type == "FTexture3D" &&
+            if (texture && texture->kind() == scene::NodeKind::FTexture3D &&
                 definitionReadsT(scene_, texture, "definition"))
                 e.timeVarying |= kDisplacement;
             e.usesWallClock |= wallClock(material) || wallClock(texture);
@@ -212,7 +220,7 @@ std::unordered_map<const Node*, std::vector<const Node*>> lendingShapes(const Sc
         for (const Field& f : n.fields)
             for (const Node* c : f.value.nodes) {
                 const Node* child = effectiveNode(c);
-                if (child && child->type == "FShape" &&
+                if (child && child->kind() == scene::NodeKind::FShape &&
                     !effectiveNode(nodeField(*child, "geometry")))
                     groups.emplace_back(&n, child);
             }
@@ -228,11 +236,11 @@ std::unordered_map<const Node*, std::vector<const Node*>> lendingShapes(const Sc
                 for (const Node* c : f.value.nodes) {
                     const Node* child = effectiveNode(c);
                     if (!child) continue;
-                    if (child->type == "Shape") {
+                    if (child->kind() == scene::NodeKind::Shape) {
                         auto& lenders = out[child];
                         if (std::find(lenders.begin(), lenders.end(), lender) == lenders.end())
                             lenders.push_back(lender);
-                    } else if (child->type != "FShape") {
+                    } else if (child->kind() != scene::NodeKind::FShape) {
                         todo.push_back(child);
                     }
                 }

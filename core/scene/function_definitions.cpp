@@ -83,12 +83,13 @@ class DefinitionCompiler {
 formula::CompileOptions DefinitionCompiler::optionsFor(const Node& node, DefinitionKind kind) {
     formula::CompileOptions options;
     options.kind = kind;
-    if (node.type == "FGeometry" && stringField(node, "setOperations") == "rfunction") {
+    if (node.kind() == scene::NodeKind::FGeometry &&
+        stringField(node, "setOperations") == "rfunction") {
         options.setOperations.kind = formula::SetOperationMode::Kind::RFunction;
         options.setOperations.m = numberField(node, "rfunctionM");
         options.setOperations.alpha = numberField(node, "rfunctionAlpha");
     }
-    if (node.type == "FTransform") {
+    if (node.kind() == scene::NodeKind::FTransform) {
         // The user's operation formula reads each child's value as f1, f2, ...
         std::size_t children = nodesField(node, "children").size();
         for (std::size_t i = 1; i <= std::max<std::size_t>(children, 1); ++i)
@@ -303,9 +304,9 @@ bool DefinitionCompiler::overBudget(const Node& node, const Field& field) {
 }
 
 bool DefinitionCompiler::compileNode(const Node& node) {
-    if (node.type == "FGeometry") checkGeometry(node);
-    if (node.type == "FMaterial") checkMaterial(node);
-    if (node.type == "FTransform") checkTransform(node);
+    if (node.kind() == scene::NodeKind::FGeometry) checkGeometry(node);
+    if (node.kind() == scene::NodeKind::FMaterial) checkMaterial(node);
+    if (node.kind() == scene::NodeKind::FTransform) checkTransform(node);
     checkDomain(node);
     for (const DefinitionField& df : definitionFields(node)) {
         const Field* field = node.field(df.field);
@@ -318,7 +319,7 @@ bool DefinitionCompiler::compileNode(const Node& node) {
             report(node, field, d.severity, pos,
                    node.type + "." + std::string(df.field) + ": " + d.message, d.suggestion);
         }
-        if (result.tape && node.type == "FMaterial" && df.field == "definition")
+        if (result.tape && node.kind() == scene::NodeKind::FMaterial && df.field == "definition")
             checkMaterialOutputs(node, *result.tape, *field);
         if (result.tape && !node.inProtoBody) {
             tapeInstructions_ += result.tape->code.size();

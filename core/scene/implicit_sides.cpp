@@ -36,7 +36,7 @@ struct Uses {
 void shapesBelow(const Node* raw, const std::string& why, Uses& uses, int depth = 0) {
     const Node* n = effectiveNode(raw);
     if (!n || depth > int(kMaxWalkDepth)) return;
-    if (n->type == "FShape") {
+    if (n->kind() == scene::NodeKind::FShape) {
         uses.add(n, why);
         return;
     }
@@ -75,18 +75,19 @@ std::vector<SceneDiagnostic> checkImplicitSides(const Scene& scene) {
     Uses uses;
     scene.forEachNode([&](const Node& n) {
         if (n.inProtoBody) return;
-        if (n.type == "FTransform") {
+        if (n.kind() == scene::NodeKind::FTransform) {
             const std::string op = stringField(n, "operation");
             if (setOperationNamed(op) != SetOperation::Group)
                 for (const Node* child : nodesField(n, "children"))
                     shapesBelow(child, "an FTransform's " + op, uses);
         }
-        if (n.type != "FShape") return;
+        if (n.kind() != scene::NodeKind::FShape) return;
         if (const Node* a = effectiveNode(nodeField(n, "appearance")))
             if (const Node* texture = effectiveNode(nodeField(*a, "texture"));
-                texture && texture->type == "FTexture3D")
+                texture && texture->kind() == scene::NodeKind::FTexture3D)
                 uses.add(&n, "its FTexture3D displacement");
-        if (const Node* p = effectiveNode(nodeField(n, "physics")); p && p->type == "FPhysics") {
+        if (const Node* p = effectiveNode(nodeField(n, "physics"));
+            p && p->kind() == scene::NodeKind::FPhysics) {
             if (nodeField(*p, "density")) uses.add(&n, "its FDensity");
             if (nodeField(*p, "force")) uses.add(&n, "its FForce (the field's container)");
         }
@@ -94,7 +95,7 @@ std::vector<SceneDiagnostic> checkImplicitSides(const Scene& scene) {
     std::vector<SceneDiagnostic> out;
     for (const auto& [shape, why] : uses.list) {
         const Node* geometry = effectiveNode(nodeField(*shape, "geometry"));
-        if (!geometry || geometry->type != "FGeometry" ||
+        if (!geometry || geometry->kind() != scene::NodeKind::FGeometry ||
             geometryTypeNamed(stringField(*geometry, "type")) != GeometryType::Implicit)
             continue;
         const formula::Tape* tape = scene.definition(*geometry, "definition");

@@ -7,6 +7,7 @@
 #include "formula/compiler.h"
 #include "formula/tape.h"
 #include "node_catalogue.h"
+#include "node_kind.h"
 #include "scene_diagnostic.h"
 
 #include <cstddef>
@@ -102,6 +103,8 @@ struct Node {
     // USE of a name not yet DEF'd (X3D allows it): resolved when the file ends.
     std::string forwardUse;
 
+    // What the node is, as a type (NodeKind::Unknown for PROTO instances).
+    NodeKind kind() const { return kindOf(spec); }
     const Field* field(std::string_view name) const;
     Field* field(std::string_view name);
     bool isUnknown() const { return spec == nullptr && proto == nullptr; }

@@ -197,7 +197,7 @@ Node* SceneBuilder::openNode(std::string_view type, FilePos pos) {
         node->proto = proto; // a PROTO may shadow a built-in type
     } else if (const NodeSpec* spec = findNodeSpec(type)) {
         node->spec = spec;
-        if (node->type == "Script" && !warnedScript_) {
+        if (node->kind() == scene::NodeKind::Script && !warnedScript_) {
             warnedScript_ = true;
             warning(pos, "Script nodes are kept but never run");
         }

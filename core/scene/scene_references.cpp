@@ -234,7 +234,8 @@ std::string ReferenceLoader::resolveExternProto(ProtoDeclaration& proto) {
 void ReferenceLoader::resolveInlines() {
     std::vector<Node*> inlines;
     scene_.forEachNode([&](Node& n) {
-        if (n.type == "Inline" && n.spec && !n.inProtoBody && boolField(n, "load") &&
+        if (n.kind() == scene::NodeKind::Inline && n.spec && !n.inProtoBody &&
+            boolField(n, "load") &&
             !stringsField(n, "url").empty()) // no url: nothing to show, nothing wrong
             inlines.push_back(&n);
     });

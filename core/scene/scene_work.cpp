@@ -30,7 +30,7 @@ SceneWork estimateSceneWork(const Scene& scene) {
         for (const CompiledDefinition& d : shown->definitions) {
             const std::size_t size = d.tape ? d.tape->code.size() : 0;
             work.tapeInstructions += size;
-            if (d.node->type != "FGeometry" || d.field != "definition") continue;
+            if (d.node->kind() != scene::NodeKind::FGeometry || d.field != "definition") continue;
             const double cells = cellsOf(*d.node);
             const double evaluations = cells * double(std::max<std::size_t>(size, 1));
             work.meshCells += cells;

@@ -26,7 +26,7 @@ bool fieldFromScene(const std::string& file, field::ImplicitField& field, std::s
     if (!r.ok()) return false;
     bool found = false;
     r.scene->forEachNode([&](const scene::Node& n) {
-        if (found || n.inProtoBody || n.type != "FGeometry" ||
+        if (found || n.inProtoBody || n.kind() != scene::NodeKind::FGeometry ||
             scene::stringField(n, "type") == "parametric")
             return;
         const formula::Tape* tape = r.scene->definition(n, "definition");

@@ -29,8 +29,8 @@ namespace {
 bool hasText(const scene::Scene& scene, int depth = 0) {
     bool text = false;
     scene.forEachNode([&](const scene::Node& n) {
-        text =
-            text || n.type == "Text" || (n.inlined && depth < 32 && hasText(*n.inlined, depth + 1));
+        text = text || n.kind() == scene::NodeKind::Text ||
+               (n.inlined && depth < 32 && hasText(*n.inlined, depth + 1));
     });
     return text;
 }

@@ -24,10 +24,10 @@ void expectNear(const std::vector<double>& got, const std::vector<double>& want,
 } // namespace
 
 TEST(Interpolation, KindsByNodeType) {
-    EXPECT_EQ(interpolatorKind("ScalarInterpolator"), K::Scalar);
-    EXPECT_EQ(interpolatorKind("CoordinateInterpolator2D"), K::Coordinate2D);
-    EXPECT_EQ(interpolatorKind("IntegerSequencer"), K::Integer);
-    EXPECT_FALSE(interpolatorKind("Transform").has_value());
+    EXPECT_EQ(interpolatorKind(fl::scene::NodeKind::ScalarInterpolator), K::Scalar);
+    EXPECT_EQ(interpolatorKind(fl::scene::NodeKind::CoordinateInterpolator2D), K::Coordinate2D);
+    EXPECT_EQ(interpolatorKind(fl::scene::NodeKind::IntegerSequencer), K::Integer);
+    EXPECT_FALSE(interpolatorKind(fl::scene::NodeKind::Transform).has_value());
 }
 
 TEST(Interpolation, ScalarSegmentsAndEnds) {
