@@ -5,8 +5,8 @@
 // checker judges, manual rubric items, a due date with a late policy, and the
 // reference solutions the tests grade. Checked on load: every problem is
 // reported as manifest.json:LINE:COL with what to write instead.
-#include "gradebook.h"
-#include "requirement.h"
+#include "grading/gradebook.h"
+#include "grading/requirement.h"
 
 #include "scene/scene_diagnostic.h"
 

@@ -11,7 +11,7 @@
 #include "measure/percentiles.h"
 #include "platform/exit_codes.h"
 
-#include "starter_scene.h"
+#include "classroom/starter_scene.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -4,7 +4,7 @@
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
 
-#include "catalogue.h"
+#include "courseware/catalogue.h"
 #include "haptics/haptics_bench.h"
 
 #include <iostream>

@@ -6,9 +6,9 @@
 #include "cli/json.h"
 #include "platform/exit_codes.h"
 
-#include "batch_grading.h"
-#include "catalogue.h"
-#include "checker.h"
+#include "courseware/catalogue.h"
+#include "grading/batch_grading.h"
+#include "grading/checker.h"
 
 #include <fstream>
 #include <iostream>

@@ -7,9 +7,9 @@
 #include "cli/json.h"
 #include "platform/exit_codes.h"
 
-#include "catalogue.h"
-#include "checker.h"
+#include "courseware/catalogue.h"
 #include "grading/check_report_json.h"
+#include "grading/checker.h"
 
 #include <iostream>
 

@@ -4,8 +4,8 @@
 #include "cli/grade_options.h"
 #include "platform/exit_codes.h"
 
-#include "catalogue.h"
-#include "grade_export.h"
+#include "courseware/catalogue.h"
+#include "grading/grade_export.h"
 
 #include <filesystem>
 #include <fstream>

@@ -4,7 +4,7 @@
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
 
-#include "signing.h"
+#include "grading/signing.h"
 
 #include <cstdlib>
 #include <filesystem>

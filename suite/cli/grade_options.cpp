@@ -2,8 +2,8 @@
 
 #include "cli/json.h"
 
-#include "catalogue.h"
-#include "signing.h"
+#include "courseware/catalogue.h"
+#include "grading/signing.h"
 
 #include <filesystem>
 #include <ostream>

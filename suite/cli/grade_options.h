@@ -4,8 +4,8 @@
 // located problems printed, and refusing a gradebook that is not there.
 #include "platform/option_table.h"
 
-#include "assignment.h"
-#include "gradebook.h"
+#include "courseware/assignment.h"
+#include "grading/gradebook.h"
 
 #include <iosfwd>
 #include <optional>

@@ -5,11 +5,11 @@
 #include "cli/grade_options.h"
 #include "platform/exit_codes.h"
 
-#include "catalogue.h"
-#include "checker.h"
-#include "grade_report.h"
+#include "courseware/catalogue.h"
+#include "grading/checker.h"
+#include "grading/grade_report.h"
+#include "grading/submission_view.h"
 #include "platform/isolated_run.h"
-#include "submission_view.h"
 
 #include "scene/effects_plan.h"
 #include "scene/scene_reader.h"

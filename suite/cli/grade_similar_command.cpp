@@ -7,10 +7,10 @@
 #include "cli/json.h"
 #include "platform/exit_codes.h"
 
-#include "catalogue.h"
-#include "checker.h"
-#include "gradebook.h"
-#include "similarity.h"
+#include "courseware/catalogue.h"
+#include "grading/checker.h"
+#include "grading/gradebook.h"
+#include "grading/similarity.h"
 
 #include "scene/scene_reader.h"
 

@@ -7,8 +7,8 @@
 #include "cli/json.h"
 #include "platform/exit_codes.h"
 
-#include "gradebook.h"
-#include "signing.h"
+#include "grading/gradebook.h"
+#include "grading/signing.h"
 
 #include <iostream>
 

@@ -3,7 +3,7 @@
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
 
-#include "device/device_enumeration.h"
+#include "haptics/device/device_enumeration.h"
 
 #include <iostream>
 

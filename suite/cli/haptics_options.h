@@ -4,7 +4,7 @@
 // diagnostics printed, and printing a run's ticks and what it had to say.
 #include "platform/option_table.h"
 
-#include "probe.h"
+#include "haptics/probe.h"
 
 #include "scene/scene.h"
 

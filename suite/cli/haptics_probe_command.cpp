@@ -6,8 +6,8 @@
 #include "cli/haptics_options.h"
 #include "platform/exit_codes.h"
 
-#include "device/polyline_path.h"
-#include "probe.h"
+#include "haptics/device/polyline_path.h"
+#include "haptics/probe.h"
 
 #include <cstdio>
 #include <iostream>

@@ -5,12 +5,12 @@
 #include "cli/haptics_options.h"
 #include "platform/exit_codes.h"
 
-#include "device/device_enumeration.h"
-#include "device/device_recorder.h"
-#include "device/simulated_device.h"
-#include "probe.h"
-#include "servo_loop.h"
-#include "tangible_scene.h"
+#include "haptics/device/device_enumeration.h"
+#include "haptics/device/device_recorder.h"
+#include "haptics/device/simulated_device.h"
+#include "haptics/probe.h"
+#include "haptics/servo_loop.h"
+#include "haptics/tangible_scene.h"
 
 #include <chrono>
 #include <cstdio>

@@ -5,8 +5,8 @@
 #include "cli/haptics_options.h"
 #include "platform/exit_codes.h"
 
-#include "device/replay_device.h"
-#include "probe.h"
+#include "haptics/device/replay_device.h"
+#include "haptics/probe.h"
 
 #include <cstdio>
 #include <iostream>

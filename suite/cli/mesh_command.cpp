@@ -12,7 +12,7 @@
 #include "mesh/point_cloud.h"
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"
-#include "text_outliner.h"
+#include "viewer/text_outliner.h"
 
 #include <QGuiApplication>
 

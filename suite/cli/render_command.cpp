@@ -3,10 +3,10 @@
 #include "platform/exit_codes.h"
 
 #include "mesh/scene_meshing.h"
-#include "offscreen_render.h"
 #include "scene/scene_reader.h"
-#include "surface_format.h"
-#include "text_outliner.h"
+#include "viewer/offscreen_render.h"
+#include "viewer/surface_format.h"
+#include "viewer/text_outliner.h"
 
 #include <QFileInfo>
 #include <QGuiApplication>

@@ -6,11 +6,11 @@
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
 
-#include "class_session.h"
-#include "edit_log.h"
-#include "scene_policy.h"
-#include "server.h"
-#include "starter_scene.h"
+#include "classroom/class_session.h"
+#include "classroom/edit_log.h"
+#include "classroom/scene_policy.h"
+#include "classroom/server.h"
+#include "classroom/starter_scene.h"
 
 #include "scene/read_limits.h"
 

@@ -1,6 +1,6 @@
 #include "accuracy_panel.h"
 
-#include "code_editor.h"
+#include "editor/code_editor.h"
 #include "plain_text.h"
 
 #include "haptics/haptics_bench.h"

@@ -1,8 +1,8 @@
 #include "assignment_panel.h"
 
-#include "catalogue.h"
-#include "code_editor.h"
-#include "hand_in.h"
+#include "courseware/catalogue.h"
+#include "courseware/hand_in.h"
+#include "editor/code_editor.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
 

@@ -6,8 +6,8 @@
 // is missing; activating one jumps to its place in the scene text.
 #include "panel.h"
 
-#include "assignment.h"
-#include "checker.h"
+#include "courseware/assignment.h"
+#include "grading/checker.h"
 
 #include "platform/newest_only_worker.h"
 

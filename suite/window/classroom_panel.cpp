@@ -1,13 +1,13 @@
 #include "classroom_panel.h"
 
-#include "code_editor.h"
-#include "live_parser.h"
+#include "editor/code_editor.h"
+#include "editor/live_parser.h"
 #include "plain_text.h"
-#include "scene_widget.h"
+#include "viewer/scene_widget.h"
 
-#include "client.h"
+#include "classroom/client.h"
+#include "classroom/scene_policy.h"
 #include "mesh/scene_meshing.h"
-#include "scene_policy.h"
 
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"

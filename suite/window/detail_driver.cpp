@@ -1,9 +1,9 @@
 #include "detail_driver.h"
 
-#include "level_of_detail_control.h"
 #include "mesh/scene_meshing.h"
-#include "scene_player.h"
-#include "scene_widget.h"
+#include "viewer/level_of_detail_control.h"
+#include "viewer/scene_player.h"
+#include "viewer/scene_widget.h"
 
 namespace fl::suite {
 

@@ -1,6 +1,6 @@
 #include "examples.h"
 
-#include "catalogue.h"
+#include "courseware/catalogue.h"
 
 namespace fl::suite {
 

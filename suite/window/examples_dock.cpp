@@ -2,7 +2,7 @@
 
 #include "plain_text.h"
 
-#include "catalogue.h"
+#include "courseware/catalogue.h"
 #include "examples.h"
 
 #include <QListWidget>

@@ -3,9 +3,9 @@
 #include "mesh/mesh_export.h"
 #include "mesh/scene_meshing.h"
 #include "panel_context.h"
-#include "scene_player.h"
-#include "scene_widget.h"
-#include "text_outliner.h"
+#include "viewer/scene_player.h"
+#include "viewer/scene_widget.h"
+#include "viewer/text_outliner.h"
 
 #include <QDir>
 #include <QFileDialog>

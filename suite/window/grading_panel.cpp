@@ -1,10 +1,10 @@
 #include "grading_panel.h"
 
-#include "catalogue.h"
-#include "checker.h"
+#include "courseware/catalogue.h"
+#include "grading/checker.h"
+#include "grading/signing.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
-#include "signing.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -7,9 +7,9 @@
 // is entered (a batch may write beside it: WAL); exports from the same file.
 #include "panel.h"
 
-#include "assignment.h"
-#include "grade_export.h"
-#include "gradebook.h"
+#include "courseware/assignment.h"
+#include "grading/grade_export.h"
+#include "grading/gradebook.h"
 
 #include <memory>
 #include <optional>

@@ -6,7 +6,7 @@
 
 #include "platform/option_table.h"
 #include "scene/scene_writer.h"
-#include "surface_format.h"
+#include "viewer/surface_format.h"
 #include <QApplication>
 #include <QDir>
 #include <QFileInfo>

@@ -1,19 +1,19 @@
 #include "haptics_panel.h"
 
-#include "picking.h"
 #include "plain_text.h"
-#include "render_scene.h"
-#include "scene_player.h"
-#include "scene_widget.h"
+#include "viewer/picking.h"
+#include "viewer/render_scene.h"
+#include "viewer/scene_player.h"
+#include "viewer/scene_widget.h"
 
-#include "device/device_enumeration.h"
-#include "device/device_limits.h"
-#include "effect_colours.h"
+#include "haptics/device/device_enumeration.h"
+#include "haptics/device/device_limits.h"
+#include "haptics/effect_colours.h"
+#include "haptics/pointer_device.h"
+#include "haptics/servo_loop.h"
+#include "haptics/tangible_scene.h"
 #include "mesh/scene_meshing.h"
-#include "pointer_device.h"
 #include "scene/effects_plan.h"
-#include "servo_loop.h"
-#include "tangible_scene.h"
 
 #include <QComboBox>
 #include <QFormLayout>

@@ -1,6 +1,6 @@
 #include "issues_dock.h"
 
-#include "live_parser.h"
+#include "editor/live_parser.h"
 #include "scene/scene_diagnostic.h"
 
 #include <QListWidget>

@@ -1,7 +1,7 @@
 #include "parameters_dock.h"
 
 #include "mesh/scene_meshing.h"
-#include "scene_player.h"
+#include "viewer/scene_player.h"
 
 #include <QFormLayout>
 #include <QHBoxLayout>

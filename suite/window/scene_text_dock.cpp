@@ -1,7 +1,7 @@
 #include "scene_text_dock.h"
 
-#include "code_editor.h"
-#include "find_bar.h"
+#include "editor/code_editor.h"
+#include "editor/find_bar.h"
 
 #include <QVBoxLayout>
 

@@ -2,9 +2,9 @@
 
 #include "mesh/scene_meshing.h"
 #include "plain_text.h"
-#include "scene_player.h"
-#include "scene_widget.h"
 #include "screen_error_meter.h"
+#include "viewer/scene_player.h"
+#include "viewer/scene_widget.h"
 
 #include <QLabel>
 #include <QStatusBar>

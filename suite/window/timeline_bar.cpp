@@ -2,7 +2,7 @@
 
 #include "scene/field_access.h"
 #include "scene/scene.h"
-#include "scene_player.h"
+#include "viewer/scene_player.h"
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>

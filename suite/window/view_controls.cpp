@@ -1,8 +1,8 @@
 #include "view_controls.h"
 
 #include "mesh/scene_meshing.h"
-#include "scene_widget.h"
 #include "timeline_bar.h"
+#include "viewer/scene_widget.h"
 #include "viewpoint_box.h"
 
 #include <QAction>

@@ -2,11 +2,11 @@
 
 #include "mesh/scene_meshing.h"
 #include "panel_context.h"
-#include "picking.h"
 #include "plain_text.h"
-#include "scene_player.h"
-#include "scene_widget.h"
 #include "screen_error_meter.h"
+#include "viewer/picking.h"
+#include "viewer/scene_player.h"
+#include "viewer/scene_widget.h"
 
 #include <QStatusBar>
 #include <QVector3D>

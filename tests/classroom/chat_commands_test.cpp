@@ -1,7 +1,7 @@
 // Chat commands: parsed, and turned into scenes that pass the class's checks.
-#include "chat_commands.h"
-#include "scene_policy.h"
-#include "starter_scene.h"
+#include "classroom/chat_commands.h"
+#include "classroom/scene_policy.h"
+#include "classroom/starter_scene.h"
 
 #include "scenes.h"
 

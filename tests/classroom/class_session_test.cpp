@@ -1,8 +1,8 @@
 // The class's rules with no sockets: joins, edits under the lock, fencing,
 // checks, chat and its commands, roles, freeze, the rate limit, leases and
 // resuming a seat — on a ManualClock.
-#include "class_session.h"
-#include "starter_scene.h"
+#include "classroom/class_session.h"
+#include "classroom/starter_scene.h"
 
 #include "scenes.h"
 #include "session_harness.h"

@@ -1,7 +1,7 @@
 // The class's log: versions written before they are announced, read back by
 // a new class on the same folder; any version can be fetched for replay.
-#include "class_session.h"
-#include "edit_log.h"
+#include "classroom/class_session.h"
+#include "classroom/edit_log.h"
 #include "platform/sqlite_database.h"
 
 #include "scenes.h"

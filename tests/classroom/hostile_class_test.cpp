@@ -3,8 +3,8 @@
 // joins that fill the class, guesses at the instructor key, connections that
 // never join, locks held by heartbeats, and the small holes. Each test is an
 // attack that worked before its fix.
-#include "class_session.h"
-#include "scene_policy.h"
+#include "classroom/class_session.h"
+#include "classroom/scene_policy.h"
 
 #include "scenes.h"
 #include "session_harness.h"

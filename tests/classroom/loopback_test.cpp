@@ -2,8 +2,8 @@
 // loopback: joins, broadcasts, lock refusals and the kept edit, located
 // diagnostics, chat and commands, oversized and malformed frames, and a
 // server restart that the clients ride out by reconnecting and resuming.
-#include "client.h"
-#include "server.h"
+#include "classroom/client.h"
+#include "classroom/server.h"
 
 #include "scenes.h"
 

@@ -1,5 +1,5 @@
 // Names in a class (issue 26 §2): what others see must read as what it is.
-#include "member_name.h"
+#include "classroom/member_name.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The message parser: every client type, and what hostile or mistaken
 // frames get (a ProtocolError naming the field, never a crash).
-#include "protocol.h"
+#include "classroom/protocol.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // `functionlab serve --data DIR`, the server is killed with SIGKILL and
 // started again on the same DIR, and every version it had announced is
 // still there. SIGTERM stops it cleanly.
-#include "client.h"
+#include "classroom/client.h"
 
 #include "scenes.h"
 

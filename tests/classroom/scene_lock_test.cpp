@@ -1,7 +1,7 @@
 // Leases, grace after a disconnect, the rate limit and the failed-join
 // throttle, all on a ManualClock: no sleeps.
-#include "rate_limit.h"
-#include "scene_lock.h"
+#include "classroom/rate_limit.h"
+#include "classroom/scene_lock.h"
 
 #include <gtest/gtest.h>
 

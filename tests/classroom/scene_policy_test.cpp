@@ -1,7 +1,7 @@
 // What a class scene may hold: checked by the scene reader and the formula
 // checker, no urls, bounded size, nodes and formulas.
-#include "scene_policy.h"
-#include "starter_scene.h"
+#include "classroom/scene_policy.h"
+#include "classroom/starter_scene.h"
 
 #include "scenes.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Drives a ClassSession by frames, as a server would, and keeps what each
 // connection received as JSON objects.
-#include "class_session.h"
+#include "classroom/class_session.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

@@ -1,8 +1,8 @@
 #pragma once
 // A screenshot of the whole FunctionLab window for GUI tests: QWidget::grab
 // does not see the Qt3D view's OpenGL surface, so its frame is painted in.
-#include "main_window.h"
-#include "scene_widget.h"
+#include "suite/window/main_window.h"
+#include "viewer/scene_widget.h"
 
 #include <QImage>
 #include <QPainter>

@@ -1,7 +1,7 @@
 #pragma once
 // Waiting in GUI tests until the window has nothing left to do: parsed,
 // meshed, and the last frame in the view (the level of detail has looked).
-#include "main_window.h"
+#include "suite/window/main_window.h"
 
 #include <QElapsedTimer>
 #include <QTest>

@@ -1,8 +1,8 @@
 // Assignments: every manifest that comes with FunctionLab loads, its
 // reference solutions score full marks and its starters load; a broken
 // manifest says what is wrong at manifest.json:LINE:COL.
-#include "catalogue.h"
-#include "checker.h"
+#include "courseware/catalogue.h"
+#include "grading/checker.h"
 
 #include "scene/scene_reader.h"
 

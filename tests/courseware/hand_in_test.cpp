@@ -1,8 +1,8 @@
 // File → Hand in: the scene (as the editor holds it) and the files it uses,
 // at the same relative places, in a new folder that `grade check` reads.
-#include "catalogue.h"
-#include "checker.h"
-#include "hand_in.h"
+#include "courseware/catalogue.h"
+#include "courseware/hand_in.h"
+#include "grading/checker.h"
 
 #include "scene/scene_reader.h"
 

@@ -2,8 +2,8 @@
 // comes with FunctionLab: honest work in several styles scores full marks;
 // work that is hidden, dead or not felt does not earn the requirement it
 // aims at (tests/grading/submissions/<lab>/expected.txt, README there).
-#include "catalogue.h"
-#include "checker.h"
+#include "courseware/catalogue.h"
+#include "grading/checker.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // strings), where a diagnostic is underlined, what completion offers, find
 // and replace, and the live parse (a text with errors keeps the last good
 // scene; a late parse of older text is dropped).
-#include "code_editor.h"
-#include "find_bar.h"
-#include "live_parser.h"
+#include "editor/code_editor.h"
+#include "editor/find_bar.h"
+#include "editor/live_parser.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

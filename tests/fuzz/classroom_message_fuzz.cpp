@@ -3,8 +3,8 @@
 // and then handled by a class an instructor has joined, so the parser, the
 // scene checks and the chat commands all see it. No crash, no hang; every
 // answer is a JSON object with a type; the version never goes back.
-#include "class_session.h"
-#include "protocol.h"
+#include "classroom/class_session.h"
+#include "classroom/protocol.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

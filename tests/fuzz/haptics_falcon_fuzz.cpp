@@ -3,7 +3,7 @@
 // the framer. No crash, no read out of bounds; a packet that decodes
 // encodes back to the same bytes (byte 14, of unknown meaning, aside); the
 // framer finds no more packets than the stream can hold.
-#include "device/falcon_packet.h"
+#include "haptics/device/falcon_packet.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // crash, no hang; every error names a line of the text and a column on it;
 // a log that reads has finite samples in increasing time order, and writing
 // it back reads back to the very same text (write-then-read identity).
-#include "device/device_log.h"
+#include "haptics/device/device_log.h"
 
 #include <cmath>
 #include <cstdint>

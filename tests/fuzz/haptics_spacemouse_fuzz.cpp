@@ -3,8 +3,8 @@
 // would hand them over. No crash, no read out of bounds; a report that
 // parses says something, and the tool it drives stays finite and inside
 // its workspace whatever the axes say.
-#include "device/spacemouse_report.h"
-#include "device/spacemouse_tool.h"
+#include "haptics/device/spacemouse_report.h"
+#include "haptics/device/spacemouse_tool.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // another instructor is hostile until checked). Beyond "no crash, no hang":
 // a manifest that loads has only known requirement kinds and unique ids, and
 // every diagnostic has a position inside the text.
-#include "assignment.h"
+#include "courseware/assignment.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,7 +1,7 @@
 // libFuzzer target: a roster CSV from an LMS or a spreadsheet (outside
 // input) imported into an in-memory gradebook. No crash, no hang; every
 // problem names a line of the text; every student imported has an id.
-#include "gradebook.h"
+#include "grading/gradebook.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -4,9 +4,9 @@
 // the file could tamper — change a table row (a grade, a manual score, an
 // override), change, insert or delete an entry, delete the tail, hash the
 // whole log again without the key — is found, and says where.
-#include "gradebook.h"
-#include "gradebook_log.h"
-#include "signing.h"
+#include "grading/gradebook.h"
+#include "grading/gradebook_log.h"
+#include "grading/signing.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Batch grading: each submission in its own child; a hang costs its own
 // time limit, never the batch; a batch run again skips what is unchanged;
 // a batch killed half-way keeps every result it had finished.
-#include "batch_grading.h"
+#include "grading/batch_grading.h"
 
 #include <gtest/gtest.h>
 

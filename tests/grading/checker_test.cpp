@@ -1,7 +1,7 @@
 // The checker against submissions with known verdicts: the reference
 // solution meets everything; dead, hidden, constant and broken variants do
 // not, with reasons that name the place; verdicts are the same every time.
-#include "checker.h"
+#include "grading/checker.h"
 
 #include "scene/scene_reader.h"
 

@@ -3,7 +3,7 @@
 // R-functions, cuts by a plane, FTransform composites, small shapes — and
 // work that is not shown, not written by the student or not felt does not
 // count. Each named case is one the issue found.
-#include "checker.h"
+#include "grading/checker.h"
 
 #include "scene/scene_reader.h"
 

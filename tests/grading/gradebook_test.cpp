@@ -1,8 +1,8 @@
 // The gradebook: a real SQLite file — roster import, grades with their
 // results, resuming, manual scores and overrides, the audit chain that shows
 // tampering, schema versions — and the exports an LMS reads.
-#include "grade_export.h"
-#include "gradebook.h"
+#include "grading/grade_export.h"
+#include "grading/gradebook.h"
 
 #include <gtest/gtest.h>
 

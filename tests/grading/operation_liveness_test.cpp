@@ -2,7 +2,7 @@
 // set operations in compiled fields, with the named hard cases of issue 15
 // (a sliver thinner than a mesh cell, tangent shapes, shapes touching at one
 // point, undefined regions) and the law that verdicts are deterministic.
-#include "operation_liveness.h"
+#include "grading/operation_liveness.h"
 
 #include "formula/compiler.h"
 

@@ -1,7 +1,7 @@
 // Similar submissions: the same model up to renaming, constants, placement
 // and the order of commutative operations is found; a different model is
 // not; what the starter already has does not make two submissions alike.
-#include "similarity.h"
+#include "grading/similarity.h"
 
 #include "scene/scene_reader.h"
 

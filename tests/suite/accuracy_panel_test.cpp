@@ -3,7 +3,7 @@
 // drawn as error against time; the operating point is ringed; clicking a
 // point or typing a target error chooses a resolution; a sweep can be
 // cancelled. A screenshot is saved to look at.
-#include "accuracy_panel.h"
+#include "suite/window/accuracy_panel.h"
 
 #include "scene/field_access.h"
 #include "scene/scene_reader.h"

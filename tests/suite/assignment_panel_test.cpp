@@ -3,7 +3,7 @@
 // scene changes (the checker on a worker thread; only the newest scene
 // counts), says why one is not met and where, and jumps there. A screenshot
 // of the panel is saved to look at.
-#include "assignment_panel.h"
+#include "suite/window/assignment_panel.h"
 
 #include "scene/scene_reader.h"
 

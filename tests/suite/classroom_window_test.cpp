@@ -4,16 +4,16 @@
 // under Ada's lock is refused — visibly, with her name — and kept; when Ada
 // releases, Ben applies his kept edit. A tool removes material at a clicked
 // point, through the same protocol. Screenshots of both windows are saved.
-#include "classroom_panel.h"
-#include "code_editor.h"
-#include "main_window.h"
+#include "editor/code_editor.h"
+#include "suite/window/classroom_panel.h"
+#include "suite/window/main_window.h"
 #include "window_screenshot.h"
 
-#include "class_session.h"
-#include "client.h"
-#include "edit_log.h"
-#include "server.h"
-#include "starter_scene.h"
+#include "classroom/class_session.h"
+#include "classroom/client.h"
+#include "classroom/edit_log.h"
+#include "classroom/server.h"
+#include "classroom/starter_scene.h"
 
 #include <QDir>
 #include <QHostAddress>

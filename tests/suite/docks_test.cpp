@@ -1,10 +1,10 @@
 // Each panel of the window driven alone (Qt Test, no 3D view needed): what it
 // shows for a scene, and what it says when the student acts on it.
-#include "examples_dock.h"
-#include "issues_dock.h"
-#include "parameters_dock.h"
-#include "scene_tree_dock.h"
-#include "viewpoint_box.h"
+#include "suite/window/examples_dock.h"
+#include "suite/window/issues_dock.h"
+#include "suite/window/parameters_dock.h"
+#include "suite/window/scene_tree_dock.h"
+#include "suite/window/viewpoint_box.h"
 
 #include "scene/scene_reader.h"
 

@@ -2,10 +2,10 @@
 // graded students shows as a table; rubric scores, comments and an override
 // (with its reason) are written to the gradebook and change the final score;
 // the grades export. A screenshot is saved to look at.
-#include "grading_panel.h"
+#include "suite/window/grading_panel.h"
 
-#include "catalogue.h"
-#include "checker.h"
+#include "courseware/catalogue.h"
+#include "grading/checker.h"
 
 #include <QApplication>
 #include <QDir>

@@ -2,8 +2,8 @@
 // never starts the loop and says why; the watermelon is felt with the
 // mouse's device — the tool pressed into its top meets the rind, the force
 // pushes back up, the status and the graph show it. A screenshot is saved.
-#include "force_graph.h"
-#include "haptics_panel.h"
+#include "suite/window/force_graph.h"
+#include "suite/window/haptics_panel.h"
 
 #include "scene/scene_reader.h"
 

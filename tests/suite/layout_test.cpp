@@ -3,13 +3,13 @@
 // status bar, the 3D view is the largest thing on screen, every panel's tab
 // shows its whole name, and the issues strip is there only while there are
 // issues. Screenshots of both sizes are saved to look at.
-#include "main_window.h"
-#include "panel.h"
-#include "scene_widget.h"
+#include "suite/window/main_window.h"
+#include "suite/window/panel.h"
+#include "viewer/scene_widget.h"
 #include "window_screenshot.h"
 #include "window_settle.h"
 
-#include "code_editor.h"
+#include "editor/code_editor.h"
 
 #include <QApplication>
 #include <QDir>

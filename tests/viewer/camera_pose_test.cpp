@@ -1,6 +1,6 @@
 // Where the camera stands, without drawing: X3D viewpoints (field of view
 // over the smaller side) and a view that fits a scene without one.
-#include "camera_pose.h"
+#include "viewer/camera_pose.h"
 
 #include <QMatrix4x4>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The view's level of detail: approaching refines in a few steps, moving a
 // little never re-meshes, lod FALSE keeps the file's resolution, and the
 // resolution stays within lodRange.
-#include "level_of_detail_control.h"
+#include "viewer/level_of_detail_control.h"
 
 #include "scene/scene_reader.h"
 

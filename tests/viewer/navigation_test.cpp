@@ -1,7 +1,7 @@
 // Camera moves as the user expects: orbiting keeps the distance and comes
 // back after a full turn, zooming never passes the centre, panning keeps the
 // direction, walking keeps the eye level, looking stops short of the zenith.
-#include "navigation.h"
+#include "viewer/navigation.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // colours its scene fixes; time changes what is drawn; see-through shapes
 // show what is behind them; a bad viewpoint name is explained. Each frame is
 // saved under build/tests/viewer/screenshots/ to be looked at.
-#include "offscreen_render.h"
 #include "picture_measures.h"
-#include "text_outliner.h"
+#include "viewer/offscreen_render.h"
+#include "viewer/text_outliner.h"
 
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"

@@ -1,7 +1,7 @@
 // Picking finds the point on the function itself (to rounding, where the
 // mesh's chords are a thousandth off), through transforms, and on standard
 // shapes by their triangles; a ray that misses finds nothing.
-#include "picking.h"
+#include "viewer/picking.h"
 
 #include "scene/scene_reader.h"
 

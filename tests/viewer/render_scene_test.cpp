@@ -2,7 +2,7 @@
 // only moves matrices (the clock), a shape whose geometry changed is made
 // again alone (the bouncing sphere, not its floor), and changing the drawing
 // mode makes everything again. No drawing: no display needed.
-#include "render_scene.h"
+#include "viewer/render_scene.h"
 
 #include "mesh/mesh_cache.h"
 #include "scene/scene_reader.h"

@@ -3,12 +3,12 @@
 // viewpoint carries it, a bound NavigationInfo changes how one moves — and
 // a camera the user moved stays where it is while the scene's binding
 // does not change.
-#include "scene_widget.h"
+#include "viewer/scene_widget.h"
 
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"
 
-#include "surface_format.h"
+#include "viewer/surface_format.h"
 #include <QApplication>
 #include <gtest/gtest.h>
 

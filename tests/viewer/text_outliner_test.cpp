@@ -1,7 +1,7 @@
 // Glyph outlines from Qt's font engine (text_outliner.h): real fonts are
 // found for X3D's generic families, glyph holes come as their own contours,
 // sizes scale, and bold is heavier than plain.
-#include "text_outliner.h"
+#include "viewer/text_outliner.h"
 
 #include "mesh/planar_fill.h"
 

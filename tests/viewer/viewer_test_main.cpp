@@ -1,6 +1,6 @@
 // GoogleTest with a QGuiApplication (OpenGL 3.3 core asked for first, as the
 // suite does), so the off-screen tests can draw.
-#include "surface_format.h"
+#include "viewer/surface_format.h"
 #include <QGuiApplication>
 #include <gtest/gtest.h>
 

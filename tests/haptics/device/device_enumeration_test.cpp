@@ -1,5 +1,5 @@
-#include "device/device_enumeration.h"
-#include "device/usb_products.h"
+#include "haptics/device/device_enumeration.h"
+#include "haptics/device/usb_products.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "device/device_limits.h"
+#include "haptics/device/device_limits.h"
 
 #include <gtest/gtest.h>
 

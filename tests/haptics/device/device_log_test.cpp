@@ -1,4 +1,4 @@
-#include "device/device_log.h"
+#include "haptics/device/device_log.h"
 
 #include <gtest/gtest.h>
 

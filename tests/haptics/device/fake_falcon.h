@@ -4,10 +4,10 @@
 // each command packet, encoders from an arm position through the real
 // inverse kinematics). The device layer's codec, kinematics, homing and
 // firmware sequence all run for real against it.
-#include "device/falcon_ftdi.h"
-#include "device/falcon_kinematics.h"
-#include "device/falcon_packet.h"
-#include "device/falcon_transport.h"
+#include "haptics/device/falcon_ftdi.h"
+#include "haptics/device/falcon_kinematics.h"
+#include "haptics/device/falcon_packet.h"
+#include "haptics/device/falcon_transport.h"
 
 #include <cmath>
 #include <deque>

@@ -1,5 +1,5 @@
-#include "device/falcon_device.h"
-#include "device/falcon_firmware.h"
+#include "haptics/device/falcon_device.h"
+#include "haptics/device/falcon_firmware.h"
 
 #include "fake_falcon.h"
 

@@ -1,4 +1,4 @@
-#include "device/falcon_homing.h"
+#include "haptics/device/falcon_homing.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "device/falcon_kinematics.h"
+#include "haptics/device/falcon_kinematics.h"
 
 #include <gtest/gtest.h>
 

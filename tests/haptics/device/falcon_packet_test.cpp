@@ -1,4 +1,4 @@
-#include "device/falcon_packet.h"
+#include "haptics/device/falcon_packet.h"
 
 #include <gtest/gtest.h>
 

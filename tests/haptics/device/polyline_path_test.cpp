@@ -1,4 +1,4 @@
-#include "device/polyline_path.h"
+#include "haptics/device/polyline_path.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "device/device_recorder.h"
-#include "device/replay_device.h"
-#include "device/simulated_device.h"
+#include "haptics/device/device_recorder.h"
+#include "haptics/device/replay_device.h"
+#include "haptics/device/simulated_device.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "device/simulated_device.h"
+#include "haptics/device/simulated_device.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "device/spacemouse_report.h"
+#include "haptics/device/spacemouse_report.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "device/spacemouse_tool.h"
+#include "haptics/device/spacemouse_tool.h"
 
 #include <gtest/gtest.h>
 

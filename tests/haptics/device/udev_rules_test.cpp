@@ -1,4 +1,4 @@
-#include "device/usb_products.h"
+#include "haptics/device/usb_products.h"
 
 #include <gtest/gtest.h>
 

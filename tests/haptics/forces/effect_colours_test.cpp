@@ -1,6 +1,6 @@
 // Friction and density as colour (haptics/effect_colours.h): the value the
 // servo loop would feel at each vertex, through the effect's domain box.
-#include "effect_colours.h"
+#include "haptics/effect_colours.h"
 
 #include "mesh/scene_meshing.h"
 #include "scene/scene_reader.h"

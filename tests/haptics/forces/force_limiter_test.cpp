@@ -1,5 +1,5 @@
 // The limits between the force model and the motors (haptics/force_limiter.h).
-#include "force_limiter.h"
+#include "haptics/force_limiter.h"
 
 #include <gtest/gtest.h>
 

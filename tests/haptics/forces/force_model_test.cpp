@@ -3,7 +3,7 @@
 // fields, and the named hard cases of docs/haptics.md.
 #include "force_test_scenes.h"
 
-#include "probe.h"
+#include "haptics/probe.h"
 
 #include <gtest/gtest.h>
 

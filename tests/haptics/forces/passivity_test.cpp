@@ -5,9 +5,9 @@
 // density.
 #include "force_test_scenes.h"
 
-#include "device/simulated_device.h"
-#include "force_limiter.h"
-#include "force_model.h"
+#include "haptics/device/simulated_device.h"
+#include "haptics/force_limiter.h"
+#include "haptics/force_model.h"
 
 #include <gtest/gtest.h>
 

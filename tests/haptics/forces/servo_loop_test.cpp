@@ -4,9 +4,9 @@
 // silent. Nothing here is timed: waits are bounded, figures are not asserted.
 #include "force_test_scenes.h"
 
-#include "device/device_limits.h"
-#include "pointer_device.h"
-#include "servo_loop.h"
+#include "haptics/device/device_limits.h"
+#include "haptics/pointer_device.h"
+#include "haptics/servo_loop.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The snapshot the servo loop touches (haptics/tangible_scene.h), on the
 // paper's tangible examples.
-#include "probe.h"
-#include "tangible_scene.h"
+#include "haptics/probe.h"
+#include "haptics/tangible_scene.h"
 
 #include "scene/scene_reader.h"
 

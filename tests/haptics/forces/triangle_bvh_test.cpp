@@ -3,9 +3,9 @@
 // and a proxy pressed into a box's corner stays on its faces.
 #include "force_test_scenes.h"
 
+#include "haptics/probe.h"
+#include "haptics/triangle_bvh.h"
 #include "mesh/standard_geometry.h"
-#include "probe.h"
-#include "triangle_bvh.h"
 
 #include <gtest/gtest.h>
 
