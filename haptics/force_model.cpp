@@ -192,6 +192,168 @@ void ForceModel::polygonStep(ShapeState& s, const Vec3& tool, Friction friction)
     s.proxy = radius > 0 ? field::along(proxy, moved, -radius / length) : proxy;
 }
 
+bool ForceModel::effectAt(ShapeState& s, scene::TangibleKind kind, const Vec3& p,
+                          const animation::Instant& moment, double* values) {
+    const TangibleShape& shape = *s.shape;
+    for (std::size_t i = 0; i < shape.effects.size(); ++i) {
+        const EffectField& e = shape.effects[i];
+        if (e.kind != kind) continue;
+        const auto v =
+            field::componentView(shape.effectFrame.point(p), shape.geometryBox, e.componentBox);
+        const double t = e.timing.at(moment);
+        const formula::Point point{v[0], v[1], v[2], t, v[3], v[4], v[5]};
+        s.evaluators[i].evaluateAll(point, values);
+        const std::size_t n = kind == scene::TangibleKind::Force ? 3 : 1;
+        for (std::size_t k = 0; k < n; ++k)
+            if (!std::isfinite(values[k])) {
+                report(shape.name + kindTitle(kind), kindTitle(kind) + " (" + e.location +
+                                                         ") is not a number at " +
+                                                         pointText(shape.toScene.point(p)) +
+                                                         ": it adds nothing where that happens");
+                return false;
+            }
+        return true;
+    }
+    return false;
+}
+
+void ForceModel::implicitProxyStep(ShapeState& s, const Vec3& tool3, const formula::Dual& here,
+                                   const animation::Instant& moment) {
+    const double diagonal = s.shape->container.diagonal();
+    if (s.contact == ContactKind::None) {
+        field::MarchOptions o;
+        o.limit = 1; // the segment from the last tool position to this one
+        const auto hit =
+            field::marchToSurface(*s.sampler, s.lastTool, field::minus(tool3, s.lastTool), o);
+        if (hit) {
+            s.contact = ContactKind::Surface;
+            s.proxy = hit->point;
+            s.lastNormal = hit->normal;
+            s.hasNormal = true;
+        } else if (here.v >= 0) {
+            // Ending exactly on f = 0 is no sign change: entered all the
+            // same if the last position was outside; else it started inside.
+            const double before = solid(*s.sampler, s.lastTool).v;
+            if (before < 0) {
+                s.contact = ContactKind::Surface;
+                s.proxy = tool3;
+            } else {
+                s.contact = ContactKind::Inside;
+            }
+        }
+    } else if (s.contact == ContactKind::Inside && here.v < 0) {
+        s.contact = ContactKind::None; // out again, freely
+    }
+    if (s.contact == ContactKind::Surface) {
+        const formula::Dual atProxy = solid(*s.sampler, s.proxy);
+        if (auto n = outward(atProxy)) {
+            s.lastNormal = *n;
+            s.hasNormal = true;
+        }
+        if (s.hasNormal) {
+            const Vec3 n = s.lastNormal;
+            const double depth = field::dot(field::minus(s.proxy, tool3), n);
+            if (depth <= 0) {
+                // Above the tangent plane: the proxy follows the tool unless the
+                // way there meets the solid again (a concave corner).
+                const Vec3 start = field::along(s.proxy, n, 1e-9 * diagonal);
+                field::MarchOptions o;
+                o.limit = 1;
+                const auto hit =
+                    field::marchToSurface(*s.sampler, start, field::minus(tool3, start), o);
+                if (hit) {
+                    s.proxy = hit->point;
+                    s.lastNormal = hit->normal;
+                } else {
+                    s.contact = ContactKind::None;
+                }
+            } else {
+                // The tool projected onto the tangent plane; the proxy goes
+                // towards it as far as the friction cone lets it.
+                const Vec3 onPlane = field::along(tool3, n, depth);
+                double mu = 0;
+                if (double f[3]; effectAt(s, scene::TangibleKind::Friction, s.proxy, moment, f))
+                    mu = std::max(f[0], 0.0);
+                const Vec3 slide = field::minus(onPlane, s.proxy);
+                const double slideLength = field::length(slide);
+                const double radius = mu * depth;
+                Vec3 target = s.proxy;
+                if (slideLength > radius)
+                    target = field::along(onPlane, slide, -radius / slideLength);
+                // Back onto f = 0 by Newton steps along the gradient.
+                Vec3 p = target;
+                bool ok = false;
+                for (int k = 0; k < 8; ++k) {
+                    const formula::Dual d = solid(*s.sampler, p);
+                    const double g2 = field::dot(d.d, d.d);
+                    if (!std::isfinite(d.v) || !(g2 > 1e-300)) break;
+                    if (std::abs(d.v) <= 1e-12 * diagonal) {
+                        ok = true;
+                        break;
+                    }
+                    p = field::minus(p, field::scaled(d.d, d.v / g2));
+                }
+                if (ok && field::isFinite(p) &&
+                    field::length(field::minus(p, target)) <= depth + slideLength)
+                    s.proxy = p; // else the proxy stays: no surface to slide on here
+            }
+        }
+    }
+}
+
+Vec3 ForceModel::surfaceForce(ShapeState& s, const ToolSample& tool) {
+    const TangibleShape& shape = *s.shape;
+    Vec3 surfaceForce = field::scaled(field::minus(shape.toScene.point(s.proxy), tool.position),
+                                      settings_.stiffness);
+    const double pressing = field::length(surfaceForce); // the spring alone
+    // Damping along the normal, moving in or out: a sampled spring
+    // gives back energy unless b > K·T/2 (Colgate & Brown).
+    if (s.hasNormal && settings_.contactDamping > 0) {
+        const field::Vec3 n = shape.toScene.vector(s.lastNormal);
+        const double nn = field::dot(n, n);
+        if (nn > 0)
+            surfaceForce =
+                field::minus(surfaceForce, field::scaled(n, settings_.contactDamping *
+                                                                field::dot(tool.velocity, n) / nn));
+    }
+    if (double tension[3];
+        effectAt(s, scene::TangibleKind::Tension, s.proxy, tool.moment, tension) &&
+        tension[0] >= 0) {
+        if (tension[0] > 1)
+            report(shape.name + "tension>1",
+                   "FTension is a fraction of the device's maximum force; " + shape.name +
+                       "'s is above 1 and is taken as 1 (the surface then "
+                       "holds up to the device's limit)");
+        const double popAt = std::min(tension[0], 1.0) * settings_.maxForce;
+        if (pressing > popAt) {
+            s.contact = ContactKind::Inside; // popped through
+            surfaceForce = {};
+        }
+    }
+    return surfaceForce;
+}
+
+Vec3 ForceModel::insideForce(ShapeState& s, const Vec3& tool3, const ToolSample& tool) {
+    const TangibleShape& shape = *s.shape;
+    Vec3 total{};
+    if (double d[3]; effectAt(s, scene::TangibleKind::Density, tool3, tool.moment, d)) {
+        const double b = std::clamp(d[0], 0.0, 1.0) * settings_.damping;
+        total = field::minus(total, field::scaled(tool.velocity, b));
+    }
+    if (double f[3]; effectAt(s, scene::TangibleKind::Force, tool3, tool.moment, f)) {
+        // Along the shape's axes, turned into the scene's; its size kept.
+        const Vec3 local{f[0], f[1], f[2]};
+        const Vec3 turned = shape.toScene.vector(local);
+        const double len = field::length(turned);
+        if (len > 0) total = field::plus(total, field::scaled(turned, field::length(local) / len));
+    }
+    return total;
+}
+
+// One tick: per tangible shape, the contact (the proxy on f = 0 for a
+// function, the god-object on triangles for polygons, inside or outside for
+// a solid without surface), then the effect felt there: the surface's spring
+// with damping, friction and tension; density and force fields inside.
 ForceSample ForceModel::tick(const ToolSample& tool) {
     ForceSample out;
     out.proxy = tool.position;
@@ -200,36 +362,11 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
     for (auto& statePtr : states_) {
         ShapeState& s = *statePtr;
         const TangibleShape& shape = *s.shape;
-        const double diagonal = shape.container.diagonal();
         const Vec3 tool3 = shape.toShape.point(tool.position);
         if (!s.hasLastTool) {
             s.lastTool = tool3;
             s.hasLastTool = true;
         }
-        // One effect's value(s) at a point of the shape; false when not finite.
-        auto effectAt = [&](scene::TangibleKind kind, const Vec3& p, double* values) {
-            for (std::size_t i = 0; i < shape.effects.size(); ++i) {
-                const EffectField& e = shape.effects[i];
-                if (e.kind != kind) continue;
-                const auto v = field::componentView(shape.effectFrame.point(p), shape.geometryBox,
-                                                    e.componentBox);
-                const double t = e.timing.at(tool.moment);
-                const formula::Point point{v[0], v[1], v[2], t, v[3], v[4], v[5]};
-                s.evaluators[i].evaluateAll(point, values);
-                const std::size_t n = kind == scene::TangibleKind::Force ? 3 : 1;
-                for (std::size_t k = 0; k < n; ++k)
-                    if (!std::isfinite(values[k])) {
-                        report(shape.name + kindTitle(kind),
-                               kindTitle(kind) + " (" + e.location + ") is not a number at " +
-                                   pointText(shape.toScene.point(p)) +
-                                   ": it adds nothing where that happens");
-                        return false;
-                    }
-                return true;
-            }
-            return false;
-        };
-
         const bool polygons = shape.triangles != nullptr;
         const bool within =
             polygons ? shape.triangles->contains(tool3) : shape.container.contains(tool3);
@@ -242,144 +379,27 @@ ForceSample ForceModel::tick(const ToolSample& tool) {
             s.lastTool = tool3;
             continue;
         }
-        Vec3 surfaceForce{};
-        if (shape.surface && polygons) {
+        if (shape.surface && polygons)
             polygonStep(s, tool3, [&](const Vec3& at) {
                 double f[3];
-                return effectAt(scene::TangibleKind::Friction, at, f) ? std::max(f[0], 0.0) : 0.0;
+                return effectAt(s, scene::TangibleKind::Friction, at, tool.moment, f)
+                           ? std::max(f[0], 0.0)
+                           : 0.0;
             });
-        } else if (shape.surface) {
-            if (s.contact == ContactKind::None) {
-                field::MarchOptions o;
-                o.limit = 1; // the segment from the last tool position to this one
-                const auto hit = field::marchToSurface(*s.sampler, s.lastTool,
-                                                       field::minus(tool3, s.lastTool), o);
-                if (hit) {
-                    s.contact = ContactKind::Surface;
-                    s.proxy = hit->point;
-                    s.lastNormal = hit->normal;
-                    s.hasNormal = true;
-                } else if (here.v >= 0) {
-                    // Ending exactly on f = 0 is no sign change: entered all the
-                    // same if the last position was outside; else it started inside.
-                    const double before = solid(*s.sampler, s.lastTool).v;
-                    if (before < 0) {
-                        s.contact = ContactKind::Surface;
-                        s.proxy = tool3;
-                    } else {
-                        s.contact = ContactKind::Inside;
-                    }
-                }
-            } else if (s.contact == ContactKind::Inside && here.v < 0) {
-                s.contact = ContactKind::None; // out again, freely
-            }
-            if (s.contact == ContactKind::Surface) {
-                const formula::Dual atProxy = solid(*s.sampler, s.proxy);
-                if (auto n = outward(atProxy)) {
-                    s.lastNormal = *n;
-                    s.hasNormal = true;
-                }
-                if (s.hasNormal) {
-                    const Vec3 n = s.lastNormal;
-                    const double depth = field::dot(field::minus(s.proxy, tool3), n);
-                    if (depth <= 0) {
-                        // Above the tangent plane: the proxy follows the tool unless the
-                        // way there meets the solid again (a concave corner).
-                        const Vec3 start = field::along(s.proxy, n, 1e-9 * diagonal);
-                        field::MarchOptions o;
-                        o.limit = 1;
-                        const auto hit =
-                            field::marchToSurface(*s.sampler, start, field::minus(tool3, start), o);
-                        if (hit) {
-                            s.proxy = hit->point;
-                            s.lastNormal = hit->normal;
-                        } else {
-                            s.contact = ContactKind::None;
-                        }
-                    } else {
-                        // The tool projected onto the tangent plane; the proxy goes
-                        // towards it as far as the friction cone lets it.
-                        const Vec3 onPlane = field::along(tool3, n, depth);
-                        double mu = 0;
-                        if (double f[3]; effectAt(scene::TangibleKind::Friction, s.proxy, f))
-                            mu = std::max(f[0], 0.0);
-                        const Vec3 slide = field::minus(onPlane, s.proxy);
-                        const double slideLength = field::length(slide);
-                        const double radius = mu * depth;
-                        Vec3 target = s.proxy;
-                        if (slideLength > radius)
-                            target = field::along(onPlane, slide, -radius / slideLength);
-                        // Back onto f = 0 by Newton steps along the gradient.
-                        Vec3 p = target;
-                        bool ok = false;
-                        for (int k = 0; k < 8; ++k) {
-                            const formula::Dual d = solid(*s.sampler, p);
-                            const double g2 = field::dot(d.d, d.d);
-                            if (!std::isfinite(d.v) || !(g2 > 1e-300)) break;
-                            if (std::abs(d.v) <= 1e-12 * diagonal) {
-                                ok = true;
-                                break;
-                            }
-                            p = field::minus(p, field::scaled(d.d, d.v / g2));
-                        }
-                        if (ok && field::isFinite(p) &&
-                            field::length(field::minus(p, target)) <= depth + slideLength)
-                            s.proxy = p; // else the proxy stays: no surface to slide on here
-                    }
-                }
-            }
-        } else {
+        else if (shape.surface)
+            implicitProxyStep(s, tool3, here, tool.moment);
+        else
             s.contact = here.v >= 0 ? ContactKind::Inside : ContactKind::None;
-        }
-        if (shape.surface && s.contact == ContactKind::Surface) {
-            surfaceForce = field::scaled(field::minus(shape.toScene.point(s.proxy), tool.position),
-                                         settings_.stiffness);
-            const double pressing = field::length(surfaceForce); // the spring alone
-            // Damping along the normal, moving in or out: a sampled spring
-            // gives back energy unless b > K·T/2 (Colgate & Brown).
-            if (s.hasNormal && settings_.contactDamping > 0) {
-                const field::Vec3 n = shape.toScene.vector(s.lastNormal);
-                const double nn = field::dot(n, n);
-                if (nn > 0)
-                    surfaceForce = field::minus(
-                        surfaceForce, field::scaled(n, settings_.contactDamping *
-                                                           field::dot(tool.velocity, n) / nn));
-            }
-            if (double tension[3];
-                effectAt(scene::TangibleKind::Tension, s.proxy, tension) && tension[0] >= 0) {
-                if (tension[0] > 1)
-                    report(shape.name + "tension>1",
-                           "FTension is a fraction of the device's maximum force; " + shape.name +
-                               "'s is above 1 and is taken as 1 (the surface then "
-                               "holds up to the device's limit)");
-                const double popAt = std::min(tension[0], 1.0) * settings_.maxForce;
-                if (pressing > popAt) {
-                    s.contact = ContactKind::Inside; // popped through
-                    surfaceForce = {};
-                }
-            }
-        }
+        const Vec3 spring =
+            shape.surface && s.contact == ContactKind::Surface ? surfaceForce(s, tool) : Vec3{};
         s.lastTool = tool3;
-        const bool inside = here.v >= 0;
-
         if (s.contact == ContactKind::Surface) {
-            total = field::plus(total, surfaceForce);
+            total = field::plus(total, spring);
             if (!surfaceFound) out.proxy = shape.toScene.point(s.proxy);
             surfaceFound = true;
-        } else if (s.contact == ContactKind::Inside && inside) {
+        } else if (s.contact == ContactKind::Inside && here.v >= 0) {
             insideFound = true;
-            if (double d[3]; effectAt(scene::TangibleKind::Density, tool3, d)) {
-                const double b = std::clamp(d[0], 0.0, 1.0) * settings_.damping;
-                total = field::minus(total, field::scaled(tool.velocity, b));
-            }
-            if (double f[3]; effectAt(scene::TangibleKind::Force, tool3, f)) {
-                // Along the shape's axes, turned into the scene's; its size kept.
-                const Vec3 local{f[0], f[1], f[2]};
-                const Vec3 turned = shape.toScene.vector(local);
-                const double len = field::length(turned);
-                if (len > 0)
-                    total = field::plus(total, field::scaled(turned, field::length(local) / len));
-            }
+            total = field::plus(total, insideForce(s, tool3, tool));
         }
     }
     out.force = total;

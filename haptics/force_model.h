@@ -89,6 +89,19 @@ class ForceModel {
     template <class Friction>
     void polygonStep(ShapeState& s, const field::Vec3& tool, Friction friction);
     void report(const std::string& key, const std::string& text);
+    // One effect's value(s) at a point of the shape; false when the shape
+    // has none of that kind or it is not a number there (reported).
+    bool effectAt(ShapeState& s, scene::TangibleKind kind, const field::Vec3& p,
+                  const animation::Instant& moment, double* values);
+    // The implicit proxy: contact found along the tool's way, then kept on
+    // f = 0 (sliding as far as the friction cone lets it).
+    void implicitProxyStep(ShapeState& s, const field::Vec3& tool, const formula::Dual& here,
+                           const animation::Instant& moment);
+    // In surface contact: the spring to the proxy with damping along the
+    // normal; tension lets the tool pop through.
+    field::Vec3 surfaceForce(ShapeState& s, const ToolSample& tool);
+    // Inside the solid: density's drag and the force field.
+    field::Vec3 insideForce(ShapeState& s, const field::Vec3& toolInShape, const ToolSample& tool);
 
     ForceSettings settings_;
     std::shared_ptr<const TangibleScene> scene_;
