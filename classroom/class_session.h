@@ -5,8 +5,8 @@
 // and a ManualClock. Everything received is checked before it changes
 // anything; a version is in the log before anyone hears of it.
 #include "chat_commands.h"
-#include "classroom_limits.h"
 #include "class_clock.h"
+#include "classroom_limits.h"
 #include "edit_log.h"
 #include "protocol.h"
 #include "rate_limit.h"

@@ -44,9 +44,10 @@ class FieldReader {
                 double lo = -std::numeric_limits<double>::max(),
                 double hi = std::numeric_limits<double>::max()) {
         const QJsonValue v = o.value(key);
-        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < lo || v.toDouble() > hi)
+        const double d = v.toDouble();
+        if (!v.isDouble() || !std::isfinite(d) || d < lo || d > hi)
             return fail(where + key + " must be a number in range");
-        out = v.toDouble();
+        out = d;
         return true;
     }
 
@@ -71,6 +72,12 @@ class FieldReader {
     std::string* error_;
     bool failed_ = false;
 };
+
+// {"file", "line", "column"}: false (and `read` failed) when a field is wrong.
+bool readLocation(FieldReader& read, const QJsonObject& o, Location& l, const std::string& at) {
+    return read.text(o, "file", l.file, at) && read.integer(o, "line", l.line, at) &&
+           read.integer(o, "column", l.column, at);
+}
 
 std::optional<formula::Severity> severityNamed(const std::string& name) {
     for (formula::Severity s :
@@ -98,9 +105,7 @@ std::vector<Location> locationsOf(std::string_view json) {
         const QJsonObject o = v.toObject();
         Location l;
         FieldReader read(nullptr);
-        if (read.text(o, "file", l.file, "") && read.integer(o, "line", l.line, "") &&
-            read.integer(o, "column", l.column, ""))
-            out.push_back(std::move(l));
+        if (readLocation(read, o, l, "")) out.push_back(std::move(l));
     }
     return out;
 }
@@ -193,10 +198,7 @@ std::optional<CheckReportDocument> readCheckReportJson(std::string_view json, st
             const std::string at = where + "locations[" + std::to_string(k) + "].";
             const QJsonObject lo = locations[k].toObject();
             Location l;
-            read.text(lo, "file", l.file, at);
-            read.integer(lo, "line", l.line, at);
-            read.integer(lo, "column", l.column, at);
-            req.locations.push_back(std::move(l));
+            if (readLocation(read, lo, l, at)) req.locations.push_back(std::move(l));
         }
         r.requirements.push_back(std::move(req));
     }

@@ -54,24 +54,12 @@ struct Touchable {
     field::Affine effectFrame; // the shape's coordinates to those of geometryBox
 };
 
+// At most kMostPoints of them, evenly picked, in double precision.
 std::vector<field::Vec3> spread(const std::vector<mesh::Vec3f>& from) {
     std::vector<field::Vec3> out;
-    const std::size_t n = std::min(from.size(), kMostPoints);
-    for (std::size_t i = 0; i < n; ++i) {
-        const mesh::Vec3f& p = from[i * from.size() / n];
+    for (const mesh::Vec3f& p : evenlyPicked(from, kMostPoints))
         out.push_back({p[0], p[1], p[2]});
-    }
     return out;
-}
-
-field::Box3 boundsOfPoints(const std::vector<mesh::Vec3f>& points) {
-    field::Box3 b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-    for (const mesh::Vec3f& p : points)
-        for (std::size_t k = 0; k < 3; ++k) {
-            b.lo[k] = std::min(b.lo[k], double(p[k]));
-            b.hi[k] = std::max(b.hi[k], double(p[k]));
-        }
-    return b;
 }
 
 // A function shape's own effects: inside its solid (its field's f >= 0), or
@@ -105,8 +93,9 @@ std::optional<Touchable> lentEffects(const mesh::SceneMeshes& frame, const mesh:
     t.entry = &lender;
     t.points = spread(s.mesh.positions);
     t.effectFrame = *sceneToLender * field::Affine::fromMatrix(s.placement);
-    t.geometryBox = mesh::boundingBoxOf(*lender.node)
-                        .value_or(field::boundsOf(boundsOfPoints(s.mesh.positions), t.effectFrame));
+    t.geometryBox =
+        mesh::boundingBoxOf(*lender.node)
+            .value_or(field::boundsOf(mesh::pointBounds(s.mesh.positions), t.effectFrame));
     return t;
 }
 
@@ -205,17 +194,21 @@ RequirementResult checkTangible(const SubmissionView& view, const Requirement& r
     }
 
     const scene::Node* best = nullptr;
+    const Felt* bestFelt = nullptr;
     for (const auto& [node, f] : felt)
-        if (!best || f.kinds.size() > felt[best].kinds.size()) best = node;
-    const std::size_t bestKinds = best ? felt[best].kinds.size() : 0;
+        if (!bestFelt || f.kinds.size() > bestFelt->kinds.size()) {
+            best = node;
+            bestFelt = &f;
+        }
+    const std::size_t bestKinds = bestFelt ? bestFelt->kinds.size() : 0;
     out.met = bestKinds > 0 && int(bestKinds) >= r.minimum;
     out.points = out.met ? r.points : 0;
     if (bestKinds > 0) {
+        const Felt& f = *bestFelt;
         std::string names;
-        for (scene::TangibleKind k : felt[best].kinds)
+        for (scene::TangibleKind k : f.kinds)
             names += (names.empty() ? "" : ", ") + std::string(scene::tangibleKindName(k));
-        out.locations = felt[best].where;
-        const Felt& f = felt[best];
+        out.locations = f.where;
         const std::string what =
             SubmissionView::nameOf(*best) +
             (f.lender ? " (physics lent by " + SubmissionView::nameAndLine(*f.lender) + ")" : "") +

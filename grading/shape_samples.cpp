@@ -20,10 +20,14 @@ std::vector<mesh::Vec3f> pointsInside(const field::ImplicitField& f, Budget& bud
                 if (sampler.value(p) >= 0)
                     inside.push_back({float(p[0]), float(p[1]), float(p[2])});
             }
-    if (inside.size() <= most) return inside;
+    return evenlyPicked(inside, most);
+}
+
+std::vector<mesh::Vec3f> evenlyPicked(const std::vector<mesh::Vec3f>& points, std::size_t most) {
+    if (points.size() <= most) return points;
     std::vector<mesh::Vec3f> kept;
     for (std::size_t i = 0; i < most; ++i)
-        kept.push_back(inside[i * inside.size() / most]);
+        kept.push_back(points[i * points.size() / most]);
     return kept;
 }
 

@@ -12,6 +12,9 @@
 
 namespace fl::grading {
 
+// At most `most` of `points`, spread evenly over them (all when fewer).
+std::vector<mesh::Vec3f> evenlyPicked(const std::vector<mesh::Vec3f>& points, std::size_t most);
+
 // At most `most` points inside the solid (spread evenly over those found),
 // in the field's coordinates; fewer when the budget runs out (it is marked
 // exceeded), none when the solid is empty.

@@ -103,8 +103,6 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
     // Cut short: the queued cells' centres and a fixed spread of the box are
     // the last places looked at (paid from the budget beyond the cap).
     auto lastLook = [&] {
-        out.cutShort = true;
-        ++budget.cutShort;
         std::size_t tried = 0;
         for (const Cell& c : queue) {
             if (tried++ >= kLastLookCells || !budget.spend(costAB)) break;
@@ -118,10 +116,9 @@ SolidComparison compareSolids(const field::ImplicitField& a, const field::Implic
                 p[k] = openA.box.lo[k] + u[k] * (openA.box.hi[k] - openA.box.lo[k]);
             witnessAt(p);
         }
-        if (out.result == Sameness::Different) {
-            out.cutShort = false; // found after all: a verdict, not cut short
-            --budget.cutShort;
-        }
+        // Found after all: a verdict. Else the comparison was cut short.
+        out.cutShort = out.result != Sameness::Different;
+        if (out.cutShort) ++budget.cutShort;
         return out;
     };
     while (!queue.empty()) {

@@ -1,5 +1,6 @@
 #include "submission_view.h"
 
+#include "field/affine.h"
 #include "scene/effects_plan.h"
 #include "scene/field_access.h"
 
@@ -59,37 +60,21 @@ bool SubmissionView::visible(const mesh::ShapeMesh& shape) {
 
 bool SubmissionView::shown(const mesh::ShapeMesh& shape) {
     if (!visible(shape)) return false;
-    // The placement is column-major: shape coordinates to the scene's.
-    const mesh::Matrix4& m = shape.placement;
-    const double det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
-                       m[8] * (m[1] * m[6] - m[5] * m[2]);
+    // The placement takes shape coordinates to the scene's.
+    const field::Affine placement = field::Affine::fromMatrix(shape.placement);
+    const double det = placement.determinant();
     if (!std::isfinite(det) || std::abs(det) < kLeastPlacedVolumeScale) return false;
-    // Its size as placed: the corners of its box (its field's, else its
-    // mesh's) through the placement.
+    // Its size as placed: its box (its field's, else its mesh's) through the
+    // placement.
     field::Box3 box;
     if (shape.field)
         box = shape.field->box;
-    else if (!shape.mesh.positions.empty()) {
-        box = {{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-        for (const auto& p : shape.mesh.positions)
-            for (std::size_t k = 0; k < 3; ++k) {
-                box.lo[k] = std::min(box.lo[k], double(p[k]));
-                box.hi[k] = std::max(box.hi[k], double(p[k]));
-            }
-    } else {
+    else if (!shape.mesh.positions.empty())
+        box = mesh::pointBounds(shape.mesh.positions);
+    else
         return true; // nothing to measure (a tangible shape without a mesh): placed as it is
-    }
-    field::Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (int c = 0; c < 8; ++c) {
-        const double x = c & 1 ? box.hi[0] : box.lo[0], y = c & 2 ? box.hi[1] : box.lo[1],
-                     z = c & 4 ? box.hi[2] : box.lo[2];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const double v = m[k] * x + m[4 + k] * y + m[8 + k] * z + m[12 + k];
-            lo[k] = std::min(lo[k], v);
-            hi[k] = std::max(hi[k], v);
-        }
-    }
-    return field::length(field::minus(hi, lo)) >= kLeastPlacedSize;
+    const field::Box3 placed = field::boundsOf(box, placement);
+    return field::length(field::minus(placed.hi, placed.lo)) >= kLeastPlacedSize;
 }
 
 std::vector<SubmissionView::FirstShown> SubmissionView::firstShown() const {

@@ -32,12 +32,13 @@ const scene::Node* functionMaterial(const SubmissionView& view, const mesh::Shap
     return view.scene().definition(*material, "definition") ? material : nullptr;
 }
 
-float colourSpread(const mesh::Mesh& m) {
-    if (m.colours.empty()) return 0;
+// How far the colours stray from the first one (0 for none).
+float colourSpread(const std::vector<std::array<float, 4>>& colours) {
+    if (colours.empty()) return 0;
     float spread = 0;
-    for (const auto& c : m.colours)
+    for (const auto& c : colours)
         for (std::size_t k = 0; k < 3; ++k)
-            spread = std::max(spread, std::abs(c[k] - m.colours.front()[k]));
+            spread = std::max(spread, std::abs(c[k] - colours.front()[k]));
     return spread;
 }
 
@@ -129,12 +130,6 @@ std::vector<std::array<float, 4>> coloursAt(const mesh::ShapeMesh& s,
     return m.colours;
 }
 
-float spreadOf(const std::vector<std::array<float, 4>>& colours) {
-    mesh::Mesh m;
-    m.colours = colours;
-    return colourSpread(m);
-}
-
 RequirementResult checkFunctionColour(const SubmissionView& view, const Requirement& r,
                                       Budget& budget) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
@@ -151,13 +146,13 @@ RequirementResult checkFunctionColour(const SubmissionView& view, const Requirem
         const auto here = coloursAt(s, points);
         if (here.empty()) continue;
         // Over the shape at some moment it is shown, else between moments.
-        std::string overShape = spreadOf(here) > 1e-4f ? "over the shape" : "";
+        std::string overShape = colourSpread(here) > 1e-4f ? "over the shape" : "";
         std::string inTime;
         for (std::size_t i = first + 1; i < frames.size() && overShape.empty(); ++i) {
             const mesh::ShapeMesh* later = view.shownAt(i, s);
             if (!later) continue;
             const auto then = coloursAt(*later, points);
-            if (spreadOf(then) > 1e-4f) {
+            if (colourSpread(then) > 1e-4f) {
                 overShape = "over the shape (at " + seconds(view.moments()[i]) + ")";
                 break;
             }

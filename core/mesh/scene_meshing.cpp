@@ -556,12 +556,7 @@ class Walker {
 
     static Box3 boundsOf(const Mesh& m) {
         if (m.positions.empty()) return {};
-        Box3 b{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-        for (const Vec3f& p : m.positions)
-            for (std::size_t k = 0; k < 3; ++k) {
-                b.lo[k] = std::min(b.lo[k], double(p[k]));
-                b.hi[k] = std::max(b.hi[k], double(p[k]));
-            }
+        Box3 b = pointBounds(m.positions);
         for (std::size_t k = 0; k < 3; ++k) // a flat shape still has a box
             if (!(b.hi[k] > b.lo[k])) b.lo[k] -= 0.5, b.hi[k] += 0.5;
         return b;
@@ -834,16 +829,11 @@ class Walker {
         for (auto& [lender, borrowers] : byLender) {
             const Node* appearance = scene::effectiveNode(moment_.node(*lender, "appearance"));
             Box3 box{{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}};
-            if (const auto given = boundingBoxOf(*lender)) {
+            if (const auto given = boundingBoxOf(*lender))
                 box = *given;
-            } else {
+            else
                 for (const Borrower& b : borrowers)
-                    for (const Vec3f& p : b.points)
-                        for (std::size_t k = 0; k < 3; ++k) {
-                            box.lo[k] = std::min(box.lo[k], double(p[k]));
-                            box.hi[k] = std::max(box.hi[k], double(p[k]));
-                        }
-            }
+                    box = pointBounds(b.points, box);
             if (!box.valid()) continue;
             for (Borrower& b : borrowers) {
                 ShapeMesh probe; // the borrower's vertices where the lender sees them
@@ -957,6 +947,15 @@ Box3 domainOf(const scene::Node& node) {
                hi = scene::numbersField(node, "domainMax");
     if (lo.size() != 3 || hi.size() != 3) return {};
     return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+}
+
+Box3 pointBounds(const std::vector<Vec3f>& points, Box3 box) {
+    for (const Vec3f& p : points)
+        for (std::size_t k = 0; k < 3; ++k) {
+            box.lo[k] = std::min(box.lo[k], double(p[k]));
+            box.hi[k] = std::max(box.hi[k], double(p[k]));
+        }
+    return box;
 }
 
 std::optional<field::Vec3> shapeCoordinates(const ShapeMesh& shape, const field::Vec3& point) {

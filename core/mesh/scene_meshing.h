@@ -165,6 +165,11 @@ Box3 domainOf(const scene::Node& node);
 // given (a positive size on every axis; X3D's -1 -1 -1 means none).
 std::optional<Box3> boundingBoxOf(const scene::Node& node);
 
+// The smallest box holding `points`, grown from `box`; grown from nothing
+// (the default), a box that is not valid() when there are no points.
+Box3 pointBounds(const std::vector<Vec3f>& points,
+                 Box3 box = {{1e300, 1e300, 1e300}, {-1e300, -1e300, -1e300}});
+
 // A point of the scene in a shape's own coordinates (its placement undone);
 // none when the placement cannot be undone (a zero scale).
 std::optional<field::Vec3> shapeCoordinates(const ShapeMesh& shape, const field::Vec3& point);

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <unordered_set>
 
 namespace fl::scene {
 namespace {
@@ -227,9 +228,11 @@ std::unordered_map<const Node*, std::vector<const Node*>> lendingShapes(const Sc
     });
     std::unordered_map<const Node*, std::vector<const Node*>> out;
     for (const auto& [group, lender] : groups) {
+        // Each node once per lender (a USE'd subtree too): the walk is
+        // bounded by the scene's size.
         std::vector<const Node*> todo{group};
-        std::size_t visits = 0; // a shared subtree is walked again under each lender: bounded
-        while (!todo.empty() && ++visits < 100000) {
+        std::unordered_set<const Node*> seen{group};
+        while (!todo.empty()) {
             const Node* n = todo.back();
             todo.pop_back();
             for (const Field& f : n->fields)
@@ -240,7 +243,8 @@ std::unordered_map<const Node*, std::vector<const Node*>> lendingShapes(const Sc
                         auto& lenders = out[child];
                         if (std::find(lenders.begin(), lenders.end(), lender) == lenders.end())
                             lenders.push_back(lender);
-                    } else if (child->kind() != scene::NodeKind::FShape) {
+                    } else if (child->kind() != scene::NodeKind::FShape &&
+                               seen.insert(child).second) {
                         todo.push_back(child);
                     }
                 }
