@@ -3,9 +3,6 @@
 #include "member_name.h"
 #include "scene_policy.h"
 
-#include <QJsonArray>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QRandomGenerator>
 
 #include <algorithm>
@@ -26,12 +23,14 @@ QString q(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-QString frame(const QJsonObject& o) {
-    return QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));
+// Member ids count up from 1: far below 2^53, the largest a JSON number
+// holds exactly.
+std::int64_t wireId(MemberId id) {
+    return static_cast<std::int64_t>(id);
 }
 
-QJsonObject typed(MessageType type) {
-    return {{"type", q(nameOf(type))}};
+QString frame(const ServerMessage& message) {
+    return q(encodeServerMessage(message));
 }
 
 std::int64_t unixMillis() {
@@ -50,16 +49,14 @@ std::string randomToken() {
     return out;
 }
 
-QJsonArray diagnosticsJson(const std::vector<scene::SceneDiagnostic>& diagnostics) {
-    QJsonArray out;
-    for (const scene::SceneDiagnostic& d : diagnostics) {
-        QJsonObject o{{"line", d.pos.line},
-                      {"column", d.pos.column},
-                      {"severity", d.severity == scene::Severity::Error ? "error" : "warning"},
-                      {"message", q(d.message)}};
-        if (!d.suggestion.empty()) o["suggestion"] = q(d.suggestion);
-        out.append(o);
-    }
+std::vector<RefusalDiagnostic>
+refusalDiagnostics(const std::vector<scene::SceneDiagnostic>& diagnostics) {
+    std::vector<RefusalDiagnostic> out;
+    for (const scene::SceneDiagnostic& d : diagnostics)
+        out.push_back({d.pos.line, d.pos.column,
+                       d.severity == scene::Severity::Error ? DiagnosticSeverity::Error
+                                                            : DiagnosticSeverity::Warning,
+                       d.message, d.suggestion});
     return out;
 }
 
@@ -181,45 +178,34 @@ bool ClassSession::allowed(Member& m, Millis now) {
     return m.role == Role::Instructor || m.bucket.take(now);
 }
 
-void ClassSession::broadcast(const QString& f, Out& out, bool wholeScene) const {
+void ClassSession::send(ConnectionId to, const ServerMessage& message, Out& out, bool close) const {
+    if (to) out.push_back({to, frame(message), close});
+}
+
+void ClassSession::broadcast(const ServerMessage& message, Out& out, bool wholeScene) const {
+    const QString f = frame(message);
     for (const auto& [id, c] : connections_)
         if (c.member != 0) out.push_back({id, f, false, wholeScene});
 }
 
 void ClassSession::error(ConnectionId to, ErrorCode code, std::string message, Out& out,
                          bool close) {
-    QJsonObject o = typed(MessageType::Error);
-    o["code"] = q(nameOf(code));
-    o["message"] = q(message);
-    out.push_back({to, frame(o), close});
+    send(to, ErrorMessage{code, std::move(message)}, out, close);
 }
 
 void ClassSession::refuse(const Member& to, RefusalReason reason, std::string message, Out& out,
-                          const std::string& command, QString extraJson) {
-    QJsonObject o = typed(MessageType::Refused);
-    o["reason"] = q(nameOf(reason));
-    o["message"] = q(message);
-    o["version"] = static_cast<double>(version_);
-    if (!command.empty()) o["command"] = q(command);
-    if (!extraJson.isEmpty()) {
-        const QJsonObject extra = QJsonDocument::fromJson(extraJson.toUtf8()).object();
-        for (auto it = extra.begin(); it != extra.end(); ++it)
-            o[it.key()] = it.value();
-    }
-    if (to.connection) out.push_back({to.connection, frame(o)});
+                          const std::string& command, RefusalDetail detail) {
+    send(to.connection,
+         RefusedMessage{reason, std::move(message), version_, command, std::move(detail.holder),
+                        std::move(detail.diagnostics)},
+         out);
 }
 
-QString ClassSession::lockJson() {
-    QJsonObject o = typed(MessageType::Lock);
+LockMessage ClassSession::lockMessage() {
     const auto holder = lock_.holder(clock_.now());
-    if (holder && members_.count(holder->member)) {
-        const Member& m = members_.at(holder->member);
-        o["holder"] = QJsonObject{{"id", static_cast<double>(m.id)}, {"name", q(shownName(m))}};
-        o["expiresInMs"] = static_cast<double>(holder->expires - clock_.now());
-    } else {
-        o["holder"] = QJsonValue::Null;
-    }
-    return frame(o);
+    if (!holder || !members_.count(holder->member)) return {};
+    const Member& m = members_.at(holder->member);
+    return {LockHolderEntry{wireId(m.id), shownName(m)}, holder->expires - clock_.now()};
 }
 
 void ClassSession::announceLockIfChanged(Out& out) {
@@ -228,19 +214,14 @@ void ClassSession::announceLockIfChanged(Out& out) {
         holder ? std::optional<MemberId>(holder->member) : std::nullopt;
     if (now == announcedHolder_) return;
     announcedHolder_ = now;
-    broadcast(lockJson(), out);
+    broadcast(lockMessage(), out);
 }
 
-QString ClassSession::membersJson() const {
-    QJsonArray list;
+std::vector<MemberEntry> ClassSession::memberList() const {
+    std::vector<MemberEntry> list;
     for (const auto& [id, m] : members_)
-        list.append(QJsonObject{{"id", static_cast<double>(id)},
-                                {"name", q(shownName(m))},
-                                {"role", q(nameOf(m.role))},
-                                {"connected", m.connection != 0}});
-    QJsonObject o = typed(MessageType::Presence);
-    o["members"] = list;
-    return frame(o);
+        list.push_back({wireId(id), shownName(m), m.role, m.connection != 0});
+    return list;
 }
 
 void ClassSession::announcePresence(Out& out, bool force) {
@@ -251,7 +232,7 @@ void ClassSession::announcePresence(Out& out, bool force) {
     }
     presenceDue_ = false;
     lastPresence_ = now;
-    broadcast(membersJson(), out);
+    broadcast(PresenceMessage{memberList()}, out);
 }
 
 std::vector<Delivery> ClassSession::rejectFrame(ConnectionId connection, ErrorCode code,
@@ -387,50 +368,42 @@ void ClassSession::join(Connection& c, ConnectionId id, const JoinMessage& m, Ou
     }
     c.member = member->id;
 
-    QJsonObject o = typed(MessageType::Welcome);
-    o["id"] = static_cast<double>(member->id);
-    o["token"] = q(member->token);
-    o["name"] = q(shownName(*member));
-    o["role"] = q(nameOf(member->role));
-    o["version"] = static_cast<double>(version_);
-    o["scene"] = q(scene_);
-    o["frozen"] = frozen_;
-    o["anonymous"] = anonymous_;
-    o["resumed"] = resumed;
-    o["members"] = QJsonDocument::fromJson(membersJson().toUtf8()).object()["members"];
-    o["lock"] = QJsonDocument::fromJson(lockJson().toUtf8()).object()["holder"];
+    WelcomeMessage w;
+    w.id = wireId(member->id);
+    w.token = member->token;
+    w.name = shownName(*member);
+    w.role = member->role;
+    w.version = version_;
+    w.scene = scene_;
+    w.frozen = frozen_;
+    w.anonymous = anonymous_;
+    w.resumed = resumed;
+    w.members = memberList();
+    w.lock = lockMessage().holder;
     // What the log adds is a courtesy: a log that cannot be read leaves it
     // out, and the member is welcomed all the same.
     if (m.since && log_ && *m.since < version_) {
-        QJsonArray missed;
+        w.missed.emplace();
         try {
             for (const LoggedVersion& v : log_->after(*m.since, config_.limits.maxMissedListed))
-                missed.append(QJsonObject{{"version", static_cast<double>(v.version)},
-                                          {"author", q(anonymous_ ? std::string() : v.author)},
-                                          {"kind", q(nameOf(v.kind))}});
+                w.missed->push_back({v.version, anonymous_ ? std::string() : v.author, v.kind});
         } catch (const std::exception&) {
         }
-        o["missed"] = missed;
     }
     if (!resumed && log_) {
-        QJsonArray chat;
+        w.chat.emplace();
         try {
             for (const ChatLine& line : log_->recentChat(kChatLinesOnWelcome))
-                chat.append(QJsonObject{{"from", q(anonymous_ ? std::string() : line.author)},
-                                        {"text", q(line.text)},
-                                        {"unixMs", static_cast<double>(line.unixMillis)}});
+                w.chat->push_back(
+                    {anonymous_ ? std::string() : line.author, line.text, line.unixMillis});
         } catch (const std::exception&) {
         }
-        o["chat"] = chat;
     }
-    o["limits"] =
-        QJsonObject{{"maxMessageBytes", static_cast<double>(config_.limits.maxMessageBytes)},
-                    {"maxSceneBytes", static_cast<double>(config_.limits.maxSceneBytes)},
-                    {"maxNodes", static_cast<double>(config_.limits.maxNodes)},
-                    {"maxFormulaBytes", static_cast<double>(config_.limits.maxFormulaBytes)},
-                    {"maxChatChars", static_cast<double>(config_.limits.maxChatChars)},
-                    {"leaseMs", static_cast<double>(config_.limits.leaseMillis)}};
-    out.push_back({id, frame(o)});
+    const ClassroomLimits& l = config_.limits;
+    auto whole = [](std::size_t n) { return static_cast<std::int64_t>(n); };
+    w.limits = {whole(l.maxMessageBytes), whole(l.maxSceneBytes), whole(l.maxNodes),
+                whole(l.maxFormulaBytes), whole(l.maxChatChars),  l.leaseMillis};
+    send(id, w, out);
     announcePresence(out);
 }
 
@@ -440,8 +413,8 @@ void ClassSession::edit(Member& m, const EditMessage& e, Out& out) {
 
 bool ClassSession::admissible(Member& author, const Change& change, Out& out, bool again) {
     const Millis now = clock_.now();
-    auto refused = [&](RefusalReason reason, std::string message, QString extra = {}) {
-        refuse(author, reason, std::move(message), out, change.command, std::move(extra));
+    auto refused = [&](RefusalReason reason, std::string message, RefusalDetail detail = {}) {
+        refuse(author, reason, std::move(message), out, change.command, std::move(detail));
         return false;
     };
     if (author.role == Role::Observer)
@@ -457,10 +430,8 @@ bool ClassSession::admissible(Member& author, const Change& change, Out& out, bo
                                                     std::to_string(config_.limits.maxSceneBytes));
     if (change.underLock && lock_.heldByOther(author.id, now)) {
         const Member& holder = members_.at(lock_.holder(now)->member);
-        const QJsonObject extra{{"holder", q(shownName(holder))},
-                                {"holderId", static_cast<double>(holder.id)}};
         return refused(RefusalReason::Locked, shownName(holder) + " is editing the scene",
-                       frame(extra));
+                       {LockHolderEntry{wireId(holder.id), shownName(holder)}, {}});
     }
     if (change.underLock && lock_.coolingDown(author.id, now))
         return refused(RefusalReason::Locked,
@@ -503,11 +474,11 @@ void ClassSession::finishApply(Member& author, Change change, const SceneCheck& 
                 first = scene::formatSceneDiagnostic(d);
                 break;
             }
-        const QJsonObject extra{{"diagnostics", diagnosticsJson(check.diagnostics)}};
         const RefusalReason reason = check.tooLarge    ? RefusalReason::TooLarge
                                      : check.tooCostly ? RefusalReason::TooCostly
                                                        : RefusalReason::Invalid;
-        return refuse(author, reason, first, out, change.command, frame(extra));
+        return refuse(author, reason, first, out, change.command,
+                      {std::nullopt, refusalDiagnostics(check.diagnostics)});
     }
     // A deferred check: the class may have moved on while it ran.
     if (deferChecks_ && !admissible(author, change, out, true)) return;
@@ -585,13 +556,10 @@ bool ClassSession::commit(const Member* author, std::string scene, EditKind kind
     }
     version_ = next;
     scene_ = std::move(scene);
-    QJsonObject o = typed(MessageType::Scene);
-    o["version"] = static_cast<double>(version_);
-    o["author"] = q(author ? shownName(*author) : "server");
-    if (author) o["authorId"] = static_cast<double>(author->id);
-    o["kind"] = q(nameOf(kind));
-    o["scene"] = q(scene_);
-    broadcast(frame(o), out, true);
+    broadcast(SceneMessage{version_, author ? shownName(*author) : "server",
+                           author ? std::optional<std::int64_t>(wireId(author->id)) : std::nullopt, kind,
+                           scene_},
+              out, true);
     return true;
 }
 
@@ -607,20 +575,12 @@ void ClassSession::chat(Member& m, const ChatMessage& c, Out& out) {
                          std::string("the message could not be stored: ") + e.what(), out);
         }
     }
-    QJsonObject o = typed(MessageType::Chat);
-    o["from"] = q(shownName(m));
-    o["fromId"] = static_cast<double>(m.id);
-    o["text"] = q(c.text);
-    broadcast(frame(o), out);
+    broadcast(ChatLineMessage{shownName(m), wireId(m.id), c.text}, out);
 }
 
 void ClassSession::command(Member& m, const std::string& text, Out& out) {
     const ChatCommandParse parsed = parseChatCommand(text);
-    auto notice = [&](const std::string& t) {
-        QJsonObject o = typed(MessageType::Notice);
-        o["text"] = q(t);
-        if (m.connection) out.push_back({m.connection, frame(o)});
-    };
+    auto notice = [&](const std::string& t) { send(m.connection, NoticeMessage{t}, out); };
     if (!parsed.command) return refuse(m, RefusalReason::Invalid, parsed.error, out, text);
     const ChatCommand& c = *parsed.command;
     switch (c.kind) {
@@ -649,12 +609,8 @@ void ClassSession::command(Member& m, const std::string& text, Out& out) {
                 return error(m.connection, ErrorCode::Server, e.what(), out);
             }
         }
-        QJsonObject o = typed(MessageType::Saved);
-        o["version"] = static_cast<double>(version_);
-        o["snapshot"] = static_cast<double>(snapshot);
-        o["label"] = q(c.label.empty() ? "saved" : c.label);
-        if (m.connection) out.push_back({m.connection, frame(o)});
-        return;
+        return send(m.connection,
+                    SavedMessage{version_, snapshot, c.label.empty() ? "saved" : c.label}, out);
     }
     case ChatCommandKind::Undo: {
         if (!m.undo)
@@ -709,13 +665,10 @@ void ClassSession::history(Member& m, const HistoryMessage& h, Out& out) {
     if (!v)
         return error(m.connection, ErrorCode::NotFound,
                      "version " + std::to_string(h.version) + " is not in the class's log", out);
-    QJsonObject o = typed(MessageType::Version);
-    o["version"] = static_cast<double>(v->version);
-    o["author"] = q(anonymous_ ? std::string() : v->author);
-    o["kind"] = q(nameOf(v->kind));
-    o["unixMs"] = static_cast<double>(v->unixMillis);
-    o["scene"] = q(v->scene);
-    out.push_back({m.connection, frame(o)});
+    send(m.connection,
+         VersionMessage{v->version, anonymous_ ? std::string() : v->author, v->kind, v->unixMillis,
+                        v->scene},
+         out);
 }
 
 void ClassSession::instructor(Member& m, const ClientMessage& msg, Out& out) {
@@ -732,15 +685,13 @@ void ClassSession::instructor(Member& m, const ClientMessage& msg, Out& out) {
         return;
     case MessageType::Freeze: {
         frozen_ = std::get<FreezeMessage>(msg.body).frozen;
-        QJsonObject o = typed(MessageType::Frozen);
-        o["frozen"] = frozen_;
-        return broadcast(frame(o), out);
+        return broadcast(FrozenMessage{frozen_}, out);
     }
     case MessageType::Anonymise:
         anonymous_ = std::get<AnonymiseMessage>(msg.body).anonymous;
         // Names changed: say again who is here and who holds the lock.
         announcePresence(out, true);
-        broadcast(lockJson(), out);
+        broadcast(lockMessage(), out);
         return;
     case MessageType::Push:
         return apply(m,

@@ -12,6 +12,7 @@
 #include "rate_limit.h"
 #include "scene_lock.h"
 #include "scene_policy.h"
+#include "server_message.h"
 
 #include <QString>
 
@@ -148,12 +149,19 @@ class ClassSession {
     bool commit(const Member* author, std::string scene, EditKind kind, Out& out);
     void restoreGoodVersion();
 
+    // What a refusal says beyond its reason: who holds the lock, where the
+    // scene is wrong.
+    struct RefusalDetail {
+        std::optional<LockHolderEntry> holder;
+        std::vector<RefusalDiagnostic> diagnostics;
+    };
     void refuse(const Member& to, RefusalReason reason, std::string message, Out& out,
-                const std::string& command = {}, QString extraJson = {});
+                const std::string& command = {}, RefusalDetail detail = {});
     void error(ConnectionId to, ErrorCode code, std::string message, Out& out, bool close = false);
     // The rate limit: one token of the member's bucket.
     bool allowed(Member& m, Millis now);
-    void broadcast(const QString& frame, Out& out, bool wholeScene = false) const;
+    void send(ConnectionId to, const ServerMessage& message, Out& out, bool close = false) const;
+    void broadcast(const ServerMessage& message, Out& out, bool wholeScene = false) const;
     void announceLockIfChanged(Out& out);
     // Who is here, to everyone: at once when forced or after a quiet second,
     // else at the next tick — a join storm costs one list per second, not
@@ -161,8 +169,8 @@ class ClassSession {
     void announcePresence(Out& out, bool force = false);
     Member* memberOf(ConnectionId id);
     const std::string& shownName(const Member& m) const;
-    QString lockJson();
-    QString membersJson() const;
+    LockMessage lockMessage();
+    std::vector<MemberEntry> memberList() const;
 
     struct WaitingCheck {
         MemberId author = 0;

@@ -1,6 +1,5 @@
 #include "client.h"
 
-#include <QJsonDocument>
 #include <QRandomGenerator>
 #include <QWebSocket>
 
@@ -10,12 +9,8 @@ namespace fl::classroom {
 
 namespace {
 
-QString typeName(MessageType type) {
-    return QString::fromLatin1(nameOf(type).data(), nameOf(type).size());
-}
-
-QJsonObject typed(MessageType type) {
-    return {{"type", typeName(type)}};
+std::string utf8(const QString& s) {
+    return s.toStdString();
 }
 
 // Scene frames carry whole scenes, JSON-escaped: allow well over the
@@ -26,7 +21,7 @@ constexpr quint64 kMaxIncomingBytes = 16u << 20;
 
 ClassroomClient::ClassroomClient(QObject* parent) : QObject(parent) {
     heartbeat_.setSingleShot(false);
-    connect(&heartbeat_, &QTimer::timeout, this, [this] { send(typed(MessageType::Heartbeat)); });
+    connect(&heartbeat_, &QTimer::timeout, this, [this] { send(MessageType::Heartbeat); });
     reconnect_.setSingleShot(true);
     connect(&reconnect_, &QTimer::timeout, this, &ClassroomClient::open);
 }
@@ -64,14 +59,14 @@ void ClassroomClient::open() {
     socket_->setMaxAllowedIncomingMessageSize(kMaxIncomingBytes);
     socket_->setMaxAllowedIncomingFrameSize(kMaxIncomingBytes);
     connect(socket_, &QWebSocket::connected, this, [this] {
-        QJsonObject j = typed(MessageType::Join);
-        j["class"] = options_.classCode;
-        j["name"] = options_.name;
-        j["role"] = QString::fromLatin1(nameOf(options_.role).data(), nameOf(options_.role).size());
-        if (!options_.key.isEmpty()) j["key"] = options_.key;
-        if (!token_.isEmpty()) j["resume"] = token_;
-        if (version_ >= 0) j["since"] = static_cast<double>(version_);
-        send(j);
+        JoinMessage j;
+        j.classCode = utf8(options_.classCode);
+        j.name = utf8(options_.name);
+        j.role = options_.role;
+        j.key = utf8(options_.key);
+        j.resume = utf8(token_);
+        if (version_ >= 0) j.since = version_;
+        send(MessageType::Join, j);
     });
     connect(socket_, &QWebSocket::textMessageReceived, this, &ClassroomClient::received);
     connect(socket_, &QWebSocket::disconnected, this, &ClassroomClient::onDisconnected);
@@ -101,65 +96,52 @@ void ClassroomClient::onDisconnected() {
     backoffMs_ = std::min(backoffMs_ * 2, options_.maxBackoffMs);
 }
 
-void ClassroomClient::send(const QJsonObject& message) {
+void ClassroomClient::send(MessageType type, ClientBody body) {
     if (!socket_ || socket_->state() != QAbstractSocket::ConnectedState) return;
     socket_->sendTextMessage(
-        QString::fromUtf8(QJsonDocument(message).toJson(QJsonDocument::Compact)));
+        QString::fromStdString(encodeClientMessage(ClientMessage{type, std::move(body)})));
 }
 
 void ClassroomClient::submitEdit(const QString& sceneText) {
-    QJsonObject o = typed(MessageType::Edit);
-    o["version"] = static_cast<double>(version_);
-    o["scene"] = sceneText;
     lastEdit_ = sceneText;
-    send(o);
+    // Before the first welcome there is no version (-1) and the server
+    // refuses anything but a join; a version is never negative on the wire.
+    send(MessageType::Edit, EditMessage{std::max<qint64>(version_, 0), utf8(sceneText)});
 }
 
 void ClassroomClient::releaseLock() {
-    send(typed(MessageType::Release));
+    send(MessageType::Release);
 }
 
 void ClassroomClient::sendChat(const QString& text) {
-    QJsonObject o = typed(MessageType::Chat);
-    o["text"] = text;
-    send(o);
+    send(MessageType::Chat, ChatMessage{utf8(text)});
 }
 
 void ClassroomClient::requestVersion(qint64 version) {
-    QJsonObject o = typed(MessageType::History);
-    o["version"] = static_cast<double>(version);
-    send(o);
+    send(MessageType::History, HistoryMessage{std::max<qint64>(version, 0)});
 }
 
 void ClassroomClient::takeLock() {
-    send(typed(MessageType::TakeLock));
+    send(MessageType::TakeLock);
 }
 void ClassroomClient::breakLock() {
-    send(typed(MessageType::BreakLock));
+    send(MessageType::BreakLock);
 }
 
 void ClassroomClient::setFrozen(bool frozen) {
-    QJsonObject o = typed(MessageType::Freeze);
-    o["frozen"] = frozen;
-    send(o);
+    send(MessageType::Freeze, FreezeMessage{frozen});
 }
 
 void ClassroomClient::pushScene(const QString& sceneText) {
-    QJsonObject o = typed(MessageType::Push);
-    o["scene"] = sceneText;
-    send(o);
+    send(MessageType::Push, PushMessage{utf8(sceneText)});
 }
 
 void ClassroomClient::takeSnapshot(const QString& label) {
-    QJsonObject o = typed(MessageType::Snapshot);
-    o["label"] = label;
-    send(o);
+    send(MessageType::Snapshot, SnapshotMessage{utf8(label)});
 }
 
 void ClassroomClient::setAnonymous(bool anonymous) {
-    QJsonObject o = typed(MessageType::Anonymise);
-    o["anonymous"] = anonymous;
-    send(o);
+    send(MessageType::Anonymise, AnonymiseMessage{anonymous});
 }
 
 bool ClassroomClient::reofferPendingEdit() {
@@ -176,117 +158,127 @@ void ClassroomClient::discardPendingEdit() {
     emit pendingEditChanged();
 }
 
-void ClassroomClient::onMembers(const QJsonArray& list) {
+void ClassroomClient::onMembers(const std::vector<MemberEntry>& list) {
     members_.clear();
-    for (const QJsonValue& v : list) {
-        const QJsonObject m = v.toObject();
-        members_.push_back({m["id"].toInteger(), m["name"].toString(),
-                            roleNamed(m["role"].toString().toStdString()).value_or(Role::Student),
-                            m["connected"].toBool(true)});
-    }
+    for (const MemberEntry& m : list)
+        members_.push_back({m.id, QString::fromStdString(m.name), m.role, m.connected});
     emit membersChanged();
 }
 
-void ClassroomClient::onLock(const QJsonValue& holder) {
-    if (holder.isObject()) {
-        const QJsonObject h = holder.toObject();
-        lockHolder_ = Member{h["id"].toInteger(), h["name"].toString(), Role::Student, true};
-    } else {
+void ClassroomClient::onLock(const std::optional<LockHolderEntry>& holder) {
+    if (holder)
+        lockHolder_ = Member{holder->id, QString::fromStdString(holder->name), Role::Student, true};
+    else
         lockHolder_.reset();
-    }
     emit lockChanged();
     if (hasPendingEdit() && (!lockHolder_ || holdsLock())) emit pendingEditCanBeApplied();
 }
 
-void ClassroomClient::onWelcome(const QJsonObject& o) {
-    const bool resumed = o["resumed"].toBool();
-    token_ = o["token"].toString();
-    memberId_ = o["id"].toInteger();
-    shownName_ = o["name"].toString();
-    frozen_ = o["frozen"].toBool();
-    anonymous_ = o["anonymous"].toBool();
+void ClassroomClient::onWelcome(const WelcomeMessage& w) {
+    token_ = QString::fromStdString(w.token);
+    memberId_ = w.id;
+    shownName_ = QString::fromStdString(w.name);
+    frozen_ = w.frozen;
+    anonymous_ = w.anonymous;
     backoffMs_ = options_.initialBackoffMs;
-    const qint64 version = o["version"].toInteger();
-    const bool changed = version != version_ || o["scene"].toString() != scene_;
-    version_ = version;
-    scene_ = o["scene"].toString();
-    onMembers(o["members"].toArray());
+    const QString scene = QString::fromStdString(w.scene);
+    const bool changed = w.version != version_ || scene != scene_;
+    version_ = w.version;
+    scene_ = scene;
+    onMembers(w.members);
     setState(State::Joined);
     heartbeat_.start(options_.heartbeatMs);
-    emit joined(resumed);
+    emit joined(w.resumed);
     // The chat before this member came (kept in the class's log).
-    for (const QJsonValue& line : o["chat"].toArray()) {
-        const QJsonObject c = line.toObject();
-        const QString from = c["from"].toString();
-        emit chatReceived(from.isEmpty() ? tr("(earlier)") : from, c["text"].toString());
-    }
+    if (w.chat)
+        for (const EarlierChat& c : *w.chat)
+            emit chatReceived(c.from.empty() ? tr("(earlier)") : QString::fromStdString(c.from),
+                              QString::fromStdString(c.text));
     if (changed) emit sceneChanged(version_, QString(), scene_);
-    onLock(o["lock"]);
+    onLock(w.lock);
+}
+
+void ClassroomClient::onScene(const SceneMessage& m) {
+    version_ = m.version;
+    scene_ = QString::fromStdString(m.scene);
+    if (m.authorId == memberId_) lastEdit_.clear();
+    emit sceneChanged(version_, QString::fromStdString(m.author), scene_);
+}
+
+void ClassroomClient::onRefused(const RefusedMessage& m) {
+    Refusal r;
+    r.reason = m.reason;
+    r.message = QString::fromStdString(m.message);
+    r.version = m.version;
+    if (m.holder) r.holder = QString::fromStdString(m.holder->name);
+    r.command = QString::fromStdString(m.command);
+    r.diagnostics = m.diagnostics;
+    // An edit refused for want of the lock, or overtaken, is kept for its author.
+    if (r.command.isEmpty() && !lastEdit_.isEmpty() &&
+        (r.reason == RefusalReason::Locked || r.reason == RefusalReason::Stale)) {
+        pendingEdit_ = lastEdit_;
+        lastEdit_.clear();
+        emit pendingEditChanged();
+    }
+    emit refused(r);
+    if (hasPendingEdit() && r.reason == RefusalReason::Stale && (!lockHolder_ || holdsLock()))
+        emit pendingEditCanBeApplied();
+}
+
+void ClassroomClient::onError(const ErrorMessage& m) {
+    // A join the server will never accept is not retried.
+    switch (m.code) {
+    case ErrorCode::WrongClass:
+    case ErrorCode::BadKey:
+    case ErrorCode::BadName:
+    case ErrorCode::TooManyJoins:
+    case ErrorCode::ClassFull:
+        leaving_ = true;
+        break;
+    case ErrorCode::Malformed:
+    case ErrorCode::UnknownType:
+    case ErrorCode::NotJoined:
+    case ErrorCode::AlreadyJoined:
+    case ErrorCode::Forbidden:
+    case ErrorCode::TooLarge:
+    case ErrorCode::NotFound:
+    case ErrorCode::Server:
+        break;
+    }
+    emit errorReceived(m.code, QString::fromStdString(m.message));
 }
 
 void ClassroomClient::received(const QString& text) {
-    const QJsonObject o = QJsonDocument::fromJson(text.toUtf8()).object();
-    const auto type = messageTypeNamed(o["type"].toString().toStdString());
-    if (!type) return; // a newer server's message this client does not know
-    switch (*type) {
-    case MessageType::Welcome:
-        return onWelcome(o);
-    case MessageType::Scene:
-        version_ = o["version"].toInteger();
-        scene_ = o["scene"].toString();
-        if (o["authorId"].toInteger() == memberId_) lastEdit_.clear();
-        emit sceneChanged(version_, o["author"].toString(), scene_);
-        return;
-    case MessageType::Refused: {
-        Refusal r;
-        r.reason = refusalReasonNamed(o["reason"].toString().toStdString())
-                       .value_or(RefusalReason::Invalid);
-        r.message = o["message"].toString();
-        r.version = o["version"].toInteger();
-        r.holder = o["holder"].toString();
-        r.command = o["command"].toString();
-        r.diagnostics = o["diagnostics"].toArray();
-        // An edit refused for want of the lock, or overtaken, is kept for its author.
-        if (r.command.isEmpty() && !lastEdit_.isEmpty() &&
-            (r.reason == RefusalReason::Locked || r.reason == RefusalReason::Stale)) {
-            pendingEdit_ = lastEdit_;
-            lastEdit_.clear();
-            emit pendingEditChanged();
-        }
-        emit refused(r);
-        if (hasPendingEdit() && r.reason == RefusalReason::Stale && (!lockHolder_ || holdsLock()))
-            emit pendingEditCanBeApplied();
-        return;
-    }
-    case MessageType::Chat:
-        return emit chatReceived(o["from"].toString(), o["text"].toString());
-    case MessageType::Notice:
-        return emit noticeReceived(o["text"].toString());
-    case MessageType::Presence:
-        return onMembers(o["members"].toArray());
-    case MessageType::Lock:
-        return onLock(o["holder"]);
-    case MessageType::Frozen:
-        frozen_ = o["frozen"].toBool();
-        return emit frozenChanged(frozen_);
-    case MessageType::Saved:
-        return emit saved(o["version"].toInteger(), o["label"].toString());
-    case MessageType::Version:
-        return emit versionReceived(o["version"].toInteger(), o["author"].toString(),
-                                    o["scene"].toString());
-    case MessageType::Error: {
-        const ErrorCode code =
-            errorCodeNamed(o["code"].toString().toStdString()).value_or(ErrorCode::Malformed);
-        // A join the server will never accept is not retried.
-        if (code == ErrorCode::WrongClass || code == ErrorCode::BadKey ||
-            code == ErrorCode::BadName || code == ErrorCode::TooManyJoins ||
-            code == ErrorCode::ClassFull)
-            leaving_ = true;
-        return emit errorReceived(code, o["message"].toString());
-    }
-    default:
-        return;
-    }
+    const ParsedServerMessage parsed = parseServerMessage(utf8(text));
+    // A malformed frame, or a newer server's message this client does not
+    // know, is passed over: the next scene or presence brings it up to date.
+    const auto* message = std::get_if<ServerMessage>(&parsed);
+    if (!message) return;
+    std::visit(
+        Overloaded{
+            [this](const WelcomeMessage& m) { onWelcome(m); },
+            [this](const SceneMessage& m) { onScene(m); },
+            [this](const RefusedMessage& m) { onRefused(m); },
+            [this](const ErrorMessage& m) { onError(m); },
+            [this](const ChatLineMessage& m) {
+                emit chatReceived(QString::fromStdString(m.from), QString::fromStdString(m.text));
+            },
+            [this](const NoticeMessage& m) { emit noticeReceived(QString::fromStdString(m.text)); },
+            [this](const PresenceMessage& m) { onMembers(m.members); },
+            [this](const LockMessage& m) { onLock(m.holder); },
+            [this](const FrozenMessage& m) {
+                frozen_ = m.frozen;
+                emit frozenChanged(frozen_);
+            },
+            [this](const SavedMessage& m) {
+                emit saved(m.version, QString::fromStdString(m.label));
+            },
+            [this](const VersionMessage& m) {
+                emit versionReceived(m.version, QString::fromStdString(m.author),
+                                     QString::fromStdString(m.scene));
+            },
+        },
+        *message);
 }
 
 } // namespace fl::classroom

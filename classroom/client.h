@@ -9,9 +9,8 @@
 // pending edit; pendingEditCanBeApplied says when the lock is free, and
 // reofferPendingEdit sends it again on the newest version.
 #include "protocol.h"
+#include "server_message.h"
 
-#include <QJsonArray>
-#include <QJsonObject>
 #include <QList>
 #include <QObject>
 #include <QString>
@@ -19,6 +18,7 @@
 #include <QUrl>
 
 #include <optional>
+#include <vector>
 
 class QWebSocket;
 
@@ -49,10 +49,10 @@ class ClassroomClient : public QObject {
     struct Refusal {
         RefusalReason reason = RefusalReason::Invalid;
         QString message;
-        qint64 version = 0;     // the class's version when refused
-        QString holder;         // Locked: who holds the lock
-        QString command;        // the chat command refused, if it was one
-        QJsonArray diagnostics; // Invalid: [{line, column, severity, message, suggestion}]
+        qint64 version = 0;                         // the class's version when refused
+        QString holder;                             // Locked: who holds the lock
+        QString command;                            // the chat command refused, if it was one
+        std::vector<RefusalDiagnostic> diagnostics; // where the scene is wrong
     };
 
     explicit ClassroomClient(QObject* parent = nullptr);
@@ -110,11 +110,14 @@ class ClassroomClient : public QObject {
 
   private:
     void open();
-    void send(const QJsonObject& message);
+    void send(MessageType type, ClientBody body = std::monostate{});
     void received(const QString& text);
-    void onWelcome(const QJsonObject& o);
-    void onLock(const QJsonValue& holder);
-    void onMembers(const QJsonArray& list);
+    void onWelcome(const WelcomeMessage& w);
+    void onScene(const SceneMessage& m);
+    void onRefused(const RefusedMessage& m);
+    void onError(const ErrorMessage& m);
+    void onLock(const std::optional<LockHolderEntry>& holder);
+    void onMembers(const std::vector<MemberEntry>& list);
     void onDisconnected();
     void setState(State state);
 

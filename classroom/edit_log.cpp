@@ -1,7 +1,6 @@
 #include "edit_log.h"
 
 #include "platform/sqlite_database.h"
-#include "text/kind_names.h"
 
 #include <array>
 #include <chrono>
@@ -17,14 +16,8 @@ namespace fl::classroom {
 
 namespace {
 
-constexpr text::KindNames<EditKind, 5> kKindNames{{{"start", EditKind::Start},
-                                                   {"edit", EditKind::Edit},
-                                                   {"command", EditKind::Command},
-                                                   {"push", EditKind::Push},
-                                                   {"undo", EditKind::Undo}}};
-
 EditKind kindNamed(std::string_view name) {
-    return text::kindNamed(kKindNames, name).value_or(EditKind::Edit);
+    return editKindNamed(name).value_or(EditKind::Edit);
 }
 
 LoggedVersion readRow(platform::SqliteStatement& s, bool withScene) {
@@ -38,10 +31,6 @@ LoggedVersion readRow(platform::SqliteStatement& s, bool withScene) {
 }
 
 } // namespace
-
-std::string_view nameOf(EditKind kind) {
-    return text::nameOfKind(kKindNames, kind);
-}
 
 struct EditLog::FolderLock {
     int fd = -1;

@@ -11,6 +11,7 @@
 // marker, classroom.id) but whose log is missing or empty is refused unless a
 // new class is asked for; and one server at a time holds the folder.
 #include "class_clock.h"
+#include "protocol.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -25,8 +26,6 @@ class SqliteDatabase;
 }
 
 namespace fl::classroom {
-
-enum class EditKind { Start, Edit, Command, Push, Undo };
 
 struct LoggedVersion {
     std::int64_t version = 0;
@@ -91,7 +90,5 @@ class EditLog {
     bool marked_ = false;
     std::unique_ptr<platform::SqliteDatabase> db_;
 };
-
-std::string_view nameOf(EditKind kind);
 
 } // namespace fl::classroom

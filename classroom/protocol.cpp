@@ -1,12 +1,13 @@
 #include "protocol.h"
 
+#include "json_fields.h"
 #include "member_name.h"
 #include "text/kind_names.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QJsonParseError>
 #include <QJsonValue>
+#include <QString>
 
 #include <array>
 #include <cmath>
@@ -58,79 +59,21 @@ constexpr text::KindNames<ErrorCode, 13> kErrorNames{{
     {"not-found", ErrorCode::NotFound},
     {"server", ErrorCode::Server},
 }};
+constexpr text::KindNames<EditKind, 5> kEditKindNames{{
+    {"start", EditKind::Start},
+    {"edit", EditKind::Edit},
+    {"command", EditKind::Command},
+    {"push", EditKind::Push},
+    {"undo", EditKind::Undo},
+}};
 
-struct FieldReader {
-    const QJsonObject& object;
-    const char* type;
-    std::optional<ProtocolError> failure;
-
-    void fail(ErrorCode code, std::string message) {
-        if (!failure) failure = ProtocolError{code, std::move(message)};
-    }
-    bool has(const char* field) const { return object.contains(QLatin1String(field)); }
-
-    std::string text(const char* field, std::size_t maxChars, bool required, bool lineBreaks,
-                     ErrorCode tooLong = ErrorCode::Malformed) {
-        const QJsonValue v = object.value(QLatin1String(field));
-        if (v.isUndefined()) {
-            if (required)
-                fail(ErrorCode::Malformed, std::string(type) + " needs a \"" + field + "\" string");
-            return {};
-        }
-        if (!v.isString()) {
-            fail(ErrorCode::Malformed, std::string(type) + ": \"" + field + "\" must be a string");
-            return {};
-        }
-        std::string utf8 = v.toString().toStdString();
-        if (characterCount(utf8) > maxChars) { // characters, not UTF-16 units
-            fail(tooLong, std::string(type) + ": \"" + field + "\" is longer than " +
-                              std::to_string(maxChars) + " characters");
-            return {};
-        }
-        if (!isCleanText(utf8, lineBreaks)) {
-            fail(ErrorCode::Malformed,
-                 std::string(type) + ": \"" + field + "\" holds control characters");
-            return {};
-        }
-        return utf8;
-    }
-
-    std::optional<std::int64_t> integer(const char* field, bool required) {
-        const QJsonValue v = object.value(QLatin1String(field));
-        if (v.isUndefined()) {
-            if (required)
-                fail(ErrorCode::Malformed, std::string(type) + " needs a \"" + field + "\" number");
-            return std::nullopt;
-        }
-        const double d = v.toDouble(-1.5);
-        // JSON numbers are doubles: whole, non-negative, and exact (below 2^53).
-        if (!v.isDouble() || d < 0 || d != std::floor(d) || d > 9007199254740991.0) {
-            fail(ErrorCode::Malformed,
-                 std::string(type) + ": \"" + field + "\" must be a whole number >= 0");
-            return std::nullopt;
-        }
-        return static_cast<std::int64_t>(d);
-    }
-
-    bool boolean(const char* field, bool fallback) {
-        const QJsonValue v = object.value(QLatin1String(field));
-        if (v.isUndefined()) return fallback;
-        if (!v.isBool()) {
-            fail(ErrorCode::Malformed,
-                 std::string(type) + ": \"" + field + "\" must be true or false");
-            return fallback;
-        }
-        return v.toBool();
-    }
-};
-
-ClientBody readBody(MessageType type, FieldReader& r, const ClassroomLimits& limits) {
+ClientBody readBody(MessageType type, JsonFields& r, const ClassroomLimits& limits) {
     switch (type) {
     case MessageType::Join: {
         JoinMessage m;
-        m.classCode = r.text("class", limits.maxClassCodeChars, true, false);
-        m.name = r.text("name", limits.maxNameChars, true, false, ErrorCode::BadName);
-        const std::string role = r.text("role", 16, false, false);
+        m.classCode = r.text("class", {limits.maxClassCodeChars, true, true, false});
+        m.name = r.text("name", {limits.maxNameChars, true, true, false, ErrorCode::BadName});
+        const std::string role = r.text("role", {16, false, true, false});
         if (r.has("role") && role.empty())
             r.fail(ErrorCode::Malformed,
                    "join: \"role\" is student, instructor or observer; leave it out for student");
@@ -141,41 +84,52 @@ ClientBody readBody(MessageType type, FieldReader& r, const ClassroomLimits& lim
                 r.fail(ErrorCode::Malformed,
                        "join: \"role\" is student, instructor or observer, not '" + role + "'");
         }
-        m.key = r.text("key", 256, false, false);
-        m.resume = r.text("resume", 128, false, false);
-        m.since = r.integer("since", false);
+        m.key = r.text("key", {256, false, true, false});
+        m.resume = r.text("resume", {128, false, true, false});
+        m.since = r.count("since", false);
         return m;
     }
     case MessageType::Edit: {
         EditMessage m;
-        m.version = r.integer("version", true).value_or(0);
+        m.version = r.count("version");
         // The scene's own size limit is a refusal (too-large), checked by the class.
-        m.scene = r.text("scene", limits.maxMessageBytes, true, true);
+        m.scene = r.text("scene", {limits.maxMessageBytes, true, true, true});
         return m;
     }
     case MessageType::Chat:
-        return ChatMessage{r.text("text", limits.maxChatChars, true, true, ErrorCode::TooLarge)};
+        return ChatMessage{
+            r.text("text", {limits.maxChatChars, true, true, true, ErrorCode::TooLarge})};
     case MessageType::Freeze:
         return FreezeMessage{r.boolean("frozen", true)};
     case MessageType::Push:
-        return PushMessage{r.text("scene", limits.maxMessageBytes, true, true)};
+        return PushMessage{r.text("scene", {limits.maxMessageBytes, true, true, true})};
     case MessageType::Snapshot:
         return SnapshotMessage{
-            r.text("label", limits.maxLabelChars, false, false, ErrorCode::TooLarge)};
+            r.text("label", {limits.maxLabelChars, false, true, false, ErrorCode::TooLarge})};
     case MessageType::Anonymise:
         return AnonymiseMessage{r.boolean("anonymous", true)};
     case MessageType::History:
-        return HistoryMessage{r.integer("version", true).value_or(0)};
+        return HistoryMessage{r.count("version")};
     case MessageType::Release:
     case MessageType::Heartbeat:
     case MessageType::TakeLock:
     case MessageType::BreakLock:
         return std::monostate{};
-    default:
-        r.fail(ErrorCode::UnknownType,
-               "'" + std::string(nameOf(type)) + "' is sent by the server, not by clients");
-        return std::monostate{};
+    case MessageType::Welcome:
+    case MessageType::Error:
+    case MessageType::Scene:
+    case MessageType::Refused:
+    case MessageType::Presence:
+    case MessageType::Lock:
+    case MessageType::Frozen:
+    case MessageType::Notice:
+    case MessageType::Saved:
+    case MessageType::Version:
+        break;
     }
+    r.fail(ErrorCode::UnknownType,
+           "'" + std::string(nameOf(type)) + "' is sent by the server, not by clients");
+    return std::monostate{};
 }
 
 } // namespace
@@ -204,6 +158,12 @@ std::optional<RefusalReason> refusalReasonNamed(std::string_view name) {
 std::optional<ErrorCode> errorCodeNamed(std::string_view name) {
     return text::kindNamed(kErrorNames, name);
 }
+std::string_view nameOf(EditKind kind) {
+    return text::nameOfKind(kEditKindNames, kind);
+}
+std::optional<EditKind> editKindNamed(std::string_view name) {
+    return text::kindNamed(kEditKindNames, name);
+}
 
 bool isCleanText(std::string_view s, bool allowLineBreaks) {
     for (std::size_t i = 0; i < s.size();) {
@@ -231,36 +191,63 @@ bool isCleanText(std::string_view s, bool allowLineBreaks) {
     return true;
 }
 
+namespace {
+
+QString q(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+void writeBody(QJsonObject& o, const ClientBody& body) {
+    std::visit(
+        [&](const auto& m) {
+            using T = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<T, JoinMessage>) {
+                o["class"] = q(m.classCode);
+                o["name"] = q(m.name);
+                o["role"] = q(nameOf(m.role));
+                if (!m.key.empty()) o["key"] = q(m.key);
+                if (!m.resume.empty()) o["resume"] = q(m.resume);
+                if (m.since) o["since"] = QJsonValue(qint64(*m.since));
+            } else if constexpr (std::is_same_v<T, EditMessage>) {
+                o["version"] = QJsonValue(qint64(m.version));
+                o["scene"] = q(m.scene);
+            } else if constexpr (std::is_same_v<T, ChatMessage>) {
+                o["text"] = q(m.text);
+            } else if constexpr (std::is_same_v<T, FreezeMessage>) {
+                o["frozen"] = m.frozen;
+            } else if constexpr (std::is_same_v<T, PushMessage>) {
+                o["scene"] = q(m.scene);
+            } else if constexpr (std::is_same_v<T, SnapshotMessage>) {
+                o["label"] = q(m.label);
+            } else if constexpr (std::is_same_v<T, AnonymiseMessage>) {
+                o["anonymous"] = m.anonymous;
+            } else if constexpr (std::is_same_v<T, HistoryMessage>) {
+                o["version"] = QJsonValue(qint64(m.version));
+            }
+        },
+        body);
+}
+
+} // namespace
+
+std::string encodeClientMessage(const ClientMessage& message) {
+    QJsonObject o{{"type", q(nameOf(message.type))}};
+    writeBody(o, message.body);
+    return QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString();
+}
+
 ParsedClientMessage parseClientMessage(std::string_view frame, const ClassroomLimits& limits) {
     if (frame.size() > limits.maxMessageBytes)
         return ProtocolError{ErrorCode::TooLarge, "a message may hold at most " +
                                                       std::to_string(limits.maxMessageBytes) +
                                                       " bytes"};
-    QJsonParseError error{};
-    const QJsonDocument doc = QJsonDocument::fromJson(
-        QByteArray::fromRawData(frame.data(), static_cast<qsizetype>(frame.size())), &error);
-    if (error.error != QJsonParseError::NoError)
-        return ProtocolError{ErrorCode::Malformed, "not JSON at byte " +
-                                                       std::to_string(error.offset) + ": " +
-                                                       error.errorString().toStdString()};
-    if (!doc.isObject())
-        return ProtocolError{ErrorCode::Malformed, "a message is a JSON object with a \"type\""};
-    const QJsonObject object = doc.object();
-    const QJsonValue typeValue = object.value(QLatin1String("type"));
-    if (!typeValue.isString())
-        return ProtocolError{ErrorCode::Malformed, "a message needs a \"type\" string"};
-    const std::string typeName = typeValue.toString().left(64).toStdString();
-    const auto type = messageTypeNamed(typeName);
-    if (!type) {
-        std::string shown;
-        for (char c : typeName)
-            shown += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? '?' : c;
-        return ProtocolError{ErrorCode::UnknownType, "unknown message type '" + shown + "'"};
-    }
-    const std::string typeText(nameOf(*type));
-    FieldReader reader{object, typeText.c_str(), std::nullopt};
-    ClientMessage message{*type, readBody(*type, reader, limits)};
-    if (reader.failure) return *reader.failure;
+    auto typed = readTypedObject(frame);
+    if (auto* e = std::get_if<ProtocolError>(&typed)) return *e;
+    const TypedObject& t = std::get<TypedObject>(typed);
+    std::optional<ProtocolError> failure;
+    JsonFields reader(t.object, std::string(nameOf(t.type)), failure);
+    ClientMessage message{t.type, readBody(t.type, reader, limits)};
+    if (failure) return *failure;
     return message;
 }
 

@@ -42,6 +42,10 @@ enum class MessageType {
 
 enum class Role { Student, Instructor, Observer };
 
+// How a version of the class's scene came to be (the log keeps it; scene and
+// version messages say it).
+enum class EditKind { Start, Edit, Command, Push, Undo };
+
 // Why an edit (or a chat command) was not applied.
 enum class RefusalReason { Locked, Stale, Invalid, ReadOnly, Rate, TooLarge, TooCostly };
 
@@ -66,10 +70,12 @@ std::string_view nameOf(MessageType type);
 std::string_view nameOf(Role role);
 std::string_view nameOf(RefusalReason reason);
 std::string_view nameOf(ErrorCode code);
+std::string_view nameOf(EditKind kind);
 std::optional<MessageType> messageTypeNamed(std::string_view name);
 std::optional<Role> roleNamed(std::string_view name);
 std::optional<RefusalReason> refusalReasonNamed(std::string_view name);
 std::optional<ErrorCode> errorCodeNamed(std::string_view name);
+std::optional<EditKind> editKindNamed(std::string_view name);
 
 struct JoinMessage {
     std::string classCode;
@@ -78,28 +84,36 @@ struct JoinMessage {
     std::string key;                   // instructor key
     std::string resume;                // the token of an earlier welcome: take that seat back
     std::optional<std::int64_t> since; // the last version this client has
+    bool operator==(const JoinMessage&) const = default;
 };
 struct EditMessage {
     std::int64_t version = 0; // the version the new text is based on (fencing token)
     std::string scene;
+    bool operator==(const EditMessage&) const = default;
 };
 struct ChatMessage {
     std::string text;
+    bool operator==(const ChatMessage&) const = default;
 };
 struct FreezeMessage {
     bool frozen = true;
+    bool operator==(const FreezeMessage&) const = default;
 };
 struct PushMessage {
     std::string scene;
+    bool operator==(const PushMessage&) const = default;
 };
 struct SnapshotMessage {
     std::string label;
+    bool operator==(const SnapshotMessage&) const = default;
 };
 struct AnonymiseMessage {
     bool anonymous = true;
+    bool operator==(const AnonymiseMessage&) const = default;
 };
 struct HistoryMessage {
     std::int64_t version = 0;
+    bool operator==(const HistoryMessage&) const = default;
 };
 
 using ClientBody =
@@ -109,6 +123,7 @@ using ClientBody =
 struct ClientMessage {
     MessageType type = MessageType::Heartbeat;
     ClientBody body; // monostate for release, heartbeat, take-lock, break-lock
+    bool operator==(const ClientMessage&) const = default;
 };
 
 struct ProtocolError {
@@ -121,6 +136,9 @@ using ParsedClientMessage = std::variant<ClientMessage, ProtocolError>;
 // One text frame from a client. Never throws; anything unexpected is a
 // ProtocolError saying which field is wrong.
 ParsedClientMessage parseClientMessage(std::string_view frame, const ClassroomLimits& limits = {});
+
+// The frame a client sends for `message` (what parseClientMessage reads).
+std::string encodeClientMessage(const ClientMessage& message);
 
 // Whether `s` is valid UTF-8 without control characters other than tab and
 // line breaks (names allow none at all).

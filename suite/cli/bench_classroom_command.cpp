@@ -11,13 +11,13 @@
 #include "measure/percentiles.h"
 #include "platform/exit_codes.h"
 
+#include "classroom/protocol.h"
+#include "classroom/server_message.h"
 #include "classroom/starter_scene.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTcpSocket>
@@ -39,6 +39,13 @@ namespace {
 
 constexpr const char* kClass = "BENCH";
 constexpr const char* kKey = "bench-key";
+
+QString joinFrame(std::string name, classroom::Role role) {
+    classroom::JoinMessage join{kClass, std::move(name), role, {}, {}, {}};
+    if (role == classroom::Role::Instructor) join.key = kKey;
+    return QString::fromStdString(
+        classroom::encodeClientMessage({classroom::MessageType::Join, join}));
+}
 
 struct Phase {
     std::vector<double> everyoneMs; // per applied edit: until the last reader had it
@@ -205,16 +212,17 @@ int benchClassroomCommand(const Args& args) {
         auto ws = std::make_unique<QWebSocket>();
         QWebSocket* raw = ws.get();
         QObject::connect(raw, &QWebSocket::connected, raw, [raw, i] {
-            raw->sendTextMessage(
-                QStringLiteral(R"({"type":"join","class":"%1","name":"s%2"})").arg(kClass).arg(i));
+            raw->sendTextMessage(joinFrame("s" + std::to_string(i), classroom::Role::Student));
         });
         QObject::connect(raw, &QWebSocket::textMessageReceived, raw, [&](const QString& m) {
             const double now = static_cast<double>(clock.nsecsElapsed()) / 1e6;
             // JSON-escaped text cannot hold an unescaped `"type":"...` inside a string.
             if (m.contains(QLatin1String(R"("type":"welcome")"))) ++welcomed;
             if (!phase || !m.contains(QLatin1String(R"("type":"scene")"))) return;
-            const qint64 v = QJsonDocument::fromJson(m.toUtf8()).object()["version"].toInteger();
-            got[v].push_back(now);
+            const auto parsed = classroom::parseServerMessage(m.toStdString());
+            if (const auto* message = std::get_if<classroom::ServerMessage>(&parsed))
+                if (const auto* scene = std::get_if<classroom::SceneMessage>(message))
+                    got[scene->version].push_back(now);
         });
         QObject::connect(raw, qOverload<QAbstractSocket::SocketError>(&QWebSocket::error), raw,
                          [raw](QAbstractSocket::SocketError) {
@@ -236,20 +244,23 @@ int benchClassroomCommand(const Args& args) {
     QWebSocket teacher;
     qint64 version = -1;
     bool inFlight = false; // one edit at a time, each on the newest version
-    QObject::connect(&teacher, &QWebSocket::connected, [&] {
-        teacher.sendTextMessage(
-            QStringLiteral(
-                R"({"type":"join","class":"%1","name":"T","role":"instructor","key":"%2"})")
-                .arg(kClass, kKey));
-    });
+    QObject::connect(&teacher, &QWebSocket::connected,
+                     [&] { teacher.sendTextMessage(joinFrame("T", classroom::Role::Instructor)); });
     QObject::connect(&teacher, &QWebSocket::textMessageReceived, [&](const QString& m) {
-        const QJsonObject o = QJsonDocument::fromJson(m.toUtf8()).object();
-        const QString type = o["type"].toString();
-        if (type == "welcome" || type == "scene")
-            version = std::max(version, o["version"].toInteger());
-        if (type == "scene" && phase) ++phase->applied;
-        if (type == "refused" && phase) ++phase->refused;
-        if (type == "scene" || type == "refused") inFlight = false;
+        const auto parsed = classroom::parseServerMessage(m.toStdString());
+        const auto* message = std::get_if<classroom::ServerMessage>(&parsed);
+        if (!message) return;
+        if (const auto* w = std::get_if<classroom::WelcomeMessage>(message))
+            version = std::max<qint64>(version, w->version);
+        if (const auto* scene = std::get_if<classroom::SceneMessage>(message)) {
+            version = std::max<qint64>(version, scene->version);
+            if (phase) ++phase->applied;
+            inFlight = false;
+        }
+        if (std::holds_alternative<classroom::RefusedMessage>(*message)) {
+            if (phase) ++phase->refused;
+            inFlight = false;
+        }
     });
     teacher.open(url);
     if (!waitFor([&] { return version >= 0; }, 10'000)) {
@@ -275,12 +286,9 @@ int benchClassroomCommand(const Args& args) {
             std::string scene = base;
             scene.replace(scene.find(marker), marker.size(),
                           "sphere(0, 0, 0, " + std::to_string(1.0 + 0.001 * (++n % 500)) + ")");
-            QJsonObject e{{"type", "edit"},
-                          {"version", static_cast<double>(version)},
-                          {"scene", QString::fromStdString(scene)}};
             sentAt[version + 1] = static_cast<double>(clock.nsecsElapsed()) / 1e6;
-            teacher.sendTextMessage(
-                QString::fromUtf8(QJsonDocument(e).toJson(QJsonDocument::Compact)));
+            teacher.sendTextMessage(QString::fromStdString(classroom::encodeClientMessage(
+                {classroom::MessageType::Edit, classroom::EditMessage{version, scene}})));
             ++p.sent;
         });
         const double cpu0 = cpuSeconds(pid);

@@ -17,7 +17,6 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -244,13 +243,11 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
     connect(c, &ClassroomClient::noticeReceived, this, [this](const QString& t) { say(t); });
     connect(c, &ClassroomClient::refused, this, [this](const ClassroomClient::Refusal& r) {
         QString line = tr("refused: %1").arg(reasonText(r));
-        for (const auto& d : r.diagnostics) {
-            const QJsonObject o = d.toObject();
+        for (const classroom::RefusalDiagnostic& d : r.diagnostics)
             line += QStringLiteral("\n  %1:%2: %3")
-                        .arg(o.value(QStringLiteral("line")).toInt())
-                        .arg(o.value(QStringLiteral("column")).toInt())
-                        .arg(o.value(QStringLiteral("message")).toString());
-        }
+                        .arg(d.line)
+                        .arg(d.column)
+                        .arg(QString::fromStdString(d.message));
         say(line);
         refreshLock();
     });

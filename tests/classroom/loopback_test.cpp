@@ -129,8 +129,8 @@ TEST_F(LoopbackTest, InvalidScenesComeBackWithLocatedDiagnostics) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return refusals.count() > 0; }, kWaitMs));
     const auto r = refusals.at(0).at(0).value<ClassroomClient::Refusal>();
     EXPECT_EQ(r.reason, RefusalReason::Invalid);
-    ASSERT_FALSE(r.diagnostics.isEmpty());
-    EXPECT_EQ(r.diagnostics.at(0).toObject()["line"].toInt(), 4);
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics.at(0).line, 4);
     EXPECT_FALSE(ana.hasPendingEdit()); // an invalid edit is the author's to fix, not to re-offer
 }
 

@@ -1,13 +1,12 @@
-// libFuzzer target: classroom messages from clients (outside input). The
-// input is one or more frames separated by the byte 0x1E; each is parsed
-// and then handled by a class an instructor has joined, so the parser, the
-// scene checks and the chat commands all see it. No crash, no hang; every
-// answer is a JSON object with a type; the version never goes back.
+// libFuzzer target: classroom messages (outside input both ways). The input
+// is one or more frames separated by the byte 0x1E; each is parsed as a
+// client's frame and as a server's (the client's decoder), then handled by
+// a class an instructor has joined, so the parser, the scene checks and the
+// chat commands all see it. No crash, no hang; every answer the server
+// gives decodes with the client's own decoder; the version never goes back.
 #include "classroom/class_session.h"
 #include "classroom/protocol.h"
-
-#include <QJsonDocument>
-#include <QJsonObject>
+#include "classroom/server_message.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -18,8 +17,8 @@ namespace {
 
 void checkAnswers(const std::vector<fl::classroom::Delivery>& out) {
     for (const auto& d : out) {
-        const QJsonDocument doc = QJsonDocument::fromJson(d.frame.toUtf8());
-        if (!doc.isObject() || !doc.object().value("type").isString()) std::abort();
+        const auto parsed = fl::classroom::parseServerMessage(d.frame.toStdString());
+        if (!std::holds_alternative<fl::classroom::ServerMessage>(parsed)) std::abort();
     }
 }
 
@@ -47,6 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::size_t end = std::min(input.find('\x1e', start), input.size());
         const std::string_view frame = input.substr(start, end - start);
         (void)parseClientMessage(frame);
+        (void)parseServerMessage(frame);
         checkAnswers(session.receive(frames % 2 ? student : teacher, frame));
         clock.advance(250);
         checkAnswers(session.tick());
