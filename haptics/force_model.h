@@ -2,19 +2,12 @@
 // The force at one servo tick (DESIGN §6; docs/haptics.md, "How forces are
 // made"): the tool point against every tangible shape of the snapshot.
 //
-// - Surfaces (shapes with FFriction or FTension): a proxy kept on f = 0
-//   (Salisbury & Tarr). Contact begins where the segment from the tool's
-//   last position to this one first meets the solid (field::marchToSurface:
-//   interval-checked, so no tunnelling through shells thinner than a tick's
-//   motion); in contact the tool is projected onto the tangent plane at the
-//   proxy, the proxy moves towards it as far as the friction cone allows
-//   (radius friction × depth), and Newton steps put it back on f = 0. The
-//   force is a spring from the tool to the proxy. Where the gradient
-//   vanishes (a cone's apex) the last good normal stands in; where there is
-//   none, the proxy stays.
-// - Polygon contact (standard shapes, collision "polygonal"): a god-object
-//   against the triangles the viewer draws (TriangleBvh), sliding on up to
-//   three faces, with the same friction cone.
+// - Surfaces (shapes with FFriction or FTension): a contact algorithm per
+//   shape (contact_algorithm.h) keeps a proxy on the surface — on f = 0 for
+//   a function (ImplicitProxyContact), a god-object on the triangles for
+//   standard shapes and collision "polygonal" (GodObjectContact) — sliding
+//   within the friction cone. The force is a spring from the tool to the
+//   proxy, damped along the normal.
 // - FTension: a fraction of the device's maximum force (values above 1 are
 //   taken as 1, said once), as OpenHaptics' pop-through is; when the spring
 //   (not the damping) pushes back harder than that, the tool pops through;
@@ -27,6 +20,7 @@
 // its own t (the one clock's timing at the tick's moment). A value that is
 // not finite makes that effect contribute nothing that tick, and is reported
 // once with its location.
+#include "contact_algorithm.h"
 #include "device/haptic_device.h"
 #include "tangible_scene.h"
 
@@ -38,9 +32,6 @@
 #include <vector>
 
 namespace fl::haptics {
-
-enum class ContactKind : std::uint8_t { None, Surface, Inside };
-std::string_view contactName(ContactKind kind); // "none", "surface", "inside"
 
 struct ToolSample {
     field::Vec3 position{}; // scene coordinates
@@ -86,17 +77,12 @@ class ForceModel {
 
   private:
     struct ShapeState;
-    template <class Friction>
-    void polygonStep(ShapeState& s, const field::Vec3& tool, Friction friction);
+    class ShapeMaterial; // a shape's friction, as its contact algorithm asks for it
     void report(const std::string& key, const std::string& text);
     // One effect's value(s) at a point of the shape; false when the shape
     // has none of that kind or it is not a number there (reported).
     bool effectAt(ShapeState& s, scene::TangibleKind kind, const field::Vec3& p,
                   const animation::Instant& moment, double* values);
-    // The implicit proxy: contact found along the tool's way, then kept on
-    // f = 0 (sliding as far as the friction cone lets it).
-    void implicitProxyStep(ShapeState& s, const field::Vec3& tool, const formula::Dual& here,
-                           const animation::Instant& moment);
     // In surface contact: the spring to the proxy with damping along the
     // normal; tension lets the tool pop through.
     field::Vec3 surfaceForce(ShapeState& s, const ToolSample& tool);
