@@ -2,8 +2,8 @@
 
 #include "formula/lexer.h"
 #include "scene/field_access.h"
-#include "scene/field_text_edit.h"
 #include "scene/node_catalogue.h"
+#include "scene/scene_edit.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "scene/source_map.h"
@@ -436,19 +436,12 @@ std::string applyChatCommand(const ChatCommand& command, const std::string& scen
     // Only definitions changed: each replaced where it is written, so the
     // class scene keeps its comments and layout. Kept only when it reads
     // back as the same model as the rewritten scene.
-    std::vector<scene::TextEdit> textEdits;
+    scene::SceneEdit inPlace(s);
     for (const auto& [node, field] : edits.strings) {
         const scene::Field* f = node->field(field);
-        auto e = f ? scene::setStringsFieldEdit(s, *node, field, f->value.strings) : std::nullopt;
-        if (!e) return rewritten;
-        textEdits.push_back(std::move(*e));
+        if (!f || !inPlace.setStrings(*node, field, f->value.strings)) return rewritten;
     }
-    std::sort(
-        textEdits.begin(), textEdits.end(),
-        [](const scene::TextEdit& a, const scene::TextEdit& b) { return a.offset > b.offset; });
-    std::string text = sceneText;
-    for (const scene::TextEdit& e : textEdits)
-        text = scene::applied(text, e);
+    const std::string text = inPlace.appliedTo(sceneText);
     scene::ReadResult again = scene::readSceneBytes(text, "scene", options);
     if (!again.ok() || scene::writeScene(*again.scene, again.scene->encoding) != rewritten)
         return rewritten;

@@ -7,6 +7,7 @@
 #include "measure/accuracy_sweep.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
+#include "scene/scene_edit.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -323,30 +324,6 @@ void AccuracyPanel::writeChoice() {
     if (c.written) Q_EMIT writeRequested(c.geometry, c.resolution);
 }
 
-std::vector<scene::TextEdit> AccuracyPanel::resolutionEdits(const scene::Scene& scene,
-                                                            const scene::Node& geometry,
-                                                            double resolution, std::string* why) {
-    const auto number = [](double v) { return QString::number(v, 'g', 6).toStdString(); };
-    std::vector<scene::TextEdit> edits;
-    const auto r =
-        scene::setNumbersFieldEdit(scene, geometry, "resolution", number(resolution), why);
-    if (!r) return {};
-    edits.push_back(*r);
-    if (scene::boolField(geometry, "lod")) {
-        const auto range = scene::numbersField(geometry, "lodRange");
-        const double coarsest = std::min(range.size() == 2 ? range[0] : 8.0, resolution);
-        const auto l = scene::setNumbersFieldEdit(scene, geometry, "lodRange",
-                                                  number(coarsest) + " " + number(resolution), why);
-        if (!l) return {};
-        edits.push_back(*l);
-    }
-    // Later offsets first, so earlier ones stay valid; two fields added at one
-    // place keep their order.
-    std::stable_sort(edits.begin(), edits.end(),
-                     [](const auto& a, const auto& b) { return a.offset > b.offset; });
-    return edits;
-}
-
 void AccuracyPanel::attach(PanelContext& context) {
     context_ = &context;
     connect(this, &AccuracyPanel::resolutionChosen, this,
@@ -368,8 +345,8 @@ bool AccuracyPanel::writeResolution(const scene::Node* geometry, double resoluti
         return false;
     }
     std::string why;
-    const auto edits = resolutionEdits(*scene, *geometry, resolution, &why);
-    if (edits.empty()) {
+    const auto edit = scene::resolutionEdit(*scene, *geometry, resolution, &why);
+    if (!edit) {
         c.problem(tr("The resolution cannot be written into the text: %1")
                       .arg(QString::fromStdString(why)));
         return false;
@@ -377,7 +354,7 @@ bool AccuracyPanel::writeResolution(const scene::Node* geometry, double resoluti
     // One undoable step in the editor; offsets in bytes become characters.
     QTextCursor cursor(c.editor->document());
     cursor.beginEditBlock();
-    for (const scene::TextEdit& e : edits) {
+    for (const scene::TextEdit& e : edit->edits()) {
         const auto at = QString::fromUtf8(text.data(), qsizetype(e.offset)).size();
         const auto end = QString::fromUtf8(text.data(), qsizetype(e.offset + e.length)).size();
         cursor.setPosition(int(at));

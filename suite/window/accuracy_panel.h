@@ -12,7 +12,7 @@
 #include "panel.h"
 
 #include "field/field_sampler.h"
-#include "scene/field_text_edit.h"
+#include "scene/scene.h"
 
 #include <atomic>
 #include <memory>
@@ -59,16 +59,6 @@ class AccuracyPanel : public Panel {
     // box diagonal), as measured; false when no measured resolution reaches it.
     bool chooseTargetError(double target);
 
-    // The edits of the scene's text that make `resolution` the FGeometry's
-    // written choice: its `resolution`, and where it has `lod TRUE` a
-    // `lodRange` whose finest end is that resolution (near the camera the
-    // shape is meshed at the chosen accuracy and never finer; far away the
-    // level of detail may coarsen it). In descending offset order, to apply
-    // one after the other. Empty, with `why`, when the node cannot be edited
-    // in the text.
-    static std::vector<scene::TextEdit> resolutionEdits(const scene::Scene& scene,
-                                                        const scene::Node& geometry,
-                                                        double resolution, std::string* why);
     void writeChoice(); // asks the window to write the current choice
 
     // Its place in the window: a chosen resolution is meshed from then on;

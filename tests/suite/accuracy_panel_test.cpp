@@ -6,6 +6,7 @@
 #include "suite/window/accuracy_panel.h"
 
 #include "scene/field_access.h"
+#include "scene/scene_edit.h"
 #include "scene/scene_reader.h"
 
 #include <QApplication>
@@ -94,11 +95,9 @@ class AccuracyPanelTest : public QObject {
             static_cast<const scene::Node*>(write.first().at(0).value<const scene::Node*>());
         QVERIFY(geometry);
         std::string why;
-        const auto edits = suite::AccuracyPanel::resolutionEdits(*scene, *geometry, 16, &why);
-        QVERIFY2(edits.size() == 2, why.c_str());
-        std::string text = scene->files[0].text;
-        for (const auto& e : edits)
-            text = scene::applied(text, e);
+        const auto edit = scene::resolutionEdit(*scene, *geometry, 16, &why);
+        QVERIFY2(edit && edit->edits().size() == 2, why.c_str());
+        const std::string text = edit->appliedTo(scene->files[0].text);
         const scene::ReadResult again = scene::readSceneBytes(text, "watermelon.x3d");
         QVERIFY(again.ok());
         const scene::Node* g = nullptr;
