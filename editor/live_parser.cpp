@@ -3,7 +3,6 @@
 #include "scene/scene_reader.h"
 
 #include <QFileInfo>
-#include <QMetaObject>
 
 namespace fl::editor {
 
@@ -33,16 +32,22 @@ ParseOutcome parseSceneText(const QString& text, const QString& path, const Pars
     return out;
 }
 
-LiveParser::LiveParser(QObject* parent) : QObject(parent) {
+LiveParser::LiveParser(QObject* parent)
+    : QObject(parent),
+      worker_(
+          this,
+          [](const Request& r) {
+              return std::make_shared<ParseOutcome>(parseSceneText(r.text, r.path, r.limits));
+          },
+          [this](const Request& r, std::shared_ptr<ParseOutcome> outcome) {
+              finished(r, std::move(outcome));
+          }) {
     timer_.setSingleShot(true);
     timer_.setInterval(250);
     connect(&timer_, &QTimer::timeout, this, &LiveParser::start);
 }
 
-LiveParser::~LiveParser() {
-    // The worker finishes its parse; what it posts is dropped with this object.
-    if (worker_.joinable()) worker_.join();
-}
+LiveParser::~LiveParser() = default; // the worker finishes its parse; its result is dropped
 
 void LiveParser::setText(const QString& text, const QString& path) {
     text_ = text;
@@ -56,32 +61,14 @@ void LiveParser::parseNow() {
     start();
 }
 
-// One worker at a time; a text that arrives meanwhile waits, replacing any
-// older waiting one, so fast typing never piles up parses.
+// A text that arrives while a parse runs waits, replacing any older waiting
+// one, so fast typing never piles up parses.
 void LiveParser::start() {
-    if (working_) {
-        waiting_ = true;
-        return;
-    }
-    working_ = true;
-    if (worker_.joinable()) worker_.join();
-    const int generation = generation_;
-    worker_ = std::thread([this, generation, text = text_, path = path_, limits = limits_] {
-        auto outcome = std::make_shared<ParseOutcome>(parseSceneText(text, path, limits));
-        QMetaObject::invokeMethod(
-            this, [this, generation, outcome] { finished(generation, outcome); },
-            Qt::QueuedConnection);
-    });
+    worker_.request({generation_, text_, path_, limits_});
 }
 
-void LiveParser::finished(int generation, std::shared_ptr<ParseOutcome> outcome) {
-    if (worker_.joinable()) worker_.join();
-    working_ = false;
-    if (waiting_) {
-        waiting_ = false;
-        start(); // the newest text
-    }
-    if (generation != generation_) return; // a newer text is on its way
+void LiveParser::finished(const Request& request, std::shared_ptr<ParseOutcome> outcome) {
+    if (request.generation != generation_) return; // a newer text is on its way
     ++finished_;
     if (outcome->scene) {
         lastGood_ = outcome->scene;

@@ -3,8 +3,10 @@
 // pause (250 ms) after the last keystroke. Only the newest text counts: an
 // older parse finishing late is thrown away. A text with errors leaves the
 // last good scene where it was, so the view never goes blank while typing.
-// One worker thread at a time, joined when the parser goes.
+// One worker thread at a time (platform::NewestOnlyWorker), joined when the
+// parser goes.
 #include "code_editor.h" // EditorDiagnostic
+#include "platform/newest_only_worker.h"
 #include "scene/scene.h"
 #include "scene/scene_diagnostic.h"
 #include "scene/scene_reader.h"
@@ -14,7 +16,6 @@
 #include <QTimer>
 
 #include <memory>
-#include <thread>
 #include <vector>
 
 namespace fl::editor {
@@ -52,7 +53,7 @@ class LiveParser : public QObject {
     void parseNow();
     std::shared_ptr<const scene::Scene> lastGoodScene() const { return lastGood_; }
     int parsesFinished() const { return finished_; }
-    bool pending() const { return timer_.isActive() || working_ || waiting_; }
+    bool pending() const { return timer_.isActive() || worker_.busy(); }
 
   Q_SIGNALS:
     void parsed(const fl::editor::ParseOutcome& outcome);
@@ -60,16 +61,20 @@ class LiveParser : public QObject {
     void sceneChanged(std::shared_ptr<const fl::scene::Scene> scene);
 
   private:
+    struct Request {
+        int generation = 0;
+        QString text, path;
+        ParseLimits limits;
+    };
     void start();
-    void finished(int generation, std::shared_ptr<ParseOutcome> outcome);
+    void finished(const Request& request, std::shared_ptr<ParseOutcome> outcome);
 
     QTimer timer_;
     QString text_, path_;
     ParseLimits limits_;
     std::shared_ptr<const scene::Scene> lastGood_;
     int generation_ = 0, finished_ = 0;
-    std::thread worker_;
-    bool working_ = false, waiting_ = false;
+    platform::NewestOnlyWorker<Request, std::shared_ptr<ParseOutcome>> worker_;
 };
 
 } // namespace fl::editor

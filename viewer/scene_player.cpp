@@ -2,8 +2,6 @@
 #include "animation/event_responses.h"
 #include "text_outliner.h"
 
-#include <QMetaObject>
-
 #include <exception>
 #include <string>
 
@@ -11,24 +9,24 @@ namespace fl::viewer {
 
 ScenePlayer::ScenePlayer(const animation::WallClock* clock, QObject* parent)
     : QObject(parent), ownClock_(clock ? nullptr : std::make_unique<animation::SystemWallClock>()),
-      clock_(clock ? *clock : *ownClock_), timeline_(clock_) {
+      clock_(clock ? *clock : *ownClock_), timeline_(clock_),
+      worker_(
+          this, [this](const Request& r) { return meshFrame(r); },
+          [this](const Request& r, const Frame& frame) { finished(r, frame); }) {
     timeline_.pause();
     timeline_.seek(0);
     timer_.setInterval(33);
     connect(&timer_, &QTimer::timeout, this, &ScenePlayer::tick);
 }
 
-ScenePlayer::~ScenePlayer() {
-    cancel_ = true;
-    if (worker_.joinable()) worker_.join();
-}
+ScenePlayer::~ScenePlayer() = default; // the worker stops its frame and joins
 
 void ScenePlayer::setScene(std::shared_ptr<const scene::Scene> scene) {
     scene_ = std::move(scene);
     inputs_.clear(); // they name the old scene's nodes
     plan_ = scene_ ? scene::makeEffectsPlan(*scene_) : scene::EffectsPlan{};
     resolutions_.clear(); // they name the old scene's nodes
-    cancel_ = true;       // the frame in progress is for the old scene
+    worker_.cancel();     // the frame in progress is for the old scene
     cache_.clear();
     request();
 }
@@ -105,87 +103,61 @@ void ScenePlayer::tick() {
 }
 
 bool ScenePlayer::busy() const {
-    std::lock_guard lock(mutex_);
-    return working_ || pending_.has_value();
+    return worker_.busy();
 }
 
+// A request while a frame is being meshed replaces any older waiting one:
+// stale frames are dropped, never queued.
 void ScenePlayer::request() {
     if (!scene_) return;
-    Request r{scene_, timeline_.now(), inputs_, resolution_, parameters_, resolutions_};
-    std::lock_guard lock(mutex_);
-    if (working_) {
-        pending_ = std::move(r); // replaces any older one: stale frames are dropped
-        return;
-    }
-    working_ = true;
-    if (worker_.joinable()) worker_.join(); // the last worker has finished
-    startWorker(std::move(r));
+    worker_.request({scene_, timeline_.now(), inputs_, resolution_, parameters_, resolutions_});
 }
 
-void ScenePlayer::startWorker(Request r) {
-    cancel_ = false;
-    worker_ = std::thread([this, r = std::move(r)] {
-        mesh::SceneMeshOptions o;
-        o.instant = r.instant;
-        o.sceneSeconds = double(r.instant.sceneNs) / double(animation::kNanosecondsPerSecond);
-        o.placeInScene = false;
-        o.cache = &cache_;
-        o.text = qtTextOutliner();
-        o.mesh.cancel = &cancel_;
-        o.mesh.threads = 1; // the interface keeps a core
-        o.parameters = r.parameters;
-        o.resolutions = r.resolutions;
-        if (r.resolution > 0) {
-            o.useFileResolution = false;
-            o.mesh.resolution = r.resolution;
-        }
-        mesh::SceneMeshes made;
-        try {
-            // The one clock for this frame, replayed from the start: the
-            // user's events at their moments, then this moment. Its own
-            // animator per frame, so the interface never waits on a worker.
-            animation::Animator clock(*r.scene);
-            for (const Input& input : r.inputs)
-                clock.sensorOutput(*input.node, input.field, input.value, input.at);
-            clock.tick(r.instant);
-            o.animator = &clock;
-            made = mesh::meshScene(*r.scene, o);
-        } catch (const std::exception& e) {
-            // Out of memory on a hostile scene, say: the interface stays up
-            // and says so; an empty frame replaces the scene.
-            made = mesh::SceneMeshes{};
-            made.notes.push_back(std::string("meshing stopped: ") + e.what());
-        }
-        made.source = r.scene; // keeps the nodes the meshes point at alive
-        auto meshes = std::make_shared<const mesh::SceneMeshes>(std::move(made));
-        QMetaObject::invokeMethod(
-            this,
-            [this, meshes, seconds = o.sceneSeconds, scene = r.scene] {
-                finished(meshes, seconds, scene);
-            },
-            Qt::QueuedConnection);
-    });
+ScenePlayer::Frame ScenePlayer::meshFrame(const Request& r) {
+    mesh::SceneMeshOptions o;
+    o.instant = r.instant;
+    o.sceneSeconds = double(r.instant.sceneNs) / double(animation::kNanosecondsPerSecond);
+    o.placeInScene = false;
+    o.cache = &cache_;
+    o.text = qtTextOutliner();
+    o.mesh.cancel = worker_.cancelFlag();
+    o.mesh.threads = 1; // the interface keeps a core
+    o.parameters = r.parameters;
+    o.resolutions = r.resolutions;
+    if (r.resolution > 0) {
+        o.useFileResolution = false;
+        o.mesh.resolution = r.resolution;
+    }
+    mesh::SceneMeshes made;
+    try {
+        // The one clock for this frame, replayed from the start: the
+        // user's events at their moments, then this moment. Its own
+        // animator per frame, so the interface never waits on a worker.
+        animation::Animator clock(*r.scene);
+        for (const Input& input : r.inputs)
+            clock.sensorOutput(*input.node, input.field, input.value, input.at);
+        clock.tick(r.instant);
+        o.animator = &clock;
+        made = mesh::meshScene(*r.scene, o);
+    } catch (const std::exception& e) {
+        // Out of memory on a hostile scene, say: the interface stays up
+        // and says so; an empty frame replaces the scene.
+        made = mesh::SceneMeshes{};
+        made.notes.push_back(std::string("meshing stopped: ") + e.what());
+    }
+    made.source = r.scene; // keeps the nodes the meshes point at alive
+    return {std::make_shared<const mesh::SceneMeshes>(std::move(made)), o.sceneSeconds};
 }
 
-void ScenePlayer::finished(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds,
-                           std::shared_ptr<const scene::Scene> scene) {
-    std::optional<Request> next;
-    {
-        std::lock_guard lock(mutex_);
-        next = std::move(pending_);
-        pending_.reset();
-        working_ = next.has_value();
-    }
-    if (worker_.joinable()) worker_.join();
+void ScenePlayer::finished(const Request& r, const Frame& frame) {
     // A frame of a scene that has since been replaced is not shown.
     bool cancelled = false;
-    for (const auto& s : meshes->shapes)
+    for (const auto& s : frame.meshes->shapes)
         cancelled = cancelled || s.cancelled;
-    if (scene == scene_ && !cancelled) {
+    if (r.scene == scene_ && !cancelled) {
         ++delivered_;
-        Q_EMIT meshesReady(meshes, seconds);
+        Q_EMIT meshesReady(frame.meshes, frame.seconds);
     }
-    if (next) startWorker(std::move(*next));
 }
 
 } // namespace fl::viewer

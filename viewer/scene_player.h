@@ -8,6 +8,7 @@
 #include "animation/clock.h"
 #include "mesh/mesh_cache.h"
 #include "mesh/scene_meshing.h"
+#include "platform/newest_only_worker.h"
 #include "scene/effects_plan.h"
 #include "scene/scene.h"
 
@@ -16,9 +17,7 @@
 
 #include <atomic>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <thread>
 #include <unordered_map>
 
 namespace fl::viewer {
@@ -87,10 +86,13 @@ class ScenePlayer : public QObject {
         std::vector<std::pair<std::string, double>> parameters;
         std::unordered_map<const scene::Node*, double> resolutions;
     };
+    struct Frame {
+        std::shared_ptr<const mesh::SceneMeshes> meshes;
+        double seconds = 0;
+    };
     void request();
-    void startWorker(Request r);
-    void finished(std::shared_ptr<const mesh::SceneMeshes> meshes, double seconds,
-                  std::shared_ptr<const scene::Scene> scene);
+    Frame meshFrame(const Request& r); // on the worker
+    void finished(const Request& r, const Frame& frame);
 
     std::unique_ptr<animation::WallClock> ownClock_;
     const animation::WallClock& clock_;
@@ -104,12 +106,9 @@ class ScenePlayer : public QObject {
     mesh::MeshCache cache_;
     QTimer timer_;
 
-    mutable std::mutex mutex_;
-    std::thread worker_;
-    bool working_ = false;
-    std::optional<Request> pending_; // the newest request waiting for the worker
-    std::atomic<bool> cancel_{false};
     std::size_t delivered_ = 0;
+    // Last: it stops and joins its job before what the job reads goes.
+    platform::NewestOnlyWorker<Request, Frame> worker_;
 };
 
 } // namespace fl::viewer

@@ -30,7 +30,7 @@ std::vector<double> AccuracyPanel::sweepResolutions() {
 }
 
 void AccuracyPanel::setResolutions(std::vector<double> resolutions) {
-    cancel();
+    dropSweep();
     resolutions_ = std::move(resolutions);
     progress_->setRange(0, int(resolutions_.size()));
 }
@@ -40,7 +40,10 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
       shapes_(new QComboBox), costs_(new QComboBox), chart_(new AccuracyChart),
       progress_(new QProgressBar), measure_(new QPushButton(tr("Measure"))),
       cancel_(new QPushButton(tr("Cancel"))), write_(new QPushButton(tr("Write into the scene"))),
-      target_(new QLineEdit), status_(plainLabel()) {
+      target_(new QLineEdit), status_(plainLabel()),
+      worker_(
+          this, [this](const Sweep& sweep) { return runSweep(sweep); },
+          [this](const Sweep& sweep, SweepResult r) { sweepFinished(sweep, std::move(r)); }) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;
@@ -110,13 +113,11 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
 }
 
 AccuracyPanel::~AccuracyPanel() {
-    *alive_ = false;
-    stop_ = true;
-    if (worker_.joinable()) worker_.join();
+    *alive_ = false; // the worker stops and joins the sweep as it goes
 }
 
 void AccuracyPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
-    cancel();
+    dropSweep();
     scene_ = std::move(scene);
     candidates_.clear();
     const QSignalBlocker quiet(shapes_);
@@ -166,13 +167,19 @@ bool AccuracyPanel::measuring() const {
 }
 
 void AccuracyPanel::cancel() {
-    stop_ = true;
-    if (worker_.joinable()) worker_.join();
-    stop_ = false;
+    worker_.cancel(); // what it measured so far is shown, "cancelled"
+}
+
+void AccuracyPanel::dropSweep() {
+    ++generation_;
+    worker_.cancel();
+    running_ = false;
+    measure_->setEnabled(true);
+    cancel_->setEnabled(false);
 }
 
 void AccuracyPanel::setCost(Cost cost) {
-    cancel();
+    dropSweep();
     cost_ = cost;
     {
         const QSignalBlocker quiet(costs_);
@@ -205,76 +212,72 @@ measure::AccuracyRow touchRow(const haptics::TickCost& t) {
 } // namespace
 
 void AccuracyPanel::measure() {
-    cancel();
+    dropSweep();
     const int index = shapes_->currentIndex();
     if (index < 0 || std::size_t(index) >= candidates_.size()) return;
-    const auto field = candidates_[std::size_t(index)].field;
+    Sweep sweep{generation_, cost_, candidates_[std::size_t(index)].field, resolutions_};
+    // Polygons past 128 take long to build and say nothing new to a hand.
+    if (cost_ == Cost::Touch) std::erase_if(sweep.resolutions, [](double r) { return r > 128; });
     chart_->setRows({});
+    progress_->setRange(0, int(sweep.resolutions.size()) + (cost_ == Cost::Touch ? 1 : 0));
     progress_->setValue(0);
     measure_->setEnabled(false);
     cancel_->setEnabled(true);
     status_->setText(tr("measuring…"));
     running_ = true;
-    // What the worker says, on the interface thread (nothing once the panel is gone).
-    auto progress = [this, alive = alive_](std::vector<measure::AccuracyRow> rows, int done) {
+    worker_.request(std::move(sweep));
+}
+
+AccuracyPanel::SweepResult AccuracyPanel::runSweep(const Sweep& sweep) {
+    const std::atomic<bool>* stop = worker_.cancelFlag();
+    // What the worker has so far, on the interface thread (nothing once the
+    // panel is gone or a newer sweep was asked for).
+    auto progress = [this, alive = alive_, generation = sweep.generation](
+                        std::vector<measure::AccuracyRow> rows, int done) {
         QMetaObject::invokeMethod(
             this,
-            [this, rows = std::move(rows), done, alive] {
-                if (!*alive) return;
+            [this, rows = std::move(rows), done, alive, generation] {
+                if (!*alive || generation != generation_) return;
                 chart_->setRows(rows);
                 progress_->setValue(done);
             },
             Qt::QueuedConnection);
     };
-    auto finish = [this, alive = alive_](std::vector<measure::AccuracyRow> rows, QString summary) {
-        QMetaObject::invokeMethod(
-            this,
-            [this, rows = std::move(rows), summary, alive] {
-                if (!*alive) return;
-                running_ = false;
-                measure_->setEnabled(true);
-                cancel_->setEnabled(false);
-                chart_->setRows(rows);
-                status_->setText(summary);
-                Q_EMIT measured();
-            },
-            Qt::QueuedConnection);
-    };
-    if (cost_ == Cost::Touch) {
-        // Polygons past 128 take long to build and say nothing new to a hand.
-        std::vector<double> resolutions;
-        for (double r : resolutions_)
-            if (r <= 128) resolutions.push_back(r);
-        progress_->setRange(0, int(resolutions.size()) + 1);
-        worker_ = std::thread([this, field, resolutions, progress, finish] {
-            std::vector<measure::AccuracyRow> rows;
-            const auto path = haptics::pathUnderSurface(*field);
-            haptics::touchSweep(*field, path, resolutions, 1, &stop_,
-                                [&](const haptics::TickCost& t) {
-                                    rows.push_back(touchRow(t));
-                                    progress(rows, int(rows.size()));
-                                });
-            finish(rows, stop_          ? tr("cancelled")
-                         : path.empty() ? tr("no surface to touch was found in the box")
-                                        : touchSummary(rows));
-        });
-        return;
+    SweepResult out;
+    if (sweep.cost == Cost::Touch) {
+        const auto path = haptics::pathUnderSurface(*sweep.field);
+        haptics::touchSweep(*sweep.field, path, sweep.resolutions, 1, stop,
+                            [&](const haptics::TickCost& t) {
+                                out.rows.push_back(touchRow(t));
+                                progress(out.rows, int(out.rows.size()));
+                            });
+        out.summary = *stop          ? tr("cancelled")
+                      : path.empty() ? tr("no surface to touch was found in the box")
+                                     : touchSummary(out.rows);
+        return out;
     }
-    progress_->setRange(0, int(resolutions_.size()));
-    worker_ = std::thread([this, field, resolutions = resolutions_, progress, finish] {
-        std::vector<measure::AccuracyRow> rows;
-        measure::SweepOptions o;
-        o.threads = 1; // the interface keeps a core
-        int done = 0;
-        for (double r : resolutions) {
-            if (stop_) break;
-            const auto more = measure::runAccuracySweep(*field, {r}, o);
-            rows.insert(rows.end(), more.begin(), more.end());
-            progress(rows, ++done);
-        }
-        finish(rows,
-               stop_ ? tr("cancelled") : QString::fromStdString(measure::accuracySummary(rows)));
-    });
+    measure::SweepOptions o;
+    o.threads = 1; // the interface keeps a core
+    int done = 0;
+    for (double r : sweep.resolutions) {
+        if (*stop) break;
+        const auto more = measure::runAccuracySweep(*sweep.field, {r}, o);
+        out.rows.insert(out.rows.end(), more.begin(), more.end());
+        progress(out.rows, ++done);
+    }
+    out.summary =
+        *stop ? tr("cancelled") : QString::fromStdString(measure::accuracySummary(out.rows));
+    return out;
+}
+
+void AccuracyPanel::sweepFinished(const Sweep& sweep, SweepResult result) {
+    if (sweep.generation != generation_) return; // dropped: a newer sweep or scene
+    running_ = false;
+    measure_->setEnabled(true);
+    cancel_->setEnabled(false);
+    chart_->setRows(result.rows);
+    status_->setText(result.summary);
+    Q_EMIT measured();
 }
 
 QString AccuracyPanel::touchSummary(const std::vector<measure::AccuracyRow>& rows) {

@@ -12,13 +12,14 @@
 #include "panel.h"
 
 #include "field/field_sampler.h"
+#include "measure/accuracy_sweep.h"
+#include "platform/newest_only_worker.h"
 #include "scene/scene.h"
 
 #include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 #include <vector>
 
 class QComboBox;
@@ -107,10 +108,27 @@ class AccuracyPanel : public Panel {
     QLineEdit* target_;
     QLabel* status_;
 
-    std::thread worker_;
-    std::atomic<bool> stop_{false};
-    std::atomic<bool> running_{false};
-    std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+    // One sweep at a time; a newer one waits for the running one to stop.
+    struct Sweep {
+        int generation = 0; // results of an older one are not shown
+        Cost cost = Cost::Meshing;
+        std::shared_ptr<const field::ImplicitField> field;
+        std::vector<double> resolutions;
+    };
+    struct SweepResult {
+        std::vector<measure::AccuracyRow> rows;
+        QString summary;
+    };
+    SweepResult runSweep(const Sweep& sweep); // on the worker
+    void sweepFinished(const Sweep& sweep, SweepResult result);
+    // Stops the running sweep and forgets it: its rows are not shown.
+    void dropSweep();
+
+    int generation_ = 0;
+    bool running_ = false;
+    std::shared_ptr<bool> alive_ = std::make_shared<bool>(true); // for progress from the worker
+    // Last: it stops and joins the sweep before the rest goes.
+    platform::NewestOnlyWorker<Sweep, SweepResult> worker_;
 };
 
 } // namespace fl::suite
