@@ -4,9 +4,13 @@
 #include "scene/node_catalogue.h"
 
 #include <QAbstractItemView>
+#include <QAction>
 #include <QCompleter>
+#include <QContextMenuEvent>
 #include <QFontDatabase>
 #include <QHelpEvent>
+#include <QKeyEvent>
+#include <QMenu>
 #include <QPainter>
 #include <QScrollBar>
 #include <QStringListModel>
@@ -217,7 +221,19 @@ void CodeEditor::updateExtraSelections() {
     setExtraSelections(selections);
 }
 
+bool CodeEditor::isEditorKey(const QKeyEvent* key) {
+    const bool control = (key->modifiers() & Qt::ControlModifier) &&
+                         !(key->modifiers() & (Qt::AltModifier | Qt::MetaModifier));
+    return control && (key->key() == Qt::Key_Space || key->key() == Qt::Key_Period);
+}
+
 bool CodeEditor::event(QEvent* event) {
+    // The editor's own keys win over the window's shortcuts while it has
+    // focus (View → Play/Pause also answers Ctrl+Space elsewhere).
+    if (event->type() == QEvent::ShortcutOverride && isEditorKey(static_cast<QKeyEvent*>(event))) {
+        event->accept();
+        return true;
+    }
     if (event->type() == QEvent::ToolTip) {
         auto* help = static_cast<QHelpEvent*>(event);
         const int position =
@@ -225,7 +241,10 @@ bool CodeEditor::event(QEvent* event) {
         QStringList messages;
         for (const auto& d : diagnostics_) {
             const auto [start, end] = rangeOf(d);
-            if (position >= start && position <= end) messages << d.message;
+            if (position >= start && position <= end)
+                messages << (d.fix
+                                 ? tr("%1\nCtrl+. or right-click: %2").arg(d.message, d.fix->label)
+                                 : d.message);
         }
         if (messages.isEmpty()) {
             QTextCursor c = cursorForPosition(help->pos() - QPoint(viewportMargins().left(), 0));
@@ -300,13 +319,72 @@ void CodeEditor::keyPressEvent(QKeyEvent* event) {
             break;
         }
     }
-    const bool forced = event->key() == Qt::Key_Space && (event->modifiers() & Qt::ControlModifier);
+    if (isEditorKey(event) && event->key() == Qt::Key_Period) {
+        applyFixAtCursor();
+        return;
+    }
+    const bool forced = isEditorKey(event) && event->key() == Qt::Key_Space;
     if (!forced) QPlainTextEdit::keyPressEvent(event);
     const QString typed = event->text();
     if (forced || (!typed.isEmpty() && (typed[0].isLetterOrNumber() || typed[0] == '_')))
         showCompletions(forced);
     else if (!typed.isEmpty())
         completer_->popup()->hide();
+}
+
+std::optional<EditorFix> CodeEditor::fixAt(int position) const {
+    const QTextBlock block = document()->findBlock(position);
+    const int line = block.blockNumber() + 1;
+    std::optional<EditorFix> best;
+    int bestDistance = 0;
+    for (const auto& d : diagnostics_) {
+        if (!d.fix || d.line != line) continue;
+        const auto [start, end] = rangeOf(d);
+        const int distance = position < start ? start - position : std::max(0, position - end);
+        if (!best || distance < bestDistance) {
+            best = d.fix;
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
+std::optional<EditorFix> CodeEditor::fixAtCursor() const {
+    return fixAt(textCursor().position());
+}
+
+bool CodeEditor::applyFixAtCursor() {
+    const auto fix = fixAtCursor();
+    if (!fix) return false;
+    applyFix(*fix);
+    return true;
+}
+
+void CodeEditor::applyFix(const EditorFix& fix) {
+    const QTextBlock block = document()->findBlockByNumber(fix.line - 1);
+    if (!block.isValid()) return;
+    const int start = block.position() + std::clamp(fix.column - 1, 0, int(block.text().size()));
+    QTextCursor c(document());
+    c.setPosition(start);
+    c.setPosition(std::min(start + fix.length, document()->characterCount() - 1),
+                  QTextCursor::KeepAnchor);
+    c.insertText(fix.text); // one undoable step
+    setTextCursor(c);
+}
+
+void CodeEditor::contextMenuEvent(QContextMenuEvent* event) {
+    QMenu* menu = createStandardContextMenu(event->pos());
+    const int position =
+        cursorForPosition(event->pos() - QPoint(viewportMargins().left(), 0)).position();
+    if (const auto fix = fixAt(position)) {
+        auto* apply = new QAction(tr("Fix: %1").arg(fix->label), menu);
+        connect(apply, &QAction::triggered, this, [this, f = *fix] { applyFix(f); });
+        QAction* first = menu->actions().isEmpty() ? nullptr : menu->actions().first();
+        menu->insertAction(first, apply);
+        menu->insertSeparator(first);
+    }
+    menu->exec(event->globalPos());
+    delete menu;
 }
 
 } // namespace fl::editor

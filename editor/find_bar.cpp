@@ -1,5 +1,6 @@
 #include "find_bar.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -16,6 +17,7 @@ namespace fl::editor {
 FindBar::FindBar(QPlainTextEdit* editor, QWidget* parent)
     : QWidget(parent), editor_(editor), find_(new QLineEdit), replace_(new QLineEdit),
       matchCase_(new QCheckBox(tr("Match case"))), status_(new QLabel), replaceRow_(new QWidget) {
+    replaceRow_->setObjectName(QStringLiteral("replaceRow"));
     auto* column = new QVBoxLayout(this);
     column->setContentsMargins(2, 2, 2, 2);
     auto* findRow = new QHBoxLayout;
@@ -56,7 +58,13 @@ void FindBar::fillEditMenu(QMenu* edit) {
     edit->addAction(tr("&Redo"), QKeySequence::Redo, editor_, &QPlainTextEdit::redo);
     edit->addSeparator();
     edit->addAction(tr("&Find…"), QKeySequence::Find, this, [this] { open(false); });
-    edit->addAction(tr("&Replace…"), QKeySequence::Replace, this, [this] { open(true); });
+    QAction* replace = edit->addAction(tr("&Replace…"), this, [this] { open(true); });
+    // Ctrl+H everywhere (the guide's key), beside the platform's own, if any
+    // (a bare X server has none for Replace).
+    QList<QKeySequence> keys{QKeySequence(Qt::CTRL | Qt::Key_H)};
+    for (const QKeySequence& k : QKeySequence::keyBindings(QKeySequence::Replace))
+        if (!keys.contains(k)) keys << k;
+    replace->setShortcuts(keys);
 }
 
 void FindBar::open(bool withReplace) {

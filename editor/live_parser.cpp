@@ -24,7 +24,12 @@ ParseOutcome parseSceneText(const QString& text, const QString& path, const Pars
                                   QFileInfo(QString::fromStdString(file)).fileName()) {
             QString message = QString::fromStdString(d.message);
             if (!d.suggestion.empty()) message += " (" + QString::fromStdString(d.suggestion) + ")";
-            out.inThisFile << EditorDiagnostic{d.pos.line, d.pos.column, isError, message};
+            std::optional<EditorFix> fix;
+            if (d.fix)
+                fix = EditorFix{d.fix->at.line, d.fix->at.column, d.fix->length,
+                                QString::fromStdString(d.fix->text),
+                                QString::fromStdString(d.fix->label)};
+            out.inThisFile << EditorDiagnostic{d.pos.line, d.pos.column, isError, message, fix};
         }
     }
     out.all = std::move(r.diagnostics);

@@ -89,6 +89,13 @@ void SceneBuilder::fail(FilePos pos, std::string message, std::string suggestion
     throw StopReading{};
 }
 
+void SceneBuilder::failWithFix(FilePos pos, std::string message, std::string suggestion,
+                               DiagnosticFix fix) {
+    error(pos, std::move(message), std::move(suggestion));
+    diagnostics_.back().fix = std::move(fix);
+    throw StopReading{};
+}
+
 void SceneBuilder::failOverBudget(FilePos pos, std::string message) {
     error(pos, std::move(message));
     diagnostics_.back().overBudget = true;

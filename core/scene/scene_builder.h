@@ -50,6 +50,9 @@ class SceneBuilder {
     void error(FilePos pos, std::string message, std::string suggestion = {});
     void warning(FilePos pos, std::string message, std::string suggestion = {});
     [[noreturn]] void fail(FilePos pos, std::string message, std::string suggestion = {});
+    // fail() with a fix an editor can offer.
+    [[noreturn]] void failWithFix(FilePos pos, std::string message, std::string suggestion,
+                                  DiagnosticFix fix);
     // fail() for a bound on size or work (SceneDiagnostic::overBudget).
     [[noreturn]] void failOverBudget(FilePos pos, std::string message);
     bool hasErrors() const;

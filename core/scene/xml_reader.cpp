@@ -4,6 +4,7 @@
 
 #include "field_access.h"
 #include "source_map.h"
+#include "xml_syntax_help.h"
 
 #include <QString>
 #include <QXmlStreamReader>
@@ -42,6 +43,14 @@ class XmlReader {
     std::size_t byteOffset(qsizetype q) const {
         if (qToByte_.empty()) return static_cast<std::size_t>(q);
         return qToByte_[static_cast<std::size_t>(std::clamp<qsizetype>(q, 0, qToByte_.size() - 1))];
+    }
+    // The parser's error, explained where it is one a student makes (a
+    // formula's & or < inside an attribute).
+    [[noreturn]] void malformed() {
+        if (auto help = explainXmlSyntaxError(bytes_, here()))
+            b_.failWithFix(help->at, std::move(help->message), std::move(help->suggestion),
+                           std::move(help->fix));
+        b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
     }
     FilePos here() const {
         return {static_cast<int>(xml_.lineNumber()), static_cast<int>(xml_.columnNumber()) + 1};
@@ -177,12 +186,12 @@ bool XmlReader::nextChild() {
         case QXmlStreamReader::EndElement:
             return false;
         case QXmlStreamReader::Invalid:
-            b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
+            malformed();
         default:
             break;
         }
     }
-    if (xml_.hasError()) b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
+    if (xml_.hasError()) malformed();
     return false;
 }
 
@@ -195,8 +204,7 @@ void XmlReader::readFile() {
     // The root element.
     while (!xml_.atEnd()) {
         const auto t = xml_.readNext();
-        if (t == QXmlStreamReader::Invalid)
-            b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
+        if (t == QXmlStreamReader::Invalid) malformed();
         if (t == QXmlStreamReader::StartElement) break;
     }
     if (xml_.tokenType() != QXmlStreamReader::StartElement)
@@ -236,8 +244,7 @@ void XmlReader::readFile() {
     if (!sawScene)
         b_.fail(tagPos_, "the file has no <Scene> element", "put the nodes inside <Scene>");
     while (!xml_.atEnd())
-        if (xml_.readNext() == QXmlStreamReader::Invalid)
-            b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
+        if (xml_.readNext() == QXmlStreamReader::Invalid) malformed();
 }
 
 void XmlReader::head() {
@@ -356,8 +363,7 @@ void XmlReader::setAttributeField(Node& n, const Attr& a) {
 void XmlReader::nodeContent(Node& n) {
     while (!xml_.atEnd()) {
         const auto t = xml_.readNext();
-        if (t == QXmlStreamReader::Invalid)
-            b_.fail(here(), "malformed XML: " + xml_.errorString().toStdString());
+        if (t == QXmlStreamReader::Invalid) malformed();
         if (t == QXmlStreamReader::EndElement) return;
         if (t == QXmlStreamReader::Characters && !xml_.isWhitespace() && n.sourceInText()) {
             // Script source in CDATA: the same as a url entry holding it.

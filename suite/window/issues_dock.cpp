@@ -11,6 +11,7 @@ IssuesDock::IssuesDock(QWidget* parent)
     : Panel(tr("Issues"), QStringLiteral("issues"), Qt::BottomDockWidgetArea, parent),
       list_(new QListWidget) {
     setWidget(list_);
+    list_->setWordWrap(true); // the end of a message says what to do
     auto activated = [this](QListWidgetItem* item) {
         Q_EMIT issueActivated(item->data(Qt::UserRole).toInt(),
                               item->data(Qt::UserRole + 1).toInt());
@@ -31,8 +32,11 @@ void IssuesDock::showDiagnostics(const std::vector<scene::SceneDiagnostic>& diag
     setVisible(!diagnostics.empty());
     list_->clear();
     for (const auto& d : diagnostics) {
-        auto* item =
-            new QListWidgetItem(QString::fromStdString(scene::formatSceneDiagnostic(d)), list_);
+        QString text = QString::fromStdString(scene::formatSceneDiagnostic(d));
+        if (d.fix)
+            text += tr("  [click, then Ctrl+. to %1]").arg(QString::fromStdString(d.fix->label));
+        auto* item = new QListWidgetItem(text, list_);
+        item->setToolTip(text);
         item->setData(Qt::UserRole, d.pos.line);
         item->setData(Qt::UserRole + 1, d.pos.column);
         item->setForeground(d.severity == scene::Severity::Error ? QColor(Qt::red)

@@ -160,3 +160,39 @@ int main(int argc, char** argv) {
     qRegisterMetaType<ParseOutcome>("fl::editor::ParseOutcome");
     return RUN_ALL_TESTS();
 }
+
+// Issue 29 §1: the `&` Lab 1 teaches, typed into an XML scene. The
+// diagnostic says what to write at the `&` itself, and Ctrl+. (or the
+// context menu) writes it: the text then reads.
+TEST(DiagnosticFix, ABareAmpersandInAnXmlFormulaIsFixedWithCtrlPeriod) {
+    CodeEditor e;
+    e.setSyntax(SceneSyntax::Xml);
+    const QString text = QStringLiteral(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<X3D profile='Immersive' version='3.3'><Scene>\n"
+        "  <FShape><FGeometry definition='\"sphere(1) & box(0.5, 0.5, 0.5)\"'/></FShape>\n"
+        "  <FShape><FGeometry definition='\"x > 0 && y < 1 ? 1 : -1\"'/></FShape>\n"
+        "</Scene></X3D>\n");
+    e.setPlainText(text);
+    // Fixed one after the other, as a student would: & then && then <.
+    for (int round = 0; round < 4; ++round) {
+        const ParseOutcome outcome = parseSceneText(e.toPlainText(), "lab1.x3d");
+        if (outcome.scene) break;
+        ASSERT_EQ(outcome.inThisFile.size(), 1) << round;
+        const EditorDiagnostic& d = outcome.inThisFile.front();
+        ASSERT_TRUE(d.fix.has_value()) << d.message.toStdString();
+        EXPECT_TRUE(d.message.contains("&amp;") || d.message.contains("&lt;"))
+            << d.message.toStdString();
+        e.setDiagnostics(outcome.inThisFile);
+        e.goTo(d.line, 1); // the start of its line: the fix is still the nearest
+        QTest::keyClick(&e, Qt::Key_Period, Qt::ControlModifier);
+    }
+    const QString fixed = e.toPlainText();
+    EXPECT_TRUE(fixed.contains("sphere(1) &amp; box")) << fixed.toStdString();
+    EXPECT_TRUE(fixed.contains("x > 0 &amp;&amp; y &lt; 1")) << fixed.toStdString();
+    const ParseOutcome done = parseSceneText(fixed, "lab1.x3d");
+    EXPECT_TRUE(done.scene) << (done.all.empty() ? "" : done.all.front().message);
+    // One undo step per fix.
+    e.undo();
+    EXPECT_TRUE(e.toPlainText().contains("y < 1"));
+}

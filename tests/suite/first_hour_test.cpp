@@ -1,0 +1,175 @@
+// A student's first hour (issue 29), in the whole window: what the guide
+// promises is there — every key it names is bound, the editor's keys are the
+// editor's while it has focus, every menu item it names exists — and the
+// `&` Lab 1 teaches, typed into an XML scene, is explained where it was
+// written and fixed with one key. Screenshots are saved to look at.
+#include "editor/code_editor.h"
+#include "editor/find_bar.h"
+#include "suite/window/main_window.h"
+#include "viewer/scene_player.h"
+#include "window_screenshot.h"
+#include "window_settle.h"
+
+#include <QAbstractItemView>
+#include <QApplication>
+#include <QCompleter>
+#include <QDir>
+#include <QFile>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QShortcut>
+#include <QStandardPaths>
+#include <QTest>
+
+using namespace fl;
+
+namespace {
+
+void save(const QImage& image, const QString& name) {
+    QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
+    image.save(QStringLiteral(FUNCTIONLAB_SCREENSHOT_DIR "/") + name + QStringLiteral(".png"));
+}
+
+QString guide() {
+    QFile f(QStringLiteral(FUNCTIONLAB_DOCS_DIR "/user-guide.md"));
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(f.readAll());
+}
+
+QString plainLabel(QString text) {
+    return text.remove('&').remove(QStringLiteral("…")).remove(QStringLiteral("...")).trimmed();
+}
+
+// Every key sequence the window answers: actions (menus, panels) and shortcuts.
+QList<QKeySequence> boundKeys(const suite::MainWindow& w) {
+    QList<QKeySequence> keys;
+    for (const QAction* a : w.findChildren<QAction*>())
+        keys << a->shortcuts();
+    for (const QShortcut* s : w.findChildren<QShortcut*>())
+        keys << s->key();
+    // The editor's own, handled while it has focus.
+    keys << QKeySequence(Qt::CTRL | Qt::Key_Space) << QKeySequence(Qt::CTRL | Qt::Key_Period);
+    return keys;
+}
+
+} // namespace
+
+class FirstHourTest : public QObject {
+    Q_OBJECT
+  private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("FunctionLabFirstHourTests"));
+        QVERIFY(!guide().isEmpty());
+    }
+
+    void everyKeyAndMenuItemTheGuideNamesExists() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        const QList<QKeySequence> bound = boundKeys(w);
+        const QString text = guide();
+        QRegularExpression key(
+            QStringLiteral("\\b(Ctrl\\+(?:Shift\\+)?(?:[A-Z0-9.]|Space|Return)\\b)"));
+        int named = 0;
+        for (auto m = key.globalMatch(text); m.hasNext();) {
+            const QString k = m.next().captured(1);
+            ++named;
+            QVERIFY2(bound.contains(QKeySequence::fromString(k)),
+                     qPrintable(QStringLiteral("the guide names %1; nothing answers it").arg(k)));
+        }
+        QVERIFY(named >= 6);
+        // "File → Join Class…", "View → Shaded / Wireframe / Points".
+        QStringList menuItems;
+        for (QAction* top : w.menuBar()->actions())
+            if (top->menu())
+                for (QAction* a : top->menu()->actions())
+                    menuItems << plainLabel(top->text()) + QStringLiteral(" → ") +
+                                     plainLabel(a->text());
+        // Title-case words, with alternatives after " / ": "Hand In", "Join Class…".
+        const QString words = QStringLiteral("[A-Z][a-z]+(?: [A-Z][a-z]+)*…?");
+        QRegularExpression item(
+            QStringLiteral("\\b(File|Edit|View|Course|Help) → (%1(?: / %1)*)").arg(words));
+        int items = 0;
+        for (auto m = item.globalMatch(text); m.hasNext();) {
+            const auto match = m.next();
+            for (const QString& one : match.captured(2).split(QStringLiteral(" / "))) {
+                const QString wanted = match.captured(1) + QStringLiteral(" → ") + plainLabel(one);
+                ++items;
+                const bool found =
+                    std::any_of(menuItems.begin(), menuItems.end(),
+                                [&](const QString& m) { return m.startsWith(wanted); });
+                QVERIFY2(found, qPrintable(QStringLiteral("the guide names %1; the menus have: %2")
+                                               .arg(wanted, menuItems.join(QStringLiteral(", ")))));
+            }
+        }
+        QVERIFY(items >= 5);
+    }
+
+    void theEditorsKeysAreTheEditorsWhileItHasFocus() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/watermelon.x3d")));
+        QVERIFY(test::settle(w));
+        editor::CodeEditor* e = w.editor();
+        e->setFocus();
+        QTRY_VERIFY(e->hasFocus());
+        // Ctrl+Space completes, and does not start the clock.
+        QTextCursor c = e->textCursor();
+        c.movePosition(QTextCursor::End);
+        c.insertText(QStringLiteral("\nsph"));
+        e->setTextCursor(c);
+        QTest::keyClick(e, Qt::Key_Space, Qt::ControlModifier);
+        QVERIFY(!w.player()->playing());
+        auto* completer = e->findChild<QCompleter*>();
+        QVERIFY(completer);
+        QTRY_VERIFY(completer->popup()->isVisible());
+        save(test::windowScreenshot(w), QStringLiteral("first-hour-completion"));
+        QTest::keyClick(completer->popup(), Qt::Key_Escape);
+        // Ctrl+H opens find and replace; Ctrl+F find.
+        auto* find = w.findChild<editor::FindBar*>();
+        QVERIFY(find);
+        QTest::keyClick(e, Qt::Key_H, Qt::ControlModifier);
+        QTRY_VERIFY(find->isVisible());
+        QVERIFY(find->findChild<QWidget*>(QStringLiteral("replaceRow"))->isVisible());
+        // Outside the editor Ctrl+Space plays and pauses.
+        w.view()->setFocus();
+        QTest::keyClick(w.view(), Qt::Key_Space, Qt::ControlModifier);
+        QTRY_VERIFY(w.player()->playing());
+    }
+
+    void anAmpersandInAnXmlSceneSaysWhatToWriteAndIsFixedWithOneKey() {
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.editor()->setPlainText(QStringLiteral(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+            "<X3D profile='Immersive' version='3.3'>\n<Scene>\n"
+            "  <FShape>\n"
+            "    <FGeometry definition='\"sphere(0, 0, 0, 1) & box(0.7, 0.7, 0.7)\"'\n"
+            "               domainMin='-1.2 -1.2 -1.2' domainMax='1.2 1.2 1.2'/>\n"
+            "  </FShape>\n</Scene>\n</X3D>\n"));
+        QTRY_VERIFY_WITH_TIMEOUT(w.issues()->count() > 0, 10000);
+        const QString said = w.issues()->item(0)->text();
+        QVERIFY2(said.contains(QStringLiteral("&amp;")) && said.contains(QStringLiteral(":5:")),
+                 qPrintable(said));
+        QVERIFY(!said.contains(QStringLiteral("Expected '#'")));
+        save(test::windowScreenshot(w), QStringLiteral("first-hour-ampersand-explained"));
+        w.editor()->goTo(5, 1);
+        QTest::keyClick(w.editor(), Qt::Key_Period, Qt::ControlModifier);
+        QVERIFY(w.editor()->toPlainText().contains(QStringLiteral("1) &amp; box")));
+        QTRY_VERIFY_WITH_TIMEOUT(w.issues()->count() == 0, 10000);
+        QVERIFY(test::settle(w));
+        save(test::windowScreenshot(w), QStringLiteral("first-hour-ampersand-fixed"));
+    }
+};
+
+QTEST_MAIN(FirstHourTest)
+#include "first_hour_test.moc"
