@@ -137,6 +137,37 @@ class ManifestReader {
         return out;
     }
 
+    // Reference solutions are the instructor's: looked up in the instructor
+    // folder (instructorFolderFor), not beside the starter. A student's
+    // installation has none, which is no error; each name must still be a
+    // path inside a folder.
+    std::vector<std::filesystem::path> solutions(const QJsonObject& o) {
+        std::vector<std::filesystem::path> out;
+        const QJsonValue v = o.value("solutions");
+        if (v.isUndefined()) return out;
+        if (!v.isArray()) {
+            problem("/solutions", "must be a list of file names", "");
+            return out;
+        }
+        const QJsonArray list = v.toArray();
+        const std::filesystem::path from = instructorFolderFor(folder_, a_.id);
+        for (qsizetype i = 0; i < list.size(); ++i) {
+            const std::string at = "/solutions/" + std::to_string(i);
+            const std::string value = list[i].toString().toStdString();
+            if (!list[i].isString() || value.empty() ||
+                std::filesystem::path(value).is_absolute() ||
+                value.find("..") != std::string::npos) {
+                problem(at, "must be a file name inside the assignment's folder",
+                        "write it relative to the folder of manifest.json, without ..");
+                continue;
+            }
+            std::error_code ec;
+            if (!from.empty() && std::filesystem::is_regular_file(from / value, ec))
+                out.push_back(from / value);
+        }
+        return out;
+    }
+
     void assignment(const QJsonObject& o) {
         const auto schema = text(o, "", "schema", true);
         if (schema && *schema != kAssignmentSchema) {
@@ -163,7 +194,7 @@ class ManifestReader {
         if (auto instructions = text(o, "", "instructions", true))
             if (auto f = file(*instructions, "/instructions")) a_.instructions = *f;
         a_.starters = files(o, "starters", true);
-        a_.solutions = files(o, "solutions", false);
+        a_.solutions = solutions(o);
         if (auto due = text(o, "", "due", false)) {
             const QDateTime t = QDateTime::fromString(QString::fromStdString(*due), Qt::ISODate);
             if (!t.isValid() || t.timeSpec() != Qt::UTC)

@@ -41,6 +41,8 @@ struct Assignment {
     std::string title;
     std::filesystem::path instructions; // Markdown
     std::vector<std::filesystem::path> starters;
+    // The reference solutions that are here: only in an instructor's folder
+    // (instructorFolderFor), never in what a student installs.
     std::vector<std::filesystem::path> solutions;
     std::optional<std::string> due; // ISO 8601 UTC, "2026-12-14T23:59:00Z"
     LatePolicy late;
@@ -61,6 +63,14 @@ struct AssignmentLoad {
     std::optional<Assignment> assignment; // present exactly when there are no errors
     std::vector<scene::SceneDiagnostic> diagnostics;
 };
+
+// Where the reference solutions of the assignment in `folder` (id `id`) are:
+// $FUNCTIONLAB_INSTRUCTOR_DIR/ID, else the installed instructor part
+// (share/functionlab/instructor/ID, the CMake component "instructor"), else
+// `folder` itself when it is not the installed student courseware (the
+// source tree, an instructor's own assignment). Empty when there is none.
+std::filesystem::path instructorFolderFor(const std::filesystem::path& folder,
+                                          const std::string& id);
 
 // `folder` holds manifest.json.
 AssignmentLoad loadAssignment(const std::filesystem::path& folder);

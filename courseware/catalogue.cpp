@@ -4,6 +4,7 @@
 #include "scene/scene_reader.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace fl::courseware {
 namespace {
@@ -25,15 +26,49 @@ std::string titleOf(const scene::Scene& s, std::string fallback, std::string& de
 
 } // namespace
 
-std::filesystem::path coursewareFolder() {
+namespace {
+
+// share/functionlab/PART next to the running executable's bin/, if installed.
+std::filesystem::path installedPart(const char* part) {
     std::error_code ec;
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const auto installed = exe.parent_path() / ".." / "share" / "functionlab" / "courseware";
-        if (std::filesystem::is_directory(installed, ec))
-            return std::filesystem::weakly_canonical(installed, ec);
-    }
+    if (ec) return {};
+    const auto installed = exe.parent_path() / ".." / "share" / "functionlab" / part;
+    if (!std::filesystem::is_directory(installed, ec)) return {};
+    return std::filesystem::weakly_canonical(installed, ec);
+}
+
+bool isWithin(const std::filesystem::path& path, const std::filesystem::path& folder) {
+    if (folder.empty()) return false;
+    std::error_code ec;
+    const auto p = std::filesystem::weakly_canonical(path, ec);
+    const auto f = std::filesystem::weakly_canonical(folder, ec);
+    const auto [end, at] = std::mismatch(f.begin(), f.end(), p.begin(), p.end());
+    return end == f.end();
+}
+
+} // namespace
+
+std::filesystem::path coursewareFolder() {
+    if (auto installed = installedPart("courseware"); !installed.empty()) return installed;
     return FUNCTIONLAB_COURSEWARE_DIR;
+}
+
+bool isInsideCourseware(const std::filesystem::path& path) {
+    return isWithin(path, coursewareFolder());
+}
+
+std::filesystem::path instructorFolderFor(const std::filesystem::path& folder,
+                                          const std::string& id) {
+    std::error_code ec;
+    if (const char* dir = std::getenv("FUNCTIONLAB_INSTRUCTOR_DIR"); dir && *dir && !id.empty())
+        if (std::filesystem::is_directory(std::filesystem::path(dir) / id, ec))
+            return std::filesystem::path(dir) / id;
+    if (auto installed = installedPart("instructor"); !installed.empty() && !id.empty())
+        if (std::filesystem::is_directory(installed / id, ec)) return installed / id;
+    // A student's installed courseware never holds solutions: not looked in.
+    if (isWithin(folder, installedPart("courseware"))) return {};
+    return folder;
 }
 
 std::vector<ExampleScene> listExamples(const std::filesystem::path& folder) {

@@ -13,6 +13,9 @@ namespace fl::courseware {
 
 // The courseware folder (holding examples/ and assignments/).
 std::filesystem::path coursewareFolder();
+// Whether `path` lies in it: the course's own files, never a student's
+// working copy (the window saves those into the workspace instead).
+bool isInsideCourseware(const std::filesystem::path& path);
 
 struct ExampleScene {
     std::filesystem::path path;

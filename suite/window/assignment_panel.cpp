@@ -5,6 +5,7 @@
 #include "editor/code_editor.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
+#include "working_copy.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -181,8 +182,10 @@ void AssignmentPanel::attach(PanelContext& context) {
     context_ = &context;
     connect(this, &AssignmentPanel::locationActivated, this,
             [&context](int line, int column) { context.goTo(line, column); });
-    connect(this, &AssignmentPanel::starterChosen, this, [&context](const QString& path) {
-        if (context.keepChanges()) context.open(path);
+    connect(this, &AssignmentPanel::starterChosen, this, [this, &context](const QString& path) {
+        const courseware::Assignment* a = assignment();
+        if (a && context.keepChanges())
+            openWorkingCopy(context, path, QString::fromStdString(a->id));
     });
     context.fileMenu->addAction(tr("&Hand In…"), this, &AssignmentPanel::handInDialog);
 }

@@ -1,6 +1,7 @@
 #include "examples_dock.h"
 
 #include "plain_text.h"
+#include "working_copy.h"
 
 #include "courseware/catalogue.h"
 #include "examples.h"
@@ -26,7 +27,7 @@ ExamplesDock::ExamplesDock(QWidget* parent, const QString& folder)
 
 void ExamplesDock::attach(PanelContext& context) {
     connect(this, &ExamplesDock::exampleChosen, this, [&context](const QString& path) {
-        if (context.keepChanges()) context.open(path);
+        if (context.keepChanges()) openWorkingCopy(context, path, QStringLiteral("examples"));
     });
 }
 

@@ -30,10 +30,10 @@
 #include "viewer/scene_widget.h"
 #include "viewpoint_box.h"
 #include "window_placement.h"
+#include "working_copy.h"
 
 #include <QCloseEvent>
 #include <QCoreApplication>
-#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
@@ -295,12 +295,12 @@ bool MainWindow::saveTo(const QString& path, QString* error) {
 }
 
 bool MainWindow::save() {
-    return path_.isEmpty() ? saveAs() : saveTo(path_);
+    return saveNeedsAPlace(path_) ? saveAs() : saveTo(path_); // never into the courseware
 }
 
 bool MainWindow::saveAs() {
     const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save scene"), path_.isEmpty() ? QDir::homePath() : path_,
+        this, tr("Save scene"), saveAsStartFor(path_),
         tr("X3D scenes (*.x3d);;ClassicVRML (*.x3dv);;VRML97 (*.wrl)"));
     return !path.isEmpty() && saveTo(path);
 }

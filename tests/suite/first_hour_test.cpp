@@ -6,6 +6,7 @@
 #include "editor/code_editor.h"
 #include "editor/find_bar.h"
 #include "suite/window/main_window.h"
+#include "suite/window/working_copy.h"
 #include "viewer/scene_player.h"
 #include "window_screenshot.h"
 #include "window_settle.h"
@@ -70,7 +71,7 @@ class FirstHourTest : public QObject {
         const QList<QKeySequence> bound = boundKeys(w);
         const QString text = guide();
         QRegularExpression key(
-            QStringLiteral("\\b(Ctrl\\+(?:Shift\\+)?(?:[A-Z0-9.]|Space|Return)\\b)"));
+            QStringLiteral("\\b(Ctrl\\+(?:Shift\\+)?(?:[A-Z0-9.]|Space|Return))(?![A-Za-z0-9])"));
         int named = 0;
         for (auto m = key.globalMatch(text); m.hasNext();) {
             const QString k = m.next().captured(1);
@@ -141,6 +142,49 @@ class FirstHourTest : public QObject {
         w.view()->setFocus();
         QTest::keyClick(w.view(), Qt::Key_Space, Qt::ControlModifier);
         QTRY_VERIFY(w.player()->playing());
+    }
+
+    void anExampleOpensAsTheStudentsOwnCopy() {
+        QVERIFY(qEnvironmentVariableIsSet("FUNCTIONLAB_WORKSPACE"));
+        const QString workspace = qEnvironmentVariable("FUNCTIONLAB_WORKSPACE");
+        QDir(workspace).removeRecursively();
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QListWidget* examples = w.examples();
+        QListWidgetItem* melon = nullptr;
+        for (int i = 0; i < examples->count(); ++i)
+            if (examples->item(i)->text() == QStringLiteral("Watermelon"))
+                melon = examples->item(i);
+        QVERIFY(melon);
+        const QString course = melon->data(Qt::UserRole).toString();
+        QFile original(course);
+        QVERIFY(original.open(QIODevice::ReadOnly));
+        const QByteArray before = original.readAll();
+        Q_EMIT examples->itemActivated(melon);
+        QTRY_COMPARE(w.currentPath(),
+                     QDir(workspace).filePath(QStringLiteral("examples/watermelon.x3d")));
+        QVERIFY(test::settle(w));
+        // Ctrl+S writes the copy; the course's file is as it was.
+        w.editor()->appendPlainText(QStringLiteral("<!-- mine -->"));
+        QAction* saveAction = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->shortcuts().contains(QKeySequence(QKeySequence::Save))) saveAction = a;
+        QVERIFY(saveAction);
+        saveAction->trigger();
+        QFile copy(w.currentPath());
+        QVERIFY(copy.open(QIODevice::ReadOnly));
+        QVERIFY(copy.readAll().contains("<!-- mine -->"));
+        QFile again(course);
+        QVERIFY(again.open(QIODevice::ReadOnly));
+        QCOMPARE(again.readAll(), before);
+        save(test::windowScreenshot(w), QStringLiteral("first-hour-own-copy"));
+        // A course file opened by hand: Save asks where, starting in the workspace.
+        QVERIFY(suite::saveNeedsAPlace(course));
+        QVERIFY(suite::saveAsStartFor(course).startsWith(workspace));
+        QVERIFY(!suite::saveNeedsAPlace(w.currentPath()));
     }
 
     void anAmpersandInAnXmlSceneSaysWhatToWriteAndIsFixedWithOneKey() {
