@@ -57,6 +57,7 @@ std::optional<Pick> onTriangles(const mesh::ShapeMesh& s, const Ray& ray) {
         return place.point({v[0], v[1], v[2]});
     };
     for (const mesh::Triangle& tri : s.mesh.triangles) {
+        if (!mesh::isDrawnTriangle(s.mesh, tri)) continue;
         const Vec3 a = P(tri[0]), b = P(tri[1]), c = P(tri[2]);
         const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
             e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
@@ -121,7 +122,7 @@ std::optional<Pick> pick(const mesh::SceneMeshes& meshes, const Ray& ray) {
     if (far * 2.3e-16 > 1e-3 * std::max(reach, 1e-6)) return best;
     for (std::size_t i = 0; i < meshes.shapes.size(); ++i) {
         const mesh::ShapeMesh& s = meshes.shapes[i];
-        if (!s.error.empty()) continue;
+        if (!s.error.empty() || !mesh::isDrawn(s)) continue; // what is not seen is not hit
         std::optional<Pick> p = onFunction(s, ray);
         if (!p) p = onTriangles(s, ray);
         if (p && (!best || p->distance < best->distance)) {

@@ -479,6 +479,25 @@ std::vector<formula::ParameterInfo> sceneParameters(const scene::Scene& scene) {
     return out;
 }
 
+namespace {
+// An alpha that rounds to nothing in an 8-bit framebuffer.
+constexpr float kInvisibleAlpha = 0.5f / 255.0f;
+} // namespace
+
+bool isDrawnTriangle(const Mesh& mesh, const Triangle& t) {
+    if (mesh.colours.size() != mesh.positions.size()) return true; // no colours: opaque grey
+    for (std::uint32_t i : t)
+        if (i < mesh.colours.size() && mesh.colours[i][3] > kInvisibleAlpha) return true;
+    return false;
+}
+
+bool isDrawn(const ShapeMesh& shape) {
+    const Mesh& m = shape.mesh;
+    if (m.colours.size() != m.positions.size() || m.colours.empty()) return true;
+    return std::any_of(m.colours.begin(), m.colours.end(),
+                       [](const auto& c) { return c[3] > kInvisibleAlpha; });
+}
+
 Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive) {
     Mesh all;
     all.primitive = primitive;

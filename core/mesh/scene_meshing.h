@@ -174,6 +174,14 @@ Box3 pointBounds(const std::vector<Vec3f>& points,
 // none when the placement cannot be undone (a zero scale).
 std::optional<field::Vec3> shapeCoordinates(const ShapeMesh& shape, const field::Vec3& point);
 
+// Whether any of a shape is drawn: not when every vertex is fully
+// transparent (transparency 1: the fan's wind, the shark's water). What is
+// not drawn catches no click, no TouchSensor and no error figure (issue 29
+// §4), as a student would expect of what they cannot see.
+bool isDrawn(const ShapeMesh& shape);
+// The same for one triangle: its three vertices fully transparent.
+bool isDrawnTriangle(const Mesh& mesh, const Triangle& triangle);
+
 // All shapes' meshes of one kind (triangles, or point clouds) as one.
 Mesh mergeMeshes(const std::vector<ShapeMesh>& shapes, Primitive primitive = Primitive::Triangles);
 

@@ -1,13 +1,15 @@
 #include "screen_error_meter.h"
 
 #include "mesh/mesh_error.h"
+#include "mesh/scene_meshing.h"
 
 namespace fl::suite {
 
 namespace {
 
 bool measurable(const mesh::ShapeMesh& s) {
-    return s.field && s.error.empty() && !s.mesh.isPointCloud() && s.mesh.triangleCount() > 0;
+    return s.field && s.error.empty() && !s.mesh.isPointCloud() && s.mesh.triangleCount() > 0 &&
+           mesh::isDrawn(s); // an invisible shape's error is no one's concern
 }
 
 // How far the focused function shape — else the largest — is from its true surface.

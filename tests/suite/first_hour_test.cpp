@@ -7,7 +7,9 @@
 #include "editor/find_bar.h"
 #include "suite/window/main_window.h"
 #include "suite/window/working_copy.h"
+#include "viewer/picking.h"
 #include "viewer/scene_player.h"
+#include "viewer/scene_widget.h"
 #include "window_screenshot.h"
 #include "window_settle.h"
 
@@ -185,6 +187,39 @@ class FirstHourTest : public QObject {
         QVERIFY(suite::saveNeedsAPlace(course));
         QVERIFY(suite::saveAsStartFor(course).startsWith(workspace));
         QVERIFY(!suite::saveNeedsAPlace(w.currentPath()));
+    }
+
+    void theFansInvisibleWindCatchesNoClick() {
+        // Issue 29 §4: from the default view, the wind cone (transparency 1)
+        // lay in front of the blades and took every click.
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/fan.x3d")));
+        QVERIFY(test::settle(w));
+        const auto meshes = w.view()->meshes();
+        int onWind = 0, onFan = 0;
+        QPoint sum;
+        for (int y = 0; y < w.view()->height(); y += 6)
+            for (int x = 0; x < w.view()->width(); x += 6) {
+                const auto p =
+                    viewer::pick(*meshes, viewer::rayThroughPixel(w.view()->pose(),
+                                                                  w.view()->size(), QPointF(x, y)));
+                if (!p) continue;
+                if (p->shape.find("WIND") != std::string::npos) ++onWind;
+                if (!p->touchSensors.empty()) {
+                    ++onFan;
+                    sum += QPoint(x, y);
+                }
+            }
+        QCOMPARE(onWind, 0);
+        QVERIFY(onFan > 0);
+        // A click in the middle of what shows the fan starts it.
+        QTest::mouseClick(w.view()->renderWindow(), Qt::LeftButton, {}, sum / onFan);
+        QTRY_VERIFY_WITH_TIMEOUT(w.player()->inputsKept() > 0, 3000);
+        save(test::windowScreenshot(w), QStringLiteral("first-hour-fan-clicked"));
     }
 
     void anAmpersandInAnXmlSceneSaysWhatToWriteAndIsFixedWithOneKey() {

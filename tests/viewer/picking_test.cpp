@@ -135,3 +135,29 @@ TEST(Picking, DisplacedSurfacesArePickedWhereTheyAreShown) {
     EXPECT_TRUE(p->onFunction);
     EXPECT_NEAR(p->point[2], std::sqrt(0.35), 1e-9); // 0.35 - z^2 = 0
 }
+
+// Issue 29 §4: what is not drawn (transparency 1) catches no click, function
+// shape or standard; a shape partly seen is hit only where it is seen.
+TEST(Picking, WhatIsNotDrawnIsNotHit) {
+    const Picked s = load(R"x(
+        DEF WIND FShape { geometry FGeometry { definition "4 - x*x - y*y - z*z" resolution 12
+                                                 domainMin -3 -3 -3 domainMax 3 3 3 }
+                          appearance Appearance { material Material { transparency 1 } } }
+        DEF GLASS Shape { geometry Box { size 3 3 3 }
+                          appearance Appearance { material Material { transparency 1 } } }
+        DEF BLADE FShape { geometry FGeometry { definition "0.25 - x*x - y*y - z*z" resolution 12 } })x");
+    ASSERT_EQ(s.meshes.shapes.size(), 3u);
+    EXPECT_FALSE(mesh::isDrawn(s.meshes.shapes[0]));
+    EXPECT_FALSE(mesh::isDrawn(s.meshes.shapes[1]));
+    EXPECT_TRUE(mesh::isDrawn(s.meshes.shapes[2]));
+    const auto p = viewer::pick(s.meshes, {{0, 0, 10}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->shapeIndex, 2u) << p->shape; // through the wind and the glass
+    EXPECT_NEAR(p->point[2], 0.5, 1e-6);
+    // Nearly transparent is still drawn: it is hit.
+    const Picked faint = load(R"x(Shape { geometry Box { size 3 3 3 }
+        appearance Appearance { material Material { transparency 0.95 } } })x");
+    const auto q = viewer::pick(faint.meshes, {{0, 0, 10}, QVector3D(0, 0, -1)});
+    ASSERT_TRUE(q);
+    EXPECT_NEAR(q->point[2], 1.5, 1e-6);
+}
