@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <tuple>
 
 namespace fl::courseware {
 namespace {
@@ -98,6 +99,24 @@ std::vector<AssignmentLoad> listAssignments(const std::filesystem::path& folder)
     std::vector<AssignmentLoad> out;
     for (const auto& f : folders)
         out.push_back(loadAssignment(f));
+    // The course's order: "Lab 1", "Lab 2" … by their numbers (not their
+    // folders' names), then the others (the final assignment) by title;
+    // one that does not load, last.
+    auto key = [](const AssignmentLoad& a) {
+        if (!a.assignment) return std::tuple(2, 0L, std::string());
+        const std::string& title = a.assignment->title;
+        long number = 0;
+        if (title.rfind("Lab ", 0) == 0) {
+            const char* begin = title.c_str() + 4;
+            char* end = nullptr;
+            number = std::strtol(begin, &end, 10);
+            if (end != begin) return std::tuple(0, number, title);
+        }
+        return std::tuple(1, 0L, title);
+    };
+    std::stable_sort(out.begin(), out.end(), [&](const AssignmentLoad& a, const AssignmentLoad& b) {
+        return key(a) < key(b);
+    });
     return out;
 }
 
