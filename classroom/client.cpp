@@ -45,6 +45,10 @@ void ClassroomClient::join(const JoinOptions& options) {
     leaving_ = false;
     token_.clear();
     version_ = -1;
+    everJoined_ = false;
+    failedFirstAttempts_ = 0;
+    stopReason_.clear();
+    lastNetworkError_.clear();
     backoffMs_ = options.initialBackoffMs;
     open();
 }
@@ -69,6 +73,8 @@ void ClassroomClient::open() {
         send(MessageType::Join, j);
     });
     connect(socket_, &QWebSocket::textMessageReceived, this, &ClassroomClient::received);
+    connect(socket_, qOverload<QAbstractSocket::SocketError>(&QWebSocket::error), this,
+            [this](QAbstractSocket::SocketError) { lastNetworkError_ = socket_->errorString(); });
     connect(socket_, &QWebSocket::disconnected, this, &ClassroomClient::onDisconnected);
     setState(token_.isEmpty() ? State::Connecting : State::Reconnecting);
     socket_->open(options_.url);
@@ -82,12 +88,28 @@ void ClassroomClient::leave() {
     setState(State::Disconnected);
 }
 
+void ClassroomClient::stop(const QString& reason) {
+    stopReason_ = reason;
+    leaving_ = true;
+    reconnect_.stop();
+    heartbeat_.stop();
+    if (socket_) socket_->close();
+    setState(State::Disconnected);
+}
+
 void ClassroomClient::onDisconnected() {
     heartbeat_.stop();
     if (leaving_ || !options_.reconnect) {
         setState(State::Disconnected);
         return;
     }
+    // A server never reached (a wrong address, nothing listening) is not
+    // tried for ever: a class that was joined is.
+    if (!everJoined_ && ++failedFirstAttempts_ >= kFirstAttempts)
+        return stop(tr("%1 cannot be reached (%2); check the address and that the class's "
+                       "server runs")
+                        .arg(options_.url.toString(),
+                             lastNetworkError_.isEmpty() ? tr("no answer") : lastNetworkError_));
     setState(State::Reconnecting);
     // Backoff with jitter, so a class whose server restarts does not come
     // back all in the same millisecond.
@@ -181,6 +203,8 @@ void ClassroomClient::onWelcome(const WelcomeMessage& w) {
     frozen_ = w.frozen;
     anonymous_ = w.anonymous;
     backoffMs_ = options_.initialBackoffMs;
+    everJoined_ = true;
+    lastNetworkError_.clear();
     const QString scene = QString::fromStdString(w.scene);
     const bool changed = w.version != version_ || scene != scene_;
     version_ = w.version;
@@ -233,8 +257,8 @@ void ClassroomClient::onError(const ErrorMessage& m) {
     case ErrorCode::BadName:
     case ErrorCode::TooManyJoins:
     case ErrorCode::ClassFull:
-        leaving_ = true;
-        break;
+        emit errorReceived(m.code, QString::fromStdString(m.message));
+        return stop(QString::fromStdString(m.message));
     case ErrorCode::Malformed:
     case ErrorCode::UnknownType:
     case ErrorCode::NotJoined:

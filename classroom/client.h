@@ -4,7 +4,9 @@
 // holder, and hands each change on as a signal. It sends heartbeats (they
 // renew its lease), reconnects with backoff (doubling, with jitter, capped)
 // and resumes its seat — and its lock, within the grace — with the token of
-// its welcome and the last version it has. An edit refused because another
+// its welcome and the last version it has. A join that cannot succeed stops
+// and says why (stopReason): a server not reached in kFirstAttempts tries,
+// a class code, key or name the server refuses. An edit refused because another
 // member holds the lock (or because the scene moved on) is kept as the
 // pending edit; pendingEditCanBeApplied says when the lock is free, and
 // reofferPendingEdit sends it again on the newest version.
@@ -74,7 +76,14 @@ class ClassroomClient : public QObject {
     void takeSnapshot(const QString& label);
     void setAnonymous(bool anonymous);
 
+    // Tries to reach a server before a first join is given up.
+    static constexpr int kFirstAttempts = 3;
+
     State state() const { return state_; }
+    // Why the client stopped without being asked to (empty otherwise), and
+    // the last network error while connecting or reconnecting.
+    const QString& stopReason() const { return stopReason_; }
+    const QString& lastNetworkError() const { return lastNetworkError_; }
     qint64 version() const { return version_; }
     const QString& scene() const { return scene_; }
     qint64 memberId() const { return memberId_; }
@@ -119,6 +128,7 @@ class ClassroomClient : public QObject {
     void onLock(const std::optional<LockHolderEntry>& holder);
     void onMembers(const std::vector<MemberEntry>& list);
     void onDisconnected();
+    void stop(const QString& reason); // gives up: Disconnected, with why
     void setState(State state);
 
     QWebSocket* socket_ = nullptr;
@@ -137,8 +147,12 @@ class ClassroomClient : public QObject {
     bool anonymous_ = false;
     QList<Member> members_;
     std::optional<Member> lockHolder_;
-    QString lastEdit_;    // the newest edit sent and not yet seen applied
-    QString pendingEdit_; // refused under a lock or as stale: kept for its author
+    QString lastEdit_;        // the newest edit sent and not yet seen applied
+    QString pendingEdit_;     // refused under a lock or as stale: kept for its author
+    bool everJoined_ = false; // since join(): a lost class is reconnected, a wrong address not
+    int failedFirstAttempts_ = 0;
+    QString stopReason_;
+    QString lastNetworkError_;
 };
 
 } // namespace fl::classroom

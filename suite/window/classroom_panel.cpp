@@ -101,8 +101,11 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
     roleRow->addWidget(join_);
     form->addRow(tr("Role:"), roleRow);
     layout->addLayout(form);
+    state_->setWordWrap(true); // says why a join stopped
     layout->addWidget(state_);
-    layout->addWidget(members_, 1);
+    // A few members in view, the rest scrolled: the room goes to the chat.
+    members_->setMaximumHeight(members_->fontMetrics().lineSpacing() * 7);
+    layout->addWidget(members_);
     auto* lockRow = new QHBoxLayout;
     lockRow->addWidget(lock_, 1);
     lockRow->addWidget(send_);
@@ -166,7 +169,8 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
             say(tr("saved %1").arg(path));
     });
     chat_->setWordWrap(true);
-    layout->addWidget(chat_, 2);
+    chat_->setMinimumHeight(chat_->fontMetrics().lineSpacing() * 8);
+    layout->addWidget(chat_, 1);
     say_->setPlaceholderText(tr("chat, or a command: /help"));
     layout->addWidget(say_);
     auto* instructorRow = new QHBoxLayout(instructor_);
@@ -449,10 +453,14 @@ void ClassroomPanel::refreshLock() {
 void ClassroomPanel::refreshState() {
     const auto s = client_->state();
     const bool in = s == ClassroomClient::State::Joined;
-    state_->setText(s == ClassroomClient::State::Disconnected ? tr("not in a class")
+    const QString why = visibleText(client_->stopReason());
+    const QString lost = visibleText(client_->lastNetworkError());
+    state_->setText(s == ClassroomClient::State::Disconnected
+                        ? (why.isEmpty() ? tr("not in a class") : tr("not in a class: %1").arg(why))
                     : s == ClassroomClient::State::Connecting ? tr("connecting…")
                     : s == ClassroomClient::State::Reconnecting
-                        ? tr("connection lost: reconnecting…")
+                        ? (lost.isEmpty() ? tr("connection lost: reconnecting…")
+                                          : tr("connection lost (%1): reconnecting…").arg(lost))
                         : tr("in class %1 as %2, version %3")
                               .arg(visibleText(code_->text()), visibleText(client_->shownName()))
                               .arg(client_->version()));

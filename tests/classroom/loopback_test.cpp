@@ -94,7 +94,29 @@ TEST_F(LoopbackTest, WrongClassCodeGetsAnError) {
     QSignalSpy errors(&eve, &ClassroomClient::errorReceived);
     ASSERT_TRUE(QTest::qWaitFor([&] { return errors.count() > 0; }, kWaitMs));
     EXPECT_EQ(errors.at(0).at(0).value<ErrorCode>(), ErrorCode::WrongClass);
-    EXPECT_NE(eve.state(), ClassroomClient::State::Joined);
+    // It stops, and says why (issue 29 §5: it said "connecting…" for ever).
+    ASSERT_TRUE(QTest::qWaitFor([&] { return eve.state() == ClassroomClient::State::Disconnected; },
+                                kWaitMs));
+    EXPECT_FALSE(eve.stopReason().isEmpty());
+    EXPECT_TRUE(eve.stopReason().contains("class")) << eve.stopReason().toStdString();
+}
+
+TEST_F(LoopbackTest, AServerThatCannotBeReachedIsGivenUpWithTheReason) {
+    // Nothing listens on this port once the server is closed.
+    const QUrl nowhere = url;
+    server.reset();
+    ClassroomClient lost;
+    ClassroomClient::JoinOptions o;
+    o.url = nowhere;
+    o.classCode = "C1";
+    o.name = "Ana";
+    o.initialBackoffMs = 20;
+    o.maxBackoffMs = 50;
+    lost.join(o);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return lost.state() == ClassroomClient::State::Disconnected; }, kWaitMs));
+    EXPECT_TRUE(lost.stopReason().contains("cannot be reached")) << lost.stopReason().toStdString();
+    EXPECT_TRUE(lost.stopReason().contains(nowhere.toString()));
 }
 
 TEST_F(LoopbackTest, ALockedRefusalKeepsTheEditToOfferAgain) {
