@@ -17,6 +17,8 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
+#include <QScreen>
+#include <QSignalBlocker>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTextBrowser>
@@ -24,6 +26,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
+#include <utility>
 
 namespace fl::suite {
 namespace {
@@ -43,7 +47,8 @@ GradingPanel::GradingPanel(QWidget* parent)
     : Panel(tr("Grading"), QStringLiteral("grading"), Qt::BottomDockWidgetArea, parent),
       assignments_(new QComboBox), table_(new QTableWidget), evidence_(new OfflineTextBrowser),
       rubric_(new QFormLayout), rubricBox_(new QWidget), override_(new QDoubleSpinBox),
-      overrideWhy_(new QLineEdit), summary_(plainLabel()), integrity_(plainLabel()) {
+      overrideWhy_(new QLineEdit), overrideStatus_(plainLabel()), summary_(plainLabel()),
+      integrity_(plainLabel()) {
     auto* box = new QWidget;
     auto* layout = new QVBoxLayout(box);
     auto* top = new QHBoxLayout;
@@ -72,6 +77,8 @@ GradingPanel::GradingPanel(QWidget* parent)
     auto* setOverride = new QPushButton(tr("Set"));
     overrideRow->addWidget(setOverride);
     detailsLayout->addLayout(overrideRow);
+    overrideStatus_->setWordWrap(true);
+    detailsLayout->addWidget(overrideStatus_);
     auto* open = new QPushButton(tr("Open the submission in the viewer"));
     detailsLayout->addWidget(open);
     split->addWidget(details);
@@ -92,6 +99,7 @@ GradingPanel::GradingPanel(QWidget* parent)
     });
     connect(save, &QPushButton::clicked, this, [this] { saveManualScores(); });
     connect(setOverride, &QPushButton::clicked, this, [this] { saveOverride(); });
+    connect(overrideWhy_, &QLineEdit::textEdited, overrideStatus_, &QLabel::clear);
     connect(open, &QPushButton::clicked, this, [this] {
         if (const grading::GradeRecord* g = gradeOf(student_); g && !g->path.empty())
             Q_EMIT openSubmission(QString::fromStdString(g->path));
@@ -161,6 +169,10 @@ const grading::GradeRecord* GradingPanel::gradeOf(const QString& student) const 
 
 void GradingPanel::fillTable() {
     if (!book_) return;
+    // Rebuilding the rows is no choice of the grader's: the student shown
+    // stays selected (selectStudent below).
+    const QSignalBlocker quiet(table_->selectionModel());
+    const QString keep = std::exchange(student_, QString());
     const std::string id = assignments_->currentData().toString().toStdString();
     for (const grading::AssignmentRecord& a : book_->assignments())
         if (a.id == id) record_ = a;
@@ -226,7 +238,7 @@ void GradingPanel::fillTable() {
             .arg(grades_.size())
             .arg(grades_.empty() ? QStringLiteral("–") : number(sum / double(grades_.size())))
             .arg(number(record_.maxAutomatic + record_.maxManual)));
-    if (!student_.isEmpty()) selectStudent(student_);
+    if (!keep.isEmpty()) selectStudent(keep);
     showStudent();
 }
 
@@ -318,8 +330,15 @@ void GradingPanel::saveManualScores() {
 
 bool GradingPanel::saveOverride(QString* error) {
     const grading::GradeRecord* g = gradeOf(student_);
-    if (!g || !book_) return false;
+    if (!g || !book_) {
+        overrideStatus_->setText(tr("Choose a student first."));
+        if (error) *error = overrideStatus_->text();
+        return false;
+    }
     if (overrideWhy_->text().trimmed().isEmpty()) {
+        // Said beside the field, not only to the caller (it was refused silently).
+        overrideStatus_->setText(
+            tr("Not set: an override needs a reason, kept with it in the gradebook's log."));
         if (error) *error = tr("an override needs a reason");
         overrideWhy_->setFocus();
         return false;
@@ -327,6 +346,9 @@ bool GradingPanel::saveOverride(QString* error) {
     book_->addOverride(g->student, g->assignment, override_->value(), graderName().toStdString(),
                        overrideWhy_->text().toStdString());
     overrideWhy_->clear();
+    overrideStatus_->setText(
+        tr("Override %1 set for %2.")
+            .arg(number(override_->value()), QString::fromStdString(g->student)));
     fillTable();
     signAndVerify(true);
     return true;
@@ -369,6 +391,21 @@ void GradingPanel::gradebookDialog() {
     if (!openGradebook(path, {}, &why)) {
         context_->problem(tr("Cannot open the gradebook %1: %2").arg(path, why));
         return;
+    }
+    showBeside();
+}
+
+void GradingPanel::showBeside() {
+    // A class's table wants room the window's docks do not have (docked, it
+    // also grew the window past a laptop's screen): a window of its own,
+    // most of the screen, over the main window.
+    if (!isFloating()) {
+        setFloating(true);
+        const QRect screen = (context_ && context_->window->screen())
+                                 ? context_->window->screen()->availableGeometry()
+                                 : QRect(0, 0, 1280, 800);
+        resize(screen.width() * 3 / 4, screen.height() * 3 / 4);
+        move(screen.center() - rect().center());
     }
     show();
     raise();

@@ -46,6 +46,11 @@ class GradingPanel : public Panel {
     QLineEdit* rubricComment(const QString& item) const;
     QDoubleSpinBox* overrideScore() const { return override_; }
     QLineEdit* overrideReason() const { return overrideWhy_; }
+    // What the last override said (refused for want of a reason, or set).
+    QLabel* overrideStatus() const { return overrideStatus_; }
+    // Shows the panel as a window of its own over the main window, most of
+    // the screen (Course → Open Gradebook does, once a gradebook is open).
+    void showBeside();
     // Writes what the editors hold for the selected student.
     void saveManualScores();
     bool saveOverride(QString* error = nullptr);
@@ -81,6 +86,7 @@ class GradingPanel : public Panel {
     QWidget* rubricBox_;
     QDoubleSpinBox* override_;
     QLineEdit* overrideWhy_;
+    QLabel* overrideStatus_;
     QLabel* summary_;
     QLabel* integrity_;
     struct RubricEditor {

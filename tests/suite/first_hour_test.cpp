@@ -3,8 +3,11 @@
 // editor's while it has focus, every menu item it names exists — and the
 // `&` Lab 1 teaches, typed into an XML scene, is explained where it was
 // written and fixed with one key. Screenshots are saved to look at.
+#include "courseware/catalogue.h"
 #include "editor/code_editor.h"
 #include "editor/find_bar.h"
+#include "grading/gradebook.h"
+#include "suite/window/grading_panel.h"
 #include "suite/window/main_window.h"
 #include "suite/window/working_copy.h"
 #include "viewer/picking.h"
@@ -220,6 +223,36 @@ class FirstHourTest : public QObject {
         QTest::mouseClick(w.view()->renderWindow(), Qt::LeftButton, {}, sum / onFan);
         QTRY_VERIFY_WITH_TIMEOUT(w.player()->inputsKept() > 0, 3000);
         save(test::windowScreenshot(w), QStringLiteral("first-hour-fan-clicked"));
+    }
+
+    void theGradingPanelOpensBesideTheWindowWithoutGrowingIt() {
+        // Issue 29 §6: docked, it grew the window from 800 to 879 px.
+        const QString dir = QDir::temp().filePath(QStringLiteral("functionlab-first-hour-grades"));
+        QDir(dir).removeRecursively();
+        QDir().mkpath(dir);
+        const QString book = dir + QStringLiteral("/course.sqlite");
+        {
+            const auto lab = courseware::findAssignment("implicit-shapes");
+            QVERIFY(lab.assignment);
+            grading::Gradebook g(book.toStdString());
+            g.importRoster("id,name\nalice,Alice Smith\n");
+            g.registerAssignment(lab.assignment->record());
+        }
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::settle(w));
+        const QSize before = w.size();
+        QString why;
+        QVERIFY2(w.gradingPanel()->openGradebook(book, {}, &why), qPrintable(why));
+        w.gradingPanel()->showBeside();
+        QTest::qWait(200);
+        QCOMPARE(w.size(), before);
+        QVERIFY(w.gradingPanel()->isFloating());
+        QVERIFY(w.gradingPanel()->width() >= 800 && w.gradingPanel()->height() >= 500);
+        save(w.gradingPanel()->grab().toImage(), QStringLiteral("first-hour-grading-beside"));
     }
 
     void anAmpersandInAnXmlSceneSaysWhatToWriteAndIsFixedWithOneKey() {

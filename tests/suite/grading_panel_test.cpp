@@ -73,6 +73,10 @@ class GradingPanelTest : public QObject {
         panel.rubricComment(QStringLiteral("fantasy"))->setText(QStringLiteral("a lovely world"));
         panel.saveManualScores();
         QCOMPARE(t->item(0, t->columnCount() - 1)->text(), QStringLiteral("112"));
+        // Saving keeps the grader's place (issue 29 §6: it cleared the selection).
+        QCOMPARE(panel.selectedStudent(), QStringLiteral("alice"));
+        QCOMPARE(t->selectionModel()->selectedRows().size(), 1);
+        QCOMPARE(t->selectionModel()->selectedRows().front().row(), 0);
         // Kept in the gradebook: a second panel reads it back.
         suite::GradingPanel again;
         QVERIFY(again.openGradebook(path_));
@@ -85,9 +89,13 @@ class GradingPanelTest : public QObject {
         panel.overrideScore()->setValue(55);
         QVERIFY(!panel.saveOverride(&error));
         QVERIFY(error.contains(QStringLiteral("reason")));
+        // Said in the panel too, where the grader looks (it was silent).
+        QVERIFY(panel.overrideStatus()->text().contains(QStringLiteral("reason")));
         panel.overrideReason()->setText(QStringLiteral("talked it through"));
         QVERIFY(panel.saveOverride());
         QCOMPARE(t->item(1, t->columnCount() - 1)->text(), QStringLiteral("55"));
+        QCOMPARE(panel.selectedStudent(), QStringLiteral("bob"));
+        QVERIFY(panel.overrideStatus()->text().contains(QStringLiteral("55")));
         QVERIFY2(panel.integrityStatus()->text().startsWith(QStringLiteral("Intact")),
                  qPrintable(panel.integrityStatus()->text()));
         const QString csv = QFileInfo(path_).path() + QStringLiteral("/grades.csv");
