@@ -38,7 +38,6 @@
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QToolBar>
@@ -254,6 +253,7 @@ void MainWindow::setPath(const QString& path) {
 void MainWindow::newScene() {
     setPath({});
     firstFrameOfScene_ = true;
+    player_->seek(0);
     editor_->setPlainText(newSceneText());
     editor_->document()->setModified(false);
     parser_->parseNow();
@@ -275,7 +275,7 @@ bool MainWindow::openFile(const QString& path, QString* error) {
     recentMenu_->add(path);
     parser_->setText(editor_->toPlainText(), path_);
     parser_->parseNow();
-    QSettings().setValue(QStringLiteral("file/last"), path);
+    player_->seek(0); // a scene opened starts at its beginning
     return true;
 }
 

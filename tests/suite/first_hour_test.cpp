@@ -225,6 +225,23 @@ class FirstHourTest : public QObject {
         save(test::windowScreenshot(w), QStringLiteral("first-hour-fan-clicked"));
     }
 
+    void aSceneOpenedStartsAtTimeZero() {
+        // Issue 29 §7: t went on from the last scene's.
+        suite::MainWindow w;
+        w.setPromptsEnabled(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/bouncing_sphere.x3d")));
+        QVERIFY(test::settle(w));
+        w.player()->seek(0.7);
+        QVERIFY(w.player()->sceneSeconds() > 0.5);
+        QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/clock.x3d")));
+        QVERIFY(test::settle(w));
+        QVERIFY2(w.player()->sceneSeconds() < 0.1,
+                 qPrintable(QString::number(w.player()->sceneSeconds())));
+    }
+
     void theGradingPanelOpensBesideTheWindowWithoutGrowingIt() {
         // Issue 29 §6: docked, it grew the window from 800 to 879 px.
         const QString dir = QDir::temp().filePath(QStringLiteral("functionlab-first-hour-grades"));
