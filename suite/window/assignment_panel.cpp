@@ -192,42 +192,45 @@ void AssignmentPanel::attach(PanelContext& context) {
 
 void AssignmentPanel::handInDialog() {
     PanelContext& c = *context_;
+    // Checked first: what cannot be handed in is said before any dialog.
+    if (!readyToHandIn()) return;
+    const QString path = c.path();
+    const QString name = QStringLiteral("%1-%2").arg(QFileInfo(path).completeBaseName(),
+                                                     QString::fromStdString(assignment()->id));
+    // The submission's own folder, a new one: typed as a name, made here.
+    const QString folder =
+        QFileDialog::getSaveFileName(c.window, tr("Hand in: a new folder for your submission"),
+                                     QDir(QFileInfo(path).path()).filePath(name), QString(),
+                                     nullptr, QFileDialog::DontConfirmOverwrite);
+    if (folder.isEmpty()) return;
+    if (handIn(folder) && c.prompts())
+        informPlainly(c.window, tr("Handed in"),
+                      tr("Your submission is in %1.\n%2").arg(folder, c.status->currentMessage()));
+}
+
+bool AssignmentPanel::readyToHandIn() {
+    PanelContext& c = *context_;
     if (!assignment()) {
         c.problem(tr("Choose the assignment in the Assignment panel first."));
-        return;
+        return false;
     }
-    const QString path = c.path();
-    const QString parent = QFileDialog::getExistingDirectory(
-        c.window, tr("Hand in: where to put the submission"),
-        path.isEmpty() ? QDir::homePath() : QFileInfo(path).path());
-    if (parent.isEmpty()) return;
-    const QString name =
-        QStringLiteral("%1-%2")
-            .arg(QFileInfo(path.isEmpty() ? QStringLiteral("scene") : path).completeBaseName())
-            .arg(QString::fromStdString(assignment()->id));
-    if (handIn(QDir(parent).filePath(name)) && c.prompts())
-        informPlainly(c.window, tr("Handed in"),
-                      tr("Your submission is in %1.\n%2")
-                          .arg(QDir(parent).filePath(name), c.status->currentMessage()));
+    if (c.path().isEmpty()) {
+        c.problem(tr("Save the scene first: a submission is a scene file and what it uses."));
+        return false;
+    }
+    if (!c.scene() || !c.textParses()) {
+        c.problem(tr("The scene has errors: fix them (see Issues) before handing in."));
+        return false;
+    }
+    return true;
 }
 
 bool AssignmentPanel::handIn(const QString& folder) {
     PanelContext& c = *context_;
+    if (!readyToHandIn()) return false;
     const courseware::Assignment* a = assignment();
-    if (!a) {
-        c.problem(tr("Choose the assignment in the Assignment panel first."));
-        return false;
-    }
     const QString path = c.path();
-    if (path.isEmpty()) {
-        c.problem(tr("Save the scene first: a submission is a scene file and what it uses."));
-        return false;
-    }
     const auto scene = c.scene();
-    if (!scene || !c.textParses()) {
-        c.problem(tr("The scene has errors: fix them (see Issues) before handing in."));
-        return false;
-    }
     // The last check, on this very text, before it leaves.
     const grading::CheckReport report = grading::checkScene(*scene, a->requirements);
     const courseware::HandIn done = courseware::packSubmission(

@@ -47,6 +47,9 @@ class AssignmentPanel : public Panel {
     // Hand in: checks once more, then packs the scene and the files it uses
     // into `folder` (a new one). False, said through the window, if not.
     bool handIn(const QString& folder);
+    // What Hand In checks before it asks where: an assignment chosen, the
+    // scene saved and without errors (said when not).
+    bool readyToHandIn();
     bool busy() const override { return checking(); }
 
   public Q_SLOTS:

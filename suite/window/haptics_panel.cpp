@@ -162,6 +162,20 @@ void HapticsPanel::findDevices() {
     for (const std::string& n : notes)
         why += QString::fromStdString(n) + QLatin1Char('\n');
     devices_->setToolTip(plainToolTip(why.trimmed()));
+    // Said where the student looks, found or not (Find Devices said nothing).
+    std::size_t usable = 0;
+    for (const haptics::DeviceEntry& d : found_)
+        usable += d.accessible ? 1 : 0;
+    notes_->setText(
+        found_.empty()
+            ? tr("No haptic device found: the mouse stands in (click and drag on a tangible "
+                 "shape). A SpaceMouse or Falcon plugged in later: Find Devices again.")
+        : usable == found_.size()
+            ? tr("Found %n device(s): choose one above.", "", int(found_.size()))
+            : tr("Found %1 device(s), %2 not accessible: %3")
+                  .arg(found_.size())
+                  .arg(found_.size() - usable)
+                  .arg(visibleText(why.trimmed())));
 }
 
 void HapticsPanel::start() {

@@ -85,6 +85,8 @@ class HapticsPanel : public Panel {
     void colour(std::shared_ptr<const mesh::SceneMeshes> frame);
 
     QPushButton* feelButton() const { return feel_; }
+    // What the panel says: devices found (or none), a device that failed, the scene.
+    QLabel* notes() const { return notes_; }
     QLabel* status() const { return status_; }
     ForceGraph* graph() const { return graph_; }
     // Refreshes the status and the graph now (the timer does it 30 times a second).

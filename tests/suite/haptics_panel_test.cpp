@@ -7,6 +7,7 @@
 
 #include "scene/scene_reader.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <QLabel>
 #include <QPushButton>
@@ -34,6 +35,16 @@ class HapticsPanelTest : public QObject {
         QVERIFY(!panel.feelButton()->isEnabled());
         panel.start();
         QVERIFY(!panel.feeling());
+    }
+
+    void findDevicesSaysWhatItFoundEvenNothing() {
+        // Issue 29 §7: with no device it said nothing at all.
+        suite::HapticsPanel panel;
+        panel.findDevices();
+        const QString said = panel.notes()->text();
+        QVERIFY2(said.contains(QStringLiteral("device")), qPrintable(said));
+        if (panel.devices()->count() == 1) // the mouse only: none found here
+            QVERIFY2(said.contains(QStringLiteral("mouse")), qPrintable(said));
     }
 
     void theMouseFeelsTheWatermelonsRind() {

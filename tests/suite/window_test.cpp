@@ -482,11 +482,19 @@ class WindowTest : public QObject {
         QVERIFY(QFileInfo::exists(out + QStringLiteral("/fantasy.x3d")));
         QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("100 of 100")));
         QVERIFY(!w.assignmentPanel()->handIn(out)); // not into a folder that holds something
+        // A new folder in a folder that does not exist yet is made (issue 29 §7).
+        const QString deeper = out + QStringLiteral("-new/week 3/fantasy-final");
+        QDir(out + QStringLiteral("-new")).removeRecursively();
+        QVERIFY(w.assignmentPanel()->handIn(deeper));
+        QVERIFY(QFileInfo::exists(deeper + QStringLiteral("/fantasy.x3d")));
+        QDir(out + QStringLiteral("-new")).removeRecursively();
         // A text with errors is not handed in.
         w.editor()->setPlainText(w.editor()->toPlainText().replace(
             QStringLiteral("ball = 0.8^2"), QStringLiteral("ball = 0.8^^2")));
         QVERIFY(settle(w));
         QDir(out).removeRecursively();
+        QVERIFY(!w.assignmentPanel()->readyToHandIn()); // said before any dialog asks where
+        QVERIFY2(w.lastProblem().contains(QStringLiteral("errors")), qPrintable(w.lastProblem()));
         QVERIFY(!w.assignmentPanel()->handIn(out));
         QVERIFY(w.lastProblem().contains(QStringLiteral("errors")));
         QDir(out).removeRecursively();
