@@ -1,6 +1,8 @@
 #include "chat_commands.h"
 
 #include "formula/lexer.h"
+#include "formula/parser.h"
+#include "member_name.h"
 #include "scene/field_access.h"
 #include "scene/node_catalogue.h"
 #include "scene/scene_edit.h"
@@ -409,6 +411,28 @@ ChatCommandParse parseChatCommand(std::string_view text) {
         return {c, {}};
     }
     return fail("unknown command '/" + std::string(word) + "'; /help lists them");
+}
+
+std::string CommandMistake::said() const {
+    return "column " + std::to_string(column) + " of your command: " + message +
+           (suggestion.empty() ? "" : " (" + suggestion + ")");
+}
+
+std::optional<CommandMistake> formulaMistakeInCommand(const ChatCommand& command,
+                                                      std::string_view text) {
+    if (command.kind != ChatCommandKind::Add && command.kind != ChatCommandKind::Paint)
+        return std::nullopt;
+    std::vector<formula::Diagnostic> diagnostics;
+    (void)formula::parse(command.formula, diagnostics);
+    for (const formula::Diagnostic& d : diagnostics) {
+        if (d.severity != formula::Severity::Error) continue;
+        // The formula is the end of the command: its columns are counted on.
+        const std::size_t at = text.rfind(command.formula);
+        const std::size_t bytes = (at == std::string_view::npos ? 0 : at) + d.range.begin.offset;
+        return CommandMistake{characterCount(text.substr(0, std::min(bytes, text.size()))) + 1,
+                              d.message, d.suggestion};
+    }
+    return std::nullopt;
 }
 
 std::string applyChatCommand(const ChatCommand& command, const std::string& sceneText,

@@ -38,6 +38,20 @@ ChatCommandParse parseChatCommand(std::string_view text);
 // The text /help answers with.
 std::string chatCommandHelp();
 
+// A syntax mistake in the formula of an Add or Paint, located in what the
+// student typed (column 18 of the command), not in the class scene the
+// formula would be combined into. `text` is the command as typed. A parse
+// only: cheap enough for the server's event loop (the class checks the
+// combined scene in full, off it).
+struct CommandMistake {
+    std::size_t column = 0; // characters, from 1, in the command text
+    std::string message;
+    std::string suggestion;
+    std::string said() const; // "column 18 of your command: ..."
+};
+std::optional<CommandMistake> formulaMistakeInCommand(const ChatCommand& command,
+                                                      std::string_view text);
+
 // The scene text after Add or Paint; empty with `why` when the scene has no
 // shape the command can work on. The result is not yet checked: the class
 // checks it like any edit.

@@ -557,8 +557,8 @@ bool ClassSession::commit(const Member* author, std::string scene, EditKind kind
     version_ = next;
     scene_ = std::move(scene);
     broadcast(SceneMessage{version_, author ? shownName(*author) : "server",
-                           author ? std::optional<std::int64_t>(wireId(author->id)) : std::nullopt, kind,
-                           scene_},
+                           author ? std::optional<std::int64_t>(wireId(author->id)) : std::nullopt,
+                           kind, scene_},
               out, true);
     return true;
 }
@@ -635,6 +635,12 @@ void ClassSession::command(Member& m, const std::string& text, Out& out) {
     case ChatCommandKind::Paint: {
         if (c.formula.size() > config_.limits.maxFormulaBytes)
             return refuse(m, RefusalReason::TooLarge, "the formula is too long", out, text);
+        // A typo in the formula is said in what was typed (issue 29 §5).
+        if (auto mistake = formulaMistakeInCommand(c, text))
+            return refuse(m, RefusalReason::Invalid, mistake->said(), out, text,
+                          {std::nullopt,
+                           {{1, std::int64_t(mistake->column), DiagnosticSeverity::Error,
+                             mistake->message, mistake->suggestion}}});
         std::string why;
         std::string next = applyChatCommand(c, scene_, why);
         if (next.empty()) return refuse(m, RefusalReason::Invalid, why, out, text);

@@ -146,6 +146,24 @@ TEST(ChatCommands, AnInvalidToolFormulaGivesAnInvalidScene) {
     EXPECT_FALSE(checkClassroomScene(s).ok);
 }
 
+TEST(ChatCommands, AMistypedFormulaIsLocatedInWhatWasTyped) {
+    // Issue 29 §5: it said "14:181", a place in the class scene.
+    const std::string typed = "/add sphere(0, 0, 0, 0.5";
+    const auto mistake = formulaMistakeInCommand(command(typed), typed);
+    ASSERT_TRUE(mistake);
+    EXPECT_EQ(mistake->said().rfind("column ", 0), 0u) << mistake->said();
+    const int column = int(mistake->column);
+    EXPECT_GE(column, 12); // within (or just past) the formula, never the scene's 181
+    EXPECT_LE(column, int(typed.size()) + 1);
+    EXPECT_FALSE(
+        formulaMistakeInCommand(command("/add sphere(0, 0, 0, 0.5)"), "/add sphere(0, 0, 0, 0.5)"));
+    // Columns are characters: an accent before the formula counts once.
+    const std::string accented = "/paint red 50% é + (";
+    const auto paint = formulaMistakeInCommand(command(accented), accented);
+    ASSERT_TRUE(paint);
+    EXPECT_LE(paint->column, 21u);
+}
+
 TEST(ChatCommands, TheClassScenesCommentsSurviveTenCommands) {
     // Commands change definitions in place: the class's comments, layout
     // and every other value stay as typed (the scene was once rewritten).

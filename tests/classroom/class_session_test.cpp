@@ -168,7 +168,12 @@ TEST_F(ClassSessionTest, CommandsAreRefusedToTheSenderOnly) {
     EXPECT_EQ(h.last(ana, "refused")["command"].toString(), "/fly away");
     h.send(ana, chatFrame("/add sphere(0, 0"));
     EXPECT_EQ(h.last(ana, "refused")["reason"].toString(), "invalid");
-    EXPECT_FALSE(h.last(ana, "refused")["diagnostics"].toArray().isEmpty());
+    const QJsonArray where = h.last(ana, "refused")["diagnostics"].toArray();
+    ASSERT_FALSE(where.isEmpty());
+    // Located in what Ana typed (line 1 of the command), not in the scene.
+    EXPECT_EQ(where.at(0).toObject()["line"].toInt(), 1);
+    EXPECT_LE(where.at(0).toObject()["column"].toInt(), 17);
+    EXPECT_TRUE(h.last(ana, "refused")["message"].toString().startsWith("column "));
     // Under Bo's lock a command is refused like an edit.
     h.send(bo, editFrame(1, classScene("sphere(0, 0, 0, 2)")));
     h.send(ana, chatFrame("/add box(1, 1, 1)"));
