@@ -1,7 +1,9 @@
 #include "implicit_sides.h"
 
 #include "field_access.h"
+#include "formula/compiler.h"
 #include "formula/eval_scalar.h"
+#include "formula/parser.h"
 #include "function_kinds.h"
 #include "node_graph.h"
 
@@ -69,6 +71,56 @@ bool looksNegativeInside(const formula::Tape& tape, const std::vector<double>& l
     return negativeInside;
 }
 
+// The operands of the set operations (& | \\) in a plain formula, as text:
+// each is read with the FRep sign too, whatever the surface as a whole.
+void setOperands(const formula::Expr& e, std::string_view source,
+                 std::vector<std::pair<std::string, const char*>>& out, std::size_t most) {
+    if (out.size() >= most) return;
+    if (e.kind == formula::ExprKind::Binary &&
+        (e.binaryOp == formula::BinaryOp::Intersect || e.binaryOp == formula::BinaryOp::Union ||
+         e.binaryOp == formula::BinaryOp::Difference)) {
+        const char* op = e.binaryOp == formula::BinaryOp::Intersect ? "&"
+                         : e.binaryOp == formula::BinaryOp::Union   ? "|"
+                                                                    : "\\";
+        for (const formula::ExprPtr& a : e.args) {
+            const std::size_t b = a->range.begin.offset, end = a->range.end.offset;
+            if (b < end && end <= source.size() && out.size() < most)
+                out.emplace_back(std::string(source.substr(b, end - b)), op);
+        }
+    }
+    for (const formula::ExprPtr& a : e.args)
+        if (a) setOperands(*a, source, out, most);
+}
+
+// Issue 29 §7: `(x^2 + y^2 + z^2 - 1) & (y + 0.5)` in one implicit formula
+// intersects the sphere's *outside*: its & reads f >= 0 as inside, as an
+// FTransform's intersection does. One warning per operand that looks
+// negative inside (at most a few per formula, each sampled as the surface).
+void checkOperands(const Scene& scene, const Node& geometry, const std::vector<double>& lo,
+                   const std::vector<double>& hi, double t, std::vector<SceneDiagnostic>& out) {
+    const std::vector<std::string> source = stringsField(geometry, "definition");
+    if (source.size() != 1) return;
+    std::vector<formula::Diagnostic> ignored; // the definition was checked when read
+    const formula::Program program = formula::parse(source[0], ignored);
+    if (!program.isExpression || program.statements.size() != 1 || !program.statements[0]->value)
+        return;
+    constexpr std::size_t kMostOperands = 8;
+    std::vector<std::pair<std::string, const char*>> operands;
+    setOperands(*program.statements[0]->value, source[0], operands, kMostOperands);
+    formula::CompileOptions options;
+    options.kind = formula::DefinitionKind::Implicit;
+    for (const auto& [text, op] : operands) {
+        const formula::CompileResult operand = formula::compile(text, options);
+        if (!operand.ok() || !looksNegativeInside(*operand.tape, lo, hi, t)) continue;
+        out.push_back({Severity::Warning, scene.pathOf(geometry.file), geometry.where,
+                       "the operand " + text + " of " + op +
+                           " is negative inside (f > 0 on the whole box boundary, f < 0 "
+                           "within), but " +
+                           op + " reads f >= 0 as the inside, so its outside is used",
+                       "write it the FRep way, inside positive: -(" + text + ")"});
+    }
+}
+
 } // namespace
 
 std::vector<SceneDiagnostic> checkImplicitSides(const Scene& scene) {
@@ -93,6 +145,17 @@ std::vector<SceneDiagnostic> checkImplicitSides(const Scene& scene) {
         }
     });
     std::vector<SceneDiagnostic> out;
+    // The set operations inside each implicit formula of the scene.
+    scene.forEachNode([&](const Node& g) {
+        if (g.inProtoBody || g.kind() != scene::NodeKind::FGeometry ||
+            geometryTypeNamed(stringField(g, "type")) != GeometryType::Implicit)
+            return;
+        const std::vector<double> lo = numbersField(g, "domainMin"),
+                                  hi = numbersField(g, "domainMax");
+        if (lo.size() != 3 || hi.size() != 3) return;
+        const std::vector<double> span = numbersField(g, "timeSpan");
+        checkOperands(scene, g, lo, hi, span.empty() ? 0.0 : span[0], out);
+    });
     for (const auto& [shape, why] : uses.list) {
         const Node* geometry = effectiveNode(nodeField(*shape, "geometry"));
         if (!geometry || geometry->kind() != scene::NodeKind::FGeometry ||

@@ -160,4 +160,18 @@ TEST(ImplicitSurface, NegativeInsideWhereAnInsideMattersIsWarnedWithTheFix) {
     EXPECT_TRUE(warnings("FTransform { operation \"union\" children [ FShape { geometry FGeometry "
                          "{ type \"implicit\" definition \"z - x*y/2\" } } ] }\n")
                     .empty());
+    // Issue 29 §7: the same mistake inside one formula, an operand of & | \.
+    auto inFormula = [&](const std::string& definition) {
+        return warnings("FShape { geometry FGeometry { type \"implicit\" definition \"" +
+                        definition + "\" } }\n");
+    };
+    const auto operand = inFormula("(x^2 + y^2 + z^2 - 0.5) & (0.2 - y)");
+    ASSERT_EQ(operand.size(), 1u);
+    EXPECT_NE(operand[0].find("operand (x^2 + y^2 + z^2 - 0.5) of &"), std::string::npos)
+        << operand[0];
+    EXPECT_NE(operand[0].find("-((x^2 + y^2 + z^2 - 0.5))"), std::string::npos) << operand[0];
+    EXPECT_EQ(inFormula("(0.2 - y) | (x^2 + y^2 + z^2 - 0.5)").size(), 1u);
+    // Written the FRep way: nothing; a script is not judged (its operands are locals).
+    EXPECT_TRUE(inFormula("(0.5 - x^2 - y^2 - z^2) & (0.2 - y)").empty());
+    EXPECT_TRUE(inFormula("s = x^2 + y^2 + z^2 - 0.5; return s & (0.2 - y);").empty());
 }
