@@ -19,10 +19,6 @@ constexpr std::size_t kMaxWaitingChecksOfAStudent = 4;
 // Chat a newly joined member is shown from before they came.
 constexpr std::size_t kChatLinesOnWelcome = 50;
 
-QString q(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
-
 // Member ids count up from 1: far below 2^53, the largest a JSON number
 // holds exactly.
 std::int64_t wireId(MemberId id) {
@@ -30,7 +26,7 @@ std::int64_t wireId(MemberId id) {
 }
 
 QString frame(const ServerMessage& message) {
-    return q(encodeServerMessage(message));
+    return QString::fromStdString(encodeServerMessage(message));
 }
 
 std::int64_t unixMillis() {

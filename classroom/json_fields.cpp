@@ -49,10 +49,9 @@ std::optional<std::int64_t> JsonFields::count(const char* field, bool required) 
         if (required) fail(ErrorCode::Malformed, where_ + " needs a \"" + field + "\" number");
         return std::nullopt;
     }
-    const double d = v.toDouble(-1.5);
     // JSON numbers are doubles: whole, non-negative, and exact (below 2^53).
-    if (!v.isDouble() || !(d >= 0) || d != std::floor(d) ||
-        d > static_cast<double>(kMaxExactInteger)) {
+    const double d = v.isDouble() ? v.toDouble() : -1;
+    if (!(d >= 0) || d != std::floor(d) || d > static_cast<double>(kMaxExactInteger)) {
         fail(ErrorCode::Malformed, where_ + ": \"" + field + "\" must be a whole number >= 0");
         return std::nullopt;
     }

@@ -10,6 +10,7 @@
 #include "protocol.h"
 
 #include <QJsonObject>
+#include <QString>
 
 #include <cstdint>
 #include <limits>
@@ -20,6 +21,11 @@
 #include <vector>
 
 namespace fl::classroom {
+
+// UTF-8 text as the QString a QJsonObject holds (both directions write with it).
+inline QString qText(std::string_view utf8) {
+    return QString::fromUtf8(utf8.data(), static_cast<qsizetype>(utf8.size()));
+}
 
 class JsonFields {
   public:

@@ -193,32 +193,28 @@ bool isCleanText(std::string_view s, bool allowLineBreaks) {
 
 namespace {
 
-QString q(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
-
 void writeBody(QJsonObject& o, const ClientBody& body) {
     std::visit(
         [&](const auto& m) {
             using T = std::decay_t<decltype(m)>;
             if constexpr (std::is_same_v<T, JoinMessage>) {
-                o["class"] = q(m.classCode);
-                o["name"] = q(m.name);
-                o["role"] = q(nameOf(m.role));
-                if (!m.key.empty()) o["key"] = q(m.key);
-                if (!m.resume.empty()) o["resume"] = q(m.resume);
+                o["class"] = qText(m.classCode);
+                o["name"] = qText(m.name);
+                o["role"] = qText(nameOf(m.role));
+                if (!m.key.empty()) o["key"] = qText(m.key);
+                if (!m.resume.empty()) o["resume"] = qText(m.resume);
                 if (m.since) o["since"] = QJsonValue(qint64(*m.since));
             } else if constexpr (std::is_same_v<T, EditMessage>) {
                 o["version"] = QJsonValue(qint64(m.version));
-                o["scene"] = q(m.scene);
+                o["scene"] = qText(m.scene);
             } else if constexpr (std::is_same_v<T, ChatMessage>) {
-                o["text"] = q(m.text);
+                o["text"] = qText(m.text);
             } else if constexpr (std::is_same_v<T, FreezeMessage>) {
                 o["frozen"] = m.frozen;
             } else if constexpr (std::is_same_v<T, PushMessage>) {
-                o["scene"] = q(m.scene);
+                o["scene"] = qText(m.scene);
             } else if constexpr (std::is_same_v<T, SnapshotMessage>) {
-                o["label"] = q(m.label);
+                o["label"] = qText(m.label);
             } else if constexpr (std::is_same_v<T, AnonymiseMessage>) {
                 o["anonymous"] = m.anonymous;
             } else if constexpr (std::is_same_v<T, HistoryMessage>) {
@@ -231,7 +227,7 @@ void writeBody(QJsonObject& o, const ClientBody& body) {
 } // namespace
 
 std::string encodeClientMessage(const ClientMessage& message) {
-    QJsonObject o{{"type", q(nameOf(message.type))}};
+    QJsonObject o{{"type", qText(nameOf(message.type))}};
     writeBody(o, message.body);
     return QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString();
 }

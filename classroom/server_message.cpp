@@ -16,9 +16,6 @@ namespace {
 
 // ---- writing -----------------------------------------------------------
 
-QString q(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 // Whole numbers are written as integers (exact below 2^53, which the
 // reader checks).
 QJsonValue number(std::int64_t n) {
@@ -27,26 +24,26 @@ QJsonValue number(std::int64_t n) {
 
 QJsonValue holderJson(const std::optional<LockHolderEntry>& h) {
     if (!h) return QJsonValue::Null;
-    return QJsonObject{{"id", number(h->id)}, {"name", q(h->name)}};
+    return QJsonObject{{"id", number(h->id)}, {"name", qText(h->name)}};
 }
 
 QJsonArray membersJson(const std::vector<MemberEntry>& members) {
     QJsonArray list;
     for (const MemberEntry& m : members)
         list.append(QJsonObject{{"id", number(m.id)},
-                                {"name", q(m.name)},
-                                {"role", q(nameOf(m.role))},
+                                {"name", qText(m.name)},
+                                {"role", qText(nameOf(m.role))},
                                 {"connected", m.connected}});
     return list;
 }
 
 void write(QJsonObject& o, const WelcomeMessage& m) {
     o["id"] = number(m.id);
-    o["token"] = q(m.token);
-    o["name"] = q(m.name);
-    o["role"] = q(nameOf(m.role));
+    o["token"] = qText(m.token);
+    o["name"] = qText(m.name);
+    o["role"] = qText(nameOf(m.role));
     o["version"] = number(m.version);
-    o["scene"] = q(m.scene);
+    o["scene"] = qText(m.scene);
     o["frozen"] = m.frozen;
     o["anonymous"] = m.anonymous;
     o["resumed"] = m.resumed;
@@ -56,15 +53,15 @@ void write(QJsonObject& o, const WelcomeMessage& m) {
         QJsonArray missed;
         for (const MissedVersion& v : *m.missed)
             missed.append(QJsonObject{{"version", number(v.version)},
-                                      {"author", q(v.author)},
-                                      {"kind", q(nameOf(v.kind))}});
+                                      {"author", qText(v.author)},
+                                      {"kind", qText(nameOf(v.kind))}});
         o["missed"] = missed;
     }
     if (m.chat) {
         QJsonArray chat;
         for (const EarlierChat& c : *m.chat)
             chat.append(QJsonObject{
-                {"from", q(c.from)}, {"text", q(c.text)}, {"unixMs", number(c.unixMs)}});
+                {"from", qText(c.from)}, {"text", qText(c.text)}, {"unixMs", number(c.unixMs)}});
         o["chat"] = chat;
     }
     o["limits"] = QJsonObject{{"maxMessageBytes", number(m.limits.maxMessageBytes)},
@@ -75,23 +72,23 @@ void write(QJsonObject& o, const WelcomeMessage& m) {
                               {"leaseMs", number(m.limits.leaseMs)}};
 }
 void write(QJsonObject& o, const ErrorMessage& m) {
-    o["code"] = q(nameOf(m.code));
-    o["message"] = q(m.message);
+    o["code"] = qText(nameOf(m.code));
+    o["message"] = qText(m.message);
 }
 void write(QJsonObject& o, const SceneMessage& m) {
     o["version"] = number(m.version);
-    o["author"] = q(m.author);
+    o["author"] = qText(m.author);
     if (m.authorId) o["authorId"] = number(*m.authorId);
-    o["kind"] = q(nameOf(m.kind));
-    o["scene"] = q(m.scene);
+    o["kind"] = qText(nameOf(m.kind));
+    o["scene"] = qText(m.scene);
 }
 void write(QJsonObject& o, const RefusedMessage& m) {
-    o["reason"] = q(nameOf(m.reason));
-    o["message"] = q(m.message);
+    o["reason"] = qText(nameOf(m.reason));
+    o["message"] = qText(m.message);
     o["version"] = number(m.version);
-    if (!m.command.empty()) o["command"] = q(m.command);
+    if (!m.command.empty()) o["command"] = qText(m.command);
     if (m.holder) {
-        o["holder"] = q(m.holder->name);
+        o["holder"] = qText(m.holder->name);
         o["holderId"] = number(m.holder->id);
     }
     if (!m.diagnostics.empty()) {
@@ -101,20 +98,20 @@ void write(QJsonObject& o, const RefusedMessage& m) {
                 {"line", number(d.line)},
                 {"column", number(d.column)},
                 {"severity", d.severity == DiagnosticSeverity::Error ? "error" : "warning"},
-                {"message", q(d.message)}};
-            if (!d.suggestion.empty()) j["suggestion"] = q(d.suggestion);
+                {"message", qText(d.message)}};
+            if (!d.suggestion.empty()) j["suggestion"] = qText(d.suggestion);
             list.append(j);
         }
         o["diagnostics"] = list;
     }
 }
 void write(QJsonObject& o, const ChatLineMessage& m) {
-    o["from"] = q(m.from);
+    o["from"] = qText(m.from);
     o["fromId"] = number(m.fromId);
-    o["text"] = q(m.text);
+    o["text"] = qText(m.text);
 }
 void write(QJsonObject& o, const NoticeMessage& m) {
-    o["text"] = q(m.text);
+    o["text"] = qText(m.text);
 }
 void write(QJsonObject& o, const PresenceMessage& m) {
     o["members"] = membersJson(m.members);
@@ -129,14 +126,14 @@ void write(QJsonObject& o, const FrozenMessage& m) {
 void write(QJsonObject& o, const SavedMessage& m) {
     o["version"] = number(m.version);
     o["snapshot"] = number(m.snapshot);
-    o["label"] = q(m.label);
+    o["label"] = qText(m.label);
 }
 void write(QJsonObject& o, const VersionMessage& m) {
     o["version"] = number(m.version);
-    o["author"] = q(m.author);
-    o["kind"] = q(nameOf(m.kind));
+    o["author"] = qText(m.author);
+    o["kind"] = qText(nameOf(m.kind));
     o["unixMs"] = number(m.unixMs);
-    o["scene"] = q(m.scene);
+    o["scene"] = qText(m.scene);
 }
 
 // ---- reading -----------------------------------------------------------
@@ -305,7 +302,7 @@ MessageType typeOf(const ServerMessage& message) {
 }
 
 std::string encodeServerMessage(const ServerMessage& message) {
-    QJsonObject o{{"type", q(nameOf(typeOf(message)))}};
+    QJsonObject o{{"type", qText(nameOf(typeOf(message)))}};
     std::visit([&](const auto& m) { write(o, m); }, message);
     return QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString();
 }

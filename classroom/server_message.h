@@ -94,7 +94,7 @@ struct RefusedMessage {
     std::string message;
     std::int64_t version = 0;                   // the class's version when refused
     std::string command;                        // the chat command refused, if it was one
-    std::optional<LockHolderEntry> holder;           // Locked, while held
+    std::optional<LockHolderEntry> holder;      // Locked, while held
     std::vector<RefusalDiagnostic> diagnostics; // Invalid, TooLarge, TooCostly
     bool operator==(const RefusedMessage&) const = default;
 };

@@ -109,6 +109,11 @@ void checkOperands(const Scene& scene, const Node& geometry, const std::vector<d
     setOperands(*program.statements[0]->value, source[0], operands, kMostOperands);
     formula::CompileOptions options;
     options.kind = formula::DefinitionKind::Implicit;
+    // Each scene read does this, on every implicit formula with a set
+    // operation: a costly operand is not judged (no warning is better than
+    // work a hostile scene could multiply), the formula itself was bounded.
+    options.limits.maxExpansionSteps = 20'000;
+    options.limits.maxTapeSize = 4096;
     for (const auto& [text, op] : operands) {
         const formula::CompileResult operand = formula::compile(text, options);
         if (!operand.ok() || !looksNegativeInside(*operand.tape, lo, hi, t)) continue;

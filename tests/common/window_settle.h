@@ -8,6 +8,14 @@
 
 namespace fl::test {
 
+// A window as a student first has it, without dialogs, at `size`, on screen.
+inline bool shownAt(suite::MainWindow& w, QSize size = {1280, 800}) {
+    w.setPromptsEnabled(false);
+    w.resize(size);
+    w.show();
+    return QTest::qWaitForWindowExposed(&w);
+}
+
 inline bool settle(suite::MainWindow& w, int timeoutMs = 30000) {
     QElapsedTimer clock;
     clock.start();

@@ -174,4 +174,15 @@ TEST(ImplicitSurface, NegativeInsideWhereAnInsideMattersIsWarnedWithTheFix) {
     // Written the FRep way: nothing; a script is not judged (its operands are locals).
     EXPECT_TRUE(inFormula("(0.5 - x^2 - y^2 - z^2) & (0.2 - y)").empty());
     EXPECT_TRUE(inFormula("s = x^2 + y^2 + z^2 - 0.5; return s & (0.2 - y);").empty());
+    // A costly operand is not judged: the check's work stays bounded.
+    // (64 groups of 64 terms: within the formula's nesting bound, past the check's tape bound.)
+    std::string costly = "(x^2 + y^2 + z^2 - 0.5 + 0*(0";
+    for (int g = 0; g < 64; ++g) {
+        costly += " + (0";
+        for (int k = 1; k <= 64; ++k)
+            costly += " + sin(" + std::to_string(64 * g + k) + "*x)";
+        costly += ")";
+    }
+    EXPECT_TRUE(inFormula(costly + ")) & (0.2 - y)").empty());
+    EXPECT_EQ(inFormula("(x^2 + y^2 + z^2 - 0.5 + 0*(sin(x))) & (0.2 - y)").size(), 1u);
 }

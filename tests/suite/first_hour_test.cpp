@@ -114,10 +114,7 @@ class FirstHourTest : public QObject {
 
     void theEditorsKeysAreTheEditorsWhileItHasFocus() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::shownAt(w));
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/watermelon.x3d")));
@@ -154,10 +151,7 @@ class FirstHourTest : public QObject {
         const QString workspace = qEnvironmentVariable("FUNCTIONLAB_WORKSPACE");
         QDir(workspace).removeRecursively();
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::shownAt(w));
         QListWidget* examples = w.examples();
         QListWidgetItem* melon = nullptr;
         for (int i = 0; i < examples->count(); ++i)
@@ -196,10 +190,7 @@ class FirstHourTest : public QObject {
         // Issue 29 §4: from the default view, the wind cone (transparency 1)
         // lay in front of the blades and took every click.
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::shownAt(w));
         QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/fan.x3d")));
         QVERIFY(test::settle(w));
         const auto meshes = w.view()->meshes();
@@ -228,10 +219,7 @@ class FirstHourTest : public QObject {
     void aSceneOpenedStartsAtTimeZero() {
         // Issue 29 §7: t went on from the last scene's.
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::shownAt(w));
         QVERIFY(w.openFile(QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR "/bouncing_sphere.x3d")));
         QVERIFY(test::settle(w));
         w.player()->seek(0.7);
@@ -256,10 +244,7 @@ class FirstHourTest : public QObject {
             g.registerAssignment(lab.assignment->record());
         }
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::shownAt(w));
         QVERIFY(test::settle(w));
         const QSize before = w.size();
         QString why;
@@ -274,10 +259,7 @@ class FirstHourTest : public QObject {
 
     void anAmpersandInAnXmlSceneSaysWhatToWriteAndIsFixedWithOneKey() {
         suite::MainWindow w;
-        w.setPromptsEnabled(false);
-        w.resize(1280, 800);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(test::shownAt(w));
         w.editor()->setPlainText(QStringLiteral(
             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
             "<X3D profile='Immersive' version='3.3'>\n<Scene>\n"

@@ -73,10 +73,7 @@ double notBackground(const QImage& image) {
 
 // The window on screen at its test size, asking nothing (prompts off).
 bool shown(suite::MainWindow& w) {
-    w.setPromptsEnabled(false);
-    w.resize(1280, 800);
-    w.show();
-    return QTest::qWaitForWindowExposed(&w);
+    return test::shownAt(w);
 }
 
 // Waits until the parse and the meshing for the current text are done.
