@@ -45,11 +45,12 @@ std::optional<SceneEdit> resolutionEdit(const Scene& scene, const Node& geometry
                                         std::string* why) {
     SceneEdit edit(scene);
     if (!edit.setNumbers(geometry, "resolution", {resolution}, why)) return std::nullopt;
+    // The chosen accuracy is a floor: the level of detail may refine near
+    // the camera (up to the range's finest end), never coarsen below it.
     if (boolField(geometry, "lod")) {
         const auto range = numbersField(geometry, "lodRange");
-        const double coarsest = std::min(range.size() == 2 ? range[0] : 8.0, resolution);
-        if (!edit.setNumbers(geometry, "lodRange", {coarsest, resolution}, why))
-            return std::nullopt;
+        const double finest = std::max(range.size() == 2 ? range[1] : 256.0, resolution);
+        if (!edit.setNumbers(geometry, "lodRange", {resolution, finest}, why)) return std::nullopt;
     }
     return edit;
 }

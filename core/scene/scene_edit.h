@@ -42,8 +42,9 @@ class SceneEdit {
 };
 
 // What writing a shape's meshing resolution changes: `resolution`, and with
-// lod TRUE the finest end of `lodRange` (its coarsest end kept, at most the
-// resolution). None, with `why`, when the geometry is not written in the text.
+// lod TRUE the coarsest end of `lodRange` (its finest end kept, at least the
+// resolution), so the view is never less accurate than the choice. None, with
+// `why`, when the geometry is not written in the text.
 std::optional<SceneEdit> resolutionEdit(const Scene& scene, const Node& geometry, double resolution,
                                         std::string* why = nullptr);
 

@@ -74,7 +74,7 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
     writeRow->addWidget(write_);
     layout->addLayout(writeRow);
     write_->setToolTip(tr("Make the chosen resolution part of the scene text (resolution, and "
-                          "the finest end of lodRange): undo with Ctrl+Z in the editor"));
+                          "the coarsest end of lodRange): undo with Ctrl+Z in the editor"));
     write_->setEnabled(false);
     status_->setWordWrap(true);
     layout->addWidget(status_);

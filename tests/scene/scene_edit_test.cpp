@@ -65,7 +65,7 @@ TEST(SceneEdit, SeveralFieldsInOneEditReadBackAsTheModelInBothEncodings) {
     }
 }
 
-TEST(SceneEdit, TheResolutionEditMovesTheFinestLevelOfDetailWithIt) {
+TEST(SceneEdit, TheResolutionEditMakesTheChoiceTheCoarsestLevelOfDetail) {
     const ReadResult r = readSceneBytes(kXml, "a.x3d");
     ASSERT_TRUE(r.ok());
     const Node* geometry = firstOfKind(*r.scene, NodeKind::FGeometry);
@@ -77,13 +77,13 @@ TEST(SceneEdit, TheResolutionEditMovesTheFinestLevelOfDetailWithIt) {
     ASSERT_TRUE(again.ok());
     const Node* g = firstOfKind(*again.scene, NodeKind::FGeometry);
     EXPECT_EQ(numberField(*g, "resolution"), 24);
-    EXPECT_EQ(numbersField(*g, "lodRange"), (std::vector<double>{4, 24}));
-    // Coarser than the range's coarse end: the range shrinks to one value.
-    const auto coarse = resolutionEdit(*r.scene, *geometry, 2, &why);
-    ASSERT_TRUE(coarse);
-    const ReadResult c = readSceneBytes(coarse->appliedTo(r.scene->files[0].text), "a.x3d");
-    EXPECT_EQ(numbersField(*firstOfKind(*c.scene, NodeKind::FGeometry), "lodRange"),
-              (std::vector<double>{2, 2}));
+    EXPECT_EQ(numbersField(*g, "lodRange"), (std::vector<double>{24, 40}));
+    // Finer than the range's fine end: the range shrinks to one value.
+    const auto fine = resolutionEdit(*r.scene, *geometry, 64, &why);
+    ASSERT_TRUE(fine);
+    const ReadResult f = readSceneBytes(fine->appliedTo(r.scene->files[0].text), "a.x3d");
+    EXPECT_EQ(numbersField(*firstOfKind(*f.scene, NodeKind::FGeometry), "lodRange"),
+              (std::vector<double>{64, 64}));
 }
 
 TEST(SceneEdit, ANodeNotWrittenInTheTextSaysWhyAndChangesNothing) {

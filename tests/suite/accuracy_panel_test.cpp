@@ -90,7 +90,7 @@ class AccuracyPanelTest : public QObject {
         panel.writeButton()->click();
         QCOMPARE(write.count(), 1);
         QCOMPARE(write.first().at(1).toDouble(), 16.0);
-        // The edits: resolution 16, lodRange ending at 16; read back, they are the file's.
+        // The edits: resolution 16, lodRange from 16; read back, they are the file's.
         const auto* geometry =
             static_cast<const scene::Node*>(write.first().at(0).value<const scene::Node*>());
         QVERIFY(geometry);
@@ -112,7 +112,7 @@ class AccuracyPanelTest : public QObject {
             find(n);
         QVERIFY(g);
         QCOMPARE(scene::numberField(*g, "resolution"), 16.0);
-        QCOMPARE(scene::numbersField(*g, "lodRange"), (std::vector<double>{8, 16}));
+        QCOMPARE(scene::numbersField(*g, "lodRange"), (std::vector<double>{16, 256}));
     }
 
     void touchIsMeasuredTheSameWay() {

@@ -582,11 +582,52 @@ class WindowTest : public QObject {
         accuracy->writeButton()->click();
         const QString after = w.editor()->toPlainText();
         QVERIFY2(after.contains(QStringLiteral("resolution='12'")), qPrintable(after.left(4000)));
-        QVERIFY(after.contains(QStringLiteral("lodRange='8 12'")));
+        QVERIFY(after.contains(QStringLiteral("lodRange='12 256'")));
         QVERIFY(settle(w));
         QCOMPARE(w.issues()->count(), 0);
         w.editor()->undo();
         QCOMPARE(w.editor()->toPlainText(), before);
+    }
+
+    // Issue 29 §7: a choice finer than the level of detail wants at this
+    // distance, written into the scene, stays on screen: the view read again
+    // from the written text does not coarsen.
+    void aWrittenChoiceIsWhatTheViewShowsAfterwards() {
+        suite::MainWindow w;
+        QVERIFY(shown(w));
+        QVERIFY(w.openFile(examplePath("watermelon.x3d")));
+        QVERIFY(settle(w));
+        auto shown = [&] {
+            for (const auto& s : w.view()->meshes()->shapes)
+                if (s.functionGeometry) return s.resolution;
+            return 0.0;
+        };
+        // Far away, the level of detail settles well below 96.
+        for (int step = 0; step < 6; ++step) {
+            w.view()->setPose(viewer::zoom(w.view()->pose(), -2.0f));
+            QTest::qWait(60);
+        }
+        QVERIFY(settle(w));
+        const double byDistance = shown();
+        QVERIFY2(byDistance < 60, qPrintable(QString::number(byDistance)));
+        suite::AccuracyPanel* accuracy = w.accuracyPanel();
+        accuracy->setResolutions({96});
+        QSignalSpy swept(accuracy, &suite::AccuracyPanel::measured);
+        accuracy->measure();
+        QVERIFY(swept.wait(60000));
+        QVERIFY(accuracy->chooseTargetError(1.0));
+        QVERIFY(settle(w));
+        QCOMPARE(shown(), 96.0);
+        accuracy->writeButton()->click();
+        QVERIFY(w.editor()->toPlainText().contains(QStringLiteral("resolution='96'")));
+        QVERIFY(settle(w));
+        QCOMPARE(w.issues()->count(), 0);
+        QCOMPARE(shown(), 96.0);
+        // The camera moves a little: still not coarser than what was written.
+        w.view()->setPose(viewer::zoom(w.view()->pose(), -0.5f));
+        QTest::qWait(300);
+        QVERIFY(settle(w));
+        QVERIFY2(shown() >= 96.0, qPrintable(QString::number(shown())));
     }
 
     void theMouseFeelsTheWatermelonAndTheViewDrawsTheForce() {
