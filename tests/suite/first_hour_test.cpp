@@ -7,6 +7,7 @@
 #include "editor/code_editor.h"
 #include "editor/find_bar.h"
 #include "grading/gradebook.h"
+#include "suite/window/assignment_panel.h"
 #include "suite/window/grading_panel.h"
 #include "suite/window/main_window.h"
 #include "suite/window/working_copy.h"
@@ -21,12 +22,15 @@
 #include <QCompleter>
 #include <QDir>
 #include <QFile>
+#include <QFileDialog>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QShortcut>
 #include <QStandardPaths>
 #include <QTest>
+#include <QTimer>
 
 using namespace fl;
 
@@ -184,6 +188,44 @@ class FirstHourTest : public QObject {
         QVERIFY(suite::saveNeedsAPlace(course));
         QVERIFY(suite::saveAsStartFor(course).startsWith(workspace));
         QVERIFY(!suite::saveNeedsAPlace(w.currentPath()));
+    }
+
+    void aStartersSaveAsOffersTheStudentsFolderWithoutTheSolution() {
+        // Issue 29 §2: Save As offered the installed course's folder, with
+        // starter.x3d selected and solution/ beside it.
+        const QString workspace = qEnvironmentVariable("FUNCTIONLAB_WORKSPACE");
+        QVERIFY(!workspace.isEmpty());
+        QDir(workspace).removeRecursively();
+        suite::MainWindow w;
+        QVERIFY(test::shownAt(w));
+        QVERIFY(w.assignmentPanel()->choose(QStringLiteral("implicit-shapes")));
+        QPushButton* starter = nullptr;
+        for (QPushButton* b : w.assignmentPanel()->findChildren<QPushButton*>())
+            if (b->text().contains(QStringLiteral("starter"))) starter = b;
+        QVERIFY(starter);
+        starter->click();
+        QTRY_VERIFY(w.currentPath().startsWith(workspace));
+        QVERIFY(test::settle(w));
+        QImage dialog;
+        QString folder;
+        QStringList listed;
+        QTimer::singleShot(1000, [&] {
+            auto* d = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            if (!d) return;
+            folder = d->directory().path();
+            listed = d->directory().entryList(QDir::AllEntries | QDir::NoDotAndDotDot);
+            dialog = d->grab().toImage();
+            d->reject();
+        });
+        QAction* saveAs = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (plainLabel(a->text()) == QStringLiteral("Save As")) saveAs = a;
+        QVERIFY(saveAs);
+        saveAs->trigger();
+        QVERIFY2(!dialog.isNull(), "no Save As dialog");
+        QVERIFY2(folder.startsWith(workspace), qPrintable(folder));
+        QVERIFY2(!listed.contains(QStringLiteral("solution")), qPrintable(listed.join(' ')));
+        save(dialog, QStringLiteral("first-hour-save-as"));
     }
 
     void theFansInvisibleWindCatchesNoClick() {
