@@ -133,6 +133,7 @@ const std::vector<Command>& commands() {
         {hapticsReplaySpec, hapticsReplayCommand},
         {serveSpec, serveCommand},
         {benchClassroomSpec, benchClassroomCommand},
+        {pdeFitSpec, pdeFitCommand},
     };
     return all;
 }

@@ -34,6 +34,7 @@ const CommandSpec& hapticsRecordSpec();
 const CommandSpec& hapticsReplaySpec();
 const CommandSpec& serveSpec();
 const CommandSpec& benchClassroomSpec();
+const CommandSpec& pdeFitSpec();
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -58,6 +59,7 @@ int hapticsRecordCommand(const Args& args);  // `haptics record`
 int hapticsReplayCommand(const Args& args);  // `haptics replay`
 int serveCommand(const Args& args);          // `serve`
 int benchClassroomCommand(const Args& args); // `bench classroom`
+int pdeFitCommand(const Args& args);         // `pde fit`
 
 struct Command {
     const CommandSpec& (*spec)();

@@ -11,6 +11,8 @@
 #include "mesh/mesh_topology.h"
 #include "mesh/point_cloud.h"
 #include "mesh/scene_meshing.h"
+#include "pde/pde_file.h"
+#include "pde/pde_mesh.h"
 #include "scene/scene_reader.h"
 #include "viewer/text_outliner.h"
 
@@ -60,6 +62,10 @@ void describe(const std::string& name, const mesh::Mesh& m, const mesh::MeshStat
     std::cerr << "\n";
 }
 
+bool isPdeModel(const std::string& file) {
+    return file.size() > 4 && file.compare(file.size() - 4, 4, ".pde") == 0;
+}
+
 } // namespace
 
 const CommandSpec& meshSpec() {
@@ -67,6 +73,7 @@ const CommandSpec& meshSpec() {
         .name = "mesh",
         .summary = "polygonize function shapes; .stl .obj .ply .glb .x3d",
         .synopsis = {"mesh FILE -o OUT [--time T] [--error E | --resolution N | --points N]",
+                     "mesh MODEL.pde -o OUT [--resolution N]",
                      "mesh --formula \"SRC\" --box X0,Y0,Z0,X1,Y1,Z1 -o OUT [--open]\n"
                      "[--error E | --resolution N | --points N [--solid]]"},
         .description =
@@ -80,7 +87,9 @@ const CommandSpec& meshSpec() {
             "(glTF 2.0 binary), .x3d (vertex colours where the format has them). An\n"
             "FGeometry with `points` N > 0, or --points, gives a point cloud instead: on an\n"
             "implicit surface, through an explicit solid, over a parametric object's\n"
-            "parameters (.ply, .obj, .glb or .x3d; STL holds only triangles).\n",
+            "parameters (.ply, .obj, .glb or .x3d; STL holds only triangles). A PDE model\n"
+            "(MODEL.pde, from `pde fit`) is meshed patch by patch on a grid of N/2 steps\n"
+            "along u and N round v (--resolution, default 32).\n",
         .positionals = {{.name = "FILE",
                          .help = "the scene (or give --formula and --box instead)",
                          .required = false}},
@@ -219,6 +228,19 @@ int meshCommand(const Args& args) {
         describe("formula", r.mesh, r.stats, measured);
         result = std::move(r.mesh);
         anything = true;
+    } else if (isPdeModel(file)) {
+        // A PDE model (pde fit's .pde): its patches on a (u, v) grid.
+        if (open || points > 0 || error > 0) return usage("a .pde model takes --resolution only");
+        const pde::ReadResult r = pde::readModelFile(file);
+        if (!r.ok()) {
+            std::cerr << r.error << "\n";
+            return kExitDiagnostic;
+        }
+        const pde::MeshOptions po = pde::meshOptionsFor(resolution > 0 ? resolution : 32);
+        result = pde::meshModel(*r.model, po);
+        std::cerr << file << ": " << r.model->patches.size() << " patches, " << po.stepsU << " x "
+                  << po.stepsV << " each, " << result.triangleCount() << " triangles\n";
+        anything = !result.empty();
     } else {
         if (open)
             return usage("--open applies to --formula only (a scene's FGeometry boxes close it)");
