@@ -174,6 +174,7 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
     fo.radii = std::clamp<std::size_t>(r.faces.size() / 4, 1, o.radii);
     fo.a = o.a;
     fo.pointAtStart = true;
+    fo.smoothPole = true;
     fo.ridge = 1e-6;
     const std::vector<Sample> mapped = samples;
     while (true) {

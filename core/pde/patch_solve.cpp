@@ -142,16 +142,23 @@ std::optional<Patch> fitToPoints(const std::vector<Sample>& samples, const FitOp
     ata = ata.selfadjointView<Eigen::Lower>();
     if (o.pointAtStart) {
         // An(0) = Bn(0) = 0 for n >= 1: the u = 0 curve is the spine's start.
-        // Heavy rows on exactly those combinations (not on the spine).
+        // With `smoothPole` also An'(0) = Bn'(0) = 0 for n >= 2: near the pole
+        // only the first radius grows linearly, so the surface has one tangent
+        // plane there (no creases fanning out from the pole). Heavy rows on
+        // exactly those combinations (not on the spine).
         const double heavy = 1e6 * total;
-        for (std::size_t k = 0; k < o.radii; ++k) {
-            const Basis b = basis(int(k) + 1, o.a, 0.0);
+        auto pin = [&](std::size_t k, const std::array<double, 4>& row) {
             for (int part = 0; part < 2; ++part) {
                 Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
                 for (std::size_t i = 0; i < 4; ++i)
-                    r(Eigen::Index(4 + 8 * k + 4 * std::size_t(part) + i)) = b.value[i];
+                    r(Eigen::Index(4 + 8 * k + 4 * std::size_t(part) + i)) = row[i];
                 ata += heavy * r * r.transpose();
             }
+        };
+        for (std::size_t k = 0; k < o.radii; ++k) {
+            const Basis b = basis(int(k) + 1, o.a, 0.0);
+            pin(k, b.value);
+            if (o.smoothPole && k >= 1) pin(k, b.du);
         }
     }
     ata.diagonal().array() += o.ridge * total;

@@ -36,6 +36,7 @@ struct FitOptions {
     std::size_t radii = 4;
     double a = 1;
     bool pointAtStart = false; // C0 degenerates to a point (a cap): An(0) = Bn(0) = 0
+    bool smoothPole = false;   // with pointAtStart: An'(0) = Bn'(0) = 0 for n >= 2 too
     double ridge = 1e-9;       // Tikhonov weight (of the samples' total weight) for stability
 };
 // Nullopt when there are fewer samples than coefficients or a sample is not finite.
