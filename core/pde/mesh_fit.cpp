@@ -297,8 +297,23 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
     }
     out.rms = rms();
     out.reached = o.patches ? true : out.rms <= o.error;
+    // Each patch's border loop (in the order v increases: the faces' own
+    // winding, as the disk map laid it), its points shared with the
+    // neighbours that border the same mesh vertices.
+    std::unordered_map<std::uint32_t, std::uint32_t> pointOf;
     for (FittedRegion& r : regions) {
         if (!r.disk) continue; // a lone face that could not be mapped: left out
+        auto& loop = out.model.borders.emplace_back();
+        if (const auto border = diskBoundary(*graph, r.faces))
+            for (std::uint32_t vertex : *border) {
+                const auto [it, fresh] =
+                    pointOf.emplace(vertex, std::uint32_t(out.model.borderPoints.size()));
+                if (fresh) {
+                    const auto& p = mesh.positions[vertex];
+                    out.model.borderPoints.push_back({p[0], p[1], p[2]});
+                }
+                loop.push_back(it->second);
+            }
         out.model.patches.push_back(std::move(r.patch));
         out.regions.push_back(std::move(r.faces));
     }

@@ -167,7 +167,11 @@ std::optional<Patch> fitToPoints(const std::vector<Sample>& samples, const FitOp
         return fail(why, "the fit's equations are singular"), std::nullopt;
     const Eigen::MatrixXd x = ldlt.solve(atb);
     if (!x.allFinite()) return fail(why, "the fit did not give finite coefficients"), std::nullopt;
-    return patchFrom(x, o.radii, o.a);
+    Patch p = patchFrom(x, o.radii, o.a);
+    // The heavy rows hold the cap's conditions to about 1e-6; exactly now.
+    p.cap = o.pointAtStart && o.smoothPole;
+    completeCap(p);
+    return p;
 }
 
 } // namespace fl::pde

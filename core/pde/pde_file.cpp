@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -29,6 +30,18 @@ void forEachCoefficient(P& patch, F&& f) {
         for (auto& c : patch.sines[k])
             f(c);
     }
+}
+
+// The coefficients a file stores: all, but for a cap not those its
+// conditions fix (completeCap sets them on reading).
+template <typename P, typename F>
+void forEachStored(P& patch, F&& f) {
+    for (auto& c : patch.spine)
+        f(c);
+    for (std::size_t k = 0; k < patch.radii(); ++k)
+        for (auto* mode : {&patch.cosines[k], &patch.sines[k]})
+            for (int i = 0; i < 4; ++i)
+                if (!patch.cap || !capDerived(int(k) + 1, i)) f((*mode)[std::size_t(i)]);
 }
 
 // --- binary ---------------------------------------------------------------
@@ -117,10 +130,33 @@ std::string payloadOf(const Model& model, double step) {
     for (const Patch& p : model.patches) {
         w.varint(p.radii());
         w.f32(float(p.a));
-        forEachCoefficient(p, [&](const Vec3& c) {
+        w.out.push_back(char(p.cap ? 1 : 0));
+        forEachStored(p, [&](const Vec3& c) {
             for (double x : c)
                 w.zigzag(std::int64_t(std::llround(std::clamp(x / step, -0x1p53, 0x1p53))));
         });
+    }
+    // The shared border points, each as the step count from the previous
+    // one (neighbours along a loop: small numbers), then each patch's loop
+    // as differences of indices (mostly +1).
+    w.varint(model.borderPoints.size());
+    std::array<std::int64_t, 3> last{};
+    for (const Vec3& p : model.borderPoints)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto q = std::int64_t(
+                std::llround(std::clamp((p[k] - model.lo[k]) / step, -0x1p53, 0x1p53)));
+            w.zigzag(q - last[k]);
+            last[k] = q;
+        }
+    for (std::size_t i = 0; i < model.patches.size(); ++i) {
+        const auto& loop =
+            i < model.borders.size() ? model.borders[i] : std::vector<std::uint32_t>{};
+        w.varint(loop.size());
+        std::int64_t previous = 0;
+        for (std::uint32_t index : loop) {
+            w.zigzag(std::int64_t(index) - previous);
+            previous = index;
+        }
     }
     return w.out;
 }
@@ -155,10 +191,16 @@ bool readPayload(Reader& r, Model& m) {
         if (!(a > 0)) return r.fail("a patch's a must be positive");
         p.a = a;
         p.setRadii(std::size_t(radii));
-        if (r.left() < 3 * p.coefficientCount())
+        if (r.left() < 1) return r.fail("the file ends inside a patch's flags");
+        const auto flags = std::uint8_t(r.bytes[r.at++]);
+        if (flags > 1) return r.at -= 1, r.fail("unknown patch flags " + std::to_string(flags));
+        p.cap = flags & 1;
+        // Each stored coefficient takes at least three bytes (x, y, z).
+        const std::size_t derived = p.cap && p.radii() ? 4 * p.radii() - 2 : 0;
+        if (r.left() < 3 * (p.coefficientCount() - derived))
             return r.fail("the file ends inside a patch's coefficients");
         bool ok = true;
-        forEachCoefficient(p, [&](Vec3& c) {
+        forEachStored(p, [&](Vec3& c) {
             for (double& x : c) {
                 std::int64_t q = 0;
                 ok = ok && r.zigzag(q, "a coefficient");
@@ -167,8 +209,44 @@ bool readPayload(Reader& r, Model& m) {
             }
         });
         if (!ok) return false;
+        completeCap(p);
     }
-    if (r.left() != 0) return r.fail(std::to_string(r.left()) + " bytes follow the last patch");
+    std::uint64_t points = 0;
+    if (!r.varint(points, "the border point count")) return false;
+    if (points > r.left() / 3 || points > 0xffffffffu)
+        return r.fail(std::to_string(points) + " border points cannot fit in the " +
+                      std::to_string(r.left()) + " bytes that follow");
+    m.borderPoints.resize(std::size_t(points));
+    std::array<std::int64_t, 3> last{};
+    for (Vec3& p : m.borderPoints)
+        for (std::size_t k = 0; k < 3; ++k) {
+            std::int64_t d = 0;
+            if (!r.zigzag(d, "a border point")) return false;
+            if ((d > 0 && last[k] > (std::int64_t(1) << 60) - d) ||
+                (d < 0 && last[k] < -(std::int64_t(1) << 60) - d))
+                return r.fail("a border point is too far out");
+            last[k] += d;
+            p[k] = m.lo[k] + double(last[k]) * step;
+        }
+    m.borders.resize(m.patches.size());
+    for (auto& loop : m.borders) {
+        std::uint64_t length = 0;
+        if (!r.varint(length, "a border's length")) return false;
+        if (length > r.left()) return r.fail("a border longer than the bytes that follow");
+        if (length > 0 && length < 3) return r.fail("a border of fewer than three points");
+        loop.resize(std::size_t(length));
+        std::int64_t previous = 0;
+        for (std::uint32_t& index : loop) {
+            std::int64_t d = 0;
+            if (!r.zigzag(d, "a border index")) return false;
+            if (d > std::int64_t(points) || d < -std::int64_t(points) || previous + d < 0 ||
+                previous + d >= std::int64_t(points))
+                return r.fail("a border names a point that is not there");
+            previous += d;
+            index = std::uint32_t(previous);
+        }
+    }
+    if (r.left() != 0) return r.fail(std::to_string(r.left()) + " bytes follow the last border");
     return true;
 }
 
@@ -324,23 +402,49 @@ ReadResult readText(std::string_view bytes, std::string_view name) {
         if (!(m.lo[std::size_t(k)] <= m.hi[std::size_t(k)]))
             return fail(t[1 + std::size_t(k)], "the box's low corner is above its high corner"),
                    out;
-    while (nextLine()) {
+    // Shared border points, then the patches, each perhaps with its border.
+    bool more = nextLine();
+    while (more && t[0].text == "point") {
+        if (m.borderPoints.size() >= 0xffffffffu) return fail(t[0], "too many points"), out;
+        Vec3& p = m.borderPoints.emplace_back();
+        for (std::size_t k = 0; k < 3; ++k)
+            if (!numberAt(1 + k, p[k], "a point coordinate")) return out;
+        if (t.size() > 4) return fail(t[4], "a point has three coordinates"), out;
+        more = nextLine();
+    }
+    while (more) {
         if (!keyword("patch", "'patch radii N a A'")) return out;
         if (m.patches.size() >= kMaxPatches)
             return fail(t[0], "more than " + std::to_string(kMaxPatches) + " patches"), out;
-        if (t.size() != 5 || t[1].text != "radii" || t[3].text != "a")
-            return fail(t.size() > 1 ? t[1] : end, "expected 'patch radii N a A'"), out;
+        const bool cap = t.size() == 6 && t[5].text == "cap";
+        if ((t.size() != 5 && !cap) || t[1].text != "radii" || t[3].text != "a")
+            return fail(t.size() > 1 ? t[1] : end, "expected 'patch radii N a A' (and 'cap')"), out;
         std::size_t radii = 0;
         double a = 0;
         if (!wholeAt(2, radii, kMaxRadii, "radii") || !numberAt(4, a, "a")) return out;
         if (!(a > 0)) return fail(t[4], "a must be positive"), out;
         Patch& p = m.patches.emplace_back();
         p.a = a;
+        p.cap = cap;
         p.setRadii(radii);
         if (!modeLine(p.spine, "spine", 0)) return out;
         for (std::size_t k = 0; k < radii; ++k)
             if (!modeLine(p.cosines[k], "cos", k + 1) || !modeLine(p.sines[k], "sin", k + 1))
                 return out;
+        completeCap(p); // a cap's fixed coefficients follow from the free ones
+        auto& loop = m.borders.emplace_back();
+        more = nextLine();
+        if (more && t[0].text == "border") {
+            if (t.size() < 4) return fail(t[0], "a border has at least three points"), out;
+            if (m.borderPoints.empty())
+                return fail(t[0], "a border, but no 'point' lines before the patches"), out;
+            for (std::size_t i = 1; i < t.size(); ++i) {
+                std::size_t index = 0;
+                if (!wholeAt(i, index, m.borderPoints.size() - 1, "a point number")) return out;
+                loop.push_back(std::uint32_t(index));
+            }
+            more = nextLine();
+        }
     }
     out.model = std::move(m);
     return out;
@@ -376,7 +480,9 @@ std::string encodeText(const Model& model) {
     o << "# A PDE model: Bloor-Wilson patches X(u,v) = A0(u) + sum of An(u) cos(nv) + Bn(u) "
          "sin(nv).\n"
          "# spine: A0 = a0 + a1 u + a2 u^2 + a3 u^3 (four x y z); cos n / sin n: An, Bn =\n"
-         "# c1 g + c2 u g + c3 h + c4 u h with g = exp(-a n (1-u)), h = exp(-a n u).\n";
+         "# c1 g + c2 u g + c3 h + c4 u h with g = exp(-a n (1-u)), h = exp(-a n u).\n"
+         "# A 'cap' patch is one point at u = 0 with one tangent plane: there c3, and\n"
+         "# for n >= 2 c4, follow from c1 and c2 (they are written, and recomputed on reading).\n";
     o << "box";
     for (double v : model.lo)
         o << " " << number(v);
@@ -391,12 +497,24 @@ std::string encodeText(const Model& model) {
                 o << " " << number(x);
         o << "\n";
     };
-    for (const Patch& p : model.patches) {
-        o << "patch radii " << p.radii() << " a " << number(p.a) << "\n";
+    if (!model.borderPoints.empty())
+        o << "# The boundary curves' points (numbered from 0); a patch's 'border' line\n"
+             "# lists its loop, which the patch meets at u = 1.\n";
+    for (const Vec3& p : model.borderPoints)
+        o << "point " << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
+    for (std::size_t i = 0; i < model.patches.size(); ++i) {
+        const Patch& p = model.patches[i];
+        o << "patch radii " << p.radii() << " a " << number(p.a) << (p.cap ? " cap" : "") << "\n";
         mode("spine", 0, p.spine);
         for (std::size_t k = 0; k < p.radii(); ++k) {
             mode("cos", k + 1, p.cosines[k]);
             mode("sin", k + 1, p.sines[k]);
+        }
+        if (i < model.borders.size() && !model.borders[i].empty()) {
+            o << "border";
+            for (std::uint32_t index : model.borders[i])
+                o << " " << index;
+            o << "\n";
         }
     }
     return o.str();

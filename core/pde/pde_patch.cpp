@@ -26,6 +26,24 @@ Basis basis(int n, double a, double u) {
     return b;
 }
 
+void completeCap(Patch& patch) {
+    if (!patch.cap) return;
+    for (std::size_t k = 0; k < patch.radii(); ++k) {
+        const int n = int(k) + 1;
+        const Basis b = basis(n, patch.a, 0.0); // value {g0, 0, 1, 0}, du {k g0, g0, -k, 1}
+        for (Mode* m : {&patch.cosines[k], &patch.sines[k]})
+            for (std::size_t c = 0; c < 3; ++c) {
+                Mode& mode = *m;
+                // A(0) = c1 g0 + c3 = 0.
+                mode[2][c] = -b.value[0] * mode[0][c];
+                // A'(0) = c1 k g0 + c2 g0 - k c3 + c4 = 0.
+                if (n >= 2)
+                    mode[3][c] =
+                        -(mode[0][c] * b.du[0] + mode[1][c] * b.du[1] + mode[2][c] * b.du[2]);
+            }
+    }
+}
+
 namespace {
 
 void addScaled(Vec3& to, const Mode& m, const std::array<double, 4>& w, double s) {

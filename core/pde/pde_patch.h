@@ -20,7 +20,11 @@ using Vec3 = std::array<double, 3>;
 using Mode = std::array<Vec3, 4>; // the four vector coefficients of one An or Bn (or A0)
 
 struct Patch {
-    double a = 1;              // smoothing between u and v (the paper's a >= 1)
+    double a = 1; // smoothing between u and v (the paper's a >= 1)
+    // A cap: C0 is one point with one tangent plane there — An(0) = Bn(0) = 0
+    // for n >= 1 and An'(0) = Bn'(0) = 0 for n >= 2. Then c3 (and for n >= 2
+    // c4) of every mode follow from c1 and c2 (completeCap); files keep only those.
+    bool cap = false;
     Mode spine{};              // α0..α3: the cubic A0(u)
     std::vector<Mode> cosines; // An, n = 1..N
     std::vector<Mode> sines;   // Bn, n = 1..N
@@ -29,6 +33,13 @@ struct Patch {
     void setRadii(std::size_t n); // keeps what fits, zero beyond
     std::size_t coefficientCount() const { return 4 * (2 * radii() + 1); } // Mc
 };
+
+// Sets the coefficients a cap's conditions fix from the free ones.
+void completeCap(Patch& patch);
+// Whether coefficient i (0..3) of mode n (>= 1) of a cap follows from the others.
+inline bool capDerived(int n, int i) {
+    return i == 2 || (n >= 2 && i == 3);
+}
 
 // The four basis functions of mode n at u (n = 0: 1, u, u², u³), and their
 // first and second derivatives in u.

@@ -4,6 +4,7 @@
 // each measured the way any tool would (the model written, read back,
 // meshed, and compared by exact distances both ways); bad meshes refused
 // with where and why; more radii never miss more.
+#include "mesh/mesh_topology.h"
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
 #include "pde/mesh_fit.h"
@@ -124,6 +125,28 @@ TEST(PdeMeshFit, ASphereAndACylinderAreRecoveredWithFewPatches) {
         EXPECT_LT(s.rms, 2e-3) << name;
         EXPECT_LT(s.hausdorff, 0.03) << name;
     }
+}
+
+TEST(PdeMeshFit, NeighbouringPatchesMeetWithoutACrack) {
+    // A closed mesh gives a closed model: every edge of the meshed patches
+    // has two triangles, the shared border points being one vertex each.
+    pde::MeshFitOptions o;
+    o.patches = 12;
+    o.radii = 6;
+    std::string why;
+    const auto fit = pde::fitMesh(sphere(24, 48), o, &why);
+    ASSERT_TRUE(fit) << why;
+    const pde::ReadResult back = pde::readModel(pde::encodeBinary(fit->model), "s.pde");
+    ASSERT_TRUE(back.ok()) << back.error;
+    const mesh::Topology t = mesh::analyseTopology(pde::meshModel(*back.model, {8, 16}));
+    EXPECT_EQ(t.boundaryEdges, 0u);
+    EXPECT_EQ(t.nonManifoldEdges, 0u);
+    EXPECT_EQ(t.misorientedEdges, 0u);
+    EXPECT_GT(t.signedVolume, 0); // facing out, as the mesh did
+    // Without the borders the same patches leave cracks (the check can fail).
+    pde::Model bare = *back.model;
+    bare.borders.clear();
+    EXPECT_GT(mesh::analyseTopology(pde::meshModel(bare, {8, 16})).boundaryEdges, 0u);
 }
 
 TEST(PdeMeshFit, ATorusHasNoCapAndIsStillCovered) {

@@ -23,6 +23,7 @@ Model randomModel(std::size_t patches, unsigned seed) {
         Patch p;
         p.a = 1 + 0.25 * double(i % 3);
         p.setRadii(i % 5);
+        p.cap = i % 2 == 1;
         auto fill = [&](Mode& mode, double s) {
             for (Vec3& c : mode)
                 for (double& x : c)
@@ -33,6 +34,7 @@ Model randomModel(std::size_t patches, unsigned seed) {
             fill(p.cosines[k], 0.3);
             fill(p.sines[k], 0.3);
         }
+        fl::pde::completeCap(p);
         m.patches.push_back(p);
     }
     return m;
@@ -44,6 +46,7 @@ void forEachPair(const Model& a, const Model& b, F&& f) {
     for (std::size_t i = 0; i < a.patches.size(); ++i) {
         const Patch &p = a.patches[i], &q = b.patches[i];
         ASSERT_EQ(p.radii(), q.radii());
+        EXPECT_EQ(p.cap, q.cap);
         EXPECT_NEAR(p.a, q.a, 1e-6);
         auto modes = [&](const Mode& x, const Mode& y) {
             for (std::size_t k = 0; k < 4; ++k)
@@ -82,6 +85,36 @@ TEST(PdeFile, WriteThenReadIsTheIdentityUpToTheStatedQuantisation) {
     const ReadResult e = readModel(encodeBinary(Model{}), "e.pde");
     ASSERT_TRUE(e.ok()) << e.error;
     EXPECT_TRUE(e.model->patches.empty());
+}
+
+TEST(PdeFile, SharedBordersAreWrittenAndReadBackInBothForms) {
+    Model m = randomModel(3, 2);
+    m.borderPoints = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0.25}};
+    m.borders = {{0, 1, 2, 3}, {}, {4, 3, 2}};
+    for (int bits : {10, 20}) {
+        const double step = quantisationStep(m, {bits});
+        const ReadResult r = readModel(encodeBinary(m, {bits}), "b.pde");
+        ASSERT_TRUE(r.ok()) << r.error;
+        EXPECT_EQ(r.model->borders, m.borders);
+        ASSERT_EQ(r.model->borderPoints.size(), m.borderPoints.size());
+        for (std::size_t i = 0; i < m.borderPoints.size(); ++i)
+            for (std::size_t k = 0; k < 3; ++k)
+                EXPECT_LE(std::abs(r.model->borderPoints[i][k] - m.borderPoints[i][k]),
+                          step / 2 * (1 + 1e-9));
+    }
+    const ReadResult t = readModel(encodeText(m), "b.pde");
+    ASSERT_TRUE(t.ok()) << t.error;
+    EXPECT_EQ(t.model->borders, m.borders);
+    EXPECT_EQ(t.model->borderPoints, m.borderPoints);
+    // A border naming a point that is not there, located.
+    const ReadResult bad =
+        readModel("FLPDE text 1\nbox 0 0 0 1 1 1\npoint 0 0 0\npoint 1 0 0\n"
+                  "point 0 1 0\npatch radii 0 a 1\nspine 0 0 0 0 0 0 0 0 0 0 0 0\n"
+                  "border 0 1 7\n",
+                  "b.pde");
+    EXPECT_EQ(bad.error.rfind("b.pde:8:12: a point number must be a whole number from 0 to 2", 0),
+              0u)
+        << bad.error;
 }
 
 TEST(PdeFile, EveryTruncationAndEveryFlippedByteIsRefusedOrReadNeverACrash) {

@@ -141,7 +141,11 @@ TEST(PdePatch, ACapsDegenerateStartCurveStaysAPoint) {
     ASSERT_TRUE(p) << why;
     for (int j = 0; j < 10; ++j)
         EXPECT_LT(distance(position(*p, 0, j * 0.6), {0, 0, 1}), 1e-12);
-    const fl::mesh::Mesh mesh = meshModel(Model{{-1, -1, 0}, {1, 1, 1}, {*p}}, {8, 16});
+    Model dome;
+    dome.lo = {-1, -1, 0};
+    dome.hi = {1, 1, 1};
+    dome.patches = {*p};
+    const fl::mesh::Mesh mesh = meshModel(dome, {8, 16});
     // The start ring is one vertex: 16 fewer triangles than the full grid's 8 x 16 x 2.
     EXPECT_EQ(mesh.triangleCount(), std::size_t(8 * 16 * 2 - 16));
     EXPECT_EQ(mesh.vertexCount(), std::size_t(8 * 16 + 1));
