@@ -1,5 +1,6 @@
 #include "mesh_fit.h"
 
+#include "border_curves.h"
 #include "disk_map.h"
 #include "mesh_regions.h"
 #include "patch_solve.h"
@@ -120,6 +121,13 @@ class RadialStretch {
         }
         return angles_.size() >= 3;
     }
+    // The polygon's radius in the direction v.
+    double radiusAt(double v) const {
+        auto it = std::upper_bound(angles_.begin(), angles_.end(), v);
+        const double hi = it == angles_.end() ? angles_.front() + 2 * std::numbers::pi : *it;
+        const double lo = it == angles_.begin() ? angles_.back() - 2 * std::numbers::pi : *(it - 1);
+        return std::cos((hi - lo) / 2) / std::cos(v - (hi + lo) / 2);
+    }
     std::pair<double, double> operator()(std::complex<double> z) const {
         const auto [u, v] = polar(z);
         auto it = std::upper_bound(angles_.begin(), angles_.end(), v);
@@ -133,6 +141,63 @@ class RadialStretch {
   private:
     std::vector<double> angles_;
 };
+
+// The fit's misses at the samples: Σ w |X(u, v) - p|² and Σ w.
+void measureMisses(FittedRegion& r, const std::vector<Sample>& samples) {
+    r.missed = r.weight = 0;
+    for (const Sample& s : samples) {
+        const Vec3 x = position(r.patch, s.u, s.v);
+        const double d2 = (x[0] - s.point[0]) * (x[0] - s.point[0]) +
+                          (x[1] - s.point[1]) * (x[1] - s.point[1]) +
+                          (x[2] - s.point[2]) * (x[2] - s.point[2]);
+        r.missed += s.weight * d2;
+        r.weight += s.weight;
+    }
+    r.disk = true;
+}
+
+// The paper's method, for comparison: four curves read off the region at
+// u = 0 (the pole), 1/3, 2/3 and 1, each at 4N + 4 values of v, and the
+// patch through them (fromBoundaryCurves).
+bool fitByCurves(const mesh::Mesh& m, FittedRegion& r, const DiskMap& map,
+                 const RadialStretch& stretch, const MeshFitOptions& o) {
+    const std::size_t radii = std::clamp<std::size_t>(r.faces.size() / 4, 1, o.radii);
+    const std::size_t count = 4 * radii + 4;
+    BoundaryCurves curves;
+    const std::array<double, 4> at{0, curves.u1, curves.u2, 1};
+    for (std::size_t k = 0; k < 4; ++k)
+        for (std::size_t j = 0; j < count; ++j) {
+            const double v = 2 * std::numbers::pi * double(j) / double(count);
+            const std::complex<double> z = std::polar(at[k] * stretch.radiusAt(v), v);
+            // The mapped face holding z (the nearest by barycentric slack).
+            Vec3 best{};
+            double slack = 1e300;
+            for (std::uint32_t f : r.faces) {
+                const auto& t = m.triangles[f];
+                const std::complex<double> a = map.at.at(t[0]), b = map.at.at(t[1]),
+                                           c = map.at.at(t[2]);
+                const double d = (b - a).real() * (c - a).imag() - (b - a).imag() * (c - a).real();
+                if (d == 0) continue;
+                const double wb =
+                    ((z - a).real() * (c - a).imag() - (z - a).imag() * (c - a).real()) / d;
+                const double wc =
+                    ((b - a).real() * (z - a).imag() - (b - a).imag() * (z - a).real()) / d;
+                const double wa = 1 - wb - wc;
+                const double out = std::max({0.0, -wa, -wb, -wc});
+                if (out < slack) {
+                    slack = out;
+                    for (std::size_t x = 0; x < 3; ++x)
+                        best[x] = wa * m.positions[t[0]][x] + wb * m.positions[t[1]][x] +
+                                  wc * m.positions[t[2]][x];
+                }
+            }
+            curves.curves[k].push_back(best);
+        }
+    const auto patch = fromBoundaryCurves(curves, radii, o.a);
+    if (!patch) return false;
+    r.patch = *patch;
+    return true;
+}
 
 // Fits one disk region; false when it is not a disk (or the map failed).
 bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
@@ -167,6 +232,11 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
                     {u, v, p, g.area[f] / perFace * (u >= 1 - 1e-9 ? o.borderWeight : 1.0)});
             }
     }
+    if (o.method == FitMethod::BoundaryCurves) {
+        if (!fitByCurves(m, r, *map, stretch, o)) return false;
+        measureMisses(r, samples);
+        return true;
+    }
     // Radii the region can fix: small regions take fewer. A fit that wanders
     // between its samples (a grid point of the patch far from every sample)
     // is made again with half the radii.
@@ -183,16 +253,7 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
         if (fo.radii == 1 || staysNearItsSamples(r.patch, samples)) break;
         fo.radii /= 2;
     }
-    r.missed = r.weight = 0;
-    for (const Sample& s : samples) {
-        const Vec3 x = position(r.patch, s.u, s.v);
-        const double d2 = (x[0] - s.point[0]) * (x[0] - s.point[0]) +
-                          (x[1] - s.point[1]) * (x[1] - s.point[1]) +
-                          (x[2] - s.point[2]) * (x[2] - s.point[2]);
-        r.missed += s.weight * d2;
-        r.weight += s.weight;
-    }
-    r.disk = true;
+    measureMisses(r, samples);
     return true;
 }
 
@@ -298,25 +359,19 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
     out.rms = rms();
     out.reached = o.patches ? true : out.rms <= o.error;
     // Each patch's border loop (in the order v increases: the faces' own
-    // winding, as the disk map laid it), its points shared with the
-    // neighbours that border the same mesh vertices.
-    std::unordered_map<std::uint32_t, std::uint32_t> pointOf;
+    // winding, as the disk map laid it), simplified to the error asked
+    // for, its points shared with the neighbours along the same seams.
+    std::vector<std::vector<std::uint32_t>> loops;
     for (FittedRegion& r : regions) {
         if (!r.disk) continue; // a lone face that could not be mapped: left out
-        auto& loop = out.model.borders.emplace_back();
-        if (const auto border = diskBoundary(*graph, r.faces))
-            for (std::uint32_t vertex : *border) {
-                const auto [it, fresh] =
-                    pointOf.emplace(vertex, std::uint32_t(out.model.borderPoints.size()));
-                if (fresh) {
-                    const auto& p = mesh.positions[vertex];
-                    out.model.borderPoints.push_back({p[0], p[1], p[2]});
-                }
-                loop.push_back(it->second);
-            }
+        const auto border = diskBoundary(*graph, r.faces);
+        loops.push_back(border ? *border : std::vector<std::uint32_t>{});
         out.model.patches.push_back(std::move(r.patch));
         out.regions.push_back(std::move(r.faces));
     }
+    BorderCurves curves = borderCurves(mesh, loops, o.error * diagonal);
+    out.model.borderPoints = std::move(curves.points);
+    out.model.borders = std::move(curves.loops);
     return out;
 }
 

@@ -18,7 +18,13 @@
 
 namespace fl::pde {
 
+enum class FitMethod : std::uint8_t {
+    Points,         // least squares to every point of the region, with parameter correction
+    BoundaryCurves, // the paper's: four curves read off the region, the patch through them
+};
+
 struct MeshFitOptions {
+    FitMethod method = FitMethod::Points;
     std::size_t patches = 0; // this many (0: as few as reach `error`)
     double error = 0.003;    // RMS of the fit's misses, a fraction of the box diagonal
     std::size_t radii = 12;  // the most per patch (small regions take fewer; see fitMesh)

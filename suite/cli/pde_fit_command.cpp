@@ -23,7 +23,7 @@ const CommandSpec& pdeFitSpec() {
         .name = "pde fit",
         .summary = "a polygon mesh (.obj) as a few PDE patches (.pde)",
         .synopsis = {"pde fit MESH.obj -o MODEL.pde [--patches N | --error E] [--radii N]\n"
-                     "[--bits B] [--text] [--json]"},
+                     "[--method points|curves] [--bits B] [--text] [--json]"},
         .description =
             "Cuts the mesh into disk-like regions and fits each with a Bloor-Wilson PDE\n"
             "patch (a cubic spine and N Fourier radii, the u = 0 curve a point), splitting\n"
@@ -74,6 +74,14 @@ const CommandSpec& pdeFitSpec() {
                      .defaultValue = "12",
                      .min = 4,
                      .max = 32},
+                    {.name = "method",
+                     .kind = OptionKind::Choice,
+                     .valueName = "M",
+                     .help = "points: least squares to every point of each region (with parameter "
+                             "correction); curves: the paper's method, the patch through four "
+                             "curves read off each region (for comparison)",
+                     .defaultValue = "points",
+                     .choices = {"points", "curves"}},
                     {.name = "text", .help = "write the readable text form instead of binary"},
                     {.name = "json", .help = "print the figures as one JSON object on stdout"}},
         .notes = "Refused with a located message (exit 1): a file that is not an OBJ mesh, no\n"
@@ -107,6 +115,8 @@ int pdeFitCommand(const Args& args) {
     o.error = a->number("error", 0.003);
     o.radii = std::size_t(a->number("radii", 12));
     o.maxPatches = std::size_t(a->number("max-patches", 2000));
+    o.method = a->text("method", "points") == "curves" ? pde::FitMethod::BoundaryCurves
+                                                       : pde::FitMethod::Points;
     const bool terminal = isatty(STDERR_FILENO);
     if (terminal)
         o.progress = [&](std::size_t patches, double rms) {
@@ -143,12 +153,14 @@ int pdeFitCommand(const Args& args) {
         radii = std::max(radii, p.radii());
     if (a->flag("json")) {
         std::printf("{\"mesh\": \"%s\", \"vertices\": %zu, \"faces\": %zu, \"patches\": %zu, "
-                    "\"max_radii\": %zu, \"coefficients\": %zu, \"bytes\": %zu, \"bits\": %d, "
+                    "\"method\": \"%s\", \"max_radii\": %zu, \"coefficients\": %zu, \"bytes\": "
+                    "%zu, \"bits\": %d, "
                     "\"fit_ms\": %.1f, \"fit_rms\": %.6g, \"rms\": %.6g, \"hausdorff\": %.6g, "
                     "\"samples\": %zu, \"reached\": %s}\n",
                     input.c_str(), read.mesh->vertexCount(), read.mesh->triangleCount(),
-                    fit->model.patches.size(), radii, fit->model.coefficientCount(), bytes.size(),
-                    eo.bits, fitMs, fit->rms, d.rms / diagonal, d.hausdorff / diagonal, d.samples,
+                    fit->model.patches.size(), a->text("method", "points").c_str(), radii,
+                    fit->model.coefficientCount(), bytes.size(), eo.bits, fitMs, fit->rms,
+                    d.rms / diagonal, d.hausdorff / diagonal, d.samples,
                     fit->reached ? "true" : "false");
     }
     std::cerr << out << ": " << fit->model.patches.size() << " patches (at most " << radii
