@@ -28,9 +28,8 @@ struct MeshFitOptions {
     std::size_t patches = 0; // this many (0: as few as reach `error`)
     double error = 0.003;    // RMS of the fit's misses, a fraction of the box diagonal
     std::size_t radii = 12;  // the most per patch (small regions take fewer; see fitMesh)
-    // Smaller than the paper's a >= 1: the u basis is nearer a cubic, and the
-    // bunny misses less (docs/pde.md: a = 1, 0.5, 0.25 measured).
-    double a = 0.5;
+    // The PDE's a (the paper's a >= 1); docs/pde.md has 1, 0.5 and 0.25 measured.
+    double a = 1;
     std::size_t maxPatches = 2000;
     double borderWeight = 4; // how much more a border vertex counts
     int corrections = 3;     // rounds of parameter correction after the first fit

@@ -23,7 +23,7 @@ const CommandSpec& pdeFitSpec() {
         .name = "pde fit",
         .summary = "a polygon mesh (.obj) as a few PDE patches (.pde)",
         .synopsis = {"pde fit MESH.obj -o MODEL.pde [--patches N | --error E] [--radii N]\n"
-                     "[--method points|curves] [--bits B] [--text] [--json]"},
+                     "[--smoothing A] [--method points|curves] [--bits B] [--text] [--json]"},
         .description =
             "Cuts the mesh into disk-like regions and fits each with a Bloor-Wilson PDE\n"
             "patch (a cubic spine and N Fourier radii, the u = 0 curve a point), splitting\n"
@@ -74,6 +74,14 @@ const CommandSpec& pdeFitSpec() {
                      .defaultValue = "12",
                      .min = 4,
                      .max = 32},
+                    {.name = "smoothing",
+                     .kind = OptionKind::Number,
+                     .valueName = "A",
+                     .help = "the PDE's a: the relative rate of smoothing along u and v (the paper "
+                             "takes a >= 1; smaller is nearer a cubic along u)",
+                     .defaultValue = "1",
+                     .min = 0.05,
+                     .max = 8},
                     {.name = "method",
                      .kind = OptionKind::Choice,
                      .valueName = "M",
@@ -115,6 +123,7 @@ int pdeFitCommand(const Args& args) {
     o.error = a->number("error", 0.003);
     o.radii = std::size_t(a->number("radii", 12));
     o.maxPatches = std::size_t(a->number("max-patches", 2000));
+    o.a = a->number("smoothing", 1);
     o.method = a->text("method", "points") == "curves" ? pde::FitMethod::BoundaryCurves
                                                        : pde::FitMethod::Points;
     const bool terminal = isatty(STDERR_FILENO);
