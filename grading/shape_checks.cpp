@@ -30,8 +30,14 @@ bool isComposite(const mesh::ShapeMesh& s) {
     return !s.geometry && s.field && s.shape && s.shape->kind() == scene::NodeKind::FTransform;
 }
 
+bool isPdeSurface(const mesh::ShapeMesh& s) {
+    return s.geometry && s.geometry->kind() == scene::NodeKind::FPdeSurface;
+}
+
 std::optional<GeometryType> typeOf(const mesh::ShapeMesh& s) {
     if (isComposite(s)) return GeometryType::Explicit;
+    // PDE patches are parametric functions of u and v (docs/pde.md).
+    if (isPdeSurface(s)) return GeometryType::Parametric;
     if (!s.geometry || s.geometry->kind() != scene::NodeKind::FGeometry) return std::nullopt;
     return scene::geometryTypeNamed(scene::stringField(*s.geometry, "type"));
 }
@@ -99,6 +105,13 @@ RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& 
                 out.evidence = name + ": an explicit solid, the " +
                                scene::stringField(*s.shape, "operation") + " of its children";
                 out.locations.push_back(view.locationOf(*s.shape, "operation"));
+                return out;
+            }
+            if (isPdeSurface(s)) {
+                const auto urls = scene::stringsField(*s.geometry, "url");
+                out.evidence = name + ": parametric, the PDE patches of " +
+                               shortened(urls.empty() ? std::string("?") : urls.front());
+                out.locations.push_back(view.locationOf(*s.geometry, "url"));
                 return out;
             }
             out.evidence = name + ": " + std::string(scene::geometryTypeName(wanted)) + " `" +

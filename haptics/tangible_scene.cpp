@@ -16,9 +16,12 @@ const EffectField* TangibleShape::effect(scene::TangibleKind kind) const {
 
 namespace {
 
+// Touched by its triangles: an FGeometry with collision "polygonal", and
+// every PDE surface (it has no function of the point to push against).
 bool polygonal(const scene::Node* geometry) {
-    return geometry && geometry->kind() == scene::NodeKind::FGeometry &&
-           scene::stringField(*geometry, "collision") == "polygonal";
+    return geometry && ((geometry->kind() == scene::NodeKind::FGeometry &&
+                         scene::stringField(*geometry, "collision") == "polygonal") ||
+                        geometry->kind() == scene::NodeKind::FPdeSurface);
 }
 
 // The shapes as the viewer meshes them: the same walk, the same clock. Function

@@ -1,11 +1,16 @@
 #include "scene_meshing.h"
 
+#include "pde/pde_mesh.h"
+#include "pde_surface_shape.h"
+
 #include "animation/clock.h"
 #include "error_driven.h"
 #include "function_composite.h"
 #include "lent_appearance.h"
 #include "mesh_topology.h"
 #include "parametric.h"
+#include "pde/pde_mesh.h"
+#include "pde_surface_shape.h"
 #include "point_cloud.h"
 #include "scene/field_access.h"
 #include "scene_standard_geometry.h"
@@ -116,6 +121,10 @@ class Walker {
         const Node* geometry = scene::effectiveNode(moment_.node(n, "geometry"));
         if (!geometry) { // lends its properties to the shapes grouped with it
             if (n.kind() == scene::NodeKind::FShape) out_.lenders.push_back({&n, m.matrix()});
+            return;
+        }
+        if (geometry->kind() == scene::NodeKind::FPdeSurface) {
+            pdeShape(n, *geometry, m);
             return;
         }
         if (geometry->kind() != scene::NodeKind::FGeometry) {
@@ -267,6 +276,47 @@ class Walker {
     }
 
     // Box, Sphere, IndexedFaceSet ... under a Shape or an FShape.
+    // A PDE model (FPdeSurface): its patches on a (u, v) grid, the grid set
+    // by `resolution` (or the level of detail), coloured like a parametric
+    // shape (FMaterial formulas read u and v), touched as polygons.
+    void pdeShape(const Node& n, const Node& geometry, const Affine& m) {
+        ShapeMesh sm;
+        sm.shape = &n;
+        sm.name = nameOf(n);
+        sm.geometry = &geometry;
+        sm.functionGeometry = true; // FunctionLab's own: other browsers get a preview
+        const PdeSurfaceModel loaded =
+            pdeSurfaceModel(scene_, geometry, moment_.strings(geometry, "url"));
+        if (!loaded.model) {
+            sm.error = "FPdeSurface url: " + loaded.error;
+            out_.shapes.push_back(std::move(sm));
+            return;
+        }
+        double resolution = moment_.number(geometry, "resolution", 0, 32);
+        if (!options_.useFileResolution && options_.mesh.resolution > 0)
+            resolution = options_.mesh.resolution;
+        if (auto it = options_.resolutions.find(&geometry); it != options_.resolutions.end())
+            resolution = it->second;
+        sm.resolution = resolution;
+        if (moment_.flag(geometry, "lod")) sm.levelOfDetail = &geometry;
+        sm.domain = field::Box3{loaded.model->lo, loaded.model->hi};
+        const pde::MeshOptions grid = pde::meshOptionsFor(resolution);
+        MeshResult r = cached("pde|" + loaded.file + "|" + std::to_string(grid.stepsU) + "x" +
+                                  std::to_string(grid.stepsV),
+                              [&] {
+                                  MeshResult made;
+                                  made.mesh = pde::meshModel(*loaded.model, grid);
+                                  return made;
+                              });
+        sm.mesh = std::move(r.mesh);
+        const Node* appearance = context_.appearanceOf(n);
+        sm.look = lookOf(context_, appearance, n.kind() == NodeKind::FShape);
+        sm.appearance = appearance;
+        colour(context_, appearance, colourBoxOf(sm.mesh), sm);
+        place(sm, m);
+        out_.shapes.push_back(std::move(sm));
+    }
+
     void standardShape(const Node& n, const Node& geometry, const Affine& m) {
         if (!options_.standardShapes) {
             out_.notes.push_back(nameOf(n) + ": standard geometry " + geometry.type +

@@ -56,6 +56,17 @@ constexpr FieldSpec kFGeometryFields[] = {
     FL_TIMING_FIELDS,
 };
 
+// A PDE model (`functionlab pde fit`, docs/pde.md) as geometry: its url is
+// read like an Inline's (inside the scene's folder only); each patch is
+// meshed at resolution/2 steps along u and resolution round v, varied by
+// the level of detail within lodRange like an FGeometry.
+constexpr FieldSpec kFPdeSurfaceFields[] = {
+    {"url", MFString, InputOutput, ""},
+    {"resolution", SFFloat, InputOutput, "32"},
+    {"lod", SFBool, InputOutput, "TRUE"},
+    {"lodRange", SFVec2f, InputOutput, "8 128"},
+};
+
 constexpr FieldSpec kFAppearanceFields[] = {
     {"material", SFNode, InputOutput, "NULL"},
     {"texture", SFNode, InputOutput, "NULL"},
@@ -133,6 +144,7 @@ constexpr std::array kFunctionNodes = {
     fn("FFriction", "friction", kOneDefinitionFields),
     fn("FGeometry", "geometry", kFGeometryFields),
     fn("FMaterial", "material", kFMaterialFields),
+    fn("FPdeSurface", "geometry", kFPdeSurfaceFields),
     fn("FPhysics", "physics", kFPhysicsFields),
     fn("FShape", "children", kFShapeFields),
     fn("FSurface", "surface", kFSurfaceFields),

@@ -8,7 +8,7 @@
 namespace fl::scene {
 namespace {
 
-constexpr std::array<std::string_view, 145> kNames{
+constexpr std::array<std::string_view, 146> kNames{
     "",
     "Anchor",
     "Appearance",
@@ -53,6 +53,7 @@ constexpr std::array<std::string_view, 145> kNames{
     "FFriction",
     "FGeometry",
     "FMaterial",
+    "FPdeSurface",
     "FPhysics",
     "FShape",
     "FSurface",

@@ -56,6 +56,7 @@ enum class NodeKind : std::uint16_t {
     FFriction,
     FGeometry,
     FMaterial,
+    FPdeSurface,
     FPhysics,
     FShape,
     FSurface,

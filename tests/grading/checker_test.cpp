@@ -3,10 +3,12 @@
 // not, with reasons that name the place; verdicts are the same every time.
 #include "grading/checker.h"
 
+#include "pde/pde_file.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -173,4 +175,38 @@ TEST(Checker, SubmissionsWithKnownVerdicts) {
     EXPECT_GE(checked, 16);
     EXPECT_TRUE(reports.at("hostile_huge.x3dv").budgetExceeded ||
                 result(reports.at("hostile_huge.x3dv"), "set-operations").met);
+}
+
+TEST(Checker, APdeSurfaceCountsAsAParametricShape) {
+    // Issue 30: a PDE model is parametric (each patch a function of u, v).
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "functionlab-checker-pde";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    pde::Patch p;
+    p.cap = true;
+    p.setRadii(1);
+    p.spine = {pde::Vec3{0, 1, 0}, pde::Vec3{0, -1, 0}, pde::Vec3{}, pde::Vec3{}};
+    p.cosines[0][1] = {1.2, 0, 0};
+    p.sines[0][1] = {0, 0, 1.2};
+    pde::completeCap(p);
+    pde::Model m;
+    m.hi = {1, 1, 1};
+    m.patches = {p};
+    std::ofstream(dir / "dome.pde", std::ios::binary) << pde::encodeBinary(m);
+    std::ofstream(dir / "dome.x3dv")
+        << "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
+           "FShape { geometry FPdeSurface { url \"dome.pde\" } }\n";
+    const CheckReport r = checkSubmission((dir / "dome.x3dv").string(), fantasies());
+    const auto& q = result(r, "parametric");
+    EXPECT_TRUE(q.met) << q.evidence;
+    EXPECT_NE(q.evidence.find("PDE patches of dome.pde"), std::string::npos) << q.evidence;
+    ASSERT_FALSE(q.locations.empty());
+    // A url that reads nothing shows nothing: not met.
+    std::ofstream(dir / "dome.x3dv", std::ios::trunc)
+        << "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
+           "FShape { geometry FPdeSurface { url \"missing.pde\" } }\n";
+    EXPECT_FALSE(
+        result(checkSubmission((dir / "dome.x3dv").string(), fantasies()), "parametric").met);
+    fs::remove_all(dir);
 }
