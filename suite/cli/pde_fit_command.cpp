@@ -7,6 +7,7 @@
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
 #include "pde/mesh_fit.h"
+#include "pde/patch_formula.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
 
@@ -14,16 +15,39 @@
 
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 namespace fl::cli {
+namespace {
+
+// One patch as a parametric FGeometry, in a scene of its own (X3D XML or
+// ClassicVRML by the extension).
+bool writePatchScene(const std::string& path, const pde::Model& model, std::size_t k,
+                     std::string& why) {
+    const bool classic = path.size() > 5 && path.compare(path.size() - 5, 5, ".x3dv") == 0;
+    if (!classic && !(path.size() > 4 && path.compare(path.size() - 4, 4, ".x3d") == 0)) {
+        why = path + ": --formula writes a scene: name it .x3d or .x3dv";
+        return false;
+    }
+    const std::string text = pde::patchScene(model, k, classic);
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file || !file.write(text.data(), std::streamsize(text.size()))) {
+        why = path + ": cannot be written";
+        return false;
+    }
+    return true;
+}
+
+} // namespace
 
 const CommandSpec& pdeFitSpec() {
     static const CommandSpec spec{
         .name = "pde fit",
         .summary = "a polygon mesh (.obj) as a few PDE patches (.pde)",
         .synopsis = {"pde fit MESH.obj -o MODEL.pde [--patches N | --error E] [--radii N]\n"
-                     "[--smoothing A] [--method points|curves] [--bits B] [--text] [--json]"},
+                     "[--smoothing A] [--method points|curves] [--bits B] [--text | --formula K]\n"
+                     "[--json]"},
         .description =
             "Cuts the mesh into disk-like regions and fits each with a Bloor-Wilson PDE\n"
             "patch (a cubic spine and N Fourier radii, the u = 0 curve a point), splitting\n"
@@ -91,6 +115,13 @@ const CommandSpec& pdeFitSpec() {
                      .defaultValue = "points",
                      .choices = {"points", "curves"}},
                     {.name = "text", .help = "write the readable text form instead of binary"},
+                    {.name = "formula",
+                     .kind = OptionKind::Integer,
+                     .valueName = "K",
+                     .help = "write patch K (from 0) as a parametric FGeometry in a scene (-o "
+                             "OUT.x3d or .x3dv) instead of the model: a PDE patch is a "
+                             "parametric function of u and v",
+                     .min = 0},
                     {.name = "json", .help = "print the figures as one JSON object on stdout"}},
         .notes = "Refused with a located message (exit 1): a file that is not an OBJ mesh, no\n"
                  "faces, coordinates that are not finite, an edge with more than two faces,\n"
@@ -144,6 +175,21 @@ int pdeFitCommand(const Args& args) {
     const double fitMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
             .count();
+    if (a->given("formula")) {
+        const auto k = std::size_t(a->number("formula", 0));
+        if (k >= fit->model.patches.size()) {
+            std::cerr << input << ": there is no patch " << k << " (the model has "
+                      << fit->model.patches.size() << ", numbered from 0)\n";
+            return kExitDiagnostic;
+        }
+        if (!writePatchScene(out, fit->model, k, why)) {
+            std::cerr << why << "\n";
+            return kExitDiagnostic;
+        }
+        std::cerr << out << ": patch " << k << " of " << fit->model.patches.size() << " ("
+                  << fit->model.patches[k].radii() << " radii) as a parametric FGeometry\n";
+        return kExitOk;
+    }
     const pde::EncodeOptions eo{int(a->number("bits", 12))};
     const bool text = a->flag("text");
     if (!pde::writeModelFile(out, fit->model, text, eo, &why)) {

@@ -3,6 +3,8 @@
 // scene's folder only), at its resolution or the level of detail's, and a
 // url that cannot be read is that shape's error, never the scene's.
 #include "mesh/scene_meshing.h"
+#include "mesh/surface_distance.h"
+#include "pde/patch_formula.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
 #include "scene/scene_reader.h"
@@ -133,4 +135,32 @@ TEST(PdeSurfaceNode, AUrlThatCannotBeReadIsTheShapesErrorNotTheScenes) {
     ASSERT_EQ(m.shapes.size(), 1u);
     EXPECT_NE(m.shapes[0].error.find("not read from a file"), std::string::npos)
         << m.shapes[0].error;
+}
+
+TEST(PdeSurfaceNode, APatchWrittenAsAFormulaIsTheSameSurface) {
+    // pde fit --formula: the patch as a parametric FGeometry; meshed by the
+    // parametric mesher it lies on the patch meshed by meshModel.
+    pde::Model m = dome();
+    m.patches[0].setRadii(3);
+    m.patches[0].cosines[2][0] = {0.05, 0.02, -0.03};
+    m.patches[0].sines[1][1] = {0.0, 0.04, 0.01};
+    pde::completeCap(m.patches[0]);
+    const mesh::Mesh reference = pde::meshModel(m, {48, 96});
+    for (bool classic : {false, true}) {
+        const std::string text = pde::patchScene(m, 0, classic);
+        const scene::ReadResult r = scene::readSceneBytes(text, classic ? "p.x3dv" : "p.x3d");
+        ASSERT_TRUE(r.ok()) << text;
+        for (const auto& d : r.diagnostics)
+            ADD_FAILURE() << scene::formatSceneDiagnostic(d);
+        mesh::SceneMeshOptions o;
+        o.useFileResolution = false;
+        o.mesh.resolution = 64;
+        const mesh::SceneMeshes meshes = mesh::meshScene(*r.scene, o);
+        ASSERT_EQ(meshes.shapes.size(), 1u);
+        ASSERT_TRUE(meshes.shapes[0].error.empty()) << meshes.shapes[0].error;
+        const mesh::SurfaceDistance d =
+            mesh::compareSurfaces(meshes.shapes[0].mesh, reference, 5000);
+        EXPECT_LT(d.hausdorff, 0.01 * m.diagonal()) << (classic ? "classic" : "xml");
+        EXPECT_LT(d.rms, 0.002 * m.diagonal()) << (classic ? "classic" : "xml");
+    }
 }
