@@ -1,10 +1,14 @@
 #include "scene_policy.h"
 
+#include "pde/pde_data_url.h"
+#include "pde/pde_mesh.h"
+#include "scene/field_access.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_work.h"
 #include "scene/source_map.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fl::classroom {
 
@@ -18,7 +22,30 @@ void refuse(SceneCheck& check, scene::FilePos where, std::string message,
 
 bool hasUrl(const scene::Node& node) {
     const scene::Field* url = node.field("url");
-    return url && !url->value.strings.empty();
+    if (!url || url->value.strings.empty()) return false;
+    // A PDE model carried in the scene (data: urls only) names no file.
+    if (node.kind() == scene::NodeKind::FPdeSurface)
+        return !std::all_of(url->value.strings.begin(), url->value.strings.end(),
+                            [](const std::string& u) { return pde::isDataUrl(u); });
+    return true;
+}
+
+// The triangles an FPdeSurface's model would take at the finest resolution
+// its level of detail may choose: two per grid cell of every patch. An
+// unreadable model costs nothing here (the shape shows its error).
+double pdeCells(const scene::Node& node) {
+    const scene::Field* url = node.field("url");
+    if (!url) return 0;
+    double resolution = scene::numberField(node, "resolution", 0, 32);
+    const auto range = scene::numbersField(node, "lodRange");
+    if (scene::boolField(node, "lod") && range.size() == 2)
+        resolution = std::max(resolution, range[1]);
+    const pde::MeshOptions grid = pde::meshOptionsFor(resolution);
+    for (const std::string& u : url->value.strings) {
+        const pde::ReadResult r = pde::readDataUrl(u, "data url");
+        if (r.ok()) return double(r.model->patches.size()) * grid.stepsU * grid.stepsV;
+    }
+    return 0;
 }
 
 } // namespace
@@ -76,7 +103,20 @@ SceneCheck checkClassroomScene(const std::string& text, const ClassroomLimits& l
             refuse(check, proto->where,
                    "EXTERNPROTO " + proto->name + ": a class scene may not refer to other files",
                    "declare it with PROTO in the scene itself");
+    double pdeWork = 0;
     s.forEachNode([&](const scene::Node& node) {
+        if (node.kind() == scene::NodeKind::FPdeSurface && !hasUrl(node)) {
+            const double cells = pdeCells(node);
+            pdeWork += cells;
+            if (pdeWork > limits.maxMeshCells) {
+                refuse(check, node.where,
+                       "FPdeSurface: its model would take " + std::to_string(std::llround(cells)) +
+                           " grid cells at its finest resolution; a class scene may mesh at most " +
+                           std::to_string(std::llround(limits.maxMeshCells)) + " in all",
+                       "fit fewer patches, or lower resolution and lodRange");
+                check.tooCostly = true;
+            }
+        }
         if (node.kind() == scene::NodeKind::Inline || node.kind() == scene::NodeKind::Script ||
             hasUrl(node))
             refuse(check, node.where,

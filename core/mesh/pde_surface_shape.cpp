@@ -1,9 +1,11 @@
 #include "pde_surface_shape.h"
 
+#include "pde/pde_data_url.h"
 #include "pde/pde_file.h"
 #include "scene/scene_references.h"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
 
@@ -48,22 +50,41 @@ PdeSurfaceModel pdeSurfaceModel(const scene::Scene& scene, const scene::Node& su
     PdeSurfaceModel out;
     const std::string& top = scene.pathOf(0);
     const std::string& own = scene.pathOf(surface.file);
-    if (top.empty() || own.empty()) {
-        out.error = "the scene was not read from a file, so its url cannot be followed";
-        return out;
-    }
+    const bool fromFile = !top.empty() && !own.empty();
     if (urls.empty()) {
         out.error = "no url: name the .pde file (functionlab pde fit makes one)";
         return out;
     }
     scene::ReferenceContext context;
     std::error_code ec;
-    context.root = std::filesystem::weakly_canonical(std::filesystem::path(top).parent_path(), ec);
-    context.displayRoot = std::filesystem::path(top).parent_path();
-    const std::filesystem::path base = std::filesystem::path(own).parent_path();
+    if (fromFile) {
+        context.root =
+            std::filesystem::weakly_canonical(std::filesystem::path(top).parent_path(), ec);
+        context.displayRoot = std::filesystem::path(top).parent_path();
+    }
+    const std::filesystem::path base =
+        fromFile ? std::filesystem::path(own).parent_path() : std::filesystem::path();
     std::string reasons;
     for (const std::string& url : urls) {
         std::string why;
+        if (pde::isDataUrl(url)) { // the model carried in the scene itself
+            pde::ReadResult r = pde::readDataUrl(url, "the data url");
+            if (r.ok()) {
+                out.model = std::make_shared<const pde::Model>(std::move(*r.model));
+                out.file = "data:" + std::to_string(std::hash<std::string>{}(url)) + ":" +
+                           std::to_string(url.size());
+                return out;
+            }
+            reasons += (reasons.empty() ? "" : "; ") + r.error;
+            continue;
+        }
+        if (!fromFile) {
+            reasons += (reasons.empty() ? "" : "; ") +
+                       ("\"" + url +
+                        "\": the scene was not read from a file, so its url cannot "
+                        "be followed (a data url carries the model in the scene)");
+            continue;
+        }
         const auto target = scene::resolveUrl(context, base, url, why);
         if (target) {
             out.model = keptOrRead(target->file, why);

@@ -8,6 +8,7 @@
 #include "mesh/surface_distance.h"
 #include "pde/mesh_fit.h"
 #include "pde/patch_formula.h"
+#include "pde/pde_data_url.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
 
@@ -39,6 +40,34 @@ bool writePatchScene(const std::string& path, const pde::Model& model, std::size
     return true;
 }
 
+// A scene of one FShape whose FPdeSurface carries the model in a data: url.
+bool writeCarryingScene(const std::string& path, const pde::Model& model,
+                        const pde::EncodeOptions& eo, std::string& why) {
+    const bool classic = path.size() > 5 && path.compare(path.size() - 5, 5, ".x3dv") == 0;
+    if (!classic && !(path.size() > 4 && path.compare(path.size() - 4, 4, ".x3d") == 0)) {
+        why = path + ": --scene writes a scene: name it .x3d or .x3dv";
+        return false;
+    }
+    const std::string url = pde::dataUrlOf(model, eo); // base64: no quote, no markup
+    const std::string text =
+        classic ? "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
+                  "DEF MODEL FShape {\n  geometry FPdeSurface {\n    url \"" +
+                      url + "\"\n    resolution 32\n  }\n}\n"
+                : "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                  "<X3D profile='Immersive' version='3.3'>\n  <head>\n    <component "
+                  "name='FunctionLab' level='1'/>\n  </head>\n  <Scene>\n    <FShape DEF='MODEL'>\n"
+                  "      <FPdeSurface resolution='32' url='\"" +
+                      url +
+                      "\"'/>\n    </FShape>\n"
+                      "  </Scene>\n</X3D>\n";
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file || !file.write(text.data(), std::streamsize(text.size()))) {
+        why = path + ": cannot be written";
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 const CommandSpec& pdeFitSpec() {
@@ -47,7 +76,7 @@ const CommandSpec& pdeFitSpec() {
         .summary = "a polygon mesh (.obj) as a few PDE patches (.pde)",
         .synopsis = {"pde fit MESH.obj -o MODEL.pde [--patches N | --error E] [--radii N]\n"
                      "[--smoothing A] [--method points|curves] [--bits B] [--text | --formula K]\n"
-                     "[--json]"},
+                     "[--scene S] [--json]"},
         .description =
             "Cuts the mesh into disk-like regions and fits each with a Bloor-Wilson PDE\n"
             "patch (a cubic spine and N Fourier radii, the u = 0 curve a point), splitting\n"
@@ -115,6 +144,12 @@ const CommandSpec& pdeFitSpec() {
                      .defaultValue = "points",
                      .choices = {"points", "curves"}},
                     {.name = "text", .help = "write the readable text form instead of binary"},
+                    {.name = "scene",
+                     .kind = OptionKind::Path,
+                     .valueName = "S",
+                     .help = "also write a scene S (.x3d or .x3dv) that shows the model and "
+                             "carries it in a data: url, so it stands alone (a class scene may "
+                             "name no file)"},
                     {.name = "formula",
                      .kind = OptionKind::Integer,
                      .valueName = "K",
@@ -198,6 +233,13 @@ int pdeFitCommand(const Args& args) {
     }
     const std::string bytes =
         text ? pde::encodeText(fit->model) : pde::encodeBinary(fit->model, eo);
+    if (const std::string scene = a->text("scene"); !scene.empty()) {
+        if (!writeCarryingScene(scene, fit->model, eo, why)) {
+            std::cerr << why << "\n";
+            return kExitDiagnostic;
+        }
+        std::cerr << scene << ": a scene that carries the model in a data: url\n";
+    }
     // Measured as any tool would: the written model read back, meshed, compared.
     const pde::ReadResult back = pde::readModel(bytes, out);
     const mesh::Mesh rebuilt = pde::meshModel(*back.model, {16, 32});

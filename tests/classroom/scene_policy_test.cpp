@@ -3,6 +3,7 @@
 #include "classroom/scene_policy.h"
 #include "classroom/starter_scene.h"
 
+#include "pde/pde_data_url.h"
 #include "scenes.h"
 
 #include <gtest/gtest.h>
@@ -22,6 +23,42 @@ TEST(ClassroomScene, StarterAndPlainScenesPass) {
     EXPECT_TRUE(checkClassroomScene(test::classScene("sphere(0, 0, 0, 1)")).ok);
     EXPECT_TRUE(
         checkClassroomScene("#X3D V3.3 utf8\nPROFILE Immersive\nShape { geometry Box {} }\n").ok);
+}
+
+// Issue 30: a PDE shape in a class carries its model in a data: url.
+std::string pdeScene(const std::string& url, const std::string& fields = "") {
+    return "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
+           "FShape { geometry FPdeSurface { url \"" +
+           url + "\" " + fields + " } }\n";
+}
+
+pde::Model patches(std::size_t count) {
+    pde::Patch p;
+    p.cap = true;
+    p.setRadii(1);
+    p.spine = {pde::Vec3{0, 1, 0}, pde::Vec3{0, -1, 0}, pde::Vec3{}, pde::Vec3{}};
+    p.cosines[0][1] = {1, 0, 0};
+    p.sines[0][1] = {0, 0, 1};
+    pde::completeCap(p);
+    pde::Model m;
+    m.hi = {1, 1, 1};
+    m.patches.assign(count, p);
+    return m;
+}
+
+TEST(ClassroomScene, APdeShapeCarriedInTheSceneIsAllowedANamedFileIsNot) {
+    const SceneCheck carried = checkClassroomScene(pdeScene(pde::dataUrlOf(patches(3))));
+    EXPECT_TRUE(carried.ok) << (carried.diagnostics.empty() ? "" : carried.diagnostics[0].message);
+    const SceneCheck named = checkClassroomScene(pdeScene("bunny.pde"));
+    EXPECT_FALSE(named.ok);
+    EXPECT_TRUE(mentions(named, "may not hold urls"));
+    // Many patches at a fine level of detail: more meshing than a class allows.
+    const std::string many = pdeScene(pde::dataUrlOf(patches(4000)), "lodRange 8 256");
+    ASSERT_LT(many.size(), ClassroomLimits{}.maxSceneBytes);
+    const SceneCheck costly = checkClassroomScene(many);
+    EXPECT_FALSE(costly.ok);
+    EXPECT_TRUE(costly.tooCostly);
+    EXPECT_TRUE(mentions(costly, "grid cells"));
 }
 
 TEST(ClassroomScene, FormulaErrorsAreLocated) {

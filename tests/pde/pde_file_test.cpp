@@ -2,6 +2,7 @@
 // within half the quantisation step in the binary one), and hostile bytes —
 // truncated, inflated, lying counts, markup, control characters — get a
 // located message, never a crash.
+#include "pde/pde_data_url.h"
 #include "pde/pde_file.h"
 
 #include <gtest/gtest.h>
@@ -185,4 +186,25 @@ TEST(PdeFile, AFileTooLargeIsRefusedWithTheLimit) {
     const ReadResult r = readModel(big, "big.pde");
     EXPECT_FALSE(r.ok());
     EXPECT_NE(r.error.find("at most"), std::string::npos) << r.error;
+}
+
+TEST(PdeFile, ADataUrlCarriesTheModelAndItsMistakesAreSaid) {
+    const Model m = randomModel(5, 3);
+    const std::string url = dataUrlOf(m, {16});
+    EXPECT_EQ(url.rfind("data:application/x-functionlab-pde;base64,", 0), 0u);
+    const ReadResult r = readDataUrl(url, "url");
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.model->patches.size(), m.patches.size());
+    // Wrapped over lines, as a scene may hold it: the same model.
+    std::string wrapped = url;
+    for (std::size_t i = 80; i < wrapped.size(); i += 81)
+        wrapped.insert(i, "\n");
+    EXPECT_TRUE(readDataUrl(wrapped, "url").ok());
+    std::string bad = url;
+    bad[url.find(',') + 10] = '*';
+    const ReadResult b = readDataUrl(bad, "url");
+    EXPECT_NE(b.error.find("is not base64"), std::string::npos) << b.error;
+    EXPECT_NE(readDataUrl("data:text/plain,hello", "url").error.find("base64"), std::string::npos);
+    EXPECT_FALSE(readDataUrl("data:;base64,AAAA", "url").ok()); // base64 of no model
+    EXPECT_FALSE(readDataUrl("data:;base64,A", "url").ok());    // cut
 }
