@@ -1,8 +1,9 @@
 // libFuzzer target: a .pde model from anyone (a class scene's PDE shapes
-// come from classmates). Beyond "no crash, no hang, no huge allocation": a
+// come from classmates), as a file and as a scene's data: url. Beyond "no crash, no hang, no huge allocation": a
 // model that reads has finite coefficients and a sane box, writes back in
 // both forms, and reads back from them to the same patch counts; meshing it
 // at a small grid gives finite points.
+#include "pde/pde_data_url.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
 
@@ -13,6 +14,9 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string bytes(reinterpret_cast<const char*>(data), size);
+    // The same bytes as a data: url in a scene (a class scene carries models so).
+    const auto carried = fl::pde::readDataUrl(bytes, "fuzz url");
+    if (!carried.ok() && carried.error.rfind("fuzz url:", 0) != 0) std::abort();
     const auto r = fl::pde::readModel(bytes, "fuzz.pde");
     if (!r.ok()) {
         if (r.error.rfind("fuzz.pde:", 0) != 0) std::abort(); // every mistake is located
