@@ -31,6 +31,8 @@ RequirementResult checkOne(const SubmissionView& view, const Requirement& r, Bud
         return checkFunctionColour(view, r, budget);
     case RequirementKind::Tangible:
         return checkTangible(view, r, budget);
+    case RequirementKind::PdeSurface:
+        return checkPdeSurface(view, r);
     }
     return {r.id, r.kind, false, 0, r.points, "unknown requirement", {}};
 }

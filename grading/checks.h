@@ -14,6 +14,8 @@ RequirementResult checkSetOperations(const SubmissionView& view, const Requireme
 RequirementResult checkMorphing(const SubmissionView& view, const Requirement& r, Budget& budget);
 RequirementResult checkAnimation(const SubmissionView& view, const Requirement& r);
 RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requirement& r);
+// A shown FPdeSurface whose model was read and meshed.
+RequirementResult checkPdeSurface(const SubmissionView& view, const Requirement& r);
 RequirementResult checkFunctionColour(const SubmissionView& view, const Requirement& r,
                                       Budget& budget);
 RequirementResult checkTangible(const SubmissionView& view, const Requirement& r, Budget& budget);

@@ -5,7 +5,7 @@
 namespace fl::grading {
 namespace {
 
-constexpr text::KindNames<RequirementKind, 9> kKinds{{
+constexpr text::KindNames<RequirementKind, 10> kKinds{{
     {"implicit-surface", RequirementKind::ImplicitSurface},
     {"explicit-solid", RequirementKind::ExplicitSolid},
     {"parametric", RequirementKind::Parametric},
@@ -15,6 +15,7 @@ constexpr text::KindNames<RequirementKind, 9> kKinds{{
     {"level-of-detail", RequirementKind::LevelOfDetail},
     {"function-colour", RequirementKind::FunctionColour},
     {"tangible", RequirementKind::Tangible},
+    {"pde-surface", RequirementKind::PdeSurface},
 }};
 
 } // namespace

@@ -22,6 +22,7 @@ enum class RequirementKind : std::uint8_t {
     LevelOfDetail,   // function shapes drawn with continuous level of detail
     FunctionColour,  // a colour defined by a function that varies over the shape or in time
     Tangible,        // a shown shape with `minimum` kinds of tangible effect (FPhysics)
+    PdeSurface,      // a shown FPdeSurface whose model reads and draws (docs/pde.md)
 };
 
 // The manifest's word for each kind ("implicit-surface", "set-operations" ...).

@@ -130,6 +130,38 @@ RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& 
     return out;
 }
 
+RequirementResult checkPdeSurface(const SubmissionView& view, const Requirement& r) {
+    RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
+    std::string near; // an FPdeSurface that shows nothing, and why
+    for (const mesh::SceneMeshes& frame : view.frames())
+        for (const mesh::ShapeMesh& s : frame.shapes) {
+            if (!isPdeSurface(s) || !SubmissionView::shown(s)) continue;
+            const std::string name = SubmissionView::nameOf(*s.shape);
+            if (s.mesh.empty()) {
+                if (near.empty())
+                    near = name + " has an FPdeSurface that shows nothing" +
+                           (s.error.empty() ? std::string() : ": " + shortened(s.error));
+                continue;
+            }
+            const auto urls = scene::stringsField(*s.geometry, "url");
+            const std::string from = urls.empty() ? std::string("?")
+                                     : urls.front().rfind("data:", 0) == 0
+                                         ? "a model carried in the scene"
+                                         : shortened(urls.front());
+            out.met = true;
+            out.points = r.points;
+            out.evidence = name + ": PDE patches from " + from + ", " +
+                           std::to_string(s.mesh.triangleCount()) + " triangles";
+            out.locations.push_back(view.locationOf(*s.geometry, "url"));
+            return out;
+        }
+    out.evidence = near.empty() ? "no FPdeSurface is shown: fit a mesh with `functionlab pde fit "
+                                  "MESH.obj -o MODEL.pde` and show it with an FShape whose "
+                                  "geometry is an FPdeSurface naming it"
+                                : near;
+    return out;
+}
+
 RequirementResult checkLevelOfDetail(const SubmissionView& view, const Requirement& r) {
     RequirementResult out{r.id, r.kind, false, 0, r.points, {}, {}};
     const mesh::ShapeMesh* narrow = nullptr; // a range chosen, but one that hardly varies

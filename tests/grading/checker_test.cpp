@@ -197,11 +197,17 @@ TEST(Checker, APdeSurfaceCountsAsAParametricShape) {
     std::ofstream(dir / "dome.x3dv")
         << "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
            "FShape { geometry FPdeSurface { url \"dome.pde\" } }\n";
-    const CheckReport r = checkSubmission((dir / "dome.x3dv").string(), fantasies());
+    auto requirements = fantasies();
+    requirements.push_back({"pde", RequirementKind::PdeSurface, "", 10});
+    const CheckReport r = checkSubmission((dir / "dome.x3dv").string(), requirements);
     const auto& q = result(r, "parametric");
     EXPECT_TRUE(q.met) << q.evidence;
     EXPECT_NE(q.evidence.find("PDE patches of dome.pde"), std::string::npos) << q.evidence;
     ASSERT_FALSE(q.locations.empty());
+    const auto& shown = result(r, "pde");
+    EXPECT_TRUE(shown.met) << shown.evidence;
+    EXPECT_NE(shown.evidence.find("PDE patches from dome.pde"), std::string::npos)
+        << shown.evidence;
     // A url that reads nothing shows nothing: not met.
     std::ofstream(dir / "dome.x3dv", std::ios::trunc)
         << "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
