@@ -7,8 +7,8 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 
 # Debian 12 package names. Qt, GLM, hidapi, libusb and SQLite are for the
 # viewer, haptics and grading parts; libsodium signs the gradebook's log;
-# bubblewrap isolates each submission grade batch checks; muParser is a
-# benchmark peer only.
+# bubblewrap isolates each submission grade batch checks; muParser, Draco and
+# meshoptimizer are benchmark peers only (functionlab-bench links them).
 # Installed with --no-install-recommends, so every package CMake needs is
 # named here even where another package only recommends it (libqt6opengl6-dev:
 # Qt6 3DRender needs Qt6OpenGL, a mere Recommends of qt6-base-dev).
@@ -20,6 +20,7 @@ PACKAGES=(
   qt6-base-dev libqt6opengl6-dev qt6-3d-dev qt6-websockets-dev zlib1g-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   bubblewrap
+  libdraco-dev libmeshoptimizer-dev
 )
 # Only for scripts/fuzz (libFuzzer); skipped with a warning where the
 # distribution names them differently.

@@ -1,51 +1,19 @@
 // `functionlab bench eval`: the evaluator benchmark table (bench/eval_table).
 // It compares with muParser, a peer the product does not link: the table runs
 // in the sibling executable functionlab-bench (bench/functionlab_bench.cpp),
-// which reads the same options (measure/bench_eval_spec.h). functionlab checks the
-// command line, then hands it on; the output and exit status are the peer's.
+// which reads the same options (measure/bench_eval_spec.h).
+#include "cli/bench_peer.h"
 #include "cli/commands.h"
 #include "measure/bench_eval_spec.h"
-#include "platform/exit_codes.h"
 
-#include <filesystem>
 #include <iostream>
-#include <unistd.h>
 
 namespace fl::cli {
-
-namespace {
-
-// The directory of the running executable.
-std::filesystem::path selfDirectory() {
-    char self[4096];
-    const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0) return {};
-    return std::filesystem::path(std::string(self, std::size_t(n))).parent_path();
-}
-
-} // namespace
 
 int benchEvalCommand(const Args& args) {
     int exit = 0;
     if (!parseOrExplain(benchEvalSpec(), args, exit, std::cout, std::cerr)) return exit;
-    const std::filesystem::path peer = selfDirectory() / "functionlab-bench";
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(peer, ec) || ::access(peer.c_str(), X_OK) != 0) {
-        std::cerr << "functionlab bench eval: the benchmark executable " << peer.string()
-                  << " is missing; build it with `cmake --build build --target "
-                     "functionlab-bench` (it sits next to functionlab)\n";
-        return kExitDiagnostic;
-    }
-    std::vector<std::string> all{peer.string(), "eval"};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& a : all)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::cout.flush();
-    ::execv(peer.c_str(), argv.data()); // returns only when it could not start
-    std::cerr << "functionlab bench eval: cannot run " << peer.string() << "\n";
-    return kExitDiagnostic;
+    return runBenchPeer("eval", args);
 }
 
 } // namespace fl::cli

@@ -134,6 +134,7 @@ const std::vector<Command>& commands() {
         {serveSpec, serveCommand},
         {benchClassroomSpec, benchClassroomCommand},
         {pdeFitSpec, pdeFitCommand},
+        {benchPdeSpec, benchPdeCommand},
     };
     return all;
 }

@@ -3,6 +3,7 @@
 // the shared table (option_table.h) and takes the arguments after its own
 // name, returning an exit code (see exit_codes.h).
 #include "measure/bench_eval_spec.h"
+#include "measure/bench_pde_spec.h"
 #include "platform/option_table.h"
 
 #include <iosfwd>
@@ -35,6 +36,7 @@ const CommandSpec& hapticsReplaySpec();
 const CommandSpec& serveSpec();
 const CommandSpec& benchClassroomSpec();
 const CommandSpec& pdeFitSpec();
+using measure::benchPdeSpec; // measure/bench_pde_spec.h: functionlab-bench reads it too
 
 int formulaCheckCommand(const Args& args);
 int formulaEvalCommand(const Args& args);
@@ -60,6 +62,7 @@ int hapticsReplayCommand(const Args& args);  // `haptics replay`
 int serveCommand(const Args& args);          // `serve`
 int benchClassroomCommand(const Args& args); // `bench classroom`
 int pdeFitCommand(const Args& args);         // `pde fit`
+int benchPdeCommand(const Args& args);       // `bench pde` (runs functionlab-bench)
 
 struct Command {
     const CommandSpec& (*spec)();
