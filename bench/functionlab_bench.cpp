@@ -16,6 +16,7 @@
 #include "pde_table.h"
 #endif
 
+#include <fstream>
 #include <iostream>
 
 namespace {
@@ -54,6 +55,13 @@ int pde(const Args& args) {
     std::cout << (a->flag("json") ? fl::bench::pdeRowsJson(mesh, rows)
                                   : fl::bench::formatPdeTable(mesh, rows));
     if (!why.empty()) std::cerr << "functionlab bench pde: " << why << "\n";
+    if (const std::string plot = a->text("plot"); !plot.empty()) {
+        std::ofstream out(plot, std::ios::binary | std::ios::trunc);
+        if (!(out << fl::bench::pdePlotSvg(mesh, rows))) {
+            std::cerr << "functionlab bench pde: " << plot << ": cannot be written\n";
+            return kExitDiagnostic;
+        }
+    }
     return kExitOk;
 #else
     std::cerr << "functionlab bench pde: this functionlab-bench was built without Draco and "

@@ -1,5 +1,6 @@
 #include "pde_table.h"
 
+#include "measure/log_plot.h"
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
 #include "pde/mesh_fit.h"
@@ -11,6 +12,7 @@
 #include <draco/mesh/triangle_soup_mesh_builder.h>
 #include <meshoptimizer.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -88,10 +90,9 @@ mesh::Mesh simplified(const mesh::Mesh& m, double error, double diagonal) {
     for (const auto& t : m.triangles)
         indices.insert(indices.end(), t.begin(), t.end());
     std::vector<unsigned> out(indices.size());
-    const std::size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(),
-                                           &m.positions[0][0], m.positions.size(),
-                                           sizeof(mesh::Vec3f), 0, float(error * diagonal / extent),
-                                           0, nullptr);
+    const std::size_t n = meshopt_simplify(
+        out.data(), indices.data(), indices.size(), &m.positions[0][0], m.positions.size(),
+        sizeof(mesh::Vec3f), 0, float(error * diagonal / extent), 0, nullptr);
     mesh::Mesh s;
     std::vector<long> remap(m.positions.size(), -1);
     for (std::size_t i = 0; i + 2 < n; i += 3) {
@@ -128,7 +129,8 @@ std::vector<PdeRow> runPdeBench(const std::string& path, const PdeBenchOptions& 
     const double diagonal = diagonalOf(m);
     std::vector<PdeRow> rows;
     std::error_code ec;
-    rows.push_back({"obj", "the file", std::size_t(std::filesystem::file_size(path, ec)), -1, -1, 0});
+    rows.push_back(
+        {"obj", "the file", std::size_t(std::filesystem::file_size(path, ec)), -1, -1, 0});
     auto measure = [&](PdeRow row, const mesh::Mesh& other) {
         const mesh::SurfaceDistance d = mesh::compareSurfaces(m, other, o.samples);
         row.rms = d.rms / diagonal;
@@ -160,7 +162,8 @@ std::vector<PdeRow> runPdeBench(const std::string& path, const PdeBenchOptions& 
     for (double bits : o.dracoBits) {
         const auto started = Clock::now();
         auto [bytes, decoded] = draco(m, int(bits));
-        measure({"draco", "qp " + std::to_string(int(bits)), bytes, 0, 0, msSince(started)}, decoded);
+        measure({"draco", "qp " + std::to_string(int(bits)), bytes, 0, 0, msSince(started)},
+                decoded);
     }
     for (double e : o.simplifyErrors) {
         const auto started = Clock::now();
@@ -188,10 +191,10 @@ std::string formatPdeTable(const std::string& mesh, const std::vector<PdeRow>& r
                   "bytes", "RMS %", "Hausdorff %", "ms");
     o << line;
     for (const PdeRow& r : rows) {
-        std::snprintf(line, sizeof line, "%-16s %-40s %10zu %10s %10s %10.0f\n", r.method.c_str(),
-                      r.setting.c_str(), r.bytes, r.rms < 0 ? "-" : fixed(100 * r.rms, "%.3f").c_str(),
-                      r.hausdorff < 0 ? "-" : fixed(100 * r.hausdorff, "%.3f").c_str(),
-                      r.milliseconds);
+        std::snprintf(
+            line, sizeof line, "%-16s %-40s %10zu %10s %10s %10.0f\n", r.method.c_str(),
+            r.setting.c_str(), r.bytes, r.rms < 0 ? "-" : fixed(100 * r.rms, "%.3f").c_str(),
+            r.hausdorff < 0 ? "-" : fixed(100 * r.hausdorff, "%.3f").c_str(), r.milliseconds);
         o << line;
     }
     return o.str();
@@ -215,12 +218,35 @@ std::string jsonText(const std::string& s) {
 std::string pdeRowsJson(const std::string& mesh, const std::vector<PdeRow>& rows) {
     std::ostringstream o;
     for (const PdeRow& r : rows)
-        o << "{\"mesh\": \"" << jsonText(mesh) << "\", \"method\": \"" << r.method << "\", \"setting\": \""
-          << r.setting << "\", \"bytes\": " << r.bytes << ", \"rms\": "
-          << (r.rms < 0 ? "null" : fixed(r.rms, "%.6g")) << ", \"hausdorff\": "
-          << (r.hausdorff < 0 ? "null" : fixed(r.hausdorff, "%.6g"))
+        o << "{\"mesh\": \"" << jsonText(mesh) << "\", \"method\": \"" << r.method
+          << "\", \"setting\": \"" << r.setting << "\", \"bytes\": " << r.bytes
+          << ", \"rms\": " << (r.rms < 0 ? "null" : fixed(r.rms, "%.6g"))
+          << ", \"hausdorff\": " << (r.hausdorff < 0 ? "null" : fixed(r.hausdorff, "%.6g"))
           << ", \"ms\": " << fixed(r.milliseconds, "%.1f") << "}\n";
     return o.str();
+}
+
+std::string pdePlotSvg(const std::string& mesh, const std::vector<PdeRow>& rows) {
+    const struct {
+        const char* method;
+        const char* name;
+        const char* colour;
+    } kinds[] = {{"pde", "PDE model (pde fit)", "#1f77b4"},
+                 {"draco", "Draco (qp 7-14)", "#d62728"},
+                 {"simplify+draco", "meshoptimizer + Draco", "#2ca02c"}};
+    std::vector<measure::PlotSeries> series;
+    for (const auto& k : kinds) {
+        measure::PlotSeries& se = series.emplace_back(measure::PlotSeries{k.name, k.colour, {}});
+        for (const PdeRow& r : rows)
+            if (r.method == k.method && r.rms > 0)
+                se.points.push_back({double(r.bytes), r.rms, r.setting});
+        std::sort(
+            se.points.begin(), se.points.end(),
+            [](const measure::PlotPoint& a, const measure::PlotPoint& b) { return a.x < b.x; });
+    }
+    return measure::logLogPlotSvg("bytes against RMS error: " +
+                                      std::filesystem::path(mesh).filename().string(),
+                                  "bytes", "RMS distance / box diagonal", series);
 }
 
 } // namespace fl::bench

@@ -29,5 +29,7 @@ std::vector<PdeRow> runPdeBench(const std::string& meshPath, const PdeBenchOptio
                                 std::string& why);
 std::string formatPdeTable(const std::string& mesh, const std::vector<PdeRow>& rows);
 std::string pdeRowsJson(const std::string& mesh, const std::vector<PdeRow>& rows);
+// Bytes against RMS error, log-log, one line per method (the paper's rows have no error).
+std::string pdePlotSvg(const std::string& mesh, const std::vector<PdeRow>& rows);
 
 } // namespace fl::bench

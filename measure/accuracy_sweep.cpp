@@ -1,4 +1,5 @@
 #include "measure/accuracy_sweep.h"
+#include "measure/log_plot.h"
 
 #include "mesh/dual_contouring.h"
 #include "mesh/marching_cubes.h"
@@ -183,69 +184,21 @@ std::string accuracySummary(const std::vector<AccuracyRow>& rows) {
 }
 
 std::string accuracyPlotSvg(const std::vector<AccuracyRow>& rows, const std::string& title) {
-    const double W = 640, H = 420, left = 70, right = 20, top = 40, bottom = 50;
-    double tLo = 1e300, tHi = 0, eLo = 1e300, eHi = 0;
-    for (const AccuracyRow& r : rows) {
-        if (r.milliseconds <= 0 || r.maxError <= 0) continue;
-        tLo = std::min(tLo, r.milliseconds), tHi = std::max(tHi, r.milliseconds);
-        eLo = std::min(eLo, r.maxError), eHi = std::max(eHi, r.maxError);
-    }
-    if (tHi <= 0) return "<svg xmlns='http://www.w3.org/2000/svg'/>\n";
-    const double x0 = std::floor(std::log10(tLo)),
-                 x1 = std::max(x0 + 1, std::ceil(std::log10(tHi)));
-    const double y0 = std::floor(std::log10(eLo)),
-                 y1 = std::max(y0 + 1, std::ceil(std::log10(eHi)));
-    auto X = [&](double ms) {
-        return left + (std::log10(ms) - x0) / (x1 - x0) * (W - left - right);
-    };
-    auto Y = [&](double e) {
-        return H - bottom - (std::log10(e) - y0) / (y1 - y0) * (H - top - bottom);
-    };
-    std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + num(W) + "' height='" +
-                    num(H) +
-                    "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' "
-                    "fill='white'/>\n";
-    s += "<text x='" + num(W / 2) + "' y='22' text-anchor='middle' font-size='14'>" + title +
-         "</text>\n";
-    for (double d = x0; d <= x1; ++d) {
-        const double x = X(std::pow(10, d));
-        s += "<line x1='" + num(x) + "' y1='" + num(top) + "' x2='" + num(x) + "' y2='" +
-             num(H - bottom) + "' stroke='#ddd'/><text x='" + num(x) + "' y='" +
-             num(H - bottom + 16) + "' text-anchor='middle'>1e" + num(d) + "</text>\n";
-    }
-    for (double d = y0; d <= y1; ++d) {
-        const double y = Y(std::pow(10, d));
-        s += "<line x1='" + num(left) + "' y1='" + num(y) + "' x2='" + num(W - right) + "' y2='" +
-             num(y) + "' stroke='#ddd'/><text x='" + num(left - 6) + "' y='" + num(y + 4) +
-             "' text-anchor='end'>1e" + num(d) + "</text>\n";
-    }
-    s += "<text x='" + num((left + W - right) / 2) + "' y='" + num(H - 12) +
-         "' text-anchor='middle'>time (ms)</text>\n";
-    s += "<text transform='translate(16 " + num((top + H - bottom) / 2) +
-         ") rotate(-90)' text-anchor='middle'>max error / box diagonal</text>\n";
     const struct {
         Method method;
         const char* colour;
-    } series[] = {{Method::Adaptive, "#1f77b4"}, {Method::Dense, "#d62728"}};
-    int legend = 0;
-    for (const auto& se : series) {
-        std::string points;
+        const char* name;
+    } kinds[] = {{Method::Adaptive, "#1f77b4", "adaptive (DC)"},
+                 {Method::Dense, "#d62728", "dense MC"}};
+    std::vector<PlotSeries> series;
+    for (const auto& k : kinds) {
+        PlotSeries& se = series.emplace_back(PlotSeries{k.name, k.colour, {}});
         for (const AccuracyRow& r : rows)
-            if (r.method == se.method && r.milliseconds > 0 && r.maxError > 0) {
-                points += num(X(r.milliseconds)) + "," + num(Y(r.maxError)) + " ";
-                s += "<circle cx='" + num(X(r.milliseconds)) + "' cy='" + num(Y(r.maxError)) +
-                     "' r='3' fill='" + se.colour + "'><title>" + methodName(se.method) + " " +
-                     num(r.resolution) + "</title></circle>\n";
-            }
-        s += "<polyline fill='none' stroke='" + std::string(se.colour) +
-             "' stroke-width='2' points='" + points + "'/>\n";
-        const double ly = top + 14 + 18 * legend++;
-        s += "<line x1='" + num(W - right - 150) + "' y1='" + num(ly - 4) + "' x2='" +
-             num(W - right - 125) + "' y2='" + num(ly - 4) + "' stroke='" + se.colour +
-             "' stroke-width='2'/><text x='" + num(W - right - 120) + "' y='" + num(ly) + "'>" +
-             (legend == 1 ? "adaptive (DC)" : "dense MC") + "</text>\n";
+            if (r.method == k.method)
+                se.points.push_back({r.milliseconds, r.maxError,
+                                     std::string(methodName(k.method)) + " " + num(r.resolution)});
     }
-    return s + "</svg>\n";
+    return logLogPlotSvg(title, "time (ms)", "max error / box diagonal", series);
 }
 
 } // namespace fl::measure

@@ -8,7 +8,7 @@ const cli::CommandSpec& benchPdeSpec() {
         .name = "bench pde",
         .summary = "PDE models against Draco and simplification + Draco: bytes and error",
         .synopsis = {"bench pde MESH.obj [--patches P,P,...] [--radii N] [--draco Q,Q,...]\n"
-                     "[--simplify E,E,...] [--samples N] [--json]"},
+                     "[--simplify E,E,...] [--samples N] [--plot SVG] [--json]"},
         .description =
             "Measures what a PDE model of MESH costs and how close it is, side by side in one\n"
             "run with what a user would pick instead: the mesh compressed by Draco at the\n"
@@ -58,6 +58,10 @@ const cli::CommandSpec& benchPdeSpec() {
                      .defaultValue = "100000",
                      .min = 1000,
                      .max = 10000000},
+                    {.name = "plot",
+                     .kind = OptionKind::Path,
+                     .valueName = "SVG",
+                     .help = "also draw bytes against RMS error, one line per method, as SVG"},
                     {.name = "json", .help = "one JSON object per row instead of a table"}},
         .exitStatus = "0 measured, 1 the mesh could not be read or fitted, 2 usage error",
     };
