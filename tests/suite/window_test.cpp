@@ -79,6 +79,13 @@ bool shown(suite::MainWindow& w) {
 // Waits until the parse and the meshing for the current text are done.
 using test::settle;
 
+// The resolution the view's first function shape is meshed at (0: none).
+double functionShapeResolution(const suite::MainWindow& w) {
+    for (const auto& s : w.view()->meshes()->shapes)
+        if (s.functionGeometry) return s.resolution;
+    return 0.0;
+}
+
 } // namespace
 
 class WindowTest : public QObject {
@@ -555,11 +562,7 @@ class WindowTest : public QObject {
         QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("watermelon.x3d")));
         QVERIFY(settle(w));
-        auto shown = [&] {
-            for (const auto& s : w.view()->meshes()->shapes)
-                if (s.functionGeometry) return s.resolution;
-            return 0.0;
-        };
+        auto shown = [&] { return functionShapeResolution(w); };
         suite::AccuracyPanel* accuracy = w.accuracyPanel();
         accuracy->setResolutions({12, 20});
         QSignalSpy swept(accuracy, &suite::AccuracyPanel::measured);
@@ -597,11 +600,7 @@ class WindowTest : public QObject {
         QVERIFY(shown(w));
         QVERIFY(w.openFile(examplePath("watermelon.x3d")));
         QVERIFY(settle(w));
-        auto shown = [&] {
-            for (const auto& s : w.view()->meshes()->shapes)
-                if (s.functionGeometry) return s.resolution;
-            return 0.0;
-        };
+        auto shown = [&] { return functionShapeResolution(w); };
         // Far away, the level of detail settles well below 96.
         for (int step = 0; step < 6; ++step) {
             w.view()->setPose(viewer::zoom(w.view()->pose(), -2.0f));
