@@ -23,14 +23,22 @@ std::size_t columns(std::size_t radii) {
     return 4 + 8 * radii;
 }
 
-void designRow(double u, double v, const FitOptions& o, double* row) {
+// Scratch for the modes' bases and harmonics of one row.
+struct RowScratch {
+    std::vector<Basis> bases;
+    std::vector<double> cosines, sines;
+    explicit RowScratch(std::size_t radii) : bases(radii), cosines(radii), sines(radii) {}
+};
+
+void designRow(double u, double v, const FitOptions& o, RowScratch& scratch, double* row) {
     const Basis b0 = basis(0, o.a, u);
     for (int i = 0; i < 4; ++i)
         row[i] = b0.value[std::size_t(i)];
+    modeBases(o.radii, o.a, u, scratch.bases.data());
+    harmonics(o.radii, v, scratch.cosines.data(), scratch.sines.data());
     for (std::size_t k = 0; k < o.radii; ++k) {
-        const int n = int(k) + 1;
-        const Basis b = basis(n, o.a, u);
-        const double c = std::cos(n * v), s = std::sin(n * v);
+        const Basis& b = scratch.bases[k];
+        const double c = scratch.cosines[k], s = scratch.sines[k];
         for (int i = 0; i < 4; ++i) {
             row[4 + 8 * k + std::size_t(i)] = b.value[std::size_t(i)] * c;
             row[4 + 8 * k + 4 + std::size_t(i)] = b.value[std::size_t(i)] * s;
@@ -125,20 +133,33 @@ std::optional<Patch> fitToPoints(const std::vector<Sample>& samples, const FitOp
         total += s.weight;
     }
     if (!(total > 0)) return fail(why, "every weight is zero"), std::nullopt;
-    // Normal equations, accumulated row by row (no rows × columns matrix):
-    // the columns are at most a few hundred, the basis bounded by 1.
+    // Normal equations, accumulated a block of rows at a time (a rank-k
+    // update and a product per block, not one per row; never the whole
+    // rows x columns matrix): the columns are at most a few hundred.
     const Eigen::Index n = Eigen::Index(cols);
     Eigen::MatrixXd ata = Eigen::MatrixXd::Zero(n, n);
     Eigen::MatrixXd atb = Eigen::MatrixXd::Zero(n, 3);
+    constexpr Eigen::Index kBlock = 256;
+    Eigen::MatrixXd rows(kBlock, n), targets(kBlock, 3);
+    RowScratch scratch(o.radii);
     Eigen::VectorXd row(n);
-    auto add = [&](double u, double v, double w, const Vec3& target) {
-        designRow(u, v, o, row.data());
-        ata.selfadjointView<Eigen::Lower>().rankUpdate(row, w);
-        for (int c = 0; c < 3; ++c)
-            atb.col(c) += w * target[std::size_t(c)] * row;
+    Eigen::Index filled = 0;
+    auto flush = [&] {
+        if (filled == 0) return;
+        const auto r = rows.topRows(filled);
+        ata.selfadjointView<Eigen::Lower>().rankUpdate(r.transpose());
+        atb.noalias() += r.transpose() * targets.topRows(filled);
+        filled = 0;
     };
-    for (const Sample& s : samples)
-        add(s.u, s.v, s.weight, s.point);
+    for (const Sample& s : samples) {
+        const double w = std::sqrt(s.weight);
+        designRow(s.u, s.v, o, scratch, row.data());
+        rows.row(filled) = w * row.transpose();
+        for (int c = 0; c < 3; ++c)
+            targets(filled, c) = w * s.point[std::size_t(c)];
+        if (++filled == kBlock) flush();
+    }
+    flush();
     ata = ata.selfadjointView<Eigen::Lower>();
     if (o.pointAtStart) {
         // An(0) = Bn(0) = 0 for n >= 1: the u = 0 curve is the spine's start.

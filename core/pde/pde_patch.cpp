@@ -1,6 +1,7 @@
 #include "pde_patch.h"
 
 #include <cmath>
+#include <vector>
 
 namespace fl::pde {
 
@@ -44,6 +45,32 @@ void completeCap(Patch& patch) {
     }
 }
 
+void modeBases(std::size_t radii, double a, double u, Basis* out) {
+    const double g1 = std::exp(-a * (1 - u)), h1 = std::exp(-a * u);
+    double g = 1, h = 1;
+    for (std::size_t i = 0; i < radii; ++i) {
+        g *= g1;
+        h *= h1;
+        const double k = a * double(i + 1);
+        Basis& b = out[i];
+        b.value = {g, u * g, h, u * h};
+        b.du = {k * g, g * (1 + k * u), -k * h, h * (1 - k * u)};
+        b.du2 = {k * k * g, g * (2 * k + k * k * u), k * k * h, h * (-2 * k + k * k * u)};
+    }
+}
+
+void harmonics(std::size_t radii, double v, double* cosines, double* sines) {
+    const double c1 = std::cos(v), s1 = std::sin(v);
+    double c = 1, s = 0;
+    for (std::size_t i = 0; i < radii; ++i) {
+        const double next = c * c1 - s * s1;
+        s = s * c1 + c * s1;
+        c = next;
+        cosines[i] = c;
+        sines[i] = s;
+    }
+}
+
 namespace {
 
 void addScaled(Vec3& to, const Mode& m, const std::array<double, 4>& w, double s) {
@@ -59,10 +86,15 @@ Point evaluate(const Patch& patch, double u, double v) {
     const Basis b0 = basis(0, patch.a, u);
     addScaled(p.position, patch.spine, b0.value, 1);
     addScaled(p.du, patch.spine, b0.du, 1);
-    for (std::size_t i = 0; i < patch.radii(); ++i) {
+    const std::size_t radii = patch.radii();
+    std::vector<Basis> bases(radii);
+    std::vector<double> cosines(radii), sines(radii);
+    modeBases(radii, patch.a, u, bases.data());
+    harmonics(radii, v, cosines.data(), sines.data());
+    for (std::size_t i = 0; i < radii; ++i) {
         const int n = int(i) + 1;
-        const Basis b = basis(n, patch.a, u);
-        const double c = std::cos(n * v), s = std::sin(n * v);
+        const Basis& b = bases[i];
+        const double c = cosines[i], s = sines[i];
         addScaled(p.position, patch.cosines[i], b.value, c);
         addScaled(p.position, patch.sines[i], b.value, s);
         addScaled(p.du, patch.cosines[i], b.du, c);

@@ -47,6 +47,12 @@ struct Basis {
     std::array<double, 4> value, du, du2;
 };
 Basis basis(int n, double a, double u);
+// basis(n, a, u) for n = 1..radii into out[0..radii-1], with two exponentials
+// in all (g and h of mode n are those of mode 1 to the n-th power).
+void modeBases(std::size_t radii, double a, double u, Basis* out);
+// cos(nv) and sin(nv) for n = 1..radii, with one sine and cosine in all
+// (angle addition, accurate to a few ulps for the radii a patch has).
+void harmonics(std::size_t radii, double v, double* cosines, double* sines);
 
 struct Point {
     Vec3 position, du, dv; // X and its partial derivatives
