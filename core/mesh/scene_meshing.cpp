@@ -300,7 +300,23 @@ class Walker {
         sm.resolution = resolution;
         if (moment_.flag(geometry, "lod")) sm.levelOfDetail = &geometry;
         sm.domain = field::Box3{loaded.model->lo, loaded.model->hi};
-        const pde::MeshOptions grid = pde::meshOptionsFor(resolution);
+        const pde::BoundedGrid bounded =
+            pde::boundedGrid(*loaded.model, pde::meshOptionsFor(resolution));
+        if (!bounded.fits) {
+            sm.error = "FPdeSurface: the model has " +
+                       std::to_string(loaded.model->patches.size()) +
+                       " patches, more than a scene meshes (" +
+                       std::to_string(std::llround(pde::MeshOptions{}.maxCells / 3)) + " at most)";
+            out_.shapes.push_back(std::move(sm));
+            return;
+        }
+        if (bounded.reduced)
+            sm.warnings.push_back("FPdeSurface: meshed at " +
+                                  std::to_string(bounded.options.stepsU) + " x " +
+                                  std::to_string(bounded.options.stepsV) +
+                                  " a patch, coarser than asked: the model has " +
+                                  std::to_string(loaded.model->patches.size()) + " patches");
+        const pde::MeshOptions grid = bounded.options;
         MeshResult r = cached("pde|" + loaded.file + "|" + std::to_string(grid.stepsU) + "x" +
                                   std::to_string(grid.stepsV),
                               [&] {

@@ -46,11 +46,14 @@ std::vector<double> borderParameters(const Patch& patch, const std::vector<Vec3>
     std::vector<double> v(n);
     v[0] = kTwoPi * double(first) / double(m);
     std::size_t at = first; // unwrapped sample index
+    // Look ahead a few average steps (not half the curve: a loop of many
+    // points would cost points x samples).
+    const std::size_t ahead = std::min(m / 2, 4 * (m / n) + 8);
     for (std::size_t k = 1; k < n; ++k) {
         // Forward, leaving a sample for each point still to come.
         const std::size_t last = first + m - (n - k);
         std::size_t best = at + 1;
-        for (std::size_t j = at + 1; j <= std::min(last, at + m / 2); ++j)
+        for (std::size_t j = at + 1; j <= std::min(last, at + ahead); ++j)
             if (distance(curve[j % m], points[k]) < distance(curve[best % m], points[k])) best = j;
         at = best;
         v[k] = kTwoPi * double(at) / double(m);
@@ -191,9 +194,27 @@ MeshOptions meshOptionsFor(double resolution) {
     return {std::max(4, int(std::lround(r / 2))), std::max(8, int(std::lround(r)))};
 }
 
+BoundedGrid boundedGrid(const Model& model, const MeshOptions& options) {
+    BoundedGrid g;
+    g.options = options;
+    g.options.stepsU = std::clamp(options.stepsU, 1, 4096);
+    g.options.stepsV = std::clamp(options.stepsV, 3, 4096);
+    const double patches = double(model.patches.size());
+    const double cells = patches * g.options.stepsU * g.options.stepsV;
+    if (cells <= options.maxCells) return g;
+    g.reduced = true;
+    const double shrink = std::sqrt(options.maxCells / cells);
+    g.options.stepsU = std::max(1, int(g.options.stepsU * shrink));
+    g.options.stepsV = std::max(3, int(g.options.stepsV * shrink));
+    g.fits = patches * g.options.stepsU * g.options.stepsV <= options.maxCells;
+    return g;
+}
+
 mesh::Mesh meshModel(const Model& model, const MeshOptions& options) {
     mesh::Mesh out;
-    const int nu = std::clamp(options.stepsU, 1, 4096), nv = std::clamp(options.stepsV, 3, 4096);
+    const BoundedGrid grid = boundedGrid(model, options);
+    if (!grid.fits) return out;
+    const int nu = grid.options.stepsU, nv = grid.options.stepsV;
     const double tolerance = 1e-9 * (model.diagonal() > 0 ? model.diagonal() : 1.0);
     std::vector<std::int64_t> shared(model.borderPoints.size(), -1);
     std::vector<Vec3> sharedNormals(model.borderPoints.size(), Vec3{});

@@ -236,7 +236,17 @@ int meshCommand(const Args& args) {
             std::cerr << r.error << "\n";
             return kExitDiagnostic;
         }
-        const pde::MeshOptions po = pde::meshOptionsFor(resolution > 0 ? resolution : 32);
+        const pde::BoundedGrid grid =
+            pde::boundedGrid(*r.model, pde::meshOptionsFor(resolution > 0 ? resolution : 32));
+        if (!grid.fits) {
+            std::cerr << file << ": " << r.model->patches.size()
+                      << " patches: more than can be meshed\n";
+            return kExitDiagnostic;
+        }
+        if (grid.reduced)
+            std::cerr << "note: " << file << ": meshed coarser than asked ("
+                      << r.model->patches.size() << " patches)\n";
+        const pde::MeshOptions po = grid.options;
         result = pde::meshModel(*r.model, po);
         std::cerr << file << ": " << r.model->patches.size() << " patches, " << po.stepsU << " x "
                   << po.stepsV << " each, " << result.triangleCount() << " triangles\n";

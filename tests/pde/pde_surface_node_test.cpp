@@ -164,3 +164,25 @@ TEST(PdeSurfaceNode, APatchWrittenAsAFormulaIsTheSameSurface) {
         EXPECT_LT(d.rms, 0.002 * m.diagonal()) << (classic ? "classic" : "xml");
     }
 }
+
+TEST(PdeSurfaceNode, AModelOfVeryManyPatchesIsMeshedCoarserOrRefusedNeverWithoutBound) {
+    // A .pde file from others may hold up to a million patches: meshing is
+    // bounded by grid cells, not by what the file asks.
+    const Folder f;
+    pde::Model many = dome();
+    many.patches.assign(80000, many.patches[0]); // 80 000 x 8 x 16 cells asked
+    std::ofstream(f.root / "scenes" / "many.pde", std::ios::binary) << pde::encodeBinary(many);
+    const mesh::SceneMeshes m = meshed(f.write("many.x3d", xmlScene("many.pde", " lod='false'")));
+    ASSERT_EQ(m.shapes.size(), 1u);
+    EXPECT_TRUE(m.shapes[0].error.empty()) << m.shapes[0].error;
+    ASSERT_FALSE(m.shapes[0].warnings.empty());
+    EXPECT_NE(m.shapes[0].warnings[0].find("coarser than asked"), std::string::npos);
+    EXPECT_LE(m.shapes[0].mesh.triangleCount(), std::size_t(2 * pde::MeshOptions{}.maxCells));
+    // More patches than even the coarsest grid allows: the shape's error.
+    pde::Model tooMany = dome();
+    tooMany.patches.assign(3000, tooMany.patches[0]);
+    pde::MeshOptions small;
+    small.maxCells = 3000; // 3 000 patches x 1 x 3 cells do not fit
+    EXPECT_FALSE(pde::boundedGrid(tooMany, small).fits);
+    EXPECT_TRUE(pde::meshModel(tooMany, small).empty());
+}
