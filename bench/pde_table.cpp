@@ -6,6 +6,7 @@
 #include "pde/mesh_fit.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
+#include "text/json_text.h"
 
 #include <draco/compression/decode.h>
 #include <draco/compression/encode.h>
@@ -200,26 +201,12 @@ std::string formatPdeTable(const std::string& mesh, const std::vector<PdeRow>& r
     return o.str();
 }
 
-std::string jsonText(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-            continue;
-        }
-        out += c;
-    }
-    return out;
-}
-
 std::string pdeRowsJson(const std::string& mesh, const std::vector<PdeRow>& rows) {
     std::ostringstream o;
     for (const PdeRow& r : rows)
-        o << "{\"mesh\": \"" << jsonText(mesh) << "\", \"method\": \"" << r.method
-          << "\", \"setting\": \"" << r.setting << "\", \"bytes\": " << r.bytes
+        o << "{\"mesh\": " << text::jsonString(mesh)
+          << ", \"method\": " << text::jsonString(r.method)
+          << ", \"setting\": " << text::jsonString(r.setting) << ", \"bytes\": " << r.bytes
           << ", \"rms\": " << (r.rms < 0 ? "null" : fixed(r.rms, "%.6g"))
           << ", \"hausdorff\": " << (r.hausdorff < 0 ? "null" : fixed(r.hausdorff, "%.6g"))
           << ", \"ms\": " << fixed(r.milliseconds, "%.1f") << "}\n";

@@ -34,6 +34,15 @@ bool isPdeSurface(const mesh::ShapeMesh& s) {
     return s.geometry && s.geometry->kind() == scene::NodeKind::FPdeSurface;
 }
 
+// Where a PDE shape's model comes from, for evidence: its first url, or
+// "a model carried in the scene" for a data: url (base64 is no evidence).
+std::string pdeSource(const mesh::ShapeMesh& s) {
+    const auto urls = scene::stringsField(*s.geometry, "url");
+    if (urls.empty()) return "?";
+    return urls.front().rfind("data:", 0) == 0 ? "a model carried in the scene"
+                                               : shortened(urls.front());
+}
+
 std::optional<GeometryType> typeOf(const mesh::ShapeMesh& s) {
     if (isComposite(s)) return GeometryType::Explicit;
     // PDE patches are parametric functions of u and v (docs/pde.md).
@@ -108,9 +117,7 @@ RequirementResult checkShapeKind(const SubmissionView& view, const Requirement& 
                 return out;
             }
             if (isPdeSurface(s)) {
-                const auto urls = scene::stringsField(*s.geometry, "url");
-                out.evidence = name + ": parametric, the PDE patches of " +
-                               shortened(urls.empty() ? std::string("?") : urls.front());
+                out.evidence = name + ": parametric, the PDE patches of " + pdeSource(s);
                 out.locations.push_back(view.locationOf(*s.geometry, "url"));
                 return out;
             }
@@ -143,14 +150,9 @@ RequirementResult checkPdeSurface(const SubmissionView& view, const Requirement&
                            (s.error.empty() ? std::string() : ": " + shortened(s.error));
                 continue;
             }
-            const auto urls = scene::stringsField(*s.geometry, "url");
-            const std::string from = urls.empty() ? std::string("?")
-                                     : urls.front().rfind("data:", 0) == 0
-                                         ? "a model carried in the scene"
-                                         : shortened(urls.front());
             out.met = true;
             out.points = r.points;
-            out.evidence = name + ": PDE patches from " + from + ", " +
+            out.evidence = name + ": PDE patches from " + pdeSource(s) + ", " +
                            std::to_string(s.mesh.triangleCount()) + " triangles";
             out.locations.push_back(view.locationOf(*s.geometry, "url"));
             return out;

@@ -1,5 +1,7 @@
 #include "log_plot.h"
 
+#include "scene/scene_writer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,31 +16,6 @@ std::string num(double v, const char* format = "%.4g") {
 }
 
 } // namespace
-
-std::string svgText(const std::string& text) {
-    std::string out;
-    for (char c : text)
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    return out;
-}
 
 std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
                           const std::string& yLabel, const std::vector<PlotSeries>& series) {
@@ -64,7 +41,7 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
                     "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' "
                     "fill='white'/>\n";
     s += "<text x='" + num(W / 2) + "' y='22' text-anchor='middle' font-size='14'>" +
-         svgText(title) + "</text>\n";
+         scene::xmlEscape(title) + "</text>\n";
     for (double d = x0; d <= x1; ++d) {
         const double x = X(std::pow(10, d));
         s += "<line x1='" + num(x) + "' y1='" + num(top) + "' x2='" + num(x) + "' y2='" +
@@ -78,9 +55,9 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
              "' text-anchor='end'>1e" + num(d) + "</text>\n";
     }
     s += "<text x='" + num((left + W - right) / 2) + "' y='" + num(H - 12) +
-         "' text-anchor='middle'>" + svgText(xLabel) + "</text>\n";
+         "' text-anchor='middle'>" + scene::xmlEscape(xLabel) + "</text>\n";
     s += "<text transform='translate(16 " + num((top + H - bottom) / 2) +
-         ") rotate(-90)' text-anchor='middle'>" + svgText(yLabel) + "</text>\n";
+         ") rotate(-90)' text-anchor='middle'>" + scene::xmlEscape(yLabel) + "</text>\n";
     int legend = 0;
     for (const PlotSeries& se : series) {
         std::string points;
@@ -88,7 +65,7 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
             if (!(p.x > 0 && p.y > 0)) continue;
             points += num(X(p.x)) + "," + num(Y(p.y)) + " ";
             s += "<circle cx='" + num(X(p.x)) + "' cy='" + num(Y(p.y)) + "' r='3' fill='" +
-                 se.colour + "'><title>" + svgText(p.label) + "</title></circle>\n";
+                 se.colour + "'><title>" + scene::xmlEscape(p.label) + "</title></circle>\n";
         }
         s += "<polyline fill='none' stroke='" + se.colour + "' stroke-width='2' points='" + points +
              "'/>\n";
@@ -96,7 +73,7 @@ std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
         s += "<line x1='" + num(W - right - 190) + "' y1='" + num(ly - 4) + "' x2='" +
              num(W - right - 165) + "' y2='" + num(ly - 4) + "' stroke='" + se.colour +
              "' stroke-width='2'/><text x='" + num(W - right - 160) + "' y='" + num(ly) + "'>" +
-             svgText(se.name) + "</text>\n";
+             scene::xmlEscape(se.name) + "</text>\n";
     }
     return s + "</svg>\n";
 }

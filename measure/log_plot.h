@@ -1,7 +1,8 @@
 #pragma once
 // One small SVG chart for the benchmarks' documentation pictures: series of
 // points on log-log axes (decades as grid lines), each a coloured line with
-// its points (a tooltip each) and a legend entry.
+// its points (a tooltip each) and a legend entry. Titles, labels and names
+// are escaped as XML text (scene::xmlEscape).
 #include <string>
 #include <vector>
 
@@ -19,8 +20,5 @@ struct PlotSeries {
 
 std::string logLogPlotSvg(const std::string& title, const std::string& xLabel,
                           const std::string& yLabel, const std::vector<PlotSeries>& series);
-
-// Text for SVG: & < > ' " escaped.
-std::string svgText(const std::string& text);
 
 } // namespace fl::measure

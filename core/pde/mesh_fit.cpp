@@ -153,7 +153,6 @@ void measureMisses(FittedRegion& r, const std::vector<Sample>& samples) {
         r.missed += s.weight * d2;
         r.weight += s.weight;
     }
-    r.disk = true;
 }
 
 // The paper's method, for comparison: four curves read off the region at
@@ -235,6 +234,7 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
     if (o.method == FitMethod::BoundaryCurves) {
         if (!fitByCurves(m, r, *map, stretch, o)) return false;
         measureMisses(r, samples);
+        r.disk = true;
         return true;
     }
     // Radii the region can fix: small regions take fewer. A fit that wanders
@@ -254,6 +254,7 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
         fo.radii /= 2;
     }
     measureMisses(r, samples);
+    r.disk = true;
     return true;
 }
 

@@ -1,6 +1,5 @@
 #include "patch_formula.h"
 
-#include <algorithm>
 #include <cstdio>
 
 namespace fl::pde {
@@ -52,45 +51,6 @@ std::vector<std::string> patchScript(const Patch& p) {
                             ")*c + (" + sum(p.sines[k], c, kRadius) + ")*s;");
     }
     return lines;
-}
-
-std::string patchScene(const Model& model, std::size_t k, bool classic) {
-    auto vec = [](const Vec3& v) { return number(v[0]) + " " + number(v[1]) + " " + number(v[2]); };
-    std::string definition;
-    for (const std::string& line : patchScript(model.patches.at(k)))
-        definition += (definition.empty() ? ""
-                       : classic          ? "\n      "
-                                          : "\n                 ") +
-                      ("\"" + line + "\"");
-    const std::string name = "PATCH_" + std::to_string(k);
-    // An FGeometry's box must have depth on every axis: a flat mesh's model
-    // box gets a hundredth of its diagonal where it has none.
-    Model box = model;
-    const double pad = model.diagonal() > 0 ? model.diagonal() / 100 : 1e-3;
-    for (std::size_t c = 0; c < 3; ++c)
-        if (!(box.hi[c] - box.lo[c] >= pad)) {
-            const double middle = (box.lo[c] + box.hi[c]) / 2;
-            box.lo[c] = std::min(box.lo[c], middle - pad / 2);
-            box.hi[c] = std::max(box.hi[c], middle + pad / 2);
-        }
-    if (classic)
-        return "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
-               "DEF " +
-               name +
-               " FShape {\n  geometry FGeometry {\n    type \"parametric\"\n"
-               "    uRange 0 1\n    vRange 0 6.283185307\n    domainMin " +
-               vec(box.lo) + "\n    domainMax " + vec(box.hi) + "\n    definition [\n      " +
-               definition + "\n    ]\n  }\n}\n";
-    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-           "<X3D profile='Immersive' version='3.3'>\n  <head>\n    <component "
-           "name='FunctionLab' level='1'/>\n  </head>\n  <Scene>\n    <FShape DEF='" +
-           name +
-           "'>\n      <FGeometry type='parametric' uRange='0 1' vRange='0 6.283185307'\n"
-           "                 domainMin='" +
-           vec(box.lo) + "' domainMax='" + vec(box.hi) + "'\n                 definition='" +
-           definition +
-           "'/>\n    </FShape>\n"
-           "  </Scene>\n</X3D>\n";
 }
 
 } // namespace fl::pde

@@ -5,7 +5,7 @@
 // sin(nv) — so a student sees that a PDE patch is just a parametric
 // function (`pde fit --formula`). A model's shared borders are not in it:
 // it is the patch alone.
-#include "pde_model.h"
+#include "pde_patch.h"
 
 #include <string>
 #include <vector>
@@ -14,10 +14,6 @@ namespace fl::pde {
 
 // The script's lines (one MFString entry each), with comments.
 std::vector<std::string> patchScript(const Patch& patch);
-
-// A scene holding patch k of `model` as an FShape PATCH_k with that script
-// (uRange 0 1, vRange 0 2π, the model's box as its domain): X3D XML, or
-// ClassicVRML when `classic`.
-std::string patchScene(const Model& model, std::size_t k, bool classic);
+// (pde_scene.h puts it in a scene.)
 
 } // namespace fl::pde

@@ -2,66 +2,38 @@
 // patches (the paper's Section 4; docs/pde.md), with the figures that say
 // what the model costs and how close it is.
 #include "cli/commands.h"
+#include "cli/json.h"
 #include "platform/exit_codes.h"
 
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
 #include "pde/mesh_fit.h"
-#include "pde/patch_formula.h"
-#include "pde/pde_data_url.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
+#include "pde/pde_scene.h"
 
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 
 namespace fl::cli {
 namespace {
 
-// One patch as a parametric FGeometry, in a scene of its own (X3D XML or
-// ClassicVRML by the extension).
-bool writePatchScene(const std::string& path, const pde::Model& model, std::size_t k,
-                     std::string& why) {
+// A scene file from `text(classic)`, X3D XML or ClassicVRML by its name.
+bool writeScene(const std::string& path, const char* option,
+                const std::function<std::string(bool classic)>& text, std::string& why) {
     const bool classic = path.size() > 5 && path.compare(path.size() - 5, 5, ".x3dv") == 0;
     if (!classic && !(path.size() > 4 && path.compare(path.size() - 4, 4, ".x3d") == 0)) {
-        why = path + ": --formula writes a scene: name it .x3d or .x3dv";
+        why = path + ": " + option + " writes a scene: name it .x3d or .x3dv";
         return false;
     }
-    const std::string text = pde::patchScene(model, k, classic);
+    const std::string bytes = text(classic);
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file || !file.write(text.data(), std::streamsize(text.size()))) {
-        why = path + ": cannot be written";
-        return false;
-    }
-    return true;
-}
-
-// A scene of one FShape whose FPdeSurface carries the model in a data: url.
-bool writeCarryingScene(const std::string& path, const pde::Model& model,
-                        const pde::EncodeOptions& eo, std::string& why) {
-    const bool classic = path.size() > 5 && path.compare(path.size() - 5, 5, ".x3dv") == 0;
-    if (!classic && !(path.size() > 4 && path.compare(path.size() - 4, 4, ".x3d") == 0)) {
-        why = path + ": --scene writes a scene: name it .x3d or .x3dv";
-        return false;
-    }
-    const std::string url = pde::dataUrlOf(model, eo); // base64: no quote, no markup
-    const std::string text =
-        classic ? "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
-                  "DEF MODEL FShape {\n  geometry FPdeSurface {\n    url \"" +
-                      url + "\"\n    resolution 32\n  }\n}\n"
-                : "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                  "<X3D profile='Immersive' version='3.3'>\n  <head>\n    <component "
-                  "name='FunctionLab' level='1'/>\n  </head>\n  <Scene>\n    <FShape DEF='MODEL'>\n"
-                  "      <FPdeSurface resolution='32' url='\"" +
-                      url +
-                      "\"'/>\n    </FShape>\n"
-                      "  </Scene>\n</X3D>\n";
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file || !file.write(text.data(), std::streamsize(text.size()))) {
+    if (!file || !file.write(bytes.data(), std::streamsize(bytes.size()))) {
         why = path + ": cannot be written";
         return false;
     }
@@ -217,7 +189,9 @@ int pdeFitCommand(const Args& args) {
                       << fit->model.patches.size() << ", numbered from 0)\n";
             return kExitDiagnostic;
         }
-        if (!writePatchScene(out, fit->model, k, why)) {
+        if (!writeScene(
+                out, "--formula",
+                [&](bool classic) { return pde::patchScene(fit->model, k, classic); }, why)) {
             std::cerr << why << "\n";
             return kExitDiagnostic;
         }
@@ -234,7 +208,9 @@ int pdeFitCommand(const Args& args) {
     const std::string bytes =
         text ? pde::encodeText(fit->model) : pde::encodeBinary(fit->model, eo);
     if (const std::string scene = a->text("scene"); !scene.empty()) {
-        if (!writeCarryingScene(scene, fit->model, eo, why)) {
+        if (!writeScene(
+                scene, "--scene",
+                [&](bool classic) { return pde::carryingScene(fit->model, eo, classic); }, why)) {
             std::cerr << why << "\n";
             return kExitDiagnostic;
         }
@@ -249,16 +225,21 @@ int pdeFitCommand(const Args& args) {
     for (const pde::Patch& p : fit->model.patches)
         radii = std::max(radii, p.radii());
     if (a->flag("json")) {
-        std::printf("{\"mesh\": \"%s\", \"vertices\": %zu, \"faces\": %zu, \"patches\": %zu, "
-                    "\"method\": \"%s\", \"max_radii\": %zu, \"coefficients\": %zu, \"bytes\": "
-                    "%zu, \"bits\": %d, "
-                    "\"fit_ms\": %.1f, \"fit_rms\": %.6g, \"rms\": %.6g, \"hausdorff\": %.6g, "
-                    "\"samples\": %zu, \"reached\": %s}\n",
-                    input.c_str(), read.mesh->vertexCount(), read.mesh->triangleCount(),
-                    fit->model.patches.size(), a->text("method", "points").c_str(), radii,
-                    fit->model.coefficientCount(), bytes.size(), eo.bits, fitMs, fit->rms,
-                    d.rms / diagonal, d.hausdorff / diagonal, d.samples,
-                    fit->reached ? "true" : "false");
+        // The mesh's path is the user's text: escaped like every JSON string.
+        std::cout << "{\"mesh\": " << jsonString(input)
+                  << ", \"vertices\": " << read.mesh->vertexCount()
+                  << ", \"faces\": " << read.mesh->triangleCount()
+                  << ", \"patches\": " << fit->model.patches.size()
+                  << ", \"method\": " << jsonString(a->text("method", "points"))
+                  << ", \"max_radii\": " << radii
+                  << ", \"coefficients\": " << fit->model.coefficientCount()
+                  << ", \"bytes\": " << bytes.size() << ", \"bits\": " << eo.bits
+                  << ", \"fit_ms\": " << jsonNumber(fitMs)
+                  << ", \"fit_rms\": " << jsonNumber(fit->rms)
+                  << ", \"rms\": " << jsonNumber(d.rms / diagonal)
+                  << ", \"hausdorff\": " << jsonNumber(d.hausdorff / diagonal)
+                  << ", \"samples\": " << d.samples
+                  << ", \"reached\": " << (fit->reached ? "true" : "false") << "}\n";
     }
     std::cerr << out << ": " << fit->model.patches.size() << " patches (at most " << radii
               << " radii), " << bytes.size() << " bytes, fitted in " << long(fitMs)

@@ -200,9 +200,9 @@ TEST(Assignments, ACourseHasSixLabsInTheirOrder) {
     std::vector<std::string> ids;
     for (const AssignmentLoad& a : listAssignments(kAssignments))
         if (a.assignment) ids.push_back(a.assignment->id);
-    EXPECT_EQ(ids, (std::vector<std::string>{"implicit-shapes", "parametric-colour", "time",
-                                             "tangible-physics", "pde-surfaces",
-                                             "implicit-fantasies"}));
+    EXPECT_EQ(ids,
+              (std::vector<std::string>{"implicit-shapes", "parametric-colour", "time",
+                                        "tangible-physics", "pde-surfaces", "implicit-fantasies"}));
 }
 
 // Each lab's starter scene is not yet a full-marks solution: there is work to do.

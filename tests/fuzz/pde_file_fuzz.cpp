@@ -1,8 +1,8 @@
 // libFuzzer target: a .pde model from anyone (a class scene's PDE shapes
-// come from classmates), as a file and as a scene's data: url. Beyond "no crash, no hang, no huge allocation": a
-// model that reads has finite coefficients and a sane box, writes back in
-// both forms, and reads back from them to the same patch counts; meshing it
-// at a small grid gives finite points.
+// come from classmates), as a file and as a scene's data: url. Beyond "no crash, no hang, no huge
+// allocation": a model that reads has finite coefficients and a sane box, writes back in both
+// forms, and reads back from them to the same patch counts; meshing it at a small grid gives finite
+// points.
 #include "pde/pde_data_url.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"

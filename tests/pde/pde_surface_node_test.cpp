@@ -4,9 +4,9 @@
 // url that cannot be read is that shape's error, never the scene's.
 #include "mesh/scene_meshing.h"
 #include "mesh/surface_distance.h"
-#include "pde/patch_formula.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
+#include "pde/pde_scene.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
@@ -95,6 +95,17 @@ TEST(PdeSurfaceNode, IsMeshedFromItsUrlInEveryEncoding) {
     }
 }
 
+TEST(PdeSurfaceNode, OneSurfaceUsedTwiceIsMeshedForEachShape) {
+    const Folder f;
+    const mesh::SceneMeshes m = meshed(f.write(
+        "twice.x3dv", "#X3D V3.3 utf8\nPROFILE Immersive\nCOMPONENT FunctionLab:1\n"
+                      "FShape { geometry DEF D FPdeSurface { url \"dome.pde\" } }\n"
+                      "Transform { translation 3 0 0 children FShape { geometry USE D } }\n"));
+    ASSERT_EQ(m.shapes.size(), 2u);
+    EXPECT_EQ(m.shapes[0].mesh.triangleCount(), m.shapes[1].mesh.triangleCount());
+    EXPECT_GT(m.shapes[1].mesh.triangleCount(), 0u);
+}
+
 TEST(PdeSurfaceNode, TheLevelOfDetailsResolutionIsTaken) {
     const Folder f;
     const fs::path file = f.write("dome.x3d", xmlScene("dome.pde"));
@@ -120,6 +131,8 @@ TEST(PdeSurfaceNode, AUrlThatCannotBeReadIsTheShapesErrorNotTheScenes) {
         {"missing.pde", "missing.pde"},
         {"garbage.pde", "garbage.pde: byte"},
         {"", "names no file"},
+        // Markup and control characters are a file name like any other.
+        {"&lt;b&gt;x&#9;&lt;/b&gt;.pde", "\"<b>x\t</b>.pde\""},
     };
     for (const Case& c : cases) {
         const mesh::SceneMeshes m = meshed(f.write("bad.x3d", xmlScene(c.url)));
