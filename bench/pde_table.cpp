@@ -3,9 +3,8 @@
 #include "measure/log_plot.h"
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
+#include "pde/fit_measure.h"
 #include "pde/mesh_fit.h"
-#include "pde/pde_file.h"
-#include "pde/pde_mesh.h"
 #include "text/json_text.h"
 
 #include <draco/compression/decode.h>
@@ -147,11 +146,14 @@ std::vector<PdeRow> runPdeBench(const std::string& path, const PdeBenchOptions& 
             why = reason;
             return;
         }
-        const std::string bytes = pde::encodeBinary(fit->model);
-        const pde::ReadResult back = pde::readModel(bytes, "bench.pde");
-        measure({"pde", setting + " (" + std::to_string(fit->model.patches.size()) + " patches)",
-                 bytes.size(), 0, 0, ms},
-                pde::meshModel(*back.model, {16, 32}));
+        pde::MeasureOptions mo;
+        mo.samples = o.samples;
+        const auto measured = pde::measureFit(m, fit->model, mo, &why);
+        if (!measured) return;
+        rows.push_back({"pde",
+                        setting + " (" + std::to_string(fit->model.patches.size()) + " patches)",
+                        measured->bytes.size(), measured->distance.rms / diagonal,
+                        measured->distance.hausdorff / diagonal, ms});
     };
     pde({}, "default --error");
     for (double p : o.patches) {

@@ -30,6 +30,10 @@ const char* methodName(Method method) {
         return "function";
     case Method::Polygons:
         return "polygons";
+    case Method::PdeMesh:
+        return "pde mesh";
+    case Method::PdeFit:
+        return "pde fit";
     }
     return "adaptive";
 }

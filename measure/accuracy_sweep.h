@@ -18,8 +18,10 @@ enum class Method : unsigned char {
     Dense,    // dense marching cubes
     Function, // touch: contact with the function itself
     Polygons, // touch: contact with its triangles
+    PdeMesh,  // a PDE model meshed at a resolution (the Accuracy panel's drawing curve)
+    PdeFit,   // a PDE model fitted with a number of patches (Import Mesh as PDE)
 };
-const char* methodName(Method method); // "adaptive", "dense", "function", "polygons"
+const char* methodName(Method method); // "adaptive", "dense", "function", "polygons", ...
 
 struct AccuracyRow {
     Method method = Method::Adaptive;

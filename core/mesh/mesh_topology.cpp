@@ -1,6 +1,7 @@
 #include "mesh_topology.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <unordered_map>
 #include <unordered_set>
@@ -75,6 +76,29 @@ bool orientClosedSurfaceOutward(Mesh& mesh) {
                 c = -c;
     }
     return true;
+}
+
+std::vector<Vec3f> vertexNormals(const Mesh& mesh) {
+    std::vector<std::array<double, 3>> sum(mesh.positions.size(), {0, 0, 0});
+    for (const Triangle& t : mesh.triangles) {
+        if (t[0] >= sum.size() || t[1] >= sum.size() || t[2] >= sum.size()) continue;
+        const Vec3f &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        const double u[3] = {double(b[0]) - a[0], double(b[1]) - a[1], double(b[2]) - a[2]};
+        const double v[3] = {double(c[0]) - a[0], double(c[1]) - a[1], double(c[2]) - a[2]};
+        // The cross product's length is twice the area: the weight comes with it.
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                             u[0] * v[1] - u[1] * v[0]};
+        for (std::uint32_t i : t)
+            for (int k = 0; k < 3; ++k)
+                sum[i][std::size_t(k)] += n[k];
+    }
+    std::vector<Vec3f> out(sum.size(), Vec3f{0, 0, 0});
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+        const double l = std::hypot(sum[i][0], sum[i][1], sum[i][2]);
+        if (l > 0 && std::isfinite(l))
+            out[i] = {float(sum[i][0] / l), float(sum[i][1] / l), float(sum[i][2] / l)};
+    }
+    return out;
 }
 
 } // namespace fl::mesh

@@ -36,4 +36,9 @@ Mesh weldedByPosition(const Mesh& mesh);
 // and returns false.
 bool orientClosedSurfaceOutward(Mesh& mesh);
 
+// One unit normal per position: the area-weighted mean of the normals of
+// the triangles round it (for a mesh read without normals, an OBJ); zero for
+// a position no triangle with area uses.
+std::vector<Vec3f> vertexNormals(const Mesh& mesh);
+
 } // namespace fl::mesh

@@ -203,6 +203,14 @@ OneWayDistance distanceFrom(const Mesh& from, const TriangleTree& to, std::size_
     return out;
 }
 
+std::vector<double> vertexDistances(const Mesh& from, const TriangleTree& to) {
+    std::vector<double> out;
+    out.reserve(from.positions.size());
+    for (const Vec3f& v : from.positions)
+        out.push_back(std::sqrt(to.squaredDistance(toPoint(v))));
+    return out;
+}
+
 SurfaceDistance compareSurfaces(const Mesh& a, const Mesh& b, std::size_t samplesEachWay) {
     const TriangleTree ta(a), tb(b);
     const OneWayDistance ab = distanceFrom(a, tb, samplesEachWay, 1);

@@ -48,6 +48,10 @@ struct OneWayDistance {
 OneWayDistance distanceFrom(const Mesh& from, const TriangleTree& to, std::size_t samples,
                             unsigned seed = 1);
 
+// Each vertex of `from` at its distance to `to` (the import dialog colours
+// a reconstruction by it).
+std::vector<double> vertexDistances(const Mesh& from, const TriangleTree& to);
+
 struct SurfaceDistance {
     double rms = 0;       // over the samples of both ways together
     double hausdorff = 0; // the larger of the two ways' largest

@@ -142,14 +142,28 @@ class RadialStretch {
     std::vector<double> angles_;
 };
 
-// The fit's misses at the samples: Σ w |X(u, v) - p|² and Σ w.
+// The fit's misses at the samples: Σ w d² and Σ w, d the distance from the
+// sample to the patch's tangent plane at its (u, v) — how far the surface
+// is from the point, not how far along the surface the parameters slid
+// (on a coarse mesh a face's samples sit far apart in (u, v) from where
+// the patch passes them; |X - p| counted that as a miss, and the fit split
+// a 2 000-face sphere into 1 500 patches whose surface was 30 times nearer
+// than it said). Where the tangent plane is undefined (a cap's pole), |X - p|.
 void measureMisses(FittedRegion& r, const std::vector<Sample>& samples) {
     r.missed = r.weight = 0;
     for (const Sample& s : samples) {
-        const Vec3 x = position(r.patch, s.u, s.v);
-        const double d2 = (x[0] - s.point[0]) * (x[0] - s.point[0]) +
-                          (x[1] - s.point[1]) * (x[1] - s.point[1]) +
-                          (x[2] - s.point[2]) * (x[2] - s.point[2]);
+        const Point x = evaluate(r.patch, s.u, s.v);
+        const double d[3] = {x.position[0] - s.point[0], x.position[1] - s.point[1],
+                             x.position[2] - s.point[2]};
+        const double n[3] = {x.du[1] * x.dv[2] - x.du[2] * x.dv[1],
+                             x.du[2] * x.dv[0] - x.du[0] * x.dv[2],
+                             x.du[0] * x.dv[1] - x.du[1] * x.dv[0]};
+        const double length = std::hypot(n[0], n[1], n[2]);
+        const double along = (d[0] * n[0] + d[1] * n[1] + d[2] * n[2]) / length;
+        const double d2 = length > 1e-12 * (1 + std::hypot(x.du[0], x.du[1], x.du[2]) *
+                                                    std::hypot(x.dv[0], x.dv[1], x.dv[2]))
+                              ? along * along
+                              : d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         r.missed += s.weight * d2;
         r.weight += s.weight;
     }
@@ -282,8 +296,9 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
     std::vector<FittedRegion> pending;
     MeshFitOptions current = o; // the radii being tried
     // Regions that are not disks are split until they are; a single face always is.
+    auto stopped = [&] { return o.cancel && o.cancel->load(std::memory_order_relaxed); };
     auto settle = [&]() {
-        while (!pending.empty()) {
+        while (!pending.empty() && !stopped()) {
             FittedRegion r = std::move(pending.back());
             pending.pop_back();
             if (fitRegion(*graph, r, current) || r.faces.size() < 2) {
@@ -309,10 +324,15 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
         for (Faces& f : partition(*graph, count))
             pending.push_back({std::move(f), {}, 0, 0, false});
         settle();
-        if (o.progress) o.progress(regions.size(), rms());
+        if (o.progress && !stopped()) o.progress(regions.size(), rms());
+    };
+    auto cancelled = [&] {
+        if (why) *why = "cancelled";
+        return std::nullopt;
     };
     if (o.patches) {
         fitWith(o.patches);
+        if (stopped()) return cancelled();
     } else {
         // The miss shrinks about as a patch's size, so as 1/sqrt(count): the
         // next count is guessed from that, at least 1.25 times the last.
@@ -331,6 +351,7 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
             current.radii = radii;
             std::size_t count = 8;
             fitWith(count);
+            if (stopped()) return cancelled();
             std::vector<FittedRegion> levelBest = regions;
             double levelRms = rms();
             int worse = 0;
@@ -341,6 +362,7 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
                              std::max(count + count / 4 + 1,
                                       std::size_t(double(count) * std::min(ratio * ratio, 4.0))));
                 fitWith(count);
+                if (stopped()) return cancelled();
                 if (rms() < levelRms) {
                     levelBest = regions;
                     levelRms = rms();
@@ -370,7 +392,7 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
         out.model.patches.push_back(std::move(r.patch));
         out.regions.push_back(std::move(r.faces));
     }
-    BorderCurves curves = borderCurves(mesh, loops, o.error * diagonal);
+    BorderCurves curves = borderCurves(mesh, loops, 2 * o.error * diagonal);
     out.model.borderPoints = std::move(curves.points);
     out.model.borders = std::move(curves.loops);
     return out;

@@ -10,6 +10,7 @@
 #include "mesh/mesh.h"
 #include "pde_model.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -34,6 +35,9 @@ struct MeshFitOptions {
     double borderWeight = 4; // how much more a border vertex counts
     int corrections = 3;     // rounds of parameter correction after the first fit
     std::function<void(std::size_t patches, double rms)> progress;
+    // Set it to stop early (the window's import dialog, when the user moves
+    // on): fitMesh then returns nothing and says "cancelled".
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct MeshFit {

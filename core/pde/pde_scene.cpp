@@ -2,6 +2,7 @@
 
 #include "patch_formula.h"
 #include "pde_data_url.h"
+#include "scene/scene_writer.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -64,15 +65,21 @@ std::string patchScene(const Model& model, std::size_t k, bool classic) {
                  false);
 }
 
-std::string carryingScene(const Model& model, const EncodeOptions& options, bool classic) {
-    const std::string url = dataUrlOf(model, options); // base64: no quote, no markup
+std::string modelScene(const std::string& url, bool classic) {
+    // The url is someone's file name: quoted as an MFString holds it, and
+    // escaped again as an XML attribute holds that.
+    const std::string quoted = scene::quotedString(url);
     if (classic)
-        return scene("DEF MODEL FShape {\n  geometry FPdeSurface {\n    url \"" + url +
-                         "\"\n    resolution 32\n  }\n}\n",
+        return scene("DEF MODEL FShape {\n  geometry FPdeSurface {\n    url " + quoted +
+                         "\n    resolution 32\n  }\n}\n",
                      true);
-    return scene("    <FShape DEF='MODEL'>\n      <FPdeSurface resolution='32' url='\"" + url +
-                     "\"'/>\n    </FShape>\n",
+    return scene("    <FShape DEF='MODEL'>\n      <FPdeSurface resolution='32' url='" +
+                     scene::xmlAttributeText(quoted, '\'') + "'/>\n    </FShape>\n",
                  false);
+}
+
+std::string carryingScene(const Model& model, const EncodeOptions& options, bool classic) {
+    return modelScene(dataUrlOf(model, options), classic); // base64: nothing to escape
 }
 
 } // namespace fl::pde

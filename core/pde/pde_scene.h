@@ -14,6 +14,10 @@ namespace fl::pde {
 // box, given depth where the mesh was flat, as its domain).
 std::string patchScene(const Model& model, std::size_t k, bool classic);
 
+// FShape MODEL, its FPdeSurface naming `url` (a .pde file beside the scene:
+// any text, quoted and escaped as the syntax needs).
+std::string modelScene(const std::string& url, bool classic);
+
 // The model as FShape MODEL, its FPdeSurface carrying it (dataUrlOf).
 std::string carryingScene(const Model& model, const EncodeOptions& options, bool classic);
 

@@ -6,10 +6,8 @@
 #include "platform/exit_codes.h"
 
 #include "mesh/obj_reader.h"
-#include "mesh/surface_distance.h"
+#include "pde/fit_measure.h"
 #include "pde/mesh_fit.h"
-#include "pde/pde_file.h"
-#include "pde/pde_mesh.h"
 #include "pde/pde_scene.h"
 
 #include <unistd.h>
@@ -205,8 +203,6 @@ int pdeFitCommand(const Args& args) {
         std::cerr << why << "\n";
         return kExitDiagnostic;
     }
-    const std::string bytes =
-        text ? pde::encodeText(fit->model) : pde::encodeBinary(fit->model, eo);
     if (const std::string scene = a->text("scene"); !scene.empty()) {
         if (!writeScene(
                 scene, "--scene",
@@ -217,10 +213,11 @@ int pdeFitCommand(const Args& args) {
         std::cerr << scene << ": a scene that carries the model in a data: url\n";
     }
     // Measured as any tool would: the written model read back, meshed, compared.
-    const pde::ReadResult back = pde::readModel(bytes, out);
-    const mesh::Mesh rebuilt = pde::meshModel(*back.model, {16, 32});
-    const mesh::SurfaceDistance d = mesh::compareSurfaces(*read.mesh, rebuilt, 100000);
-    const double diagonal = fit->model.diagonal() > 0 ? fit->model.diagonal() : 1.0;
+    const auto measured = pde::measureFit(*read.mesh, fit->model, {text, eo}, &why);
+    if (!measured) {
+        std::cerr << out << ": " << why << "\n";
+        return kExitDiagnostic;
+    }
     std::size_t radii = 0;
     for (const pde::Patch& p : fit->model.patches)
         radii = std::max(radii, p.radii());
@@ -233,18 +230,18 @@ int pdeFitCommand(const Args& args) {
                   << ", \"method\": " << jsonString(a->text("method", "points"))
                   << ", \"max_radii\": " << radii
                   << ", \"coefficients\": " << fit->model.coefficientCount()
-                  << ", \"bytes\": " << bytes.size() << ", \"bits\": " << eo.bits
+                  << ", \"bytes\": " << measured->bytes.size() << ", \"bits\": " << eo.bits
                   << ", \"fit_ms\": " << jsonNumber(fitMs)
                   << ", \"fit_rms\": " << jsonNumber(fit->rms)
-                  << ", \"rms\": " << jsonNumber(d.rms / diagonal)
-                  << ", \"hausdorff\": " << jsonNumber(d.hausdorff / diagonal)
-                  << ", \"samples\": " << d.samples
+                  << ", \"rms\": " << jsonNumber(measured->rms())
+                  << ", \"hausdorff\": " << jsonNumber(measured->hausdorff())
+                  << ", \"samples\": " << measured->distance.samples
                   << ", \"reached\": " << (fit->reached ? "true" : "false") << "}\n";
     }
     std::cerr << out << ": " << fit->model.patches.size() << " patches (at most " << radii
-              << " radii), " << bytes.size() << " bytes, fitted in " << long(fitMs)
-              << " ms; against the mesh: RMS " << d.rms / diagonal << ", Hausdorff "
-              << d.hausdorff / diagonal << " of the diagonal\n";
+              << " radii), " << measured->bytes.size() << " bytes, fitted in " << long(fitMs)
+              << " ms; against the mesh: RMS " << measured->rms() << ", Hausdorff "
+              << measured->hausdorff() << " of the diagonal\n";
     if (!fit->reached && !o.patches) {
         std::cerr << input << ": the RMS miss " << fit->rms << " did not reach " << o.error
                   << "; the best was " << fit->model.patches.size()

@@ -40,6 +40,51 @@ ChartCurves ChartCurves::touch() {
     return c;
 }
 
+ChartCurves ChartCurves::pdeDrawing() {
+    ChartCurves c;
+    c.xLabel = AccuracyChart::tr("time to mesh the model (ms, log scale)");
+    c.yLabel = AccuracyChart::tr("max error (of the box diagonal, log scale)");
+    c.timeUnit = QStringLiteral("ms");
+    c.lines = {{measure::Method::PdeMesh, AccuracyChart::tr("● PDE model at a resolution"),
+                QColor(0x8a, 0x3f, 0xc4)}};
+    c.operatingMethod = measure::Method::PdeMesh;
+    c.bandMethod = measure::Method::PdeMesh;
+    c.describe = [](const measure::AccuracyRow& r) {
+        return AccuracyChart::tr("the model at resolution %1\n%2 triangles in %3 ms\nmax error "
+                                 "%4, RMS %5 of the diagonal")
+            .arg(r.resolution)
+            .arg(r.triangles)
+            .arg(r.milliseconds, 0, 'g', 3)
+            .arg(r.maxError, 0, 'g', 3)
+            .arg(r.meanError, 0, 'g', 3);
+    };
+    return c;
+}
+
+ChartCurves ChartCurves::pdeFitting() {
+    ChartCurves c;
+    c.xLabel = AccuracyChart::tr("patches (log scale)");
+    c.yLabel = AccuracyChart::tr("RMS distance to the mesh (of the diagonal, log)");
+    c.timeUnit = AccuracyChart::tr("patches");
+    c.xFloor = 1;
+    // The RMS: what --error and the slider aim at (the Hausdorff distance
+    // is in the tooltip and the dialog's figures).
+    c.x = [](const measure::AccuracyRow& r) { return r.resolution; };
+    c.y = [](const measure::AccuracyRow& r) { return r.meanError; };
+    c.lines = {{measure::Method::PdeFit, AccuracyChart::tr("● PDE patches fitted"),
+                QColor(0x8a, 0x3f, 0xc4)}};
+    c.operatingMethod = measure::Method::PdeFit;
+    c.operatingLabel = AccuracyChart::tr("this fit (%1)");
+    c.describe = [](const measure::AccuracyRow& r) {
+        return AccuracyChart::tr("%1 patches, fitted in %2 s\nRMS %3, Hausdorff %4 of the diagonal")
+            .arg(r.resolution)
+            .arg(r.milliseconds / 1000, 0, 'f', 1)
+            .arg(r.meanError, 0, 'g', 3)
+            .arg(r.maxError, 0, 'g', 3);
+    };
+    return c;
+}
+
 AccuracyChart::AccuracyChart(QWidget* parent) : QWidget(parent) {
     setMouseTracking(true);
     setMinimumSize(260, 200);
@@ -55,9 +100,7 @@ void AccuracyChart::setRows(std::vector<measure::AccuracyRow> rows) {
     // Whole decades round everything measured (time at least 0.01 ms, error at least 1e-7).
     double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
     for (const measure::AccuracyRow& r : rows_) {
-        const double x = std::log10(
-                         std::max(r.milliseconds * curves_.unitsPerMillisecond, curves_.xFloor)),
-                     y = std::log10(std::max(r.maxError, curves_.yFloor));
+        const double x = std::log10(xOf(r)), y = std::log10(yOf(r));
         xmin = std::min(xmin, x), xmax = std::max(xmax, x);
         ymin = std::min(ymin, y), ymax = std::max(ymax, y);
     }
@@ -90,14 +133,20 @@ QRectF AccuracyChart::plotArea() const {
     return QRectF(64, 14, std::max(40, width() - 80), std::max(40, height() - 56));
 }
 
+double AccuracyChart::xOf(const measure::AccuracyRow& r) const {
+    const double x = curves_.x ? curves_.x(r) : r.milliseconds * curves_.unitsPerMillisecond;
+    return std::max(x, curves_.xFloor);
+}
+
+double AccuracyChart::yOf(const measure::AccuracyRow& r) const {
+    return std::max(curves_.y ? curves_.y(r) : r.maxError, curves_.yFloor);
+}
+
 QPointF AccuracyChart::pointOf(std::size_t i) const {
     const measure::AccuracyRow& r = rows_[i];
     const QRectF a = plotArea();
-    const double x =
-        (std::log10(std::max(r.milliseconds * curves_.unitsPerMillisecond, curves_.xFloor)) -
-         xLo_) /
-        (xHi_ - xLo_);
-    const double y = (std::log10(std::max(r.maxError, curves_.yFloor)) - yLo_) / (yHi_ - yLo_);
+    const double x = (std::log10(xOf(r)) - xLo_) / (xHi_ - xLo_);
+    const double y = (std::log10(yOf(r)) - yLo_) / (yHi_ - yLo_);
     return {a.left() + x * a.width(), a.bottom() - y * a.height()};
 }
 
@@ -193,7 +242,8 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
         p.setBrush(Qt::NoBrush);
         const QPointF q = pointOf(std::size_t(now));
         p.drawEllipse(q, 8, 8);
-        p.drawText(q + QPointF(10, -8), tr("now (%1)").arg(rows_[std::size_t(now)].resolution));
+        p.drawText(q + QPointF(10, -8),
+                   curves_.operatingLabel.arg(rows_[std::size_t(now)].resolution));
     }
     // The legend, in the plot's corner with the fewest points.
     const bool band = lod_.second > 0 && curves_.bandMethod.has_value();
@@ -232,6 +282,10 @@ void AccuracyChart::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     const measure::AccuracyRow& r = rows_[std::size_t(i)];
+    if (curves_.describe) {
+        QToolTip::showText(event->globalPosition().toPoint(), curves_.describe(r), this);
+        return;
+    }
     QToolTip::showText(event->globalPosition().toPoint(),
                        tr("%1 at resolution %2\n%3 triangles, %4 evaluations\n%5 %6, max error %7")
                            .arg(QString::fromLatin1(measure::methodName(r.method)))

@@ -10,6 +10,7 @@
 #include <QColor>
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -37,8 +38,20 @@ struct ChartCurves {
         measure::Method::Adaptive; // whose row nearest the operating resolution is ringed
     std::optional<measure::Method>
         bandMethod; // whose rows within the level of detail's range are banded
+    // Where a row is drawn, when not at its time (x, in timeUnit) and its max
+    // error (y); and what hovering it says, when not its time and error.
+    std::function<double(const measure::AccuracyRow&)> x, y;
+    std::function<QString(const measure::AccuracyRow&)> describe;
+    QString operatingLabel = QStringLiteral("now (%1)"); // %1: the ringed row's resolution
     static ChartCurves meshing();
     static ChartCurves touch();
+    // A PDE model drawn at resolutions: max distance to its finest drawing
+    // against the time to mesh it (the Accuracy panel, for an FPdeSurface).
+    static ChartCurves pdeDrawing();
+    // A mesh fitted with more and more patches (Import Mesh as PDE): the
+    // RMS distance to the mesh (a row's mean error) against the patch count
+    // (its resolution).
+    static ChartCurves pdeFitting();
 };
 
 class AccuracyChart : public QWidget {
@@ -74,6 +87,8 @@ class AccuracyChart : public QWidget {
 
   private:
     QRectF plotArea() const;
+    double xOf(const measure::AccuracyRow& r) const; // in the chart's unit
+    double yOf(const measure::AccuracyRow& r) const;
 
     std::vector<measure::AccuracyRow> rows_;
     ChartCurves curves_ = ChartCurves::meshing();

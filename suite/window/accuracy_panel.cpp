@@ -5,6 +5,8 @@
 
 #include "haptics/haptics_bench.h"
 #include "measure/accuracy_sweep.h"
+#include "measure/pde_drawing_sweep.h"
+#include "mesh/pde_surface_shape.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 #include "scene/scene_edit.h"
@@ -106,6 +108,7 @@ AccuracyPanel::AccuracyPanel(QWidget* parent)
         write_->setEnabled(false);
         if (i >= 0 && std::size_t(i) < candidates_.size()) {
             const Candidate& c = candidates_[std::size_t(i)];
+            chart_->setCurves(curvesFor(&c));
             chart_->setOperatingResolution(c.resolution);
             chart_->setLevelOfDetailRange(c.lodRange.first, c.lodRange.second);
         }
@@ -132,7 +135,13 @@ void AccuracyPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     o.placeInScene = false;
     const mesh::SceneMeshes meshes = mesh::meshScene(*scene_, o);
     for (const mesh::ShapeMesh& s : meshes.shapes) {
-        if (!s.field || !s.shape) continue;
+        // A function shape's field, or a PDE model (meshed from its patches).
+        std::shared_ptr<const pde::Model> model;
+        if (!s.field && s.shape && s.geometry && s.geometry->kind() == scene::NodeKind::FPdeSurface)
+            model =
+                mesh::pdeSurfaceModel(*scene_, *s.geometry, scene::stringsField(*s.geometry, "url"))
+                    .model;
+        if ((!s.field && !model) || !s.shape) continue;
         const scene::Node* key = s.geometry ? s.geometry : s.shape;
         const double resolution =
             s.geometry ? scene::numberField(*s.geometry, "resolution", 0, 32) : 32;
@@ -147,17 +156,18 @@ void AccuracyPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
                                                         ? s.shape->type + " at line " +
                                                               std::to_string(s.shape->where.line)
                                                         : s.shape->type + " " + s.shape->defName);
-        candidates_.push_back({key, name, s.field, resolution, written, lod});
+        candidates_.push_back({key, name, s.field, resolution, written, lod, model});
         shapes_->addItem(name);
     }
     write_->setEnabled(false);
+    chart_->setCurves(curvesFor(candidates_.empty() ? nullptr : &candidates_.front()));
     if (!candidates_.empty()) {
         chart_->setOperatingResolution(candidates_.front().resolution);
         chart_->setLevelOfDetailRange(candidates_.front().lodRange.first,
                                       candidates_.front().lodRange.second);
     }
     status_->setText(candidates_.empty()
-                         ? tr("no implicit or explicit shape to measure in this scene")
+                         ? tr("no implicit, explicit or PDE shape to measure in this scene")
                          : tr("Measure: how far each mesh is from the true surface, and what it "
                               "costs"));
 }
@@ -185,13 +195,21 @@ void AccuracyPanel::setCost(Cost cost) {
         const QSignalBlocker quiet(costs_);
         costs_->setCurrentIndex(cost == Cost::Touch ? 1 : 0);
     }
-    chart_->setCurves(cost == Cost::Touch ? ChartCurves::touch() : ChartCurves::meshing());
+    const int index = shapes_->currentIndex();
+    chart_->setCurves(curvesFor(index >= 0 && std::size_t(index) < candidates_.size()
+                                    ? &candidates_[std::size_t(index)]
+                                    : nullptr));
     status_->setText(cost == Cost::Touch
                          ? tr("Measure: what touching the shape costs per force tick, by its "
                               "function and by its triangles, and how far the touch is from the "
                               "true surface")
                          : tr("Measure: how far each mesh is from the true surface, and what it "
                               "costs"));
+}
+
+ChartCurves AccuracyPanel::curvesFor(const Candidate* c) const {
+    if (cost_ == Cost::Touch) return ChartCurves::touch();
+    return c && c->model ? ChartCurves::pdeDrawing() : ChartCurves::meshing();
 }
 
 namespace {
@@ -215,9 +233,18 @@ void AccuracyPanel::measure() {
     dropSweep();
     const int index = shapes_->currentIndex();
     if (index < 0 || std::size_t(index) >= candidates_.size()) return;
-    Sweep sweep{generation_, cost_, candidates_[std::size_t(index)].field, resolutions_};
-    // Polygons past 128 take long to build and say nothing new to a hand.
-    if (cost_ == Cost::Touch) std::erase_if(sweep.resolutions, [](double r) { return r > 128; });
+    const Candidate& c = candidates_[std::size_t(index)];
+    if (c.model && cost_ == Cost::Touch) {
+        status_->setText(tr("a PDE model is touched by its triangles: touch is measured for "
+                            "implicit and explicit shapes"));
+        return;
+    }
+    Sweep sweep{generation_, cost_, c.field, c.model, resolutions_};
+    // Polygons past 128 take long to build and say nothing new to a hand;
+    // a PDE model's drawing is measured against one twice as fine as the
+    // finest row, which past 128 outgrows what is worth the wait.
+    if (cost_ == Cost::Touch || c.model)
+        std::erase_if(sweep.resolutions, [](double r) { return r > 128; });
     chart_->setRows({});
     progress_->setRange(0, int(sweep.resolutions.size()) + (cost_ == Cost::Touch ? 1 : 0));
     progress_->setValue(0);
@@ -256,6 +283,15 @@ AccuracyPanel::SweepResult AccuracyPanel::runSweep(const Sweep& sweep) {
                                      : touchSummary(out.rows);
         return out;
     }
+    if (sweep.model) {
+        measure::pdeDrawingSweep(*sweep.model, sweep.resolutions, stop,
+                                 [&](const measure::AccuracyRow& row) {
+                                     out.rows.push_back(row);
+                                     progress(out.rows, int(out.rows.size()));
+                                 });
+        out.summary = *stop ? tr("cancelled") : pdeSummary(out.rows);
+        return out;
+    }
     measure::SweepOptions o;
     o.threads = 1; // the interface keeps a core
     int done = 0;
@@ -278,6 +314,22 @@ void AccuracyPanel::sweepFinished(const Sweep& sweep, SweepResult result) {
     chart_->setRows(result.rows);
     status_->setText(result.summary);
     Q_EMIT measured();
+}
+
+QString AccuracyPanel::pdeSummary(const std::vector<measure::AccuracyRow>& rows) {
+    if (rows.empty()) return {};
+    const measure::AccuracyRow &coarse = rows.front(), &fine = rows.back();
+    return tr("the PDE model at resolution %1: %2 triangles in %3 ms, max error %4; at %5: %6 "
+              "triangles in %7 ms, max error %8 (of the diagonal, against its drawing at %9)")
+        .arg(coarse.resolution)
+        .arg(coarse.triangles)
+        .arg(coarse.milliseconds, 0, 'g', 3)
+        .arg(coarse.maxError, 0, 'e', 1)
+        .arg(fine.resolution)
+        .arg(fine.triangles)
+        .arg(fine.milliseconds, 0, 'g', 3)
+        .arg(fine.maxError, 0, 'e', 1)
+        .arg(2 * fine.resolution);
 }
 
 QString AccuracyPanel::touchSummary(const std::vector<measure::AccuracyRow>& rows) {

@@ -7,7 +7,9 @@
 // resolution now is ringed; clicking a point, or typing a target error,
 // chooses the resolution the view meshes the shape at; "Write into the
 // scene" makes that choice part of the scene text (resolution, and the
-// level of detail's finest resolution).
+// level of detail's coarsest resolution). For a PDE model (FPdeSurface) the
+// sweep is its drawing: the time to mesh it at each resolution against how
+// far that mesh is from the model's finest drawing (ChartCurves::pdeDrawing).
 #include "accuracy_chart.h"
 #include "panel.h"
 
@@ -31,6 +33,9 @@ class QPushButton;
 namespace fl::scene {
 struct Node;
 }
+namespace fl::pde {
+struct Model;
+}
 
 namespace fl::suite {
 
@@ -44,6 +49,8 @@ class AccuracyPanel : public Panel {
     static std::vector<double> sweepResolutions();
     // The touch sweep's rows in words (the status line after a touch sweep).
     static QString touchSummary(const std::vector<measure::AccuracyRow>& rows);
+    // A PDE model's drawing sweep in words.
+    static QString pdeSummary(const std::vector<measure::AccuracyRow>& rows);
     void setResolutions(std::vector<double> resolutions);
     const std::vector<double>& resolutions() const { return resolutions_; }
 
@@ -91,9 +98,12 @@ class AccuracyPanel : public Panel {
         QString name;
         std::shared_ptr<const field::ImplicitField> field;
         double resolution;
-        bool written;                       // a FGeometry of the scene file: it can be edited
-        std::pair<double, double> lodRange; // {0, 0}: no level of detail
+        bool written;                            // a FGeometry of the scene file: it can be edited
+        std::pair<double, double> lodRange;      // {0, 0}: no level of detail
+        std::shared_ptr<const pde::Model> model; // an FPdeSurface's (then no field)
     };
+    // The chart's curves for the shape chosen and the cost.
+    ChartCurves curvesFor(const Candidate* c) const;
     void choose(double resolution);
 
     std::shared_ptr<const scene::Scene> scene_;
@@ -113,6 +123,7 @@ class AccuracyPanel : public Panel {
         int generation = 0; // results of an older one are not shown
         Cost cost = Cost::Meshing;
         std::shared_ptr<const field::ImplicitField> field;
+        std::shared_ptr<const pde::Model> model; // a PDE model's drawing, instead
         std::vector<double> resolutions;
     };
     struct SweepResult {

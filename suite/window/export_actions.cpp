@@ -3,6 +3,7 @@
 #include "mesh/mesh_export.h"
 #include "mesh/scene_meshing.h"
 #include "panel_context.h"
+#include "pde_import_dialog.h"
 #include "viewer/scene_player.h"
 #include "viewer/scene_widget.h"
 #include "viewer/text_outliner.h"
@@ -20,8 +21,30 @@ ExportActions::ExportActions(PanelContext& context, std::function<Parameters()> 
     : QObject(parent), context_(context), parameters_(std::move(parameters)) {}
 
 void ExportActions::fillMenu(QMenu* file) {
+    file->addAction(tr("Import Mesh as &PDE…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            context_.window, tr("Import a mesh as PDE patches"), QDir::homePath(),
+            tr("Wavefront OBJ meshes (*.obj);;All files (*)"));
+        if (!path.isEmpty()) importMeshAsPde(path);
+    });
     file->addAction(tr("Export &Mesh…"), this, &ExportActions::exportMesh);
     file->addAction(tr("Export &Image…"), this, &ExportActions::exportImage);
+}
+
+PdeImportDialog* ExportActions::importMeshAsPde(const QString& objPath) {
+    auto* dialog = new PdeImportDialog(context_.window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    QString why;
+    if (!dialog->load(objPath, &why)) {
+        delete dialog;
+        context_.problem(why);
+        return nullptr;
+    }
+    connect(dialog, &PdeImportDialog::sceneSaved, this, [this](const QString& scene) {
+        if (context_.keepChanges()) context_.open(scene);
+    });
+    dialog->show();
+    return dialog;
 }
 
 void ExportActions::exportMesh() {

@@ -1,7 +1,10 @@
 #pragma once
-// File → Export Mesh (glTF, STL, OBJ, PLY, X3D: the scene at the time and
-// slider values shown, all shapes merged) and Export Image (the view's frame).
+// File → Import Mesh as PDE (a polygon mesh fitted as PDE patches, then
+// opened as a scene: PdeImportDialog), Export Mesh (glTF, STL, OBJ, PLY,
+// X3D: the scene at the time and slider values shown, all shapes merged)
+// and Export Image (the view's frame).
 #include <QObject>
+#include <QString>
 
 #include <functional>
 #include <string>
@@ -13,6 +16,7 @@ class QMenu;
 namespace fl::suite {
 
 class PanelContext;
+class PdeImportDialog;
 
 class ExportActions : public QObject {
     Q_OBJECT
@@ -22,6 +26,9 @@ class ExportActions : public QObject {
                   QObject* parent = nullptr);
 
     void fillMenu(QMenu* file);
+
+    // Opens the import dialog on this mesh (the menu asks for the file).
+    PdeImportDialog* importMeshAsPde(const QString& objPath);
 
   private:
     void exportMesh();

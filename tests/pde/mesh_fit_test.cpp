@@ -7,6 +7,7 @@
 #include "mesh/mesh_topology.h"
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
+#include "pde/fit_measure.h"
 #include "pde/mesh_fit.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
@@ -96,13 +97,13 @@ Measured fitAndMeasure(const Mesh& m, pde::MeshFitOptions o = {}) {
     const auto fit = pde::fitMesh(m, o, &why);
     EXPECT_TRUE(fit) << why;
     if (!fit) return {};
-    const std::string bytes = pde::encodeBinary(fit->model);
-    const pde::ReadResult back = pde::readModel(bytes, "fit.pde");
-    EXPECT_TRUE(back.ok()) << back.error;
-    const Mesh rebuilt = pde::meshModel(*back.model, {16, 32});
-    const mesh::SurfaceDistance d = mesh::compareSurfaces(m, rebuilt, 20000);
-    const double diagonal = fit->model.diagonal();
-    return {fit->model.patches.size(), bytes.size(), d.rms / diagonal, d.hausdorff / diagonal};
+    pde::MeasureOptions mo;
+    mo.samples = 20000;
+    const auto measured = pde::measureFit(m, fit->model, mo, &why);
+    EXPECT_TRUE(measured) << why;
+    if (!measured) return {};
+    return {fit->model.patches.size(), measured->bytes.size(), measured->rms(),
+            measured->hausdorff()};
 }
 
 std::optional<Mesh> shared(const char* name) {
@@ -247,4 +248,15 @@ TEST(PdeMeshFit, MeshesNoPatchCanStandForAreRefusedWithWhereAndWhy) {
     const auto fit = pde::fitMesh(one, {}, &why);
     ASSERT_TRUE(fit) << why;
     EXPECT_EQ(fit->model.patches.size(), 1u);
+}
+
+TEST(PdeMeshFit, AFitAskedToStopStopsAndSaysSo) {
+    std::atomic<bool> stop{true};
+    pde::MeshFitOptions o;
+    o.cancel = &stop;
+    std::string why;
+    EXPECT_FALSE(pde::fitMesh(sphere(12, 24), o, &why));
+    EXPECT_EQ(why, "cancelled");
+    stop = false;
+    EXPECT_TRUE(pde::fitMesh(sphere(12, 24), o, &why)) << why;
 }

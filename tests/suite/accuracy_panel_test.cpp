@@ -151,6 +151,50 @@ class AccuracyPanelTest : public QObject {
         QVERIFY(panel.chart()->rows().empty());
     }
 
+    void aPdeModelsDrawingIsMeasured() {
+        // Issue 30 §4: a PDE model's curve — the time to mesh it at each
+        // resolution against how far that mesh is from its finest drawing.
+        scene::ReadResult r = scene::readSceneFile(FUNCTIONLAB_EXAMPLES_DIR "/pde_bunny.x3d");
+        QVERIFY(r.ok());
+        suite::AccuracyPanel panel;
+        panel.resize(560, 520);
+        panel.sceneChanged(std::shared_ptr<const scene::Scene>(std::move(r.scene)));
+        int bunny = -1;
+        for (int i = 0; i < panel.shapes()->count(); ++i)
+            if (panel.shapes()->itemText(i).contains(QStringLiteral("BUNNY"))) bunny = i;
+        QVERIFY2(bunny >= 0, qPrintable(panel.shapes()->itemText(0)));
+        panel.shapes()->setCurrentIndex(bunny);
+        QVERIFY(panel.chart()->xLabel().contains(QStringLiteral("model")));
+        panel.setResolutions({8, 16, 32, 64});
+        QSignalSpy done(&panel, &suite::AccuracyPanel::measured);
+        panel.measure();
+        QVERIFY(done.wait(120000));
+        const auto& rows = panel.chart()->rows();
+        QCOMPARE(rows.size(), std::size_t(4));
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            QVERIFY(rows[i].method == fl::measure::Method::PdeMesh);
+            QVERIFY(rows[i].triangles > 0 && rows[i].milliseconds > 0);
+            QVERIFY(rows[i].meanError <= rows[i].maxError);
+            if (i > 0) { // finer is closer, and costs more triangles
+                QVERIFY2(rows[i].maxError < rows[i - 1].maxError,
+                         qPrintable(QStringLiteral("%1 at %2, %3 at %4")
+                                        .arg(rows[i].maxError)
+                                        .arg(rows[i].resolution)
+                                        .arg(rows[i - 1].maxError)
+                                        .arg(rows[i - 1].resolution)));
+                QVERIFY(rows[i].triangles > rows[i - 1].triangles);
+            }
+        }
+        QVERIFY(panel.status()->text().contains(QStringLiteral("PDE model")));
+        // A target error chooses a resolution of the model, as for any shape.
+        QVERIFY(panel.chooseTargetError(rows[2].maxError));
+        QCOMPARE(panel.chart()->operatingResolution(), 32.0);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QDir().mkpath(FUNCTIONLAB_SCREENSHOT_DIR);
+        QVERIFY(panel.grab().save(FUNCTIONLAB_SCREENSHOT_DIR "/accuracy-pde.png"));
+    }
+
     void aSweepCanBeCancelled() {
         suite::AccuracyPanel panel;
         panel.sceneChanged(watermelon());

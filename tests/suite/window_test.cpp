@@ -124,20 +124,24 @@ class WindowTest : public QObject {
                                                   !s.mesh.isPointCloud() && mesh::isDrawn(s));
             QTRY_COMPARE_WITH_TIMEOUT(w.screenErrorText().contains(QStringLiteral("max error")),
                                       functionShape, 20000);
-            // The Accuracy panel: every implicit or explicit shape listed, and
-            // a (short) sweep of the first drawn, with the operating point.
+            // The Accuracy panel: every implicit, explicit or PDE shape listed,
+            // and a (short) sweep of the first drawn, with the operating point.
             suite::AccuracyPanel* accuracy = w.accuracyPanel();
             const bool listed = accuracy->shapes()->count() > 0;
-            bool implicitShape = false;
+            bool measurable = false;
             for (const auto& s : w.view()->meshes()->shapes)
-                implicitShape = implicitShape || (s.field && s.shape);
-            QCOMPARE(listed, implicitShape);
+                measurable =
+                    measurable || (s.field && s.shape) ||
+                    (s.shape && s.geometry && s.geometry->kind() == scene::NodeKind::FPdeSurface);
+            QCOMPARE(listed, measurable);
             if (!listed) continue;
             accuracy->setResolutions({8, 16});
             QSignalSpy swept(accuracy, &suite::AccuracyPanel::measured);
             accuracy->measure();
             QVERIFY2(swept.wait(60000), qPrintable(path));
-            QCOMPARE(accuracy->chart()->rows().size(), std::size_t(4));
+            // Two resolutions for each line (a PDE model's drawing has one).
+            QCOMPARE(accuracy->chart()->rows().size(),
+                     2 * accuracy->chart()->curves().lines.size());
             QVERIFY(accuracy->chart()->operatingResolution() > 0);
             for (const auto& r : accuracy->chart()->rows())
                 QVERIFY2(r.triangles > 0 && std::isfinite(r.maxError),
