@@ -5,6 +5,7 @@
 #include "catalogue.h"
 #include "grading/batch_grading.h"
 #include "grading/checker.h"
+#include "grading/gradebook_merge.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +14,7 @@
 #include <map>
 #include <random>
 #include <sstream>
+#include <thread>
 
 namespace fl::courseware {
 namespace {
@@ -101,6 +103,8 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
     GradingBenchResult result;
     result.submissions = options.submissions;
     result.jobs = options.jobs;
+    result.cores =
+        std::max(1, std::min<int>(options.jobs, int(std::thread::hardware_concurrency())));
     const AssignmentLoad lab = findAssignment("implicit-fantasies");
     if (!lab.assignment) throw std::runtime_error("implicit-fantasies is not there");
     std::vector<std::filesystem::path> others;
@@ -122,13 +126,15 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
         files.push_back(folder / name);
     }
 
-    // 1. The class as `grade batch` grades it: isolated processes, `jobs` at once.
-    const auto db = options.work / "gradebook.sqlite";
-    for (const char* suffix : {"", "-wal", "-shm"})
-        std::filesystem::remove(db.string() + suffix);
-    grading::Gradebook book(db.string());
+    // 1. The class as `grade batch --shard K/N` grades it on a cluster:
+    // isolated processes, `jobs` at once, each part into its own gradebook
+    // (here one part after another), then the parts merged into one.
+    auto removeGradebook = [](const std::filesystem::path& db) {
+        for (const char* suffix : {"", "-wal", "-shm"})
+            std::filesystem::remove(db.string() + suffix);
+    };
     std::vector<std::string> skipped;
-    const auto submissions = grading::findSubmissions(folder, skipped);
+    const auto all = grading::findSubmissions(folder, skipped);
     grading::BatchOptions batch;
     batch.jobs = options.jobs;
     batch.checkerVersion = grading::kCheckerVersion;
@@ -138,23 +144,53 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
             options.functionlab, "grade", "check", "--assignment", manifest,
             s.path.string(),     "--json"};
     };
-    const auto started = std::chrono::steady_clock::now();
-    const grading::BatchSummary summary =
-        grading::gradeBatch(book, lab.assignment->record(), submissions, batch);
-    result.classSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    result.p50 = measure::percentile(summary.secondsPerSubmission, 0.50);
-    result.p95 = measure::percentile(summary.secondsPerSubmission, 0.95);
-    result.max = measure::percentile(summary.secondsPerSubmission, 1.0);
-    result.graded = summary.graded;
-    result.notGradable = summary.notGradable;
-    result.failed = summary.failed;
+    const int shards = std::max(1, options.shards);
+    result.shards = shards;
+    std::vector<std::string> parts;
+    std::vector<double> perSubmission;
+    for (int k = 0; k < shards; ++k) {
+        const auto db = options.work / ("part-" + std::to_string(k) + ".sqlite");
+        removeGradebook(db);
+        parts.push_back(db.string());
+        grading::Gradebook book(db.string());
+        std::vector<grading::BatchSubmission> mine;
+        for (const auto& s : all)
+            if (grading::shardOf(s.student, std::size_t(shards)) == std::size_t(k))
+                mine.push_back(s);
+        const auto started = std::chrono::steady_clock::now();
+        const grading::BatchSummary summary =
+            grading::gradeBatch(book, lab.assignment->record(), mine, batch);
+        result.classSeconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        perSubmission.insert(perSubmission.end(), summary.secondsPerSubmission.begin(),
+                             summary.secondsPerSubmission.end());
+        result.graded += summary.graded;
+        result.notGradable += summary.notGradable;
+        result.failed += summary.failed;
+    }
+    result.p50 = measure::percentile(perSubmission, 0.50);
+    result.p95 = measure::percentile(perSubmission, 0.95);
+    result.max = measure::percentile(perSubmission, 1.0);
+    const auto merged = options.work / "gradebook.sqlite";
+    removeGradebook(merged);
+    std::string why;
+    const auto mergeStarted = std::chrono::steady_clock::now();
+    const auto summary = grading::mergeGradebooks(parts, merged.string(), &why);
+    result.mergeMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - mergeStarted)
+            .count();
+    if (!summary) throw std::runtime_error("merging the parts: " + why);
+    result.mergedEntries = summary->entries;
+    result.mergedGrades = summary->grades;
 
     // 2. In-process, one thread: the checker's time per requirement.
     std::map<std::string, std::vector<double>> times;
     std::vector<double> views;
     std::vector<grading::CheckReport> reference;
-    for (const auto& f : files) {
+    const std::size_t timed =
+        std::min<std::size_t>(files.size(), std::size_t(std::max(1, options.requirementSample)));
+    for (std::size_t i = 0; i < timed; ++i) {
+        const auto& f = files[i];
         grading::CheckReport r = grading::checkSubmission(f.string(), lab.assignment->requirements);
         if (r.gradable) {
             views.push_back(r.viewMilliseconds);
@@ -178,7 +214,7 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
 
     // 3. What accuracy costs in time: the comparison's depth.
     const std::size_t sample =
-        std::min<std::size_t>(files.size(), std::size_t(options.depthSample));
+        std::min<std::size_t>(reference.size(), std::size_t(options.depthSample));
     for (int depth : options.depths) {
         GradingBenchResult::DepthRow row;
         row.maxDepth = depth;
@@ -202,11 +238,15 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
 std::string gradingBenchText(const GradingBenchResult& r) {
     std::ostringstream out;
     out << "class: " << r.submissions << " submissions graded in isolated processes, " << r.jobs
-        << " at a time: " << number(r.classSeconds) << " s (" << r.graded << " graded, "
-        << r.notGradable << " not gradable, " << r.failed << " failed)\n";
+        << " at a time, in " << r.shards << " parts: " << number(r.classSeconds) << " s ("
+        << r.graded << " graded, " << r.notGradable << " not gradable, " << r.failed << " failed); "
+        << number(r.perSecondPerCore()) << " submissions per second per core\n";
+    out << "merge: " << r.shards << " gradebooks into one in " << number(r.mergeMs) << " ms ("
+        << r.mergedEntries << " log entries, " << r.mergedGrades << " students graded)\n";
     out << "per submission (child wall time): p50 " << number(r.p50) << " s, p95 " << number(r.p95)
         << " s, max " << number(r.max) << " s\n\n";
-    out << "checker time per requirement (in-process, gradable submissions):\n";
+    out << "checker time per requirement (in-process, the gradable ones of the first "
+        << std::min(r.submissions, 200) << " submissions):\n";
     out << "  showing the scene at its moments   mean " << number(r.viewMeanMs) << " ms\n";
     for (const auto& q : r.requirements) {
         char line[160];
@@ -233,8 +273,10 @@ std::string gradingBenchJson(const GradingBenchResult& r) {
         << ",\"class_seconds\":" << r.classSeconds << ",\"p50_seconds\":" << r.p50
         << ",\"p95_seconds\":" << r.p95 << ",\"max_seconds\":" << r.max
         << ",\"graded\":" << r.graded << ",\"not_gradable\":" << r.notGradable
-        << ",\"failed\":" << r.failed << ",\"view_mean_ms\":" << r.viewMeanMs
-        << ",\"requirements\":[";
+        << ",\"failed\":" << r.failed << ",\"shards\":" << r.shards
+        << ",\"per_second_per_core\":" << r.perSecondPerCore() << ",\"merge_ms\":" << r.mergeMs
+        << ",\"merged_entries\":" << r.mergedEntries << ",\"merged_grades\":" << r.mergedGrades
+        << ",\"view_mean_ms\":" << r.viewMeanMs << ",\"requirements\":[";
     for (std::size_t i = 0; i < r.requirements.size(); ++i)
         out << (i ? "," : "") << "{\"id\":\"" << r.requirements[i].id
             << "\",\"mean_ms\":" << r.requirements[i].meanMs

@@ -2,7 +2,9 @@
 // `functionlab bench grading`: a generated class — variants of the
 // reference solutions (constants moved, operations made dead, shapes
 // hidden), starters, other labs' solutions, broken and hostile files —
-// graded as a batch in isolated processes, then measured in-process:
+// graded as a batch in isolated processes — in parts, as a cluster would
+// (grade batch --shard K/N), the parts then merged (grade merge) — then
+// measured in-process:
 // time per submission (percentiles), the checker's time per requirement,
 // and what accuracy costs in time: the solid comparison's depth against the
 // checker's time and against its verdicts.
@@ -21,12 +23,23 @@ struct GradingBenchOptions {
     std::string functionlab;              // the executable that grades (grade check)
     std::vector<int> depths{5, 7, 9, 11}; // compared against the default (9)
     int depthSample = 40;                 // submissions the depth sweep grades
+    int requirementSample = 200;          // submissions timed per requirement in-process
+    int shards = 4;                       // parts the class is graded in, then merged
 };
 
 struct GradingBenchResult {
     int submissions = 0;
     int jobs = 0;
-    double classSeconds = 0;          // the whole batch, isolated processes
+    double classSeconds = 0; // the whole batch (every part), isolated processes
+    int shards = 0;
+    double mergeMs = 0;            // merging the parts' gradebooks into one
+    std::size_t mergedEntries = 0; // the merged log's
+    std::size_t mergedGrades = 0;  // students graded in the merged gradebook
+    int cores = 0;                 // the cores the batch used: its jobs, at most the machine's
+    // Submissions graded per second for each core the batch kept busy.
+    double perSecondPerCore() const {
+        return classSeconds > 0 && cores > 0 ? double(submissions) / classSeconds / cores : 0;
+    }
     double p50 = 0, p95 = 0, max = 0; // seconds per submission (child wall time)
     std::size_t graded = 0, notGradable = 0, failed = 0;
     struct RequirementTime {

@@ -85,6 +85,12 @@ struct SignedHead {
     std::string at;
 };
 
+// One entry of the log as written: grade merge copies the shards' entries.
+struct LogEntry {
+    std::int64_t seq = 0;
+    std::string at, kind, payload, hash;
+};
+
 // What verify() found.
 struct GradebookCheck {
     bool intact = true;        // the log's chain holds and the tables are what it says
@@ -158,6 +164,13 @@ class Gradebook {
     SignedHead signHead(const struct SigningKey& key);
     std::vector<SignedHead> signedHeads(); // newest first
     GradebookCheck verify(const VerifyOptions& options = {});
+    // The log, oldest first.
+    std::vector<LogEntry> logEntries();
+    // Entries of other gradebooks' logs (grade merge): each appended with
+    // its own time, kind and payload, chained into this log, and applied;
+    // one transaction. A "merge" entry (what was merged, see
+    // gradebook_merge.h) changes no table.
+    void appendFrom(const std::vector<LogEntry>& entries);
 
   private:
     void migrate();
@@ -165,6 +178,7 @@ class Gradebook {
     // Every change: the entry first, then the tables (one transaction).
     void change(std::string_view kind, const std::string& payload);
     void appendEntry(std::string_view kind, const std::string& payload);
+    void appendEntry(std::string_view kind, const std::string& payload, const std::string& at);
     void apply(std::string_view kind, const std::string& payload);
     void applyStudent(const Student& s);
     void applyAssignment(const AssignmentRecord& a);

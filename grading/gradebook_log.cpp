@@ -154,9 +154,13 @@ void Gradebook::change(std::string_view kind, const std::string& payload) {
 }
 
 void Gradebook::appendEntry(std::string_view kind, const std::string& payload) {
+    appendEntry(kind, payload, utcNow());
+}
+
+void Gradebook::appendEntry(std::string_view kind, const std::string& payload,
+                            const std::string& at) {
     const LogHead last = head();
     const std::int64_t seq = last.seq + 1;
-    const std::string at = utcNow();
     db_.prepare("INSERT INTO events(seq, at, kind, payload, previous_hash, hash) "
                 "VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
         .bind(1, seq)
@@ -211,6 +215,8 @@ void Gradebook::apply(std::string_view kind, const std::string& payload) {
     } else if (kind == "override") {
         applyOverride(text(o, "student"), text(o, "assignment"), number(o, "score"), text(o, "who"),
                       text(o, "why"), text(o, "at"));
+    } else if (kind == "merge") {
+        // What grade merge combined (its sources' heads): a record, no table.
     } else {
         throw platform::SqliteError("the gradebook log holds an entry of an unknown kind '" +
                                     std::string(kind) + "' (written by a newer FunctionLab?)");
@@ -319,6 +325,23 @@ std::vector<SignedHead> Gradebook::signedHeads() {
     return out;
 }
 
+std::vector<LogEntry> Gradebook::logEntries() {
+    std::vector<LogEntry> out;
+    auto s = db_.prepare("SELECT seq, at, kind, payload, hash FROM events ORDER BY seq");
+    while (s.step())
+        out.push_back({s.integer(0), s.text(1), s.text(2), s.text(3), s.text(4)});
+    return out;
+}
+
+void Gradebook::appendFrom(const std::vector<LogEntry>& entries) {
+    platform::SqliteDatabase::Transaction t(db_);
+    for (const LogEntry& e : entries) {
+        appendEntry(e.kind, e.payload, e.at);
+        apply(e.kind, e.payload);
+    }
+    t.commit();
+}
+
 // ------------------------------------------------------------ verifying
 
 namespace {
@@ -332,6 +355,7 @@ std::string describe(const std::string& kind, const std::string& payload) {
     if (kind == "grade") return "a grade of " + whom;
     if (kind == "manual-score") return "a manual score of " + whom;
     if (kind == "override") return "an override of " + whom;
+    if (kind == "merge") return "the record of a merge";
     return "an entry of kind " + kind;
 }
 

@@ -439,7 +439,8 @@ struct Parser {
         }
         if (!parsed.help_) {
             const std::size_t declared = spec.positionals.size();
-            if (parsed.positionals_.size() > declared) {
+            const bool repeats = declared > 0 && spec.positionals.back().repeats;
+            if (parsed.positionals_.size() > declared && !repeats) {
                 const std::string& extra = parsed.positionals_[declared];
                 return fail(declared == 0 ? "unexpected argument '" + extra + "'"
                                           : "unexpected argument '" + extra + "' (give one " +
@@ -581,8 +582,10 @@ std::string markdownText(const CommandSpec& spec) {
     // literal + std::string chains.
     auto code = [](std::string_view text) { return std::string("`").append(text).append("`"); };
     for (const PositionalSpec& p : spec.positionals)
-        out +=
-            row({code(p.name).append(p.required ? "" : " (optional)"), markdownCell(p.help), ""});
+        out += row({code(p.name)
+                        .append(p.required ? "" : " (optional)")
+                        .append(p.repeats ? " (one or more)" : ""),
+                    markdownCell(p.help), ""});
     for (const OptionSpec& o : spec.options)
         out += row({code(markdownCell(optionLabel(o))).append(o.repeatable ? " (repeatable)" : ""),
                     markdownCell(o.help), o.defaultValue.empty() ? "" : code(o.defaultValue)});

@@ -52,6 +52,9 @@ struct PositionalSpec {
     std::string_view name{}; // "FILE", "SRC"
     std::string_view help{};
     bool required = true;
+    // The last positional only: it may be given more than once (`grade merge
+    // A.sqlite B.sqlite ...`); positionals() holds them all.
+    bool repeats = false;
 };
 
 // What `--` does: end the options (every later argument is positional), or

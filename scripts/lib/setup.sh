@@ -89,7 +89,8 @@ install_missing_packages() {
 # its tests skip, saying so; the rest of the suite does not depend on them.
 # view3dscene and assimp open our exports (tests/interop); chromium shows the
 # grading reports as a student's browser would (tests/cli, grade report).
-TEST_TOOL_PACKAGES=(view3dscene assimp-utils chromium)
+# GNU parallel grades a class in shards as a cluster would (tests/cli, grade merge).
+TEST_TOOL_PACKAGES=(view3dscene assimp-utils chromium parallel)
 
 install_test_tools() {
   command -v dpkg-query >/dev/null 2>&1 || { log "not Debian: interop tools not installed"; return 0; }

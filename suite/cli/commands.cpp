@@ -122,6 +122,7 @@ const std::vector<Command>& commands() {
         {benchHapticsSpec, benchHapticsCommand},
         {gradeCheckSpec, gradeCheckCommand},
         {gradeBatchSpec, gradeBatchCommand},
+        {gradeMergeSpec, gradeMergeCommand},
         {gradeExportSpec, gradeExportCommand},
         {gradeSimilarSpec, gradeSimilarCommand},
         {gradeReportSpec, gradeReportCommand},

@@ -28,6 +28,7 @@ const CommandSpec& gradeExportSpec();
 const CommandSpec& gradeSimilarSpec();
 const CommandSpec& gradeReportSpec();
 const CommandSpec& gradeVerifySpec();
+const CommandSpec& gradeMergeSpec();
 const CommandSpec& gradeKeySpec();
 const CommandSpec& hapticsProbeSpec();
 const CommandSpec& hapticsDevicesSpec();
@@ -54,6 +55,7 @@ int gradeExportCommand(const Args& args);    // `grade export`
 int gradeSimilarCommand(const Args& args);   // `grade similar`
 int gradeReportCommand(const Args& args);    // `grade report`
 int gradeVerifyCommand(const Args& args);    // `grade verify`
+int gradeMergeCommand(const Args& args);     // `grade merge`
 int gradeKeyCommand(const Args& args);       // `grade key new`
 int hapticsProbeCommand(const Args& args);   // `haptics probe`
 int hapticsDevicesCommand(const Args& args); // `haptics devices`

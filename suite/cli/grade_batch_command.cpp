@@ -1,6 +1,7 @@
 // `functionlab grade batch --assignment ID DIR --db GRADEBOOK.sqlite [--jobs N]
-// [--roster CSV] [--json]`: a class's submissions, each checked by
-// `functionlab grade check` in its own isolated child process.
+// [--roster CSV] [--shard K/N] [--json]`: a class's submissions (or the K-th
+// of N parts of them), each checked by `functionlab grade check` in its own
+// isolated child process.
 #include "cli/commands.h"
 #include "cli/grade_options.h"
 #include "cli/json.h"
@@ -9,14 +10,40 @@
 #include "courseware/catalogue.h"
 #include "grading/batch_grading.h"
 #include "grading/checker.h"
+#include "grading/gradebook_merge.h"
 
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
 namespace fl::cli {
 namespace {
+
+// "K/N" with 0 <= K < N, or nothing (with why).
+std::optional<std::pair<std::size_t, std::size_t>> parseShard(const std::string& text,
+                                                              std::string& why) {
+    const auto slash = text.find('/');
+    auto whole = [](const std::string& s, std::size_t& v) {
+        if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos)
+            return false;
+        v = std::size_t(std::stoul(s));
+        return true;
+    };
+    std::size_t k = 0, n = 0;
+    if (slash == std::string::npos || !whole(text.substr(0, slash), k) ||
+        !whole(text.substr(slash + 1), n) || n == 0) {
+        why = "--shard needs K/N with whole numbers, N at least 1 (e.g. 0/4), not '" + text + "'";
+        return std::nullopt;
+    }
+    if (k >= n) {
+        why = "--shard " + text + ": K counts from 0, so it must be below N (0/" +
+              std::to_string(n) + " ... " + std::to_string(n - 1) + "/" + std::to_string(n) + ")";
+        return std::nullopt;
+    }
+    return std::pair{k, n};
+}
 
 std::string selfExecutable() {
     std::error_code ec;
@@ -31,7 +58,7 @@ const CommandSpec& gradeBatchSpec() {
         .name = "grade batch",
         .summary = "grade a class's submissions into a SQLite gradebook, isolated and resumable",
         .synopsis = {"grade batch --assignment ID|DIR DIR --db GRADEBOOK.sqlite [--jobs N] "
-                     "[--roster CSV] [--isolation KIND | --no-isolation] [--json]"},
+                     "[--roster CSV] [--shard K/N] [--isolation KIND | --no-isolation] [--json]"},
         .description =
             "Grades every submission in DIR — a scene file or a folder per student; the\n"
             "student's id is the name before its first dot — each by `functionlab grade\n"
@@ -42,7 +69,10 @@ const CommandSpec& gradeBatchSpec() {
             "the gradebook records which isolation each check ran under. Each result is\n"
             "written to the gradebook as soon as it is in: a killed batch loses no finished\n"
             "result, and a batch run again skips submissions already graded with the same\n"
-            "content, checker version and rubric.\n",
+            "content, checker version and rubric. With --shard K/N only the K-th of N\n"
+            "disjoint parts of the class is graded (a student's part is a hash of their id,\n"
+            "the same on every machine): run the N parts on N machines, each into its own\n"
+            "gradebook, then `grade merge` them.\n",
         .positionals = {{.name = "DIR", .help = "the folder of submissions"}},
         .options = {assignmentOption(),
                     gradebookOption("the gradebook (created when missing)"),
@@ -58,6 +88,11 @@ const CommandSpec& gradeBatchSpec() {
                      .valueName = "CSV",
                      .help = "import students first: a CSV whose header names an id column "
                              "(and name, email)"},
+                    {.name = "shard",
+                     .kind = OptionKind::Text,
+                     .valueName = "K/N",
+                     .help = "grade only the K-th (from 0) of N disjoint parts of the class, by "
+                             "student id (a Slurm array task: $SLURM_ARRAY_TASK_ID/N)"},
                     {.name = "time-limit",
                      .kind = OptionKind::Number,
                      .valueName = "SECONDS",
@@ -78,7 +113,8 @@ const CommandSpec& gradeBatchSpec() {
                     signingKeyOption(),
                     {.name = "json",
                      .help = "print one JSON object at the end: {\"graded\", \"skipped\", "
-                             "\"not_gradable\", \"failed\", \"isolation\", \"head\": "
+                             "\"not_gradable\", \"failed\", \"shard\" (with --shard: \"K/N\"), "
+                             "\"isolation\", \"head\": "
                              "{\"entry\", \"hash\", \"publicKey\", \"signature\"}, "
                              "\"problems\": [...]}"}},
         .notes = "A progress line on a terminal. Results: `functionlab grade export`.\n",
@@ -102,6 +138,12 @@ int gradeBatchCommand(const Args& args) {
     if (!std::filesystem::is_directory(folder, ec)) {
         std::cerr << "functionlab grade batch: " << folder.string() << " is not a folder\n";
         return kExitDiagnostic;
+    }
+    std::optional<std::pair<std::size_t, std::size_t>> shard;
+    if (a->given("shard")) {
+        std::string why;
+        shard = parseShard(a->text("shard"), why);
+        if (!shard) return usageError(gradeBatchSpec(), why, std::cerr);
     }
     if (a->given("isolation") && a->flag("no-isolation"))
         return usageError(gradeBatchSpec(), "--isolation and --no-isolation exclude each other",
@@ -136,7 +178,11 @@ int gradeBatchCommand(const Args& args) {
                           << "\n";
         }
         std::vector<std::string> skipped;
-        const auto submissions = grading::findSubmissions(folder, skipped);
+        auto submissions = grading::findSubmissions(folder, skipped);
+        if (shard)
+            std::erase_if(submissions, [&](const grading::BatchSubmission& s) {
+                return grading::shardOf(s.student, shard->second) != shard->first;
+            });
         for (const std::string& s : skipped)
             std::cerr << "functionlab grade batch: " << s << "\n";
         grading::BatchOptions o;
@@ -169,6 +215,9 @@ int gradeBatchCommand(const Args& args) {
             out += ",\"skipped\":" + std::to_string(summary.skipped);
             out += ",\"not_gradable\":" + std::to_string(summary.notGradable);
             out += ",\"failed\":" + std::to_string(summary.failed);
+            if (shard)
+                out += ",\"shard\":" + jsonString(std::to_string(shard->first) + "/" +
+                                                  std::to_string(shard->second));
             out += ",\"isolation\":" +
                    jsonString(limits.isolate ? std::string(platform::isolationName(
                                                    limits.isolation ? *limits.isolation

@@ -110,6 +110,20 @@ TEST(OptionTable, FlagsAndPositionals) {
     EXPECT_EQ(parseError({"a", "--json=yes"}), "--json takes no value");
 }
 
+TEST(OptionTable, ALastPositionalThatRepeatsTakesEveryRemainingArgument) {
+    static const CommandSpec spec{
+        .name = "merge",
+        .positionals = {{.name = "PART", .help = "a part", .repeats = true}},
+        .options = {{.name = "output", .shortName = 'o', .kind = OptionKind::Path}},
+    };
+    const ParseResult r = parseArguments(spec, {"a.sqlite", "-o", "c.sqlite", "b.sqlite"});
+    ASSERT_TRUE(r.ok()) << r.error.message;
+    EXPECT_EQ(r.args->positionals(), (std::vector<std::string>{"a.sqlite", "b.sqlite"}));
+    EXPECT_EQ(r.args->positional("PART"), "a.sqlite");
+    EXPECT_EQ(parseError({"-o", "c.sqlite"}, spec), "missing PART");
+    EXPECT_NE(markdownText(spec).find("`PART` (one or more)"), std::string::npos);
+}
+
 TEST(OptionTable, ValuesSeparateOrAfterEquals) {
     const ParsedArgs a = parseOk({"f", "--time", "2.5", "--side=128", "-o", "x.stl"});
     EXPECT_EQ(a.number("time", 0), 2.5);
