@@ -101,6 +101,17 @@ Gradebook::Gradebook(const std::string& path) : db_(path) {
     migrate();
 }
 
+Gradebook::Gradebook(const std::string& path, ReadOnly) : db_(path, true) {
+    const int version = schemaVersion();
+    if (version == kGradebookSchemaVersion) return;
+    throw platform::SqliteError(
+        version == 0 ? "not a FunctionLab gradebook"
+        : version > kGradebookSchemaVersion
+            ? "written by a newer FunctionLab (schema " + std::to_string(version) + ")"
+            : "an older gradebook (schema " + std::to_string(version) +
+                  "): bring it up to date first with functionlab grade verify");
+}
+
 int Gradebook::schemaVersion() {
     auto s = db_.prepare("PRAGMA user_version");
     return s.step() ? int(s.integer(0)) : 0;

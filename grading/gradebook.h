@@ -122,6 +122,12 @@ class Gradebook {
   public:
     // Opens (creating and migrating to kGradebookSchemaVersion) the file.
     explicit Gradebook(const std::string& path);
+    // Opens an existing gradebook of this schema without writing to it (the
+    // parts grade merge reads: files from others). A file that is not such a
+    // gradebook — another database, an older gradebook, a newer one — is
+    // refused (SqliteError), never changed.
+    enum class ReadOnly { Yes };
+    Gradebook(const std::string& path, ReadOnly);
 
     int schemaVersion();
 

@@ -102,7 +102,7 @@ std::optional<MergeSummary> mergeGradebooks(const std::vector<std::string>& sour
     QJsonArray records;
     for (const std::string& s : sources) {
         try {
-            Gradebook part(s);
+            Gradebook part(s, Gradebook::ReadOnly::Yes); // someone's file: never written
             const GradebookCheck check = part.verify();
             if (!check.intact) return refuse(s + ": its log does not verify: " + check.problem);
             logs.push_back(part.logEntries());

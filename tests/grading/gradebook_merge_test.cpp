@@ -174,6 +174,28 @@ TEST(GradebookMerge, PartsThatDisagreeAreRefusedAndNothingIsWritten) {
     }
     EXPECT_TRUE(refused({a, notes}));
     EXPECT_NE(why.find("merge-notes.sqlite"), std::string::npos) << why;
+    // Another program's database is refused and left as it was (no tables added).
+    const std::string other = freshPath("other");
+    {
+        sqlite3* db = nullptr;
+        ASSERT_EQ(sqlite3_open(other.c_str(), &db), SQLITE_OK);
+        ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE recipes(name TEXT)", nullptr, nullptr, nullptr),
+                  SQLITE_OK);
+        sqlite3_close(db);
+    }
+    EXPECT_TRUE(refused({a, other}));
+    EXPECT_NE(why.find("not a FunctionLab gradebook"), std::string::npos) << why;
+    {
+        sqlite3* db = nullptr;
+        ASSERT_EQ(sqlite3_open(other.c_str(), &db), SQLITE_OK);
+        sqlite3_stmt* st = nullptr;
+        ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT count(*) FROM sqlite_master", -1, &st, nullptr),
+                  SQLITE_OK);
+        ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
+        EXPECT_EQ(sqlite3_column_int(st, 0), 1); // recipes alone
+        sqlite3_finalize(st);
+        sqlite3_close(db);
+    }
     // No part, a missing one, one named twice, an output that exists.
     EXPECT_TRUE(refused({}));
     EXPECT_TRUE(refused({a, freshPath("missing")}));
