@@ -244,6 +244,12 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
         steps_.push_back(s);
     }
     fuseBatchSteps(steps_, tape_);
+    // Compiled when every step can be: outputs are what evaluate() reads back.
+    std::vector<char> liveOut(std::size_t(tape_.registerCount), 0);
+    for (const OutputInfo& o : tape_.outputs)
+        if (!o.value.isConst() && !isUniform_[std::size_t(o.value.reg)])
+            liveOut[std::size_t(o.value.reg)] = 1;
+    jit_ = BatchJit::compile(steps_, liveOut, tape_.registerCount);
     specialised_ = true;
 }
 
@@ -495,7 +501,27 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
         const std::size_t count = std::min(kBlock, n - start);
         for (int i = 0; i < kInputCount; ++i)
             if (in.arrays[i]) base[i] = const_cast<double*>(in.arrays[i] + start); // read only
-        runBlock(base.data(), count);
+        // A single output computed in a register of its own is written
+        // straight into the caller's array: no copy afterwards.
+        const bool direct = tape_.outputs.size() == 1 && !tape_.outputs[0].value.isConst() &&
+                            tape_.outputs[0].value.reg >= kInputCount &&
+                            !isUniform_[std::size_t(tape_.outputs[0].value.reg)];
+        const std::size_t outReg = direct ? std::size_t(tape_.outputs[0].value.reg) : 0;
+        if (direct) base[outReg] = outputs[0] + start;
+        // The JIT does whole groups of 4 points, the interpreter the rest.
+        const std::size_t done = jit_ ? jit_->run(base.data(), count) : 0;
+        if (done == 0) {
+            runBlock(base.data(), count);
+        } else if (done < count) {
+            tailBase_.resize(regs);
+            for (std::size_t r = 0; r < regs; ++r)
+                tailBase_[r] = base[r] + done;
+            runBlock(tailBase_.data(), count - done);
+        }
+        if (direct) {
+            base[outReg] = workspace_ + outReg * kStride;
+            continue;
+        }
         for (std::size_t k = 0; k < tape_.outputs.size(); ++k) {
             const Operand& o = tape_.outputs[k].value;
             double* dst = outputs[k] + start;

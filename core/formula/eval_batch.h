@@ -7,6 +7,7 @@
 // computed once per call and folded into the loops as immediates.
 //
 // Threads belong above this class: one evaluator per thread.
+#include "batch_jit.h"
 #include "batch_step.h"
 #include "eval_scalar.h"
 
@@ -55,6 +56,9 @@ class BatchEvaluator {
     // Passes over each block for the last evaluate() (after uniform folding
     // and fusion): what the loops really run, for tests and benchmarks.
     std::size_t passesPerBlock() const { return steps_.size(); }
+    // Whether the last evaluate() ran compiled code (batch_jit.h), and its size.
+    bool jitActive() const { return jit_ != nullptr; }
+    std::size_t jitCodeBytes() const { return jit_ ? jit_->codeBytes() : 0; }
 
   private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
@@ -69,6 +73,8 @@ class BatchEvaluator {
     std::array<double, kInputCount> specialisedUniform_{};
     std::vector<double> specialisedParams_;
     bool specialised_ = false;
+    std::unique_ptr<BatchJit> jit_; // the steps as machine code, when it can be made
+    std::vector<double*> tailBase_; // the rows from the point the JIT stopped at
 
     void specialise(const BatchInputs& in);
     void runBlock(double* const* base, std::size_t n);

@@ -7,6 +7,7 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 
 # Debian 12 package names. Qt, GLM, hidapi, libusb and SQLite are for the
 # viewer, haptics and grading parts; libsodium signs the gradebook's log;
+# xbyak compiles formulas to machine code (the batch evaluator's JIT);
 # bubblewrap isolates each submission grade batch checks; muParser, Draco and
 # meshoptimizer are benchmark peers only (functionlab-bench links them).
 # Installed with --no-install-recommends, so every package CMake needs is
@@ -16,7 +17,7 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev libmuparser-dev
-  libsleef-dev libglm-dev libeigen3-dev libsqlite3-dev libsodium-dev libhidapi-dev libusb-1.0-0-dev
+  libsleef-dev libxbyak-dev libglm-dev libeigen3-dev libsqlite3-dev libsodium-dev libhidapi-dev libusb-1.0-0-dev
   qt6-base-dev libqt6opengl6-dev qt6-3d-dev qt6-websockets-dev zlib1g-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   bubblewrap

@@ -1,0 +1,691 @@
+#include "batch_jit.h"
+
+#include "vector_math.h"
+
+#include <xbyak/xbyak.h>
+#include <xbyak/xbyak_util.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+
+namespace fl::formula {
+namespace {
+
+std::atomic<bool> allowed{true};
+std::atomic<bool> allowCalls{false}; // tests turn it on to check the calls' code
+
+// vcmppd predicates (quiet: no exception is ever unmasked here).
+constexpr std::uint8_t kEqOQ = 0x00, kUnordQ = 0x03, kNeqUQ = 0x04, kEqUQ = 0x08, kNeqOQ = 0x0C,
+                       kLtOQ = 0x11, kLeOQ = 0x12, kGeOQ = 0x1D, kGtOQ = 0x1E;
+
+std::optional<vmath::Unary> vmathUnary(Op op) {
+    switch (op) {
+    case Op::Sin:
+        return vmath::Unary::Sin;
+    case Op::Cos:
+        return vmath::Unary::Cos;
+    case Op::Tan:
+        return vmath::Unary::Tan;
+    case Op::Asin:
+        return vmath::Unary::Asin;
+    case Op::Acos:
+        return vmath::Unary::Acos;
+    case Op::Atan:
+        return vmath::Unary::Atan;
+    case Op::Exp:
+        return vmath::Unary::Exp;
+    case Op::Log:
+        return vmath::Unary::Log;
+    case Op::Log2:
+        return vmath::Unary::Log2;
+    case Op::Log10:
+        return vmath::Unary::Log10;
+    case Op::Sinh:
+        return vmath::Unary::Sinh;
+    case Op::Cosh:
+        return vmath::Unary::Cosh;
+    case Op::Tanh:
+        return vmath::Unary::Tanh;
+    case Op::Cbrt:
+        return vmath::Unary::Cbrt;
+    default:
+        return std::nullopt;
+    }
+}
+
+// Whether the JIT makes code for this step (else the whole tape stays with
+// the interpreter).
+bool compiles(const BatchStep& s) {
+    if (s.out < kInputCount) return false; // never write an input's array
+    if (s.fused != Fused::None) return true;
+    // SLEEF's functions are called on 4 lanes at a time here, and every live
+    // value goes to memory around each call: on the watermelon's colour
+    // (two sines and an atan2) that was 1.4x slower than the interpreter's
+    // one call per 256 points, so such tapes stay interpreted (measured with
+    // `functionlab bench eval`; the code for the calls is kept and tested,
+    // see allowCalls).
+    if (vmathUnary(s.op) || s.op == Op::Pow || s.op == Op::Atan2) return allowCalls.load();
+    switch (s.op) {
+    case Op::Neg:
+    case Op::Abs:
+    case Op::Square:
+    case Op::Sqrt:
+    case Op::Floor:
+    case Op::Ceil:
+    case Op::Sign:
+    case Op::Not:
+    case Op::PowI:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Min:
+    case Op::Max:
+    case Op::Less:
+    case Op::LessEq:
+    case Op::Greater:
+    case Op::GreaterEq:
+    case Op::Equal:
+    case Op::NotEqual:
+    case Op::And:
+    case Op::Or:
+    case Op::Select:
+        return true;
+    default: // round, hypot, mod, the R-functions, noise
+        return false;
+    }
+}
+
+// The registers a step reads, in the order it reads them.
+std::vector<std::int32_t> readsOf(const BatchStep& s) {
+    std::vector<std::int32_t> r;
+    switch (s.fused) {
+    case Fused::SquareOfDiff:
+        return {s.a};
+    case Fused::SquareTerms:
+        if (!s.constA) r.push_back(s.a);
+        for (int t = 0; t < s.terms; ++t)
+            r.push_back(s.termReg[t]);
+        return r;
+    case Fused::MinMaxChain:
+        for (int t = 0; t < s.chainCount; ++t)
+            r.push_back(s.chainReg[t]);
+        return r;
+    case Fused::NegatedOperand:
+    case Fused::None:
+        break;
+    }
+    const int arity = opArity(s.op);
+    if (!s.constA) r.push_back(s.a);
+    if (arity >= 2 && !s.constB) r.push_back(s.b);
+    if (arity >= 3 && !s.constC) r.push_back(s.c);
+    return r;
+}
+
+using namespace Xbyak;
+
+class Emitter : public CodeGenerator {
+  public:
+    Emitter(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
+            std::int32_t registerCount, std::size_t maxSize)
+        : CodeGenerator(maxSize), steps_(steps), liveOut_(liveOut),
+          where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)) {
+        // At most a few constants a step: the pool never moves once r14 holds it.
+        pool_.reserve(16 * steps_.size() + 16);
+        for (std::size_t k = 0; k < steps_.size(); ++k) {
+            for (std::int32_t r : readsOf(steps_[k]))
+                events_[std::size_t(r)].push_back({k, false});
+            events_[std::size_t(steps_[k].out)].push_back({k, true});
+        }
+        emit();
+    }
+
+  private:
+    static constexpr int kSlots = 11; // ymm0..ymm10 hold values; ymm11..ymm15 are scratch
+    const Ymm S1{11}, S2{12}, R{13}, CA{14}, CB{15};
+
+    struct Event {
+        std::size_t step;
+        bool write;
+    };
+    struct Slot {
+        std::int32_t reg = -1;
+        bool dirty = false;
+        bool pinned = false;
+    };
+
+    const std::vector<BatchStep>& steps_;
+    const std::vector<char>& liveOut_;
+    std::vector<int> where_; // register -> slot, or -1 (in its row)
+    std::vector<std::vector<Event>> events_;
+    std::array<Slot, kSlots> slots_{};
+    std::size_t step_ = 0;
+    int lane_ = 0; // the first point of the group being emitted (0 or 4)
+    // The constants, read with one load each (vbroadcastsd from memory: no
+    // shuffle port, unlike a move from a general register).
+    std::vector<double> pool_;
+    std::unordered_map<std::uint64_t, std::size_t> poolIndex_; // by the constant's bits
+
+    // The step at or after `from` that next reads the value `reg` holds
+    // before step `from` runs, or SIZE_MAX when none does; `neededAtEnd`
+    // whether the block's caller reads it (an output never written again).
+    std::size_t nextRead(std::int32_t reg, std::size_t from, bool* neededAtEnd = nullptr) const {
+        for (const Event& e : events_[std::size_t(reg)]) {
+            if (e.step < from) continue;
+            if (!e.write) return e.step; // a step reading and writing reads first
+            if (neededAtEnd) *neededAtEnd = false;
+            return std::numeric_limits<std::size_t>::max();
+        }
+        if (neededAtEnd) *neededAtEnd = liveOut_[std::size_t(reg)] != 0;
+        return std::numeric_limits<std::size_t>::max();
+    }
+    bool needed(std::int32_t reg, std::size_t from) const {
+        bool atEnd = false;
+        return nextRead(reg, from, &atEnd) != std::numeric_limits<std::size_t>::max() || atEnd;
+    }
+
+    // rax := the address of register `reg`'s lanes in this iteration.
+    void addressOf(const Reg64& out, std::int32_t reg) {
+        mov(out, ptr[r12 + reg * 8]);
+        lea(out, ptr[out + rbx * 8 + lane_ * 8]);
+    }
+    // The lanes of register `reg` in this iteration (rax holds its row).
+    Address lanes(std::int32_t reg) {
+        mov(rax, ptr[r12 + reg * 8]);
+        return ptr[rax + rbx * 8 + lane_ * 8];
+    }
+    void store(int slot) {
+        vmovupd(lanes(slots_[std::size_t(slot)].reg), Ymm(slot));
+        slots_[std::size_t(slot)].dirty = false;
+    }
+    void release(int slot) {
+        Slot& s = slots_[std::size_t(slot)];
+        if (s.reg >= 0) where_[std::size_t(s.reg)] = -1;
+        s = Slot{};
+    }
+    // A free slot: an empty one, else the one whose value is read last
+    // (stored first when it is still needed).
+    int freeSlot() {
+        int best = -1;
+        std::size_t bestUse = 0;
+        for (int i = 0; i < kSlots; ++i) {
+            const Slot& s = slots_[std::size_t(i)];
+            if (s.reg < 0) return i;
+            if (s.pinned) continue;
+            bool atEnd = false;
+            std::size_t use = nextRead(s.reg, step_, &atEnd);
+            if (use == std::numeric_limits<std::size_t>::max() && !atEnd) {
+                release(i); // dead: dropped, never stored
+                return i;
+            }
+            if (best < 0 || use > bestUse) best = i, bestUse = use;
+        }
+        if (slots_[std::size_t(best)].dirty) store(best);
+        release(best);
+        return best;
+    }
+    // The register's value in a YMM, pinned for the current step.
+    Ymm in(std::int32_t reg) {
+        int slot = where_[std::size_t(reg)];
+        if (slot < 0) {
+            slot = freeSlot();
+            vmovupd(Ymm(slot), lanes(reg));
+            slots_[std::size_t(slot)] = {reg, false, true};
+            where_[std::size_t(reg)] = slot;
+        }
+        slots_[std::size_t(slot)].pinned = true;
+        return Ymm(slot);
+    }
+    // R, the step's result, becomes register `reg`'s value.
+    void define(std::int32_t reg) {
+        int slot = where_[std::size_t(reg)];
+        if (slot < 0) {
+            slot = freeSlot();
+            where_[std::size_t(reg)] = slot;
+        }
+        slots_[std::size_t(slot)] = {reg, true, false};
+        vmovapd(Ymm(slot), R);
+    }
+    // Every value still needed in its row (a call clobbers every YMM).
+    void flush() {
+        for (int i = 0; i < kSlots; ++i) {
+            const Slot& s = slots_[std::size_t(i)];
+            if (s.reg >= 0 && s.dirty && needed(s.reg, step_)) store(i);
+            release(i);
+        }
+    }
+    void broadcast(const Ymm& y, double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        auto [at, added] = poolIndex_.emplace(bits, pool_.size());
+        if (added) {
+            if (pool_.size() == pool_.capacity()) throw Xbyak::Error(ERR_CODE_IS_TOO_BIG);
+            pool_.push_back(v);
+        }
+        vbroadcastsd(y, ptr[r14 + int(at->second * sizeof(double))]);
+    }
+    Ymm operandA(const BatchStep& s) {
+        if (!s.constA) return in(s.a);
+        broadcast(CA, s.ca);
+        return CA;
+    }
+    Ymm operandB(const BatchStep& s) {
+        if (!s.constB) return in(s.b);
+        broadcast(CB, s.cb);
+        return CB;
+    }
+
+    // dst = min or max (x, y) with the language's rule: x when x < y (x > y)
+    // or x is NaN, else y. Uses S1 and S2.
+    void minMax(bool isMin, const Ymm& dst, const Ymm& x, const Ymm& y) {
+        vcmppd(S1, x, y, isMin ? kLtOQ : kGtOQ);
+        vcmppd(S2, x, x, kUnordQ);
+        vorpd(S1, S1, S2);
+        vblendvpd(dst, y, x, S1);
+    }
+    // R = 1.0 where mask, else 0.0.
+    void oneWhere(const Ymm& mask) {
+        broadcast(S2, 1.0);
+        vandpd(R, mask, S2);
+    }
+    // mask = truth(x): non-zero and not NaN.
+    void truth(const Ymm& mask, const Ymm& x) {
+        vxorpd(S2, S2, S2);
+        vcmppd(mask, x, S2, kNeqOQ);
+    }
+    void negate(const Ymm& dst, const Ymm& x) {
+        broadcast(S2, -0.0);
+        vxorpd(dst, x, S2);
+    }
+
+    void callUnary(vmath::ArrayUnary f, const BatchStep& s) {
+        flush();
+        addressOf(rdi, s.a);
+        addressOf(rsi, s.out);
+        mov(edx, 4);
+        mov(rax, reinterpret_cast<std::uint64_t>(f));
+        vzeroupper();
+        call(rax);
+    }
+    void callBinary(vmath::ArrayBinary f, const BatchStep& s) {
+        flush();
+        auto pointerOrNull = [&](const Reg64& out, bool isConst, std::int32_t reg) {
+            if (isConst)
+                xor_(out, out);
+            else
+                addressOf(out, reg);
+        };
+        pointerOrNull(rdi, s.constA, s.a);
+        pointerOrNull(rsi, s.constB, s.b);
+        addressOf(rdx, s.out);
+        mov(ecx, 4);
+        std::uint64_t bits;
+        std::memcpy(&bits, &s.ca, sizeof bits);
+        mov(rax, bits);
+        vmovq(xmm0, rax);
+        std::memcpy(&bits, &s.cb, sizeof bits);
+        mov(rax, bits);
+        vmovq(xmm1, rax);
+        mov(rax, reinterpret_cast<std::uint64_t>(f));
+        vzeroupper();
+        call(rax);
+    }
+
+    // One step; false when its value was written to memory by a call.
+    bool step(const BatchStep& s) {
+        switch (s.fused) {
+        case Fused::SquareOfDiff: {
+            const Ymm a = in(s.a);
+            broadcast(S1, s.ca);
+            vsubpd(R, a, S1);
+            vmulpd(R, R, R);
+            return true;
+        }
+        case Fused::SquareTerms: {
+            if (s.constA)
+                broadcast(R, s.ca);
+            else
+                vmovapd(R, in(s.a));
+            // acc + sign * ((r - offset)^2), with what is exact left out:
+            // r - (+0) is r, and adding -1 * q is subtracting q.
+            for (int t = 0; t < s.terms; ++t) {
+                const Ymm r = in(s.termReg[t]);
+                const double offset = s.termOffset[t];
+                if (std::bit_cast<std::uint64_t>(offset) == 0) {
+                    vmulpd(CA, r, r);
+                } else {
+                    broadcast(S1, offset);
+                    vsubpd(CA, r, S1);
+                    vmulpd(CA, CA, CA);
+                }
+                if (s.termSign[t] == 1.0) {
+                    vaddpd(R, R, CA);
+                } else if (s.termSign[t] == -1.0) {
+                    vsubpd(R, R, CA);
+                } else {
+                    broadcast(S1, s.termSign[t]);
+                    vmulpd(CA, S1, CA);
+                    vaddpd(R, R, CA);
+                }
+            }
+            return true;
+        }
+        case Fused::NegatedOperand: {
+            const Ymm a = operandA(s), b = operandB(s);
+            if (s.negA) {
+                negate(CA, a);
+                minMax(s.op == Op::Min, R, CA, b);
+            } else {
+                negate(CB, b);
+                minMax(s.op == Op::Min, R, a, CB);
+            }
+            return true;
+        }
+        case Fused::MinMaxChain: {
+            const bool isMin = s.op == Op::Min;
+            // sign * r: r itself for +1, its negation for -1 (both exact).
+            auto signed_ = [&](const Ymm& dst, int t) {
+                const Ymm r = in(s.chainReg[t]);
+                if (s.chainSign[t] == 1.0) {
+                    vmovapd(dst, r);
+                } else if (s.chainSign[t] == -1.0) {
+                    negate(dst, r);
+                } else {
+                    broadcast(S1, s.chainSign[t]);
+                    vmulpd(dst, S1, r);
+                }
+            };
+            signed_(CA, 0);
+            signed_(CB, 1);
+            minMax(isMin, R, CA, CB);
+            for (int t = 2; t < s.chainCount; ++t) {
+                vmovapd(CA, R);
+                signed_(CB, t);
+                minMax(isMin, R, CA, CB);
+            }
+            return true;
+        }
+        case Fused::None:
+            break;
+        }
+        const vmath::Implementation& vm = vmath::implementation();
+        if (const auto f = vmathUnary(s.op)) {
+            callUnary(vm.unaryArray[int(*f)], s);
+            return false;
+        }
+        switch (s.op) {
+        case Op::Pow:
+            callBinary(vm.binaryArray[int(vmath::Binary::Pow)], s);
+            return false;
+        case Op::Atan2:
+            callBinary(vm.binaryArray[int(vmath::Binary::Atan2)], s);
+            return false;
+        case Op::Neg:
+            negate(R, in(s.a));
+            return true;
+        case Op::Abs:
+            broadcast(S2, -0.0);
+            vandnpd(R, S2, in(s.a));
+            return true;
+        case Op::Square: {
+            const Ymm a = in(s.a);
+            vmulpd(R, a, a);
+            return true;
+        }
+        case Op::Sqrt:
+            vsqrtpd(R, in(s.a));
+            return true;
+        case Op::Floor:
+            vroundpd(R, in(s.a), 0x09);
+            return true;
+        case Op::Ceil:
+            vroundpd(R, in(s.a), 0x0A);
+            return true;
+        case Op::Sign: { // a > 0 ? 1 : a < 0 ? -1 : a == 0 ? 0 : a (NaN)
+            const Ymm a = in(s.a);
+            vxorpd(S2, S2, S2);
+            vcmppd(S1, a, S2, kGtOQ);
+            vcmppd(CB, a, S2, kLtOQ);
+            broadcast(CA, 1.0);
+            vandpd(S1, S1, CA);
+            broadcast(CA, -1.0);
+            vandpd(CB, CB, CA);
+            vorpd(S1, S1, CB);
+            vcmppd(CB, a, a, kUnordQ);
+            vblendvpd(R, S1, a, CB);
+            return true;
+        }
+        case Op::Not: { // truth(a) ? 0 : 1
+            const Ymm a = in(s.a);
+            vxorpd(S2, S2, S2);
+            vcmppd(S1, a, S2, kEqUQ);
+            oneWhere(S1);
+            return true;
+        }
+        case Op::PowI: {
+            const Ymm a = in(s.a);
+            const int k = static_cast<int>(s.imm0);
+            if (k == 3) {
+                vmulpd(R, a, a);
+                vmulpd(R, R, a);
+            } else if (k == 4) {
+                vmulpd(R, a, a);
+                vmulpd(R, R, R);
+            } else if (k == -1) {
+                broadcast(S1, 1.0);
+                vdivpd(R, S1, a);
+            } else if (k == -2) {
+                vmulpd(CA, a, a);
+                broadcast(S1, 1.0);
+                vdivpd(R, S1, CA);
+            } else { // ops::powi, its steps in its order
+                unsigned m = k < 0 ? 0u - static_cast<unsigned>(k) : static_cast<unsigned>(k);
+                broadcast(R, 1.0);
+                vmovapd(CA, a);
+                while (m) {
+                    if (m & 1u) vmulpd(R, R, CA);
+                    vmulpd(CA, CA, CA);
+                    m >>= 1;
+                }
+                if (k < 0) {
+                    broadcast(S1, 1.0);
+                    vdivpd(R, S1, R);
+                }
+            }
+            return true;
+        }
+        case Op::Select: {
+            if (s.constA) { // a uniform condition: one operand or the other
+                const bool take = s.ca < 0.0 || s.ca > 0.0;
+                if (take)
+                    vmovapd(R, operandB(s));
+                else if (s.constC)
+                    broadcast(R, s.cc);
+                else
+                    vmovapd(R, in(s.c));
+                return true;
+            }
+            const Ymm a = in(s.a);
+            truth(S1, a);
+            const Ymm b = operandB(s);
+            Ymm c = CA;
+            if (s.constC)
+                broadcast(CA, s.cc);
+            else
+                c = in(s.c);
+            vblendvpd(R, c, b, S1);
+            return true;
+        }
+        default:
+            break;
+        }
+        // Binary arithmetic, min and max, comparisons, logic.
+        const Ymm a = operandA(s), b = operandB(s);
+        switch (s.op) {
+        case Op::Add:
+            vaddpd(R, a, b);
+            break;
+        case Op::Sub:
+            vsubpd(R, a, b);
+            break;
+        case Op::Mul:
+            vmulpd(R, a, b);
+            break;
+        case Op::Div:
+            vdivpd(R, a, b);
+            break;
+        case Op::Min:
+        case Op::Max:
+            minMax(s.op == Op::Min, R, a, b);
+            break;
+        case Op::Less:
+        case Op::LessEq:
+        case Op::Greater:
+        case Op::GreaterEq:
+        case Op::Equal:
+        case Op::NotEqual: {
+            const std::uint8_t p = s.op == Op::Less        ? kLtOQ
+                                   : s.op == Op::LessEq    ? kLeOQ
+                                   : s.op == Op::Greater   ? kGtOQ
+                                   : s.op == Op::GreaterEq ? kGeOQ
+                                   : s.op == Op::Equal     ? kEqOQ
+                                                           : kNeqUQ;
+            vcmppd(S1, a, b, p);
+            oneWhere(S1);
+            break;
+        }
+        case Op::And:
+        case Op::Or:
+            truth(S1, a);
+            vcmppd(R, b, S2, kNeqOQ); // S2 is zero after truth()
+            if (s.op == Op::And)
+                vandpd(S1, S1, R);
+            else
+                vorpd(S1, S1, R);
+            oneWhere(S1);
+            break;
+        default:
+            break; // compiles() let nothing else through
+        }
+        return true;
+    }
+
+    void emit() {
+        // double* const* base (rdi), size_t n (rsi); rbx: the point index.
+        push(rbx);
+        push(rbp);
+        push(r12);
+        push(r13);
+        push(r14);
+        push(r15);
+        sub(rsp, 8); // 16-byte aligned for calls
+        mov(r12, rdi);
+        mov(r13, rsi);
+        mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
+        and_(r13, ~7u); // sign-extended: whole groups of 8 points
+        xor_(ebx, ebx);
+        Label loop, done;
+        L(loop);
+        cmp(rbx, r13);
+        jae(done, T_NEAR);
+        // Two groups of 4 points an iteration, each all steps: independent
+        // chains of work the processor overlaps.
+        for (lane_ = 0; lane_ < 8; lane_ += 4) {
+            for (step_ = 0; step_ < steps_.size(); ++step_) {
+                const BatchStep& s = steps_[step_];
+                const bool inRegister = step(s);
+                for (Slot& slot : slots_)
+                    slot.pinned = false;
+                if (inRegister) {
+                    define(s.out);
+                } else if (where_[std::size_t(s.out)] >= 0) {
+                    release(where_[std::size_t(s.out)]); // the call wrote its row
+                }
+            }
+            step_ = steps_.size();
+            for (int i = 0; i < kSlots; ++i) {
+                const Slot& slot = slots_[std::size_t(i)];
+                if (slot.reg >= 0 && slot.dirty && liveOut_[std::size_t(slot.reg)]) store(i);
+                release(i);
+            }
+        }
+        add(rbx, 8);
+        jmp(loop, T_NEAR);
+        L(done);
+        mov(rax, rbx);
+        vzeroupper();
+        add(rsp, 8);
+        pop(r15);
+        pop(r14);
+        pop(r13);
+        pop(r12);
+        pop(rbp);
+        pop(rbx);
+        ret();
+    }
+};
+
+} // namespace
+
+struct BatchJit::Code {
+    std::unique_ptr<Emitter> emitter;
+    std::size_t (*run)(double* const*, std::size_t) = nullptr;
+};
+
+BatchJit::BatchJit(std::unique_ptr<Code> code) : code_(std::move(code)) {}
+BatchJit::~BatchJit() = default;
+
+bool BatchJit::available() {
+    static const bool cpu = [] {
+        const char* off = std::getenv("FUNCTIONLAB_NO_JIT");
+        if (off && *off && std::strcmp(off, "0") != 0) return false;
+        const Xbyak::util::Cpu c;
+        return c.has(Xbyak::util::Cpu::tAVX2) && c.has(Xbyak::util::Cpu::tFMA) &&
+               vmath::avx2Implementation() != nullptr;
+    }();
+    return cpu && allowed.load();
+}
+
+void BatchJit::setAllowed(bool on) {
+    allowed = on;
+}
+
+void BatchJit::setCallsAllowed(bool on) {
+    allowCalls = on;
+}
+
+std::unique_ptr<BatchJit> BatchJit::compile(const std::vector<BatchStep>& steps,
+                                            const std::vector<char>& liveOut,
+                                            std::int32_t registerCount) {
+    if (!available() || steps.empty()) return nullptr;
+    for (const BatchStep& s : steps)
+        if (!compiles(s)) return nullptr;
+    // Each step's code is under 400 bytes (a chain of four with loads).
+    const std::size_t size = 4096 + 1024 * steps.size(); // two groups of 4 an iteration
+    try {
+        auto code = std::make_unique<Code>();
+        code->emitter = std::make_unique<Emitter>(steps, liveOut, registerCount, size);
+        code->emitter->ready();
+        code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
+        return std::unique_ptr<BatchJit>(new BatchJit(std::move(code)));
+    } catch (const std::exception&) { // no executable memory, code too large: interpret
+        return nullptr;
+    }
+}
+
+std::size_t BatchJit::run(double* const* base, std::size_t n) const {
+    return code_->run(base, n);
+}
+
+std::size_t BatchJit::codeBytes() const {
+    return code_->emitter->getSize();
+}
+
+} // namespace fl::formula

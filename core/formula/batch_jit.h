@@ -1,0 +1,59 @@
+#pragma once
+// The batch evaluator's steps compiled to AVX2 machine code at load time
+// (issue 31 §1, a first part): one loop over the block, 8 points an
+// iteration (two groups of 4, independent work the processor overlaps),
+// every step's value kept in a YMM register while it is live
+// (spilled to its workspace row only under register pressure), so a formula
+// runs as the loop a person would write by hand — no pass over memory per
+// instruction. Each operation is the interpreter's, bit for bit: the same
+// IEEE operations in the same order (no FMA contraction), min and max with
+// its NaN rule, comparisons giving exactly 0 or 1 — so JIT and interpreter
+// agree exactly (tests/formula/batch_jit_test.cpp).
+//
+// Steps it does not compile (hypot, mod, round, the R-functions, noise, and
+// by default SLEEF's sin, exp, pow ...: see setCallsAllowed) leave the tape
+// to the interpreter; so do a CPU without AVX2, a system that refuses
+// executable memory, and FUNCTIONLAB_NO_JIT=1. Made with xbyak
+// (header-only, Debian's libxbyak-dev): docs/design-notes.md says why.
+#include "batch_step.h"
+#include "tape.h"
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace fl::formula {
+
+class BatchJit {
+  public:
+    // The compiled steps, or null when the interpreter must run them (see
+    // above). `liveOut`: per register, whether evaluate() reads it after the
+    // block (a tape output).
+    static std::unique_ptr<BatchJit> compile(const std::vector<BatchStep>& steps,
+                                             const std::vector<char>& liveOut,
+                                             std::int32_t registerCount);
+    ~BatchJit();
+
+    // Runs the steps over the first (n & ~7) points of the block (base as the
+    // interpreter's runBlock takes it); returns how many points it did.
+    std::size_t run(double* const* base, std::size_t n) const;
+
+    std::size_t codeBytes() const;
+
+    // Whether compile() may make code at all: AVX2 on this CPU, not turned
+    // off by FUNCTIONLAB_NO_JIT=1 or by setAllowed(false) (tests compare
+    // both ways in one process).
+    static bool available();
+    static void setAllowed(bool allowed);
+    // Tapes that call SLEEF's functions (sin, exp, pow ...) are left to the
+    // interpreter, which calls them once per block, not per 4 points (faster);
+    // tests turn this on to check the code that calls them.
+    static void setCallsAllowed(bool allowed);
+
+  private:
+    struct Code;
+    explicit BatchJit(std::unique_ptr<Code> code);
+    std::unique_ptr<Code> code_;
+};
+
+} // namespace fl::formula

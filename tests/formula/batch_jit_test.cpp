@@ -1,0 +1,296 @@
+// The batch evaluator's JIT (issue 31 §1) against its interpreter: every
+// operation it compiles, on the values where semantics bite (±0, ±inf, NaN,
+// subnormals, huge and tiny), with array and uniform inputs and blocks that
+// are not a multiple of 4, must give the interpreter's bits exactly; random
+// formulas of those operations too; the fused steps (squared terms, min/max
+// chains, negated operands) as the compiler makes them; a tape with an
+// operation the JIT leaves alone runs interpreted; FUNCTIONLAB_NO_JIT's
+// switch turns it off. Skipped where the CPU has no AVX2.
+#include "formula/batch_jit.h"
+#include "formula/eval_batch.h"
+#include "test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace fl::formula {
+namespace {
+
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
+}
+
+const std::vector<double>& specials() {
+    static const std::vector<double> v = {0.0,
+                                          -0.0,
+                                          1.0,
+                                          -1.0,
+                                          0.5,
+                                          -2.5,
+                                          3.0,
+                                          7.25,
+                                          1e300,
+                                          -1e300,
+                                          1e-310,
+                                          -1e-310,
+                                          std::numeric_limits<double>::infinity(),
+                                          -std::numeric_limits<double>::infinity(),
+                                          std::numeric_limits<double>::quiet_NaN(),
+                                          1e-20,
+                                          -0.75};
+    return v;
+}
+
+struct Outcome {
+    std::vector<double> out;
+    bool jit = false;
+    std::size_t passes = 0; // steps left after folding what does not vary
+};
+
+Outcome evaluate(const Tape& tape, bool allowJit, const std::vector<double>& xs,
+                 const std::vector<double>& ys, const std::vector<double>& zs, double t,
+                 bool uniformY) {
+    BatchJit::setAllowed(allowJit);
+    BatchEvaluator e(tape);
+    BatchInputs in;
+    in.set(Input::X, xs.data());
+    if (uniformY)
+        in.set(Input::Y, ys[0]);
+    else
+        in.set(Input::Y, ys.data());
+    in.set(Input::Z, zs.data());
+    in.set(Input::T, t);
+    Outcome r;
+    r.out.assign(xs.size(), -123.0);
+    e.evaluate(in, xs.size(), r.out.data());
+    r.jit = e.jitActive();
+    r.passes = e.passesPerBlock();
+    BatchJit::setAllowed(true);
+    return r;
+}
+
+// Both ways over every pair of special values (and z a mix); true when the JIT ran.
+bool agreeOnSpecials(const std::string& src, bool uniformY = false) {
+    CompileResult r = compile(src);
+    EXPECT_TRUE(r.ok()) << src;
+    if (!r.ok()) return false;
+    std::vector<double> xs, ys, zs;
+    for (double a : specials())
+        for (double b : specials()) {
+            xs.push_back(a);
+            ys.push_back(b);
+            zs.push_back(a * 0.5 - b);
+        }
+    xs.pop_back(); // 288 points: the last block is not a multiple of 4
+    ys.pop_back();
+    zs.pop_back();
+    const Outcome jit = evaluate(*r.tape, true, xs, ys, zs, 0.25, uniformY);
+    const Outcome interpreted = evaluate(*r.tape, false, xs, ys, zs, 0.25, uniformY);
+    EXPECT_FALSE(interpreted.jit);
+    for (std::size_t i = 0; i < xs.size(); ++i)
+        if (!sameBits(jit.out[i], interpreted.out[i])) {
+            ADD_FAILURE() << src << " at x=" << xs[i] << " y=" << (uniformY ? ys[0] : ys[i])
+                          << ": JIT " << jit.out[i] << ", interpreter " << interpreted.out[i];
+            break;
+        }
+    return jit.jit;
+}
+
+class BatchJitTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        if (!BatchJit::available()) GTEST_SKIP() << "no AVX2 here (or FUNCTIONLAB_NO_JIT)";
+        BatchJit::setCallsAllowed(true); // the code that calls SLEEF is checked too
+    }
+    void TearDown() override { BatchJit::setCallsAllowed(false); }
+};
+
+TEST_F(BatchJitTest, EveryOperationItCompilesGivesTheInterpretersBits) {
+    const char* compiled[] = {"x + y",
+                              "x - y",
+                              "x * y",
+                              "x / y",
+                              "min(x, y)",
+                              "max(x, y)",
+                              "-x + y",
+                              "abs(x) + y",
+                              "sqrt(x) + y",
+                              "floor(x) + y",
+                              "ceil(x) + y",
+                              "sign(x) + y",
+                              "x^2 + y",
+                              "x^3 + y",
+                              "x^4 + y",
+                              "x^5 + y",
+                              "x^-1 + y",
+                              "x^-2 + y",
+                              "x^-3 + y",
+                              "x^0 + y",
+                              "(x < y) + z",
+                              "(x <= y) + z",
+                              "(x > y) + z",
+                              "(x >= y) + z",
+                              "(x == y) + z",
+                              "(x != y) + z",
+                              "(x && y) + z",
+                              "(x || y) + z",
+                              "!x + y",
+                              "x ? y : z",
+                              "x ? 2 : z",
+                              "x ? y : 3",
+                              "sin(x) + y",
+                              "cos(x) * y",
+                              "exp(x) - y",
+                              "log(x) + y",
+                              "tan(x) + y",
+                              "atan(x) + y",
+                              "pow(x, y)",
+                              "atan2(x, y)",
+                              "pow(x, 2.5) + y",
+                              "atan2(1.5, y) + x",
+                              "cbrt(x) + y",
+                              "tanh(x) + sinh(y)",
+                              "x & y",
+                              "x | y",
+                              "x \\ y",
+                              "min(x, min(y, min(z, x * y)))",
+                              "max(max(x, -y), max(-z, y))",
+                              "1 - x^2 - y^2 - z^2",
+                              "(x - 1)^2 + (y + 2)^2 - z",
+                              "x*x + y*y + z*z - 0.5",
+                              "2 - (x - y)^2"};
+    int ran = 0;
+    for (const char* src : compiled) {
+        ran += agreeOnSpecials(src) ? 1 : 0;
+        agreeOnSpecials(src, /*uniformY=*/true);
+    }
+    // Every one of them is the JIT's (with y an array).
+    EXPECT_EQ(ran, int(std::size(compiled)));
+}
+
+TEST_F(BatchJitTest, AnOperationItLeavesAloneRunsInterpreted) {
+    BatchJit::setCallsAllowed(false); // by default, SLEEF's functions are the interpreter's
+    EXPECT_FALSE(agreeOnSpecials("sin(x) + y"));
+    EXPECT_FALSE(agreeOnSpecials("pow(x, y)"));
+    EXPECT_TRUE(agreeOnSpecials("sqrt(x) + y"));
+    BatchJit::setCallsAllowed(true);
+    EXPECT_FALSE(agreeOnSpecials("hypot(x, y)"));
+    EXPECT_FALSE(agreeOnSpecials("x - mod(y, 3)"));
+    EXPECT_FALSE(agreeOnSpecials("noise(x, y, z)"));
+    EXPECT_TRUE(agreeOnSpecials("x + y"));
+    BatchJit::setAllowed(false);
+    EXPECT_FALSE(BatchJit::available());
+    BatchJit::setAllowed(true);
+}
+
+// Random formulas of the operations the JIT compiles, nested deep enough
+// to need more registers than the CPU has (values spill and come back).
+std::string randomCompiled(std::mt19937_64& rng, int depth) {
+    std::uniform_int_distribution<int> pick(0, 99);
+    if (depth <= 0 || pick(rng) < 15) {
+        static const char* leaves[] = {"x", "y", "z", "t", "0.5", "-1.25", "3"};
+        return leaves[pick(rng) % 7];
+    }
+    const std::string a = randomCompiled(rng, depth - 1);
+    const std::string b = randomCompiled(rng, depth - 1);
+    switch (pick(rng) % 20) {
+    case 0:
+        return "(" + a + " + " + b + ")";
+    case 1:
+        return "(" + a + " - " + b + ")";
+    case 2:
+        return "(" + a + " * " + b + ")";
+    case 3:
+        return "(" + a + " / " + b + ")";
+    case 4:
+        return "min(" + a + ", " + b + ")";
+    case 5:
+        return "max(" + a + ", " + b + ")";
+    case 6:
+        return "sqrt(abs(" + a + "))";
+    case 7:
+        return "(" + a + ")^2";
+    case 8:
+        return "(" + a + " < " + b + ")";
+    case 9:
+        return "(" + a + " ? " + b + " : " + randomCompiled(rng, depth - 1) + ")";
+    case 10:
+        return "sin(" + a + ")";
+    case 11:
+        return "(" + a + " & " + b + ")";
+    case 12:
+        return "(" + a + " | " + b + ")";
+    case 13:
+        return "-(" + a + ")";
+    case 14:
+        return "floor(" + a + ")";
+    case 15:
+        return "exp(" + a + " * 0.1)";
+    case 16:
+        return "(" + a + " && " + b + ")";
+    case 17:
+        return "pow(abs(" + a + "), 0.5)";
+    case 18:
+        return "(" + a + ")^3";
+    default:
+        return "(1 - (" + a + ")^2 - (" + b + ")^2)";
+    }
+}
+
+TEST_F(BatchJitTest, RandomFormulasOfItsOperationsGiveTheInterpretersBits) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> v(-3, 3);
+    int ran = 0, varying = 0;
+    for (int i = 0; i < 300; ++i) {
+        const std::string src = randomCompiled(rng, 2 + i % 6);
+        CompileResult r = compile(src);
+        ASSERT_TRUE(r.ok()) << src;
+        const std::size_t n = i % 2 ? 1001 : 64;
+        std::vector<double> xs(n), ys(n), zs(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            xs[k] = v(rng);
+            ys[k] = k % 17 == 0 ? std::numeric_limits<double>::quiet_NaN() : v(rng);
+            zs[k] = k % 13 == 0 ? -0.0 : v(rng);
+        }
+        const Outcome jit = evaluate(*r.tape, true, xs, ys, zs, 0.7, i % 3 == 0);
+        const Outcome interpreted = evaluate(*r.tape, false, xs, ys, zs, 0.7, i % 3 == 0);
+        ran += jit.jit ? 1 : 0;
+        varying += jit.passes > 0 ? 1 : 0;
+        for (std::size_t k = 0; k < n; ++k)
+            ASSERT_TRUE(sameBits(jit.out[k], interpreted.out[k]))
+                << src << " at " << k << ": JIT " << jit.out[k] << ", interpreter "
+                << interpreted.out[k];
+    }
+    // Every formula with work left after folding (t and constants are
+    // uniform: a formula of them alone folds to one value) ran compiled.
+    EXPECT_EQ(ran, varying);
+    EXPECT_GE(varying, 200);
+}
+
+TEST_F(BatchJitTest, ParametersAndATimeThatChangesRecompile) {
+    CompileResult r = compile("param k = 2 in [0, 5]; k*x^2 + y - t");
+    ASSERT_TRUE(r.ok());
+    BatchEvaluator e(*r.tape);
+    std::vector<double> xs = {1, 2, 3, 4, 5}, ys = {0, 0, 0, 0, 1}, out(5);
+    BatchInputs in;
+    in.set(Input::X, xs.data());
+    in.set(Input::Y, ys.data());
+    for (double t : {0.0, 1.0}) {
+        for (double k : {2.0, 3.0}) {
+            e.parameters().set("k", k);
+            in.set(Input::T, t);
+            e.evaluate(in, 5, out.data());
+            EXPECT_TRUE(e.jitActive());
+            for (std::size_t i = 0; i < 5; ++i)
+                EXPECT_EQ(out[i], k * xs[i] * xs[i] + ys[i] - t);
+        }
+    }
+}
+
+} // namespace
+} // namespace fl::formula
