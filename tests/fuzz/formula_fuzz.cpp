@@ -1,9 +1,12 @@
 // libFuzzer target: lexer + parser + checker + compiler + all four evaluators.
 // Beyond "no crash, no hang, no unbounded allocation" it checks four laws on
-// whatever compiles, each aborting when broken: batch == scalar, interval
+// whatever compiles, each aborting when broken: batch == scalar (13 points,
+// so the batch JIT runs a group of 8 and the interpreter the tail; calls to
+// SLEEF compiled too), interval
 // contains scalar, the gradient evaluator's value == scalar, and its
 // derivatives match central differences wherever f is smooth there (the
 // one-sided differences agree, so kinks such as abs(x) at 0 are not judged).
+#include "formula/batch_jit.h"
 #include "formula/compiler.h"
 #include "formula/eval_batch.h"
 #include "formula/eval_gradient.h"
@@ -79,6 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)tape.disassemble();
 
     ScalarEvaluator scalar(tape);
+    BatchJit::setCallsAllowed(true); // the compiled calls are judged too
     BatchEvaluator batch(tape);
     IntervalEvaluator interval(tape);
     GradientEvaluator gradient(tape);
@@ -90,11 +94,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int k = 0; k < kInputCount; ++k)
             points[i][k] = coords[(i + k) % 5];
 
-    std::vector<double> scalarOut(outs), batchOut(outs * 5), column[kInputCount];
+    constexpr int kBatch = 13; // the 5 points again and again
+    std::vector<double> scalarOut(outs), batchOut(outs * kBatch), column[kInputCount];
     for (int k = 0; k < kInputCount; ++k) {
-        column[k].resize(5);
-        for (int i = 0; i < 5; ++i)
-            column[k][i] = points[i][k];
+        column[k].resize(kBatch);
+        for (int i = 0; i < kBatch; ++i)
+            column[k][i] = points[i % 5][k];
     }
     BatchInputs in;
     for (int k = 0; k < kInputCount; ++k)
@@ -104,8 +109,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         points[i][3] = points[0][3]; // t is uniform in the batch
     std::vector<double*> outPtrs(outs);
     for (std::size_t o = 0; o < outs; ++o)
-        outPtrs[o] = batchOut.data() + o * 5;
-    batch.evaluate(in, 5, outPtrs.data());
+        outPtrs[o] = batchOut.data() + o * kBatch;
+    batch.evaluate(in, kBatch, outPtrs.data());
 
     std::vector<Dual> grads(outs);
     std::vector<Interval> ranges(outs);
@@ -119,12 +124,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         gradient.evaluateAll(points[i], grads.data());
         (void)explainNonFinite(tape, {}, points[i]);
         for (std::size_t o = 0; o < outs; ++o) {
-            double s = scalarOut[o], b = batchOut[o * 5 + i];
-            bool same = std::bit_cast<std::uint64_t>(s) == std::bit_cast<std::uint64_t>(b) ||
-                        (std::isnan(s) && std::isnan(b));
-            if (!same) {
-                std::fprintf(stderr, "batch %.17g != scalar %.17g\n", b, s);
-                std::abort();
+            const double s = scalarOut[o];
+            for (int j = i; j < kBatch; j += 5) {
+                const double b = batchOut[o * kBatch + std::size_t(j)];
+                const bool same =
+                    std::bit_cast<std::uint64_t>(s) == std::bit_cast<std::uint64_t>(b) ||
+                    (std::isnan(s) && std::isnan(b));
+                if (!same) {
+                    std::fprintf(stderr, "batch %.17g != scalar %.17g (point %d)\n", b, s, j);
+                    std::abort();
+                }
             }
             if (!ranges[o].contains(s)) {
                 std::fprintf(stderr, "interval [%.17g, %.17g] nan=%d misses %.17g\n", ranges[o].lo,
