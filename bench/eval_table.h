@@ -15,6 +15,8 @@ struct EvalRow {
     double muparser = -1;     // < 0: muParser unavailable
     std::string muparserMode; // "bulk" or "per-point", whichever was faster
     double maxDifference = 0; // largest |FunctionLab - native| over the grid (a fairness check)
+    bool jit = false;         // FunctionLab ran it as machine code (core/formula/batch_jit.h)
+    double jitCompileUs = 0;  // making that code
 };
 
 std::vector<EvalRow> runEvalTable(std::size_t side = 64, double secondsPerMeasurement = 0.2);

@@ -5,6 +5,7 @@
 #include "vector_math.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <new>
@@ -249,7 +250,11 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
     for (const OutputInfo& o : tape_.outputs)
         if (!o.value.isConst() && !isUniform_[std::size_t(o.value.reg)])
             liveOut[std::size_t(o.value.reg)] = 1;
+    const auto started = std::chrono::steady_clock::now();
     jit_ = BatchJit::compile(steps_, liveOut, tape_.registerCount);
+    jitCompileUs_ =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started)
+            .count();
     specialised_ = true;
 }
 

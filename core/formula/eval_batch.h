@@ -59,6 +59,8 @@ class BatchEvaluator {
     // Whether the last evaluate() ran compiled code (batch_jit.h), and its size.
     bool jitActive() const { return jit_ != nullptr; }
     std::size_t jitCodeBytes() const { return jit_ ? jit_->codeBytes() : 0; }
+    // What making that code took at the last specialisation (microseconds).
+    double jitCompileMicroseconds() const { return jitCompileUs_; }
 
   private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
@@ -74,6 +76,7 @@ class BatchEvaluator {
     std::vector<double> specialisedParams_;
     bool specialised_ = false;
     std::unique_ptr<BatchJit> jit_; // the steps as machine code, when it can be made
+    double jitCompileUs_ = 0;       // what making it took (the last specialisation)
     std::vector<double*> tailBase_; // the rows from the point the JIT stopped at
 
     void specialise(const BatchInputs& in);
