@@ -12,7 +12,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <optional>
+#include <string>
 #include <unordered_map>
 
 namespace fl::formula {
@@ -661,23 +663,82 @@ void BatchJit::setCallsAllowed(bool on) {
     allowCalls = on;
 }
 
-std::unique_ptr<BatchJit> BatchJit::compile(const std::vector<BatchStep>& steps,
-                                            const std::vector<char>& liveOut,
-                                            std::int32_t registerCount) {
+namespace {
+
+// The steps as text that identifies them exactly: every field compile()
+// reads, numbers by their bits (the cache's key).
+std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
+                  std::int32_t registerCount) {
+    std::string key;
+    key.reserve(96 * steps.size() + liveOut.size() + 8);
+    auto put = [&key](const auto& v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
+    put(registerCount);
+    key.append(liveOut.begin(), liveOut.end());
+    for (const BatchStep& s : steps) {
+        put(s.op), put(s.fused), put(s.constA), put(s.constB), put(s.constC);
+        put(s.out), put(s.a), put(s.b), put(s.c), put(s.ca), put(s.cb), put(s.cc);
+        put(s.imm0), put(s.imm1), put(s.terms), put(s.negA), put(s.negB), put(s.chainCount);
+        for (int t = 0; t < 3; ++t)
+            put(s.termReg[t]), put(s.termOffset[t]), put(s.termSign[t]);
+        for (int t = 0; t < 4; ++t)
+            put(s.chainReg[t]), put(s.chainSign[t]);
+    }
+    return key;
+}
+
+// Compiled code, shared: every thread's evaluator of one formula at one
+// moment (a mesher runs several) uses one copy, made once. The code and its
+// constants are never written after they are made, so sharing is safe.
+struct Cache {
+    std::mutex mutex;
+    std::unordered_map<std::string, std::shared_ptr<const BatchJit>> byKey;
+    std::vector<std::string> order; // oldest first: the first to go past kEntries
+    static constexpr std::size_t kEntries = 256;
+};
+
+Cache& cache() {
+    static Cache c;
+    return c;
+}
+
+} // namespace
+
+std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& steps,
+                                                  const std::vector<char>& liveOut,
+                                                  std::int32_t registerCount) {
     if (!available() || steps.empty()) return nullptr;
+    const bool calls = allowCalls.load();
     for (const BatchStep& s : steps)
         if (!compiles(s)) return nullptr;
+    std::string key = keyOf(steps, liveOut, registerCount);
+    key.push_back(calls ? 'c' : '-');
+    Cache& c = cache();
+    {
+        std::lock_guard lock(c.mutex);
+        if (auto it = c.byKey.find(key); it != c.byKey.end()) return it->second;
+    }
     // Each step's code is under 400 bytes (a chain of four with loads).
     const std::size_t size = 4096 + 1024 * steps.size(); // two groups of 4 an iteration
+    std::shared_ptr<const BatchJit> made;
     try {
         auto code = std::make_unique<Code>();
         code->emitter = std::make_unique<Emitter>(steps, liveOut, registerCount, size);
         code->emitter->ready();
         code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
-        return std::unique_ptr<BatchJit>(new BatchJit(std::move(code)));
+        made = std::shared_ptr<const BatchJit>(new BatchJit(std::move(code)));
     } catch (const std::exception&) { // no executable memory, code too large: interpret
         return nullptr;
     }
+    std::lock_guard lock(c.mutex);
+    auto [it, added] = c.byKey.emplace(std::move(key), made);
+    if (added) {
+        c.order.push_back(it->first);
+        if (c.order.size() > Cache::kEntries) {
+            c.byKey.erase(c.order.front()); // evaluators holding it keep their copy
+            c.order.erase(c.order.begin());
+        }
+    }
+    return it->second;
 }
 
 std::size_t BatchJit::run(double* const* base, std::size_t n) const {

@@ -28,10 +28,12 @@ class BatchJit {
   public:
     // The compiled steps, or null when the interpreter must run them (see
     // above). `liveOut`: per register, whether evaluate() reads it after the
-    // block (a tape output).
-    static std::unique_ptr<BatchJit> compile(const std::vector<BatchStep>& steps,
-                                             const std::vector<char>& liveOut,
-                                             std::int32_t registerCount);
+    // block (a tape output). Code is made once per set of steps and shared
+    // (a cache of the last 256): a mesher's threads, each with its own
+    // evaluator of one formula, share one copy.
+    static std::shared_ptr<const BatchJit> compile(const std::vector<BatchStep>& steps,
+                                                   const std::vector<char>& liveOut,
+                                                   std::int32_t registerCount);
     ~BatchJit();
 
     // Runs the steps over the first (n & ~7) points of the block (base as the

@@ -59,6 +59,7 @@ class BatchEvaluator {
     // Whether the last evaluate() ran compiled code (batch_jit.h), and its size.
     bool jitActive() const { return jit_ != nullptr; }
     std::size_t jitCodeBytes() const { return jit_ ? jit_->codeBytes() : 0; }
+    const BatchJit* jitCode() const { return jit_.get(); } // shared between evaluators
     // What making that code took at the last specialisation (microseconds).
     double jitCompileMicroseconds() const { return jitCompileUs_; }
 
@@ -75,9 +76,9 @@ class BatchEvaluator {
     std::array<double, kInputCount> specialisedUniform_{};
     std::vector<double> specialisedParams_;
     bool specialised_ = false;
-    std::unique_ptr<BatchJit> jit_; // the steps as machine code, when it can be made
-    double jitCompileUs_ = 0;       // what making it took (the last specialisation)
-    std::vector<double*> tailBase_; // the rows from the point the JIT stopped at
+    std::shared_ptr<const BatchJit> jit_; // the steps as machine code, when it can be made
+    double jitCompileUs_ = 0;             // what making it took (the last specialisation)
+    std::vector<double*> tailBase_;       // the rows from the point the JIT stopped at
 
     void specialise(const BatchInputs& in);
     void runBlock(double* const* base, std::size_t n);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <thread>
 
 namespace fl::formula {
 namespace {
@@ -290,6 +291,45 @@ TEST_F(BatchJitTest, ParametersAndATimeThatChangesRecompile) {
                 EXPECT_EQ(out[i], k * xs[i] * xs[i] + ys[i] - t);
         }
     }
+}
+
+TEST_F(BatchJitTest, EvaluatorsOfOneFormulaShareOneCompiledCopy) {
+    // A mesher's threads each have an evaluator: the code is made once.
+    CompileResult r = compile("min(1 - x^2 - y^2 - z^2, x - 0.3)");
+    ASSERT_TRUE(r.ok());
+    std::vector<double> xs(64, 0.1), ys(64, 0.2), zs(64, 0.3), out(64);
+    BatchInputs in;
+    in.set(Input::X, xs.data());
+    in.set(Input::Y, ys.data());
+    in.set(Input::Z, zs.data());
+    in.set(Input::T, 0.0);
+    const BatchJit* first = nullptr;
+    std::vector<std::thread> threads;
+    std::vector<const BatchJit*> seen(4, nullptr);
+    for (int k = 0; k < 4; ++k)
+        threads.emplace_back([&, k] {
+            BatchEvaluator e(*r.tape);
+            std::vector<double> mine(64);
+            e.evaluate(in, 64, mine.data());
+            seen[std::size_t(k)] = e.jitCode();
+        });
+    for (std::thread& t : threads)
+        t.join();
+    BatchEvaluator e(*r.tape);
+    e.evaluate(in, 64, out.data());
+    first = e.jitCode();
+    ASSERT_NE(first, nullptr);
+    for (const BatchJit* code : seen)
+        EXPECT_EQ(code, first);
+    // Another moment (t) that changes nothing compiled shares it too; another
+    // formula does not.
+    in.set(Input::T, 5.0);
+    e.evaluate(in, 64, out.data());
+    EXPECT_EQ(e.jitCode(), first);
+    CompileResult other = compile("max(1 - x^2 - y^2 - z^2, x - 0.3)");
+    BatchEvaluator o(*other.tape);
+    o.evaluate(in, 64, out.data());
+    EXPECT_NE(o.jitCode(), first);
 }
 
 } // namespace
