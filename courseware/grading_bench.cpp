@@ -130,8 +130,8 @@ GradingBenchResult runGradingBench(const GradingBenchOptions& options) {
     // isolated processes, `jobs` at once, each part into its own gradebook
     // (here one part after another), then the parts merged into one.
     auto removeGradebook = [](const std::filesystem::path& db) {
-        for (const char* suffix : {"", "-wal", "-shm"})
-            std::filesystem::remove(db.string() + suffix);
+        if (!grading::removeGradebookFiles(db.string()))
+            throw std::runtime_error("cannot remove the old " + db.string());
     };
     std::vector<std::string> skipped;
     const auto all = grading::findSubmissions(folder, skipped);

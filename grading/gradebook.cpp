@@ -9,6 +9,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <filesystem>
 #include <sstream>
 
 namespace fl::grading {
@@ -95,6 +96,16 @@ std::string trimmed(std::string s) {
 
 std::string utcNow() {
     return QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString();
+}
+
+bool removeGradebookFiles(const std::string& path) {
+    bool removed = true;
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"}) {
+        std::error_code ec;
+        std::filesystem::remove(path + suffix, ec);
+        removed = removed && !ec;
+    }
+    return removed;
 }
 
 Gradebook::Gradebook(const std::string& path) : db_(path) {

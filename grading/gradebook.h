@@ -198,6 +198,10 @@ class Gradebook {
     platform::SqliteDatabase db_;
 };
 
+// Removes a gradebook file and SQLite's files beside it (-wal, -shm,
+// -journal); false when one is there and cannot be removed.
+bool removeGradebookFiles(const std::string& path);
+
 // An ISO 8601 UTC time of now ("2026-11-23T22:44:11Z").
 std::string utcNow();
 

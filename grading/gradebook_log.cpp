@@ -3,6 +3,8 @@
 // signed with the instructor's key.
 #include "gradebook_log.h"
 
+#include "text/json_text.h"
+
 #include "signing.h"
 
 #include <QCryptographicHash>
@@ -348,15 +350,17 @@ namespace {
 
 // Who an entry is about, for a person: "a grade of bob for implicit-fantasies".
 std::string describe(const std::string& kind, const std::string& payload) {
+    // Names from the file: shown, never obeyed, on a terminal.
     const QJsonObject o = parsed(payload);
-    if (kind == "student") return "the student " + text(o, "id");
-    if (kind == "assignment") return "the assignment " + text(o, "id");
-    const std::string whom = text(o, "student") + " for " + text(o, "assignment");
+    if (kind == "student") return "the student " + text::shownName(text(o, "id"));
+    if (kind == "assignment") return "the assignment " + text::shownName(text(o, "id"));
+    const std::string whom =
+        text::shownName(text(o, "student")) + " for " + text::shownName(text(o, "assignment"));
     if (kind == "grade") return "a grade of " + whom;
     if (kind == "manual-score") return "a manual score of " + whom;
     if (kind == "override") return "an override of " + whom;
     if (kind == "merge") return "the record of a merge";
-    return "an entry of kind " + kind;
+    return "an entry of kind " + text::shownName(kind);
 }
 
 // The tables as the log determines them, without the row ids SQLite picks:

@@ -1,5 +1,7 @@
 #include "gradebook_merge.h"
 
+#include "text/json_text.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -120,22 +122,23 @@ std::optional<MergeSummary> mergeGradebooks(const std::vector<std::string>& sour
             for (const auto& [id, payload] : facts[i].students)
                 if (auto it = facts[j].students.find(id);
                     it != facts[j].students.end() && it->second != payload)
-                    return refuse("the student " + id + " has another name or email in " +
-                                  sources[i] + " than in " + sources[j] +
-                                  ": import the same roster into every part");
+                    return refuse("the student " + text::shownName(id) +
+                                  " has another name or email in " + sources[i] + " than in " +
+                                  sources[j] + ": import the same roster into every part");
             for (const auto& [id, payload] : facts[i].assignments)
                 if (auto it = facts[j].assignments.find(id);
                     it != facts[j].assignments.end() && it->second != payload)
-                    return refuse("the assignment " + id + " is not the same in " + sources[i] +
-                                  " as in " + sources[j] +
+                    return refuse("the assignment " + text::shownName(id) + " is not the same in " +
+                                  sources[i] + " as in " + sources[j] +
                                   " (title, points, due date or rubric): grade every part "
                                   "against the same assignment");
         }
         for (const auto& key : facts[i].work) {
             const auto [it, inserted] = workOwner.emplace(key, i);
             if (!inserted)
-                return refuse("the work of " + key.first + " on " + key.second + " is in both " +
-                              sources[it->second] + " and " + sources[i] +
+                return refuse("the work of " + text::shownName(key.first) + " on " +
+                              text::shownName(key.second) + " is in both " + sources[it->second] +
+                              " and " + sources[i] +
                               ": the parts of a class must be disjoint (grade batch --shard "
                               "K/N grades each student in one part only)");
         }
@@ -143,8 +146,7 @@ std::optional<MergeSummary> mergeGradebooks(const std::vector<std::string>& sour
 
     // Written beside the output, moved into place when complete.
     const fs::path partial = fs::path(out).string() + ".partial";
-    for (const char* suffix : {"", "-wal", "-shm", "-journal"})
-        fs::remove(partial.string() + suffix, ec);
+    removeGradebookFiles(partial.string());
     MergeSummary summary;
     try {
         {
@@ -175,8 +177,7 @@ std::optional<MergeSummary> mergeGradebooks(const std::vector<std::string>& sour
         }
         fs::rename(partial, out);
     } catch (const std::exception& e) {
-        for (const char* suffix : {"", "-wal", "-shm", "-journal"})
-            fs::remove(partial.string() + suffix, ec);
+        removeGradebookFiles(partial.string());
         return refuse(out + ": " + e.what());
     }
     return summary;

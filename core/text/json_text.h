@@ -42,6 +42,16 @@ inline std::string jsonString(std::string_view s) {
     return out + "\"";
 }
 
+// Someone else's name (a student id from a gradebook, a file name) for a
+// message on a terminal: as it is when every character is printable, else
+// as a JSON string, so a control character (an escape sequence) is shown,
+// never obeyed.
+inline std::string shownName(std::string_view s) {
+    for (char c : s)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return jsonString(s);
+    return std::string(s);
+}
+
 inline std::string jsonNumber(double v) {
     if (!std::isfinite(v)) return "null";
     char buf[32];

@@ -144,6 +144,10 @@ TEST(GradebookMerge, PartsThatDisagreeAreRefusedAndNothingIsWritten) {
     EXPECT_TRUE(refused({a, part("rc", {}, [](Gradebook& b) {
                              b.setManualScore("ann", "lab", "style", 1, "", "ta");
                          })}));
+    // A name from the file with an escape sequence is shown, not obeyed.
+    EXPECT_TRUE(refused({part("rg", {{"ev\x1b[2Jil", 1}}), part("rh", {{"ev\x1b[2Jil", 2}})}));
+    EXPECT_EQ(why.find('\x1b'), std::string::npos) << why;
+    EXPECT_NE(why.find("\"ev\\u001b[2Jil\""), std::string::npos) << why;
     // A student or an assignment described differently.
     EXPECT_TRUE(refused({a, part("rd", {{"bob", 1}}, [](Gradebook& b) {
                              b.addStudent({"cid", "Cyd", ""});
