@@ -395,9 +395,11 @@ bool writeMesh(const Mesh& mesh, const std::filesystem::path& path, std::string&
         error = "STL holds triangles only; write a point cloud as .ply, .obj, .glb or .x3d";
         return false;
     }
-    const std::string bytes = encodeMesh(mesh, *format);
-    // Written beside the target, then renamed: a failed write never leaves
-    // half a file where a good one was.
+    return writeFileReplacing(path, encodeMesh(mesh, *format), error);
+}
+
+bool writeFileReplacing(const std::filesystem::path& path, std::string_view bytes,
+                        std::string& error) {
     std::filesystem::path temporary = path;
     temporary += ".partial";
     {

@@ -20,4 +20,10 @@ std::string encodeMesh(const Mesh& mesh, MeshFormat format);
 // False with `error` set when the file cannot be written.
 bool writeMesh(const Mesh& mesh, const std::filesystem::path& path, std::string& error);
 
+// `bytes` to `path`, written beside it first and then renamed over it: a
+// failed write never leaves half a file where a good one was. Every file
+// the meshers and `pde fit` write goes through here.
+bool writeFileReplacing(const std::filesystem::path& path, std::string_view bytes,
+                        std::string& error);
+
 } // namespace fl::mesh

@@ -292,6 +292,7 @@ class Walker {
             out_.shapes.push_back(std::move(sm));
             return;
         }
+        sm.pdeModel = loaded.model;
         double resolution = moment_.number(geometry, "resolution", 0, 32);
         if (!options_.useFileResolution && options_.mesh.resolution > 0)
             resolution = options_.mesh.resolution;

@@ -24,6 +24,10 @@
 #include <unordered_map>
 #include <vector>
 
+namespace fl::pde {
+struct Model;
+}
+
 namespace fl::mesh {
 
 struct SceneMeshOptions {
@@ -120,6 +124,9 @@ struct ShapeMesh {
     // as it was meshed — definition, displacement, parameters, t, box — for
     // picking, haptic contact and the grader to sample (field/ray_march.h).
     std::shared_ptr<const ImplicitField> field;
+    // An FPdeSurface's model as it was meshed (the Accuracy panel measures
+    // what drawing it costs); null for every other shape.
+    std::shared_ptr<const pde::Model> pdeModel;
     // The texts the field's instructions come from: an instruction's origin
     // range is in texts[origin.source] (an FGeometry's definition; for a
     // combined shape also each child's, each FTransform's operation and its

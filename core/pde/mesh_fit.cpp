@@ -5,6 +5,8 @@
 #include "mesh_regions.h"
 #include "patch_solve.h"
 
+#include "field/vec3.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -153,17 +155,13 @@ void measureMisses(FittedRegion& r, const std::vector<Sample>& samples) {
     r.missed = r.weight = 0;
     for (const Sample& s : samples) {
         const Point x = evaluate(r.patch, s.u, s.v);
-        const double d[3] = {x.position[0] - s.point[0], x.position[1] - s.point[1],
-                             x.position[2] - s.point[2]};
-        const double n[3] = {x.du[1] * x.dv[2] - x.du[2] * x.dv[1],
-                             x.du[2] * x.dv[0] - x.du[0] * x.dv[2],
-                             x.du[0] * x.dv[1] - x.du[1] * x.dv[0]};
+        const Vec3 d = field::minus(x.position, s.point);
+        const Vec3 n = field::cross(x.du, x.dv);
         const double length = std::hypot(n[0], n[1], n[2]);
-        const double along = (d[0] * n[0] + d[1] * n[1] + d[2] * n[2]) / length;
-        const double d2 = length > 1e-12 * (1 + std::hypot(x.du[0], x.du[1], x.du[2]) *
-                                                    std::hypot(x.dv[0], x.dv[1], x.dv[2]))
-                              ? along * along
-                              : d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const bool hasPlane = length > 1e-12 * (1 + std::hypot(x.du[0], x.du[1], x.du[2]) *
+                                                        std::hypot(x.dv[0], x.dv[1], x.dv[2]));
+        const double along = hasPlane ? field::dot(d, n) / length : 0;
+        const double d2 = hasPlane ? along * along : field::dot(d, d);
         r.missed += s.weight * d2;
         r.weight += s.weight;
     }

@@ -553,15 +553,4 @@ ReadResult readModelFile(const std::string& path) {
     return readModel(bytes, path);
 }
 
-bool writeModelFile(const std::string& path, const Model& model, bool text,
-                    const EncodeOptions& options, std::string* why) {
-    const std::string bytes = text ? encodeText(model) : encodeBinary(model, options);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out || !out.write(bytes.data(), std::streamsize(bytes.size()))) {
-        if (why) *why = path + ": cannot be written";
-        return false;
-    }
-    return true;
-}
-
 } // namespace fl::pde

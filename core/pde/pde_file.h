@@ -43,8 +43,7 @@ struct ReadResult {
 // Either form, told apart by the header.
 ReadResult readModel(std::string_view bytes, std::string_view name);
 ReadResult readModelFile(const std::string& path);
-
-bool writeModelFile(const std::string& path, const Model& model, bool text,
-                    const EncodeOptions& options, std::string* why);
+// Writing: the bytes of encodeBinary or encodeText, through
+// mesh::writeFileReplacing (mesh/mesh_export.h).
 
 } // namespace fl::pde

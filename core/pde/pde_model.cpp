@@ -1,5 +1,6 @@
 #include "pde_model.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fl::pde {
@@ -12,6 +13,13 @@ std::size_t Model::coefficientCount() const {
     std::size_t n = 0;
     for (const Patch& p : patches)
         n += p.coefficientCount();
+    return n;
+}
+
+std::size_t Model::maxRadii() const {
+    std::size_t n = 0;
+    for (const Patch& p : patches)
+        n = std::max(n, p.radii());
     return n;
 }
 

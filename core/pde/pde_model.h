@@ -21,6 +21,7 @@ struct Model {
 
     double diagonal() const;
     std::size_t coefficientCount() const; // vector coefficients, all patches
+    std::size_t maxRadii() const;         // the most radii of any patch (0: none)
 };
 
 } // namespace fl::pde

@@ -5,6 +5,7 @@
 #include "cli/json.h"
 #include "platform/exit_codes.h"
 
+#include "mesh/mesh_export.h"
 #include "mesh/obj_reader.h"
 #include "pde/fit_measure.h"
 #include "pde/mesh_fit.h"
@@ -14,7 +15,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <iostream>
 
@@ -29,13 +29,7 @@ bool writeScene(const std::string& path, const char* option,
         why = path + ": " + option + " writes a scene: name it .x3d or .x3dv";
         return false;
     }
-    const std::string bytes = text(classic);
-    std::ofstream file(path, std::ios::binary | std::ios::trunc);
-    if (!file || !file.write(bytes.data(), std::streamsize(bytes.size()))) {
-        why = path + ": cannot be written";
-        return false;
-    }
-    return true;
+    return mesh::writeFileReplacing(path, text(classic), why);
 }
 
 } // namespace
@@ -197,9 +191,16 @@ int pdeFitCommand(const Args& args) {
                   << fit->model.patches[k].radii() << " radii) as a parametric FGeometry\n";
         return kExitOk;
     }
+    // Measured as any tool would: the model encoded, read back, meshed,
+    // compared; those bytes are the file.
     const pde::EncodeOptions eo{int(a->number("bits", 12))};
     const bool text = a->flag("text");
-    if (!pde::writeModelFile(out, fit->model, text, eo, &why)) {
+    const auto measured = pde::measureFit(*read.mesh, fit->model, {text, eo}, &why);
+    if (!measured) {
+        std::cerr << out << ": " << why << "\n";
+        return kExitDiagnostic;
+    }
+    if (!mesh::writeFileReplacing(out, measured->bytes, why)) {
         std::cerr << why << "\n";
         return kExitDiagnostic;
     }
@@ -212,15 +213,7 @@ int pdeFitCommand(const Args& args) {
         }
         std::cerr << scene << ": a scene that carries the model in a data: url\n";
     }
-    // Measured as any tool would: the written model read back, meshed, compared.
-    const auto measured = pde::measureFit(*read.mesh, fit->model, {text, eo}, &why);
-    if (!measured) {
-        std::cerr << out << ": " << why << "\n";
-        return kExitDiagnostic;
-    }
-    std::size_t radii = 0;
-    for (const pde::Patch& p : fit->model.patches)
-        radii = std::max(radii, p.radii());
+    const std::size_t radii = fit->model.maxRadii();
     if (a->flag("json")) {
         // The mesh's path is the user's text: escaped like every JSON string.
         std::cout << "{\"mesh\": " << jsonString(input)

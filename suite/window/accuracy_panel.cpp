@@ -6,7 +6,6 @@
 #include "haptics/haptics_bench.h"
 #include "measure/accuracy_sweep.h"
 #include "measure/pde_drawing_sweep.h"
-#include "mesh/pde_surface_shape.h"
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 #include "scene/scene_edit.h"
@@ -136,11 +135,7 @@ void AccuracyPanel::sceneChanged(std::shared_ptr<const scene::Scene> scene) {
     const mesh::SceneMeshes meshes = mesh::meshScene(*scene_, o);
     for (const mesh::ShapeMesh& s : meshes.shapes) {
         // A function shape's field, or a PDE model (meshed from its patches).
-        std::shared_ptr<const pde::Model> model;
-        if (!s.field && s.shape && s.geometry && s.geometry->kind() == scene::NodeKind::FPdeSurface)
-            model =
-                mesh::pdeSurfaceModel(*scene_, *s.geometry, scene::stringsField(*s.geometry, "url"))
-                    .model;
+        const std::shared_ptr<const pde::Model>& model = s.pdeModel;
         if ((!s.field && !model) || !s.shape) continue;
         const scene::Node* key = s.geometry ? s.geometry : s.shape;
         const double resolution =

@@ -2,8 +2,10 @@
 
 #include "accuracy_chart.h"
 #include "plain_text.h"
+#include "scene_text_file.h"
 
 #include "courseware/workspace.h"
+#include "mesh/mesh_export.h"
 #include "mesh/mesh_topology.h"
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
@@ -29,7 +31,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 namespace fl::suite {
 namespace {
@@ -150,7 +151,7 @@ PdeImportDialog::PdeImportDialog(QWidget* parent)
     });
     connect(slider_, &QSlider::valueChanged, this, [this](int step) {
         value_ = goal_ == Goal::Patches ? double(step) : errorAt(step);
-        showGoal();
+        showGoalText();
         settle_.start();
     });
     connect(curveButton_, &QPushButton::clicked, this, [this] { measureCurve(); });
@@ -194,28 +195,30 @@ double PdeImportDialog::goalValue() const {
 }
 
 void PdeImportDialog::setGoal(Goal goal, double value) {
-    goal_ = goal;
-    {
-        const QSignalBlocker quiet(slider_);
-        const QSignalBlocker quietToo(goals_);
-        goals_->setCurrentIndex(goal == Goal::Patches ? 1 : 0);
-        if (goal == Goal::Patches) {
-            value = std::clamp(std::round(value), 1.0, double(kMostPatches));
-            slider_->setRange(1, kMostPatches);
-            slider_->setValue(int(value));
-        } else {
-            value = std::clamp(value, kLeastError, kMostError);
-            slider_->setRange(0, kErrorSteps);
-            slider_->setValue(stepOf(value));
-        }
-    }
-    value_ = value; // as given, not as the slider's step rounds it (0.003 is pde fit's)
-    showGoal();
+    showGoal(goal, value);
     curve_.clear(); // the student chose: a curve being measured gives way
     if (mesh_) requestFit();
 }
 
-void PdeImportDialog::showGoal() {
+void PdeImportDialog::showGoal(Goal goal, double value) {
+    const QSignalBlocker quiet(slider_);
+    const QSignalBlocker quietToo(goals_);
+    goals_->setCurrentIndex(goal == Goal::Patches ? 1 : 0);
+    if (goal == Goal::Patches) {
+        value = std::clamp(std::round(value), 1.0, double(kMostPatches));
+        slider_->setRange(1, kMostPatches);
+        slider_->setValue(int(value));
+    } else {
+        value = std::clamp(value, kLeastError, kMostError);
+        slider_->setRange(0, kErrorSteps);
+        slider_->setValue(stepOf(value));
+    }
+    goal_ = goal;
+    value_ = value; // as given, not as the slider's step rounds it (0.003 is pde fit's)
+    showGoalText();
+}
+
+void PdeImportDialog::showGoalText() {
     goalText_->setText(goal_ == Goal::Patches ? tr("%1 patches").arg(value_)
                                               : tr("RMS ≤ %1").arg(percent(goalValue())));
 }
@@ -273,8 +276,6 @@ PdeImportDialog::Outcome PdeImportDialog::runFit(const Job& job) {
         out.why = QString::fromStdString(why);
         return out;
     }
-    for (const pde::Patch& p : fit->model.patches)
-        out.maxRadii = std::max(out.maxRadii, p.radii());
     out.measured = pde::measureFit(*job.mesh, fit->model, {}, &why);
     if (!out.measured) {
         out.why = QString::fromStdString(why);
@@ -299,14 +300,7 @@ void PdeImportDialog::fitDone(const Job& job, Outcome r) {
         }
         if (job.curve && r.measured) {
             // The slider says what is shown: the count the curve just fitted.
-            const QSignalBlocker quiet(slider_);
-            const QSignalBlocker quietToo(goals_);
-            goals_->setCurrentIndex(1);
-            goal_ = Goal::Patches;
-            value_ = double(std::min<std::size_t>(r.measured->model.patches.size(), kMostPatches));
-            slider_->setRange(1, kMostPatches);
-            slider_->setValue(int(value_));
-            showGoal();
+            showGoal(Goal::Patches, double(r.measured->model.patches.size()));
             curve_.erase(curve_.begin());
         }
         if (job.curve && r.measured && !curve_.empty()) {
@@ -323,7 +317,7 @@ void PdeImportDialog::showFit(const Outcome& r) {
     const pde::FitMeasure& m = *r.measured;
     Figures f;
     f.patches = m.model.patches.size();
-    f.maxRadii = r.maxRadii;
+    f.maxRadii = m.model.maxRadii();
     f.bytes = m.bytes.size();
     f.objBytes = objBytes_;
     f.rms = m.rms();
@@ -381,20 +375,34 @@ std::optional<QString> PdeImportDialog::save(const QString& pdePath, QString* wh
         if (why) *why = tr("%1: name the model .pde").arg(pdePath);
         return std::nullopt;
     }
-    auto write = [&](const QString& path, const std::string& bytes) {
-        std::ofstream file(path.toStdString(), std::ios::binary | std::ios::trunc);
-        if (file && file.write(bytes.data(), std::streamsize(bytes.size())) && file.flush())
-            return true;
-        if (why) *why = tr("%1: cannot be written").arg(path);
-        return false;
-    };
-    const QString scenePath =
-        info.path() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".x3d");
+    // The scene names the file: XML holds no control character but tab and
+    // line breaks, so a name with another could not be read back.
+    for (const QChar c : info.fileName())
+        if (c.unicode() < 0x20 && c != QLatin1Char('\t') && c != QLatin1Char('\n') &&
+            c != QLatin1Char('\r')) {
+            if (why)
+                *why = tr("%1: a scene cannot name a file with control characters in its name: "
+                          "choose another name")
+                           .arg(visibleText(pdePath));
+            return std::nullopt;
+        }
+    std::string failed;
+    if (!mesh::writeFileReplacing(pdePath.toStdString(), last_->bytes, failed)) {
+        if (why) *why = QString::fromStdString(failed);
+        return std::nullopt;
+    }
     // The scene names the model by its file name: beside it, inside the
     // scene's folder as an FPdeSurface url must be.
-    if (!write(pdePath, last_->bytes) ||
-        !write(scenePath, pde::modelScene(info.fileName().toStdString(), false)))
+    const QString scenePath =
+        info.path() + QLatin1Char('/') + info.completeBaseName() + QStringLiteral(".x3d");
+    QString problem;
+    if (!writeSceneText(
+            scenePath,
+            QString::fromStdString(pde::modelScene(info.fileName().toStdString(), false)),
+            problem)) {
+        if (why) *why = problem;
         return std::nullopt;
+    }
     return scenePath;
 }
 

@@ -88,7 +88,6 @@ class PdeImportDialog : public QDialog {
     };
     struct Outcome {
         std::optional<pde::FitMeasure> measured;
-        std::size_t maxRadii = 0;
         double fitMs = 0;
         QString why; // empty when measured
     };
@@ -96,7 +95,10 @@ class PdeImportDialog : public QDialog {
     void fitDone(const Job& job, Outcome r); // on the interface thread
     void requestFit();
     void showFit(const Outcome& r);
-    void showGoal(); // the goal in words beside the slider
+    // The goal on the combo box and the slider, without fitting (a value
+    // outside the slider's range is clamped to it).
+    void showGoal(Goal goal, double value);
+    void showGoalText(); // the goal in words beside the slider
     void saveAsked();
     void addChartRow(const Figures& f);
 

@@ -7,6 +7,7 @@
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
 #include "pde/pde_scene.h"
+#include "scene/field_access.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
@@ -198,4 +199,24 @@ TEST(PdeSurfaceNode, AModelOfVeryManyPatchesIsMeshedCoarserOrRefusedNeverWithout
     small.maxCells = 3000; // 3 000 patches x 1 x 3 cells do not fit
     EXPECT_FALSE(pde::boundedGrid(tooMany, small).fits);
     EXPECT_TRUE(pde::meshModel(tooMany, small).empty());
+}
+
+TEST(PdeSurfaceNode, AFileNameOfAnyTextIsWrittenAsTheSceneReadsItBack) {
+    // pde::modelScene names a file chosen by someone (the import dialog's
+    // Save): quotes, markup, a backslash, a tab and a line break must come
+    // back as they were, in both syntaxes. (Other control characters XML
+    // cannot hold at all: the dialog refuses such names.)
+    const std::string name = "a \"b\" 'c' <d> & e\\f\ng\th.pde";
+    for (bool classic : {false, true}) {
+        const std::string text = pde::modelScene(name, classic);
+        scene::ReadResult r = scene::readSceneBytes(text, classic ? "named.x3dv" : "named.x3d");
+        ASSERT_TRUE(r.ok()) << text;
+        const scene::Node* surface = nullptr;
+        for (const scene::Node* n : r.scene->roots)
+            for (const auto& f : n->fields)
+                for (const scene::Node* c : f.value.nodes)
+                    if (c->kind() == scene::NodeKind::FPdeSurface) surface = c;
+        ASSERT_NE(surface, nullptr) << text;
+        EXPECT_EQ(scene::stringsField(*surface, "url"), std::vector<std::string>{name}) << text;
+    }
 }

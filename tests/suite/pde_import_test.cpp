@@ -152,6 +152,11 @@ class PdeImportTest : public QObject {
         QVERIFY(waitUntilFitted(d));
         QVERIFY(!d.save(dir.path() + QStringLiteral("/model.txt"), &why));
         QVERIFY(why.contains(QStringLiteral(".pde")));
+        // A name XML cannot hold (a control character) is refused, nothing written.
+        const QString control = dir.path() + QStringLiteral("/bell\u0007.pde");
+        QVERIFY(!d.save(control, &why));
+        QVERIFY2(why.contains(QStringLiteral("control characters")), qPrintable(why));
+        QVERIFY(!QFile::exists(control));
         // A name a scene must quote: the url is escaped, and reads back.
         const QString pde = dir.path() + QStringLiteral("/my 'round' & \"sphere\".pde");
         const auto scenePath = d.save(pde, &why);
