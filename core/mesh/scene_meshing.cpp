@@ -61,18 +61,20 @@ class Walker {
             return;
         }
         const NodeKind kind = n->kind();
+        const ShapeRootScope rootScope(*this, *n, kind);
+        const Affine& entered = rootScope.entered() && options_.meshInRootFrame ? kIdentity : m;
         if (kind == NodeKind::FShape || kind == NodeKind::Shape) {
             const std::size_t first = out_.shapes.size();
-            shape(*n, m);
+            shape(*n, entered);
             senseTouches(first);
             return;
         }
         const TouchSensorScope sensors(touchSensors_, *n, moment_);
         if (collectViewNode(*n, m, moment_, out_.view)) return;
-        Affine here = m;
+        Affine here = entered;
         if (kind == NodeKind::Transform) here = m * context_.transformOf(*n);
         if (kind == NodeKind::FTransform) {
-            here = m * context_.functionTransform(*n);
+            here = entered * context_.functionTransform(*n);
             if (context_.operationOf(*n) != SetOperation::Group) {
                 const std::size_t first = out_.shapes.size();
                 composite(*n, here);
@@ -83,17 +85,16 @@ class Walker {
         if (kind == NodeKind::Switch) {
             const auto choice = moment_.number(*n, "whichChoice", 0, -1);
             const auto children = moment_.nodes(*n, "children");
-            if (choice >= 0 && choice < double(children.size()))
-                walk(children[std::size_t(choice)], here);
+            for (std::size_t i = 0; i < children.size(); ++i)
+                if (options_.everyChoice || double(i) == choice) walk(children[i], here);
             return;
         }
         if (kind == NodeKind::LOD) { // the most detailed level
             const auto levels = moment_.nodes(*n, "level");
             const auto children = moment_.nodes(*n, "children");
-            if (!children.empty())
-                walk(children.front(), here);
-            else if (!levels.empty())
-                walk(levels.front(), here);
+            const auto& shown = children.empty() ? levels : children;
+            for (std::size_t i = 0; i < shown.size() && (i == 0 || options_.everyChoice); ++i)
+                walk(shown[i], here);
             return;
         }
         if (n->spec && scene::findFieldSpec(*n->spec, "children"))
@@ -105,9 +106,39 @@ class Walker {
     }
 
   private:
+    static inline const Affine kIdentity{};
+
+    // The topmost shape-making node the walk is inside (SceneMeshOptions::
+    // meshInRootFrame): entered by the first FShape, Shape or FTransform met
+    // on the way down, left when the walk comes back up from it.
+    class ShapeRootScope {
+      public:
+        ShapeRootScope(Walker& w, const Node& n, NodeKind kind) : w_(w) {
+            if (w.root_ || (kind != NodeKind::FShape && kind != NodeKind::Shape &&
+                            kind != NodeKind::FTransform))
+                return;
+            w.root_ = &n;
+            ++w.rootVisits_;
+            entered_ = true;
+        }
+        ~ShapeRootScope() {
+            if (entered_) w_.root_ = nullptr;
+        }
+        ShapeRootScope(const ShapeRootScope&) = delete;
+        ShapeRootScope& operator=(const ShapeRootScope&) = delete;
+        bool entered() const { return entered_; }
+
+      private:
+        Walker& w_;
+        bool entered_ = false;
+    };
+
     void senseTouches(std::size_t firstShape) {
-        for (std::size_t i = firstShape; i < out_.shapes.size(); ++i)
+        for (std::size_t i = firstShape; i < out_.shapes.size(); ++i) {
             out_.shapes[i].touchSensors = touchSensors_;
+            out_.shapes[i].root = root_;
+            out_.shapes[i].rootVisit = rootVisits_;
+        }
     }
 
     std::string nameOf(const Node& n) const { return context_.nameOf(n); }
@@ -475,6 +506,8 @@ class Walker {
     SceneMeshes& out_;
     WalkGuard guard_;
     std::vector<const Node*> touchSensors_; // of the lowest group the walk is inside that has any
+    const Node* root_ = nullptr;            // see ShapeRootScope
+    std::size_t rootVisits_ = 0;
     static constexpr std::size_t kMaxVisits = 200000;
     std::size_t visits_ = 0;
     bool overBudget_ = false;

@@ -52,6 +52,14 @@ struct SceneMeshOptions {
     // ShapeMesh::placement taking them to the scene (a viewer animating
     // transforms moves the matrix and keeps the mesh).
     bool placeInScene = true;
+    // true: every shape is placed in the frame of the parent of its root —
+    // the topmost FShape, Shape or FTransform above it (ShapeMesh::root) —
+    // instead of the scene's: `export-web` puts each mesh where that root
+    // stood, under the scene's own (animated) Transforms.
+    bool meshInRootFrame = false;
+    // true: every child of a Switch and every level of an LOD is meshed, not
+    // only the one shown (`export-web` keeps the Switch and LOD).
+    bool everyChoice = false;
     int segments = 48; // around the axis of standard spheres, cones and cylinders
     // Meshes reused across calls (a viewer playing time asks again and again):
     // shapes whose geometry does not read t are meshed once. Optional.
@@ -137,6 +145,12 @@ struct ShapeMesh {
     // The enabled TouchSensors a click on this shape triggers: those beside
     // it, or beside the lowest group above it that has any (X3D §20.2.1).
     std::vector<const scene::Node*> touchSensors;
+    // The topmost FShape, Shape or FTransform the shape was meshed under (the
+    // FTransform of a set operation's children, the FShape itself ...).
+    const scene::Node* root = nullptr;
+    // Which time the walk entered that root (a root USEd twice is walked
+    // twice): shapes of one visit share the number.
+    std::size_t rootVisit = 0;
     std::vector<std::string> warnings;
     std::string error;
     bool cancelled = false; // stopped by MeshOptions::cancel (error then says so)

@@ -72,24 +72,35 @@ class PreviewBuilder {
 
     scene::Node* shape(const ShapeMesh& s) {
         const Mesh& m = s.mesh;
-        scene::Node* faces = node("IndexedFaceSet");
-        std::vector<double> index;
-        index.reserve(m.triangles.size() * 4);
-        for (const Triangle& t : m.triangles) {
-            index.insert(index.end(), {double(t[0]), double(t[1]), double(t[2]), -1.0});
+        scene::Node* geometry = nullptr;
+        if (m.isPointCloud()) {
+            geometry = node("PointSet");
+        } else if (m.isLines()) {
+            geometry = node("IndexedLineSet");
+            std::vector<double> index;
+            index.reserve(m.segments.size() * 3);
+            for (const Segment& g : m.segments)
+                index.insert(index.end(), {double(g[0]), double(g[1]), -1.0});
+            setNumbers(*geometry, "coordIndex", scene::FieldType::MFInt32, std::move(index));
+        } else {
+            geometry = node("IndexedFaceSet");
+            std::vector<double> index;
+            index.reserve(m.triangles.size() * 4);
+            for (const Triangle& t : m.triangles)
+                index.insert(index.end(), {double(t[0]), double(t[1]), double(t[2]), -1.0});
+            // Implicit surfaces are open and seen from both sides.
+            setNumbers(*geometry, "solid", scene::FieldType::SFBool, {s.look.solid ? 1.0 : 0.0});
+            setNumbers(*geometry, "coordIndex", scene::FieldType::MFInt32, std::move(index));
         }
-        // Implicit surfaces are open and seen from both sides.
-        setNumbers(*faces, "solid", scene::FieldType::SFBool, {s.look.solid ? 1.0 : 0.0});
-        setNumbers(*faces, "coordIndex", scene::FieldType::MFInt32, std::move(index));
-
-        faceData(*faces, "coord", "Coordinate", "point", scene::FieldType::MFVec3f, m.positions,
+        faceData(*geometry, "coord", "Coordinate", "point", scene::FieldType::MFVec3f, m.positions,
                  shortDecimal);
-        if (m.normals.size() == m.positions.size())
-            faceData(*faces, "normal", "Normal", "vector", scene::FieldType::MFVec3f, m.normals,
+        // Points and lines are drawn unlit (X3D §11.4.9): no normals.
+        if (!m.isPointCloud() && !m.isLines() && m.normals.size() == m.positions.size())
+            faceData(*geometry, "normal", "Normal", "vector", scene::FieldType::MFVec3f, m.normals,
                      fourDigits);
         // Color (RGB), not ColorRGBA: VRML97 has only the former.
         if (m.colours.size() == m.positions.size())
-            faceData(*faces, "color", "Color", "color", scene::FieldType::MFColor, m.colours,
+            faceData(*geometry, "color", "Color", "color", scene::FieldType::MFColor, m.colours,
                      fourDigits);
 
         scene::Node* material = node("Material");
@@ -113,7 +124,7 @@ class PreviewBuilder {
 
         scene::Node* result = node("Shape");
         setNodes(*result, "appearance", scene::FieldType::SFNode, {appearance});
-        setNodes(*result, "geometry", scene::FieldType::SFNode, {faces});
+        setNodes(*result, "geometry", scene::FieldType::SFNode, {geometry});
         return result;
     }
 
@@ -122,6 +133,10 @@ class PreviewBuilder {
 };
 
 } // namespace
+
+scene::Node* standardShapeNode(scene::Scene& into, const ShapeMesh& shape) {
+    return PreviewBuilder(into).shape(shape);
+}
 
 PreviewResult addPreview(scene::Scene& scene, const PreviewOptions& options) {
     SceneMeshOptions so;

@@ -6,6 +6,7 @@
 // FunctionLab's readers drop that Group again, so it never becomes part of
 // the user's scene, and write-then-read stays the identity.
 #include "scene/scene.h"
+#include "scene_meshing.h"
 
 #include <cstddef>
 #include <string>
@@ -23,6 +24,12 @@ struct PreviewResult {
     std::size_t triangles = 0; // in all
     std::vector<std::string> warnings;
 };
+
+// A standard Shape node, owned by `into`, that draws a mesh as X3D browsers
+// can: an IndexedFaceSet (or IndexedLineSet, PointSet) with the mesh's
+// per-vertex colours and normals and a Material with its look's constant
+// terms (a see-through mesh's mean opacity as its transparency).
+scene::Node* standardShapeNode(scene::Scene& into, const ShapeMesh& shape);
 
 // Appends the preview to `scene.roots`; adds nothing when the scene has no
 // function shape to draw.

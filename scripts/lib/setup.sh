@@ -9,7 +9,9 @@ BUILD_DIR="${FUNCTIONLAB_BUILD_DIR:-$ROOT/build}"
 # viewer, haptics and grading parts; libsodium signs the gradebook's log;
 # xbyak compiles formulas to machine code (the batch evaluator's JIT);
 # bubblewrap isolates each submission grade batch checks; muParser, Draco and
-# meshoptimizer are benchmark peers only (functionlab-bench links them).
+# meshoptimizer are benchmark peers only (functionlab-bench links them);
+# npm installs X_ITE, the X3D browser every `export-web` page ships
+# (install_web_viewer below).
 # Installed with --no-install-recommends, so every package CMake needs is
 # named here even where another package only recommends it (libqt6opengl6-dev:
 # Qt6 3DRender needs Qt6OpenGL, a mere Recommends of qt6-base-dev).
@@ -22,6 +24,7 @@ PACKAGES=(
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   bubblewrap
   libdraco-dev libmeshoptimizer-dev
+  nodejs npm
 )
 # Only for scripts/fuzz (libFuzzer); skipped with a warning where the
 # distribution names them differently.
@@ -96,8 +99,6 @@ TEST_TOOL_PACKAGES=(view3dscene assimp-utils chromium parallel)
 install_test_tools() {
   command -v dpkg-query >/dev/null 2>&1 || { log "not Debian: interop tools not installed"; return 0; }
   local wanted=("${TEST_TOOL_PACKAGES[@]}")
-  command -v node >/dev/null 2>&1 || wanted+=(nodejs)
-  command -v npm >/dev/null 2>&1 || wanted+=(npm)
   local missing=()
   mapfile -t missing < <(not_installed "${wanted[@]}")
   if [ ${#missing[@]} -gt 0 ]; then
@@ -147,7 +148,30 @@ configure_and_build() {
   build "$1"
 }
 
+# X_ITE, the X3D browser `functionlab export-web` copies into every page
+# (never fetched from a CDN): from npm, pinned by web/package-lock.json,
+# into $BUILD_DIR/web-viewer, where functionlab finds it
+# (web/web_page.h findXite). Without it export-web says how to get it; the
+# rest of the suite does not need it.
+install_web_viewer() {
+  local viewer="$BUILD_DIR/web-viewer"
+  if [ -f "$viewer/node_modules/x_ite/dist/x_ite.min.js" ] &&
+    cmp -s "$ROOT/web/package-lock.json" "$viewer/package-lock.json"; then
+    return 0
+  fi
+  if ! command -v npm >/dev/null 2>&1; then
+    log "warning: no npm: export-web cannot ship X_ITE until it is installed"
+    return 0
+  fi
+  log "installing X_ITE for export-web (npm ci in $viewer)"
+  mkdir -p "$viewer"
+  cp "$ROOT/web/package.json" "$ROOT/web/package-lock.json" "$viewer/"
+  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null) ||
+    log "warning: npm could not install X_ITE: export-web will say so"
+}
+
 setup() {
   install_missing_packages
+  install_web_viewer
   configure_and_build "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
 }

@@ -115,6 +115,7 @@ const std::vector<Command>& commands() {
         {checkSpec, checkCommand},
         {convertSpec, convertCommand},
         {meshSpec, meshCommand},
+        {exportWebSpec, exportWebCommand},
         {renderSpec, renderCommand},
         {benchEvalSpec, benchEvalCommand},
         {benchAccuracySpec, benchAccuracyCommand},

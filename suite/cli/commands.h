@@ -17,6 +17,7 @@ const CommandSpec& formulaEvalSpec();
 const CommandSpec& checkSpec();
 const CommandSpec& convertSpec();
 const CommandSpec& meshSpec();
+const CommandSpec& exportWebSpec();
 const CommandSpec& renderSpec();
 using measure::benchEvalSpec; // measure/bench_eval_spec.h: functionlab-bench reads it too
 const CommandSpec& benchAccuracySpec();
@@ -44,6 +45,7 @@ int formulaEvalCommand(const Args& args);
 int checkCommand(const Args& args);
 int convertCommand(const Args& args);
 int meshCommand(const Args& args);
+int exportWebCommand(const Args& args);
 int renderCommand(const Args& args);
 int benchEvalCommand(const Args& args);      // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args);  // `bench accuracy`
