@@ -2,6 +2,10 @@
 
 #include "scene_policy.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QWebSocket>
 #include <QWebSocketServer>
 
@@ -20,8 +24,20 @@ ClassroomServer::ClassroomServer(ClassSession& session, ServerOptions options, Q
                                    QWebSocketServer::NonSecureMode, this)) {
     server_->setMaxPendingConnections(256);
     connect(server_, &QWebSocketServer::newConnection, this, &ClassroomServer::accept);
+    tcp_ = new QTcpServer(this);
+    tcp_->setMaxPendingConnections(256);
+    connect(tcp_, &QTcpServer::newConnection, this, &ClassroomServer::sniff);
     tick_.setInterval(options_.tickMillis);
-    connect(&tick_, &QTimer::timeout, this, [this] { deliver(session_.tick()); });
+    connect(&tick_, &QTimer::timeout, this, [this] {
+        deliver(session_.tick());
+        if (!live_) return;
+        // The page's observer keeps its seat with heartbeats, and takes a
+        // new one if the class ever let it go.
+        if (webObserver_)
+            deliver(session_.receive(*webObserver_, R"({"type":"heartbeat"})"));
+        else
+            joinWebObserver();
+    });
     checks_.setMaxThreadCount(std::max(1, options_.checkThreads));
     session_.setDeferredChecks(true);
 }
@@ -83,24 +99,133 @@ void ClassroomServer::dispatchChecks() {
 }
 
 bool ClassroomServer::listen(const QHostAddress& address, quint16 port, QString* why) {
-    if (!server_->listen(address, port)) {
-        if (why) *why = server_->errorString();
+    if (!tcp_->listen(address, port)) {
+        if (why) *why = tcp_->errorString();
         return false;
+    }
+    if (options_.web && !live_) {
+        live_ = new LivePage(options_.livePage, this);
+        joinWebObserver();
     }
     tick_.start();
     return true;
 }
 
 quint16 ClassroomServer::port() const {
-    return server_->serverPort();
+    return tcp_->serverPort();
 }
 QHostAddress ClassroomServer::address() const {
-    return server_->serverAddress();
+    return tcp_->serverAddress();
+}
+
+void ClassroomServer::joinWebObserver() {
+    const std::optional<ConnectionId> id = session_.connect("web page");
+    if (!id) return;
+    webObserver_ = *id;
+    QJsonObject join;
+    join["type"] = "join";
+    join["class"] = QString::fromStdString(options_.livePage.classCode);
+    join["name"] = "Web page";
+    join["role"] = "observer";
+    deliver(
+        session_.receive(*id, QJsonDocument(join).toJson(QJsonDocument::Compact).toStdString()));
+}
+
+namespace {
+
+// A short plain-text answer, then the connection closes.
+void reply(QTcpSocket* socket, const QByteArray& status, const QByteArray& body) {
+    socket->write("HTTP/1.1 " + status +
+                  "\r\nContent-Type: text/plain; charset=utf-8\r\nContent-Length: " +
+                  QByteArray::number(body.size()) + "\r\nConnection: close\r\n\r\n" + body);
+    socket->disconnectFromHost();
+    QObject::connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+}
+
+} // namespace
+
+void ClassroomServer::sniff() {
+    while (QTcpSocket* socket = tcp_->nextPendingConnection()) {
+        const std::string address = socket->peerAddress().toString().toStdString();
+        const auto fromAddress = std::count_if(unread_.begin(), unread_.end(),
+                                               [&](const auto& u) { return u.second == address; });
+        if (unread_.size() >= options_.maxUnreadConnections ||
+            std::size_t(fromAddress) >= options_.maxUnreadPerAddress) {
+            socket->abort();
+            socket->deleteLater();
+            continue;
+        }
+        unread_[socket] = address;
+        socket->setParent(this);
+        // A head that never completes is not waited for.
+        auto* timer = new QTimer(socket);
+        timer->setSingleShot(true);
+        connect(timer, &QTimer::timeout, socket, &QTcpSocket::abort);
+        timer->start(options_.headMillis);
+        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { headArrived(socket); });
+        connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
+            forgetUnread(socket);
+            socket->deleteLater();
+        });
+    }
+}
+
+void ClassroomServer::forgetUnread(QTcpSocket* socket) {
+    unread_.erase(socket);
+    socket->disconnect(this);
+    for (QTimer* t : socket->findChildren<QTimer*>(Qt::FindDirectChildrenOnly))
+        delete t;
+}
+
+void ClassroomServer::headArrived(QTcpSocket* socket) {
+    // Peeked, not read: a WebSocket handshake is read again by Qt.
+    const QByteArray bytes = socket->peek(qint64(kMaxRequestHeadBytes));
+    std::size_t length = 0;
+    const HeadStatus status =
+        findHeadEnd(std::string_view(bytes.constData(), std::size_t(bytes.size())), length);
+    if (status == HeadStatus::Incomplete) return;
+    std::string why = "the request head is longer than 8 KiB";
+    std::optional<HttpRequest> request;
+    if (status == HeadStatus::Complete)
+        request = parseRequestHead(std::string_view(bytes.constData(), length), why);
+    forgetUnread(socket);
+    if (!request) {
+        const QByteArray body = QByteArray::fromStdString("Bad request: " + why + ".\n");
+        reply(socket, "400 Bad Request", body);
+        return;
+    }
+    if (request->wantsWebSocket()) {
+        socket->setParent(nullptr);
+        server_->handleConnection(socket);
+        // Qt reads the handshake when more bytes arrive; these are here already.
+        QMetaObject::invokeMethod(
+            socket, [socket] { emit socket->readyRead(); }, Qt::QueuedConnection);
+        return;
+    }
+    socket->read(qint64(length));
+    if (live_) {
+        live_->serve(socket, *request);
+        return;
+    }
+    reply(socket, "404 Not Found",
+          "This class server has no web page (it was started with --no-web).\n");
 }
 
 void ClassroomServer::close() {
     tick_.stop();
+    tcp_->close();
     server_->close();
+    for (auto& [socket, address] : std::map<QTcpSocket*, std::string>(unread_)) {
+        forgetUnread(socket);
+        socket->abort();
+        socket->deleteLater();
+    }
+    if (webObserver_) {
+        session_.disconnected(*webObserver_);
+        webObserver_.reset();
+    }
+    delete live_;
+    live_ = nullptr;
     std::map<ConnectionId, Peer> peers;
     peers.swap(sockets_);
     for (auto& [id, peer] : peers) {
@@ -164,6 +289,11 @@ void ClassroomServer::dropped(ConnectionId id) {
 
 void ClassroomServer::deliver(const std::vector<Delivery>& deliveries) {
     for (const Delivery& d : deliveries) {
+        if (webObserver_ && d.to == *webObserver_) {
+            if (live_) live_->observe(d.frame.toStdString());
+            if (d.close) webObserver_.reset();
+            continue;
+        }
         const auto it = sockets_.find(d.to);
         if (it == sockets_.end() || it->second.closing) continue;
         send(it->second, d.frame, d.wholeScene);

@@ -7,7 +7,13 @@
 // not matter) and is closed if even that does not keep up. A changed scene is
 // checked on a worker thread, never on the event loop, with a time limit
 // (ClassroomLimits::maxCheckMillis): a costly edit cannot freeze the class.
+// One port serves both the class and its web page (issue 32 §2): each new
+// connection's request head is read (bounded in size and time, and in how
+// many may be read at once per address); a WebSocket upgrade goes to the
+// class, any other request to the LivePage, which follows the class as one
+// more observer of it.
 #include "class_session.h"
+#include "live_page.h"
 
 #include <QHostAddress>
 #include <QObject>
@@ -16,7 +22,11 @@
 
 #include <map>
 #include <memory>
+#include <optional>
+#include <string>
 
+class QTcpServer;
+class QTcpSocket;
 class QWebSocket;
 class QWebSocketServer;
 
@@ -27,6 +37,11 @@ struct ServerOptions {
     qint64 closeAboveBytes = 64 << 20; // unsent bytes before a connection is given up
     int tickMillis = 1000;
     int checkThreads = 2; // workers that check changed scenes
+    bool web = false;     // answer browsers with the live page (serve: true unless --no-web)
+    LivePageOptions livePage;
+    int headMillis = 5000;                  // to send a request head, or be closed
+    std::size_t maxUnreadConnections = 256; // connections whose head is not read yet
+    std::size_t maxUnreadPerAddress = 16;
 };
 
 class ClassroomServer : public QObject {
@@ -41,6 +56,7 @@ class ClassroomServer : public QObject {
     QHostAddress address() const;
     void close();
     std::size_t connectionCount() const { return sockets_.size(); }
+    const LivePage* livePage() const { return live_; }
 
   private:
     struct Peer {
@@ -49,6 +65,10 @@ class ClassroomServer : public QObject {
         std::vector<QString> held; // other frames while held back (bounded)
         bool closing = false;
     };
+    void sniff();
+    void headArrived(QTcpSocket* socket);
+    void forgetUnread(QTcpSocket* socket);
+    void joinWebObserver();
     void accept();
     void deliver(const std::vector<Delivery>& deliveries);
     void send(Peer& peer, const QString& frame, bool wholeScene);
@@ -59,7 +79,11 @@ class ClassroomServer : public QObject {
 
     ClassSession& session_;
     ServerOptions options_;
-    QWebSocketServer* server_ = nullptr;
+    QTcpServer* tcp_ = nullptr;
+    QWebSocketServer* server_ = nullptr; // takes the upgrades tcp_ hands it
+    LivePage* live_ = nullptr;
+    std::optional<ConnectionId> webObserver_;
+    std::map<QTcpSocket*, std::string> unread_; // connections whose head is not read yet
     QTimer tick_;
     std::map<ConnectionId, Peer> sockets_;
     QThreadPool checks_; // last: destroyed (waiting for its workers) first

@@ -31,13 +31,14 @@ inline constexpr const char* kPageScript = R"js("use strict";
     if (browser) browser.style.display = "";
   }
 
-  function startTime(clock, browser) {
+  function startTime(clock) {
     switch (clock.base) {
       case "utc": return clock.start;
       // The frames show the local time at a UTC offset of 0; here it is
       // UTC minus getTimezoneOffset() minutes.
       case "local": return clock.start + new Date().getTimezoneOffset() * 60;
-      default: return browser.currentTime + clock.start;
+      // X3D time is seconds since 1970, as Date gives it.
+      default: return Date.now() / 1000 + clock.start;
     }
   }
 
@@ -71,7 +72,7 @@ inline constexpr const char* kPageScript = R"js("use strict";
     const sensors = Array.from(dom.getElementsByTagName("TimeSensor"));
     for (const clock of page.clocks) {
       const sensor = sensors.find(s => s.getAttribute("DEF") === clock.timeSensor);
-      if (sensor) sensor.setAttribute("startTime", String(startTime(clock, browser)));
+      if (sensor) sensor.setAttribute("startTime", String(startTime(clock)));
     }
     // ?still: no TimeSensor starts, so the page shows the scene's moment 0,
     // each baked shape's first frame, as `functionlab render` draws it.
@@ -84,6 +85,15 @@ inline constexpr const char* kPageScript = R"js("use strict";
     await browser.replaceWorld(scene);
     document.body.dataset.ready = "yes";
   }
+
+  // Opened from a file, X_ITE's fetch of a wasm helper it does not need to
+  // draw these meshes is refused; said once here, not as an error.
+  window.addEventListener("unhandledrejection", event => {
+    if (location.protocol === "file:" && String(event.reason).includes("Failed to fetch")) {
+      event.preventDefault();
+      console.info("X_ITE could not fetch a helper from a file; the scene does not need it");
+    }
+  });
 
   window.addEventListener("load", () => {
     if (new URLSearchParams(location.search).has("shot")) document.body.classList.add("shot");

@@ -13,6 +13,7 @@
 #include "classroom/starter_scene.h"
 
 #include "scene/read_limits.h"
+#include "web/web_page.h"
 
 #include <QCoreApplication>
 #include <QHostAddress>
@@ -91,7 +92,8 @@ const CommandSpec& serveSpec() {
         .name = "serve",
         .summary = "run a class's shared scene server (WebSocket)",
         .synopsis = {"serve [SCENE] --port P --class CODE [--data DIR] [--instructor-key KEY] "
-                     "[--bind ADDR] [--memory-limit MIB] [--new]"},
+                     "[--bind ADDR] [--memory-limit MIB] [--new] [--no-web | "
+                     "--web-needs-class-code]"},
         .description =
             "Starts the server of one class: members join over WebSocket with the class code\n"
             "(docs/classroom-protocol.md), edit one shared scene under an automatic lock, and\n"
@@ -100,7 +102,13 @@ const CommandSpec& serveSpec() {
             "anyone is told of it; a restart with the same DIR goes on from the newest version\n"
             "(SCENE is then ignored). Without SCENE the class starts from one sphere.\n"
             "A damaged log, a log missing from a folder that held a class, or a folder another\n"
-            "server holds is refused with what to do.\n",
+            "server holds is refused with what to do.\n"
+            "\n"
+            "The same port answers browsers: http://ADDR:P/ is a read-only page of the class's\n"
+            "scene (drawn by X_ITE, as export-web draws it) and chat, which follows every\n"
+            "accepted edit within about a second. It follows the class as an observer over the\n"
+            "protocol and adds no way to change anything. --no-web turns it off;\n"
+            "--web-needs-class-code makes its address need ?class=CODE.\n",
         .positionals = {{"SCENE", "the scene the class starts from (X3D or ClassicVRML text)",
                          false}},
         .options = {{.name = "port",
@@ -130,6 +138,9 @@ const CommandSpec& serveSpec() {
                     {.name = "new",
                      .help = "with --data: start a new class even if the folder held one whose "
                              "log is missing or empty (its old versions are gone)"},
+                    {.name = "no-web", .help = "do not answer browsers (no live web page)"},
+                    {.name = "web-needs-class-code",
+                     .help = "the live web page needs ?class=CODE in its address"},
                     {.name = "memory-limit",
                      .kind = OptionKind::Integer,
                      .valueName = "MIB",
@@ -201,7 +212,19 @@ int serveCommand(const Args& args) {
         classroom::ClassSession session(config, clock, log.get());
         if (!session.startNote().empty())
             std::cerr << "functionlab serve: " << session.startNote() << "\n";
-        classroom::ClassroomServer server(session);
+        classroom::ServerOptions serverOptions;
+        serverOptions.web = !a->flag("no-web");
+        serverOptions.livePage.classCode = code;
+        serverOptions.livePage.needsClassCode = a->flag("web-needs-class-code");
+        if (serverOptions.web) {
+            std::string why;
+            if (const auto xIte = web::findXite(why))
+                serverOptions.livePage.xIteDir = *xIte;
+            else
+                std::cerr << "functionlab serve: warning: the web page cannot draw: " << why
+                          << "\n";
+        }
+        classroom::ClassroomServer server(session, serverOptions);
         QString why;
         if (!server.listen(address, static_cast<quint16>(a->integer("port", 0)), &why)) {
             std::cerr << "functionlab serve: cannot listen on " << a->text("bind", "127.0.0.1")
@@ -227,6 +250,10 @@ int serveCommand(const Args& args) {
 
         std::cout << "listening on ws://" << server.address().toString().toStdString() << ":"
                   << server.port() << std::endl;
+        if (serverOptions.web)
+            std::cout << "web page on http://" << server.address().toString().toStdString() << ":"
+                      << server.port() << "/"
+                      << (serverOptions.livePage.needsClassCode ? "?class=CODE" : "") << std::endl;
         app.exec();
         server.close();
         std::cerr << "functionlab serve: stopped at version " << session.version() << "\n";
