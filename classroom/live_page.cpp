@@ -244,6 +244,9 @@ LivePage::Response LivePage::respond(const HttpRequest& request) const {
 
 void LivePage::serve(QTcpSocket* socket, const HttpRequest& request) {
     socket->setParent(this);
+    // Every answer ends with the connection (an event stream when the page
+    // goes): the socket goes with it.
+    connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
     const bool headOnly = request.method == "HEAD";
     if (request.method != "GET" && !headOnly) {
         const QByteArray body = "The class's page only answers GET.\n";
@@ -276,10 +279,8 @@ void LivePage::openStream(QTcpSocket* socket) {
         return;
     }
     streams_.push_back(socket);
-    connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
-        std::erase(streams_, socket);
-        socket->deleteLater();
-    });
+    connect(socket, &QTcpSocket::disconnected, this,
+            [this, socket] { std::erase(streams_, socket); });
     // A browser only listens: whatever it sends on a stream is dropped.
     connect(socket, &QTcpSocket::readyRead, socket, [socket] { socket->readAll(); });
     QByteArray out = head(200, "text/event-stream; charset=utf-8", -1, false, true) +

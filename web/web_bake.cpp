@@ -7,6 +7,7 @@
 #include "mesh/scene_preview.h"
 #include "scene/components.h"
 #include "scene/effects_plan.h"
+#include "scene/node_building.h"
 #include "scene/scene_references.h"
 
 #include <algorithm>
@@ -31,31 +32,6 @@ bool isRootKind(NodeKind kind) {
 
 bool isFunctionNode(const Node& n) {
     return n.spec && n.spec->component == "FunctionLab";
-}
-
-scene::Node* newNode(scene::Scene& out, std::string_view type) {
-    scene::Node* n = out.newNode();
-    n->type = std::string(type);
-    n->spec = scene::findNodeSpec(type);
-    return n;
-}
-
-void setNumbers(scene::Node& n, std::string name, scene::FieldType type,
-                std::vector<double> numbers) {
-    scene::Field f;
-    f.name = std::move(name);
-    f.value.type = type;
-    f.value.numbers = std::move(numbers);
-    n.fields.push_back(std::move(f));
-}
-
-void setNodes(scene::Node& n, std::string name, scene::FieldType type,
-              std::vector<scene::Node*> nodes) {
-    scene::Field f;
-    f.name = std::move(name);
-    f.value.type = type;
-    f.value.nodes = std::move(nodes);
-    n.fields.push_back(std::move(f));
 }
 
 // Every node a node holds in its fields, through PROTO instances to what they
@@ -315,9 +291,9 @@ class Baker {
     }
 
     scene::Node* group(std::vector<scene::Node*> children) {
-        scene::Node* g = newNode(out_.scene, "Group");
+        scene::Node* g = scene::newCatalogueNode(out_.scene, "Group");
         if (!children.empty())
-            setNodes(*g, "children", scene::FieldType::MFNode, std::move(children));
+            scene::addNodesField(*g, "children", scene::FieldType::MFNode, std::move(children));
         return g;
     }
 
@@ -329,14 +305,15 @@ class Baker {
         const auto& b = shape.box;
         // A flat shape (the clock's face) has a box of no depth: still a box.
         if (!(b.lo[0] <= b.hi[0] && b.lo[1] <= b.hi[1] && b.lo[2] <= b.hi[2])) return group({});
-        scene::Node* n = newNode(out_.scene, "LOD");
-        setNumbers(*n, "center", scene::FieldType::SFVec3f,
-                   {(b.lo[0] + b.hi[0]) / 2, (b.lo[1] + b.hi[1]) / 2, (b.lo[2] + b.hi[2]) / 2});
+        scene::Node* n = scene::newCatalogueNode(out_.scene, "LOD");
+        scene::addNumbersField(
+            *n, "center", scene::FieldType::SFVec3f,
+            {(b.lo[0] + b.hi[0]) / 2, (b.lo[1] + b.hi[1]) / 2, (b.lo[2] + b.hi[2]) / 2});
         std::vector<double> ranges = lodRanges(resolutions_, b);
         for (double& r : ranges)
             r = fourDigits(r);
-        setNumbers(*n, "range", scene::FieldType::MFFloat, std::move(ranges));
-        setNodes(*n, "children", scene::FieldType::MFNode, std::move(levels));
+        scene::addNumbersField(*n, "range", scene::FieldType::MFFloat, std::move(ranges));
+        scene::addNodesField(*n, "children", scene::FieldType::MFNode, std::move(levels));
         return n;
     }
 
@@ -368,12 +345,13 @@ class Baker {
         ++out_.animated;
         const MomentGroup& moments = groups_[std::size_t(root.group)];
         const std::size_t n = frames.size();
-        scene::Node* sensor = newNode(out_.scene, "TimeSensor");
+        scene::Node* sensor = scene::newCatalogueNode(out_.scene, "TimeSensor");
         sensor->defName = uniqueName("FunctionLab_Clock");
-        setNumbers(*sensor, "cycleInterval", scene::FieldType::SFTime,
-                   {moments.clock.cycleSeconds});
-        setNumbers(*sensor, "loop", scene::FieldType::SFBool, {moments.clock.loop ? 1.0 : 0.0});
-        scene::Node* sequencer = newNode(out_.scene, "IntegerSequencer");
+        scene::addNumbersField(*sensor, "cycleInterval", scene::FieldType::SFTime,
+                               {moments.clock.cycleSeconds});
+        scene::addNumbersField(*sensor, "loop", scene::FieldType::SFBool,
+                               {moments.clock.loop ? 1.0 : 0.0});
+        scene::Node* sequencer = scene::newCatalogueNode(out_.scene, "IntegerSequencer");
         sequencer->defName = uniqueName("FunctionLab_Frame");
         std::vector<double> keys, values;
         const double steps = moments.clock.loop ? double(n) : double(n - 1);
@@ -381,15 +359,16 @@ class Baker {
             keys.push_back(fourDigits(double(k) / steps));
             values.push_back(double(k));
         }
-        setNumbers(*sequencer, "key", scene::FieldType::MFFloat, std::move(keys));
-        setNumbers(*sequencer, "keyValue", scene::FieldType::MFInt32, std::move(values));
-        scene::Node* choice = newNode(out_.scene, "Switch");
+        scene::addNumbersField(*sequencer, "key", scene::FieldType::MFFloat, std::move(keys));
+        scene::addNumbersField(*sequencer, "keyValue", scene::FieldType::MFInt32,
+                               std::move(values));
+        scene::Node* choice = scene::newCatalogueNode(out_.scene, "Switch");
         choice->defName = uniqueName("FunctionLab_Frames");
-        setNumbers(*choice, "whichChoice", scene::FieldType::SFInt32, {0});
+        scene::addNumbersField(*choice, "whichChoice", scene::FieldType::SFInt32, {0});
         std::vector<scene::Node*> children;
         for (const auto& shapes : frames)
             children.push_back(frameGroup(shapes));
-        setNodes(*choice, "children", scene::FieldType::MFNode, std::move(children));
+        scene::addNodesField(*choice, "children", scene::FieldType::MFNode, std::move(children));
         route(sensor, "fraction_changed", sequencer, "set_fraction");
         route(sequencer, "value_changed", choice, "set_whichChoice");
         BakedClock clock = moments.clock;

@@ -4,6 +4,7 @@
 #include "page_script.h"
 #include "scene/gzip.h"
 #include "scene/scene_writer.h"
+#include "text/json_text.h"
 
 #include <algorithm>
 #include <array>
@@ -180,79 +181,37 @@ std::string indexHtml(const scene::Scene& source, const std::string& sourceLink,
 } // namespace
 
 std::string javaScriptString(std::string_view text) {
-    std::string out = "\"";
-    out.reserve(text.size() + text.size() / 16 + 2);
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        switch (c) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        case '<':
+    // JSON's string is JavaScript's; then what a page or an old engine
+    // would still read as more than text: < and > (no "</script>" can end
+    // a script), DEL, and U+2028/U+2029 (line ends before ES2019).
+    const std::string json = text::jsonString(text);
+    std::string out;
+    out.reserve(json.size());
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (c == '<')
             out += "\\u003c";
-            break;
-        case '>':
+        else if (c == '>')
             out += "\\u003e";
-            break;
-        default:
-            if (c < 0x20 || c == 0x7f) {
-                char buf[8];
-                std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                out += buf;
-            } else if (c == 0xe2 && i + 2 < text.size() &&
-                       static_cast<unsigned char>(text[i + 1]) == 0x80 &&
-                       (static_cast<unsigned char>(text[i + 2]) == 0xa8 ||
-                        static_cast<unsigned char>(text[i + 2]) == 0xa9)) {
-                // U+2028 and U+2029 end a line in older JavaScript.
-                out += static_cast<unsigned char>(text[i + 2]) == 0xa8 ? "\\u2028" : "\\u2029";
-                i += 2;
-            } else {
-                out += char(c);
-            }
-        }
+        else if (c == '\x7f')
+            out += "\\u007f";
+        else if (json.compare(i, 3, "\xe2\x80\xa8") == 0)
+            out += "\\u2028", i += 2;
+        else if (json.compare(i, 3, "\xe2\x80\xa9") == 0)
+            out += "\\u2029", i += 2;
+        else
+            out += c;
     }
-    return out + "\"";
+    return out;
 }
 
 std::string htmlText(std::string_view text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const char ch : text) {
-        const unsigned char c = static_cast<unsigned char>(ch);
-        switch (ch) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&#39;";
-            break;
-        default:
-            if ((c < 0x20 && ch != '\t' && ch != '\n') || c == 0x7f) break;
-            out += ch;
-        }
+    std::string shown;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if ((u >= 0x20 && u != 0x7f) || c == '\t' || c == '\n') shown += c;
     }
-    return out;
+    return scene::xmlEscape(shown);
 }
 
 std::optional<fs::path> findXite(std::string& why) {

@@ -40,8 +40,9 @@ bool writeWebFolder(const BakeResult& baked, const scene::Scene& source,
 // Text as a JavaScript string literal that is safe anywhere in a page:
 // quotes, backslashes, line ends, control characters and '<' escaped.
 std::string javaScriptString(std::string_view text);
-// Text as HTML element content or a quoted attribute value; control
-// characters other than tab and newline are dropped.
+// Text as HTML element content or a quoted attribute value (the scene
+// writer's XML escaping, valid in HTML5); control characters other than tab
+// and newline are dropped.
 std::string htmlText(std::string_view text);
 
 } // namespace fl::web

@@ -1,5 +1,6 @@
 #include "scene_preview.h"
 
+#include "scene/node_building.h"
 #include "scene/node_catalogue.h"
 #include "scene/preview_marker.h"
 #include "scene_meshing.h"
@@ -29,29 +30,16 @@ class PreviewBuilder {
   public:
     explicit PreviewBuilder(scene::Scene& scene) : scene_(scene) {}
 
-    scene::Node* node(std::string_view type) {
-        scene::Node* n = scene_.newNode();
-        n->type = std::string(type);
-        n->spec = scene::findNodeSpec(type);
-        return n;
-    }
+    scene::Node* node(std::string_view type) { return scene::newCatalogueNode(scene_, type); }
 
     static void setNodes(scene::Node& n, std::string name, scene::FieldType type,
                          std::vector<scene::Node*> nodes) {
-        scene::Field f;
-        f.name = std::move(name);
-        f.value.type = type;
-        f.value.nodes = std::move(nodes);
-        n.fields.push_back(std::move(f));
+        scene::addNodesField(n, std::move(name), type, std::move(nodes));
     }
 
     static void setNumbers(scene::Node& n, std::string name, scene::FieldType type,
                            std::vector<double> numbers) {
-        scene::Field f;
-        f.name = std::move(name);
-        f.value.type = type;
-        f.value.numbers = std::move(numbers);
-        n.fields.push_back(std::move(f));
+        scene::addNumbersField(n, std::move(name), type, std::move(numbers));
     }
 
     // A Coordinate, Normal or Color node of the faces: the first three numbers

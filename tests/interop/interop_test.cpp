@@ -9,6 +9,7 @@
 // (scripts/test installs them all); where FUNCTIONLAB_REQUIRE_TOOLS is set, as
 // in CI, it fails them. CTest label: interop.
 #include "../common/required_tool.h"
+#include "../common/tool_run.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -34,43 +35,14 @@
 
 namespace {
 
+using fl::test::run;
+using fl::test::ToolRun;
+
 const QString kFunctionLab = QStringLiteral(FUNCTIONLAB_EXE);
 const QString kExamples = QStringLiteral(FUNCTIONLAB_EXAMPLES_DIR);
 const QString kOutDir = QStringLiteral(FUNCTIONLAB_INTEROP_OUT_DIR);
 const QString kValidatorDir = QStringLiteral(FUNCTIONLAB_GLTF_VALIDATOR_DIR);
 const QString kValidateScript = QStringLiteral(FUNCTIONLAB_VALIDATE_GLTF_SCRIPT);
-
-struct ToolRun {
-    bool started = false;
-    bool finished = false;
-    int exitCode = -1;
-    QString out, err;
-
-    std::string describe() const {
-        return "exit " + std::to_string(exitCode) + "\nstdout: " + out.left(2000).toStdString() +
-               "\nstderr: " + err.left(2000).toStdString();
-    }
-};
-
-ToolRun run(const QString& program, const QStringList& arguments,
-            const QProcessEnvironment& environment = QProcessEnvironment::systemEnvironment(),
-            int timeoutMs = 120000) {
-    QProcess p;
-    p.setProcessEnvironment(environment);
-    p.start(program, arguments);
-    ToolRun r;
-    r.started = p.waitForStarted(10000);
-    if (!r.started) return r;
-    r.finished = p.waitForFinished(timeoutMs);
-    if (!r.finished) {
-        p.kill();
-        p.waitForFinished(5000);
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
 
 QString tool(const QString& name) {
     return QStandardPaths::findExecutable(name);

@@ -17,6 +17,7 @@
 // The class's live page (LiveClassPage) is opened from `functionlab serve`
 // and must show an edit sent over the protocol within 2 s.
 #include "../common/required_tool.h"
+#include "../common/tool_run.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -49,29 +50,8 @@ const QString kShotScript = QStringLiteral(FUNCTIONLAB_PAGE_SHOT_SCRIPT);
 const QString kXite = QStringLiteral(FUNCTIONLAB_X_ITE_DIR);
 constexpr int kWidth = 640, kHeight = 480;
 
-struct ToolRun {
-    int exitCode = -1;
-    QString out, err;
-    std::string describe() const {
-        return "exit " + std::to_string(exitCode) + "\nstdout: " + out.left(2000).toStdString() +
-               "\nstderr: " + err.left(2000).toStdString();
-    }
-};
-
-ToolRun run(const QString& program, const QStringList& arguments, int timeoutMs = 240000) {
-    QProcess p;
-    p.start(program, arguments);
-    ToolRun r;
-    if (!p.waitForStarted(10000)) return r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished(5000);
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
+using fl::test::run;
+using fl::test::ToolRun;
 
 std::vector<std::string> examples() {
     std::vector<std::string> names;
