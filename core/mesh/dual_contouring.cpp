@@ -1,5 +1,7 @@
 #include "dual_contouring.h"
 
+#include "parallel/work_pool.h"
+
 #include "formula/nonfinite_report.h"
 #include "marching_cubes.h" // edgeGroups: the pieces of surface in a cell
 #include "qef.h"
@@ -943,18 +945,13 @@ template <class Task>
 void parallelFor(std::size_t count, int threads, const ImplicitField& field,
                  std::vector<EvaluationCounts>& counts, Task task) {
     std::atomic<std::size_t> next{0};
-    auto worker = [&](int w) {
+    const std::function<void(int)> worker = [&](int w) {
         FieldSampler sampler(field);
         for (std::size_t i = next++; i < count; i = next++)
             task(i, sampler, w);
         counts[std::size_t(w)] += sampler.counts();
     };
-    std::vector<std::thread> pool;
-    for (int w = 1; w < threads; ++w)
-        pool.emplace_back(worker, w);
-    worker(0);
-    for (std::thread& t : pool)
-        t.join();
+    parallel::WorkPool::shared().run(threads, worker);
 }
 
 std::string formatPoint(const Vec3& p) {

@@ -1,9 +1,13 @@
 #include "marching_cubes.h"
 
+#include "parallel/work_pool.h"
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <thread>
 
 namespace fl::mesh {
@@ -141,6 +145,9 @@ DenseResult marchingCubes(const ImplicitField& field, double resolution, int thr
     threads = std::min(threads, n[2]);
     std::vector<Mesh> parts(static_cast<std::size_t>(threads));
     std::vector<EvaluationCounts> counts(static_cast<std::size_t>(threads));
+    // Slabs of planes, taken by whichever thread comes: the shared pool may
+    // lend fewer threads than asked (parallel/work_pool.h).
+    std::atomic<int> nextSlab{0};
     auto slab = [&](int w) {
         const int k0 = n[2] * w / threads, k1 = n[2] * (w + 1) / threads;
         FieldSampler sampler(field);
@@ -201,12 +208,11 @@ DenseResult marchingCubes(const ImplicitField& field, double resolution, int thr
         }
         counts[std::size_t(w)] = sampler.counts();
     };
-    std::vector<std::thread> pool;
-    for (int w = 1; w < threads; ++w)
-        pool.emplace_back(slab, w);
-    slab(0);
-    for (auto& t : pool)
-        t.join();
+    const std::function<void(int)> slabs = [&](int) {
+        for (int w = nextSlab++; w < threads; w = nextSlab++)
+            slab(w);
+    };
+    parallel::WorkPool::shared().run(threads, slabs);
     for (std::size_t w = 0; w < parts.size(); ++w) {
         const auto base = std::uint32_t(result.mesh.positions.size());
         result.mesh.positions.insert(result.mesh.positions.end(), parts[w].positions.begin(),

@@ -1,0 +1,84 @@
+#include "work_pool.h"
+
+#include <algorithm>
+
+namespace fl::parallel {
+
+WorkPool::WorkPool(int threads) {
+    if (threads <= 0) threads = std::max(1, int(std::thread::hardware_concurrency()) - 1);
+    threads = std::min(threads, 256);
+    for (int i = 0; i < threads; ++i)
+        threads_.emplace_back([this] { work(); });
+}
+
+WorkPool::~WorkPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_)
+        t.join();
+}
+
+WorkPool& WorkPool::shared() {
+    static WorkPool pool;
+    return pool;
+}
+
+void WorkPool::work() {
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
+        if (stopping_) return;
+        Job* job = queue_.front();
+        const int w = 1 + job->claimed++;
+        if (job->claimed == job->helpers) queue_.pop_front();
+        lock.unlock();
+        std::exception_ptr error;
+        try {
+            (*job->task)(w);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        lock.lock();
+        if (error && !job->error) job->error = error;
+        ++job->finished;
+        done_.notify_all();
+    }
+}
+
+void WorkPool::run(int workers, const std::function<void(int)>& task) {
+    Job job;
+    job.task = &task;
+    job.helpers = std::clamp(workers - 1, 0, threads());
+    if (job.helpers > 0) {
+        {
+            std::lock_guard lock(mutex_);
+            queue_.push_back(&job);
+        }
+        if (job.helpers == 1)
+            wake_.notify_one();
+        else
+            wake_.notify_all();
+    }
+    std::exception_ptr error;
+    try {
+        task(0);
+    } catch (...) {
+        error = std::current_exception();
+    }
+    if (job.helpers > 0) {
+        std::unique_lock lock(mutex_);
+        // Helpers no thread has taken yet are not waited for: the work is done.
+        if (job.claimed < job.helpers) {
+            std::erase(queue_, &job);
+            job.helpers = job.claimed;
+        }
+        done_.wait(lock, [&] { return job.finished == job.helpers; });
+        if (!error) error = job.error;
+    }
+    if (error) std::rethrow_exception(error);
+}
+
+} // namespace fl::parallel
