@@ -184,7 +184,10 @@ void LivePage::startBake() {
             } else {
                 bake.cancel = cancel.get();
                 const web::BakeResult baked = web::bakeForWeb(*r.scene, bake);
-                if (baked.cancelled)
+                if (!baked.error.empty())
+                    problem = "version " + QString::number(version) +
+                              " is not shown: " + QString::fromStdString(baked.error);
+                else if (baked.cancelled)
                     problem = "drawing version " + QString::number(version) +
                               " took too long; the page shows an earlier one";
                 else

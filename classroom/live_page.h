@@ -46,6 +46,7 @@ struct LivePageOptions {
         o.resolutions = {16, 32};
         o.frames = 12;
         o.threads = 1;
+        o.maxTriangles = 2'000'000; // what a phone's browser still opens
         return o;
     }
 };

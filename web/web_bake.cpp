@@ -277,6 +277,13 @@ class Baker {
             l.levels[ri] = mesh::standardShapeNode(out_.scene, s);
             l.box = mesh::pointBounds(s.mesh.positions, l.box);
             out_.triangles += s.mesh.triangleCount();
+            if (out_.triangles > options_.maxTriangles && out_.error.empty()) {
+                out_.cancelled = true;
+                out_.error = "the page would hold more than " +
+                             std::to_string(options_.maxTriangles) +
+                             " triangles (every level of every frame): use fewer --frames or "
+                             "lower --resolutions";
+            }
         }
     }
 

@@ -24,6 +24,10 @@ struct BakeOptions {
     std::vector<double> resolutions{16, 32, 64}; // cells along a shape's longest side
     int frames = 24;                             // moments of a cycle that varies with time
     int threads = 0;                             // 0: one per core
+    // The most triangles the page may hold, all levels and frames together:
+    // past it the bake stops and says what to lower (a browser would not
+    // open the page anyway). About 60 bytes of X3D text each.
+    std::size_t maxTriangles = 20'000'000;
     // Called with the fraction done (0..1) as meshing goes.
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;
@@ -59,6 +63,7 @@ struct BakeResult {
     std::size_t animated = 0;  // of those, with frames
     std::size_t triangles = 0; // in every level and frame
     bool cancelled = false;
+    std::string error; // why nothing usable was baked (the triangle budget)
 };
 
 BakeResult bakeForWeb(const scene::Scene& source, const BakeOptions& options = {});

@@ -106,6 +106,10 @@ int exportWebCommand(const Args& args) {
     if (terminal) std::fprintf(stderr, "\n");
     for (const std::string& w : baked.warnings)
         std::cerr << "export-web: warning: " << w << "\n";
+    if (!baked.error.empty()) {
+        std::cerr << "functionlab export-web: " << file << ": " << baked.error << "\n";
+        return kExitDiagnostic;
+    }
 
     web::PageOptions page;
     page.xIteDir = *xIte;

@@ -300,3 +300,16 @@ TEST(WebPage, AHostileTitleIsShownNotObeyed) {
         EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
     std::filesystem::remove_all(dir);
 }
+
+TEST(WebBake, APageTooLargeToOpenIsRefusedWithWhatToLower) {
+    auto s = read("<FShape><FGeometry type='implicit' definition='(0.5 + 0.4*t)^2 - x^2 - y^2 - "
+                  "z^2' cycleInterval='2' domainMin='-1 -1 -1' domainMax='1 1 1'/></FShape>");
+    web::BakeOptions o = small();
+    o.frames = 200;
+    o.maxTriangles = 20'000;
+    const web::BakeResult b = web::bakeForWeb(*s, o);
+    EXPECT_TRUE(b.cancelled);
+    EXPECT_NE(b.error.find("--frames"), std::string::npos) << b.error;
+    // It stopped soon after the budget, not after 200 frames.
+    EXPECT_LT(b.triangles, 40'000u);
+}
