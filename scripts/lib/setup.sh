@@ -24,8 +24,12 @@ PACKAGES=(
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   bubblewrap
   libdraco-dev libmeshoptimizer-dev
-  nodejs npm
 )
+# Node and npm install X_ITE (install_web_viewer); a machine that has them
+# from elsewhere (NodeSource's nodejs carries its own npm, which Debian's npm
+# package conflicts with) keeps them: they are asked of the commands, not of
+# dpkg.
+COMMAND_PACKAGES=(node:nodejs npm:npm)
 # Only for scripts/fuzz (libFuzzer); skipped with a warning where the
 # distribution names them differently.
 OPTIONAL_PACKAGES=(clang libclang-rt-14-dev)
@@ -72,6 +76,9 @@ install_missing_packages() {
   local missing=() optional=() p
   mapfile -t missing < <(not_installed "${PACKAGES[@]}")
   mapfile -t optional < <(not_installed "${OPTIONAL_PACKAGES[@]}")
+  for p in "${COMMAND_PACKAGES[@]}"; do
+    command -v "${p%%:*}" >/dev/null 2>&1 || missing+=("${p#*:}")
+  done
   [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
   apt_update_once || exit 1
   for p in "${optional[@]}"; do
