@@ -34,6 +34,8 @@ const char* methodName(Method method) {
         return "pde mesh";
     case Method::PdeFit:
         return "pde fit";
+    case Method::Vtk:
+        return "vtk";
     }
     return "adaptive";
 }

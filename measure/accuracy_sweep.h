@@ -20,8 +20,9 @@ enum class Method : unsigned char {
     Polygons, // touch: contact with its triangles
     PdeMesh,  // a PDE model meshed at a resolution (the Accuracy panel's drawing curve)
     PdeFit,   // a PDE model fitted with a number of patches (Import Mesh as PDE)
+    Vtk,      // bench mesh --peer vtk: sampled into a grid, vtkFlyingEdges3D (a peer)
 };
-const char* methodName(Method method); // "adaptive", "dense", "function", "polygons", ...
+const char* methodName(Method method); // "adaptive", "dense", "function", "polygons", "vtk" ...
 
 struct AccuracyRow {
     Method method = Method::Adaptive;

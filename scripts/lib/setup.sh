@@ -101,7 +101,8 @@ install_missing_packages() {
 # view3dscene and assimp open our exports (tests/interop); chromium shows the
 # grading reports as a student's browser would (tests/cli, grade report).
 # GNU parallel grades a class in shards as a cluster would (tests/cli, grade merge).
-TEST_TOOL_PACKAGES=(view3dscene assimp-utils chromium parallel)
+# python3-vtk9 is bench mesh's peer, VTK's Flying Edges (tests/cli, bench mesh).
+TEST_TOOL_PACKAGES=(view3dscene assimp-utils chromium parallel python3-vtk9)
 
 install_test_tools() {
   command -v dpkg-query >/dev/null 2>&1 || { log "not Debian: interop tools not installed"; return 0; }

@@ -1,5 +1,6 @@
 // `functionlab bench accuracy`: what accuracy costs in time (bench/accuracy_sweep).
 #include "cli/arguments.h"
+#include "cli/bench_field.h"
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
 
@@ -16,34 +17,6 @@
 #include <sstream>
 
 namespace fl::cli {
-namespace {
-
-// The first implicit or explicit FShape's geometry of a scene.
-bool fieldFromScene(const std::string& file, field::ImplicitField& field, std::string& name) {
-    scene::ReadResult r = scene::readSceneFile(file);
-    for (const auto& d : r.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!r.ok()) return false;
-    bool found = false;
-    r.scene->forEachNode([&](const scene::Node& n) {
-        if (found || n.inProtoBody || n.kind() != scene::NodeKind::FGeometry ||
-            scene::stringField(n, "type") == "parametric")
-            return;
-        const formula::Tape* tape = r.scene->definition(n, "definition");
-        if (!tape) return;
-        field.tape = *tape;
-        field.box = mesh::domainOf(n);
-        name = file + ":" + std::to_string(n.where.line);
-        found = true;
-    });
-    if (!found)
-        std::cerr << "functionlab bench accuracy: " << file
-                  << " has no implicit or explicit FGeometry\n";
-    return found;
-}
-
-} // namespace
-
 const CommandSpec& benchAccuracySpec() {
     static const CommandSpec spec{
         .name = "bench accuracy",
@@ -134,7 +107,7 @@ int benchAccuracyCommand(const Args& args) {
         if (!tape) return kExitDiagnostic;
         field.tape = std::move(*tape);
         name = formula;
-    } else if (!fieldFromScene(file, field, name)) {
+    } else if (!benchFieldFromScene("bench accuracy", file, field, name)) {
         return kExitDiagnostic;
     }
     std::vector<std::string> skipped;

@@ -119,6 +119,7 @@ const std::vector<Command>& commands() {
         {renderSpec, renderCommand},
         {benchEvalSpec, benchEvalCommand},
         {benchAccuracySpec, benchAccuracyCommand},
+        {benchMeshSpec, benchMeshCommand},
         {benchGradingSpec, benchGradingCommand},
         {benchHapticsSpec, benchHapticsCommand},
         {gradeCheckSpec, gradeCheckCommand},

@@ -1,0 +1,184 @@
+#include "cli/vtk_peer.h"
+
+#include "mesh/mesh_error.h"
+#include "parallel/work_pool.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <regex>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace fl::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string shellQuoted(const std::string& s) {
+    std::string out = "'";
+    for (const char c : s)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string python() {
+    if (const char* p = std::getenv("FUNCTIONLAB_PYTHON"); p && *p) return p;
+    // Debian's interpreter: python3-vtk9 is installed for it (a python3 of
+    // pyenv or a virtual environment first on PATH would not see it).
+    std::error_code ec;
+    return fs::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
+}
+
+// The value of "key": NUMBER in one line of JSON.
+std::optional<double> jsonNumber(const std::string& line, const std::string& key) {
+    const std::regex re("\"" + key + "\":\\s*([-+0-9.eE]+)");
+    std::smatch m;
+    if (!std::regex_search(line, m, re)) return std::nullopt;
+    return std::strtod(m[1].str().c_str(), nullptr);
+}
+
+// The peer's triangles, as VTK writes binary STL (each with its own three
+// corners: the error measure does not need them welded).
+std::optional<mesh::Mesh> readBinaryStl(const fs::path& path, std::string& problem) {
+    std::ifstream in(path, std::ios::binary);
+    char header[80];
+    std::uint32_t count = 0;
+    if (!in.read(header, sizeof header) ||
+        !in.read(reinterpret_cast<char*>(&count), sizeof count)) {
+        problem = path.string() + " is not binary STL";
+        return std::nullopt;
+    }
+    std::error_code ec;
+    if (fs::file_size(path, ec) != 84 + std::uintmax_t(count) * 50) {
+        problem = path.string() + " does not hold the " + std::to_string(count) +
+                  " triangles it announces";
+        return std::nullopt;
+    }
+    mesh::Mesh m;
+    m.positions.reserve(std::size_t(count) * 3);
+    m.triangles.reserve(count);
+    char record[50];
+    for (std::uint32_t t = 0; t < count && in.read(record, sizeof record); ++t) {
+        for (int v = 0; v < 3; ++v) {
+            mesh::Vec3f p;
+            std::memcpy(p.data(), record + 12 + 12 * v, 12);
+            m.positions.push_back(p);
+        }
+        m.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+    }
+    return m;
+}
+
+} // namespace
+
+std::optional<VtkPeerRow> runVtkPeer(const field::ImplicitField& field, double resolution,
+                                     int threads, std::string& why) {
+    if (threads <= 0) threads = std::max(1, int(std::thread::hardware_concurrency()));
+    // Dense marching cubes' grid: cells of the same size along every axis.
+    const double longest = std::max({field.box.size(0), field.box.size(1), field.box.size(2)});
+    int n[3];
+    double h[3];
+    for (int a = 0; a < 3; ++a) {
+        n[a] = std::max(1, int(std::lround(resolution * field.box.size(a) / longest)));
+        h[a] = field.box.size(a) / n[a];
+    }
+    const std::size_t row = std::size_t(n[0] + 1), plane = row * std::size_t(n[1] + 1);
+    const std::size_t points = plane * std::size_t(n[2] + 1);
+    std::vector<float> grid(points);
+    double samplingMs = 1e300;
+    for (int repeat = 0; repeat < 3; ++repeat) {
+        std::atomic<int> next{0};
+        const auto started = std::chrono::steady_clock::now();
+        const std::function<void(int)> sample = [&](int) {
+            field::FieldSampler sampler(field);
+            std::vector<double> xs(plane), ys(plane), zs(plane), out(plane);
+            for (std::size_t j = 0; j <= std::size_t(n[1]); ++j)
+                for (std::size_t i = 0; i <= std::size_t(n[0]); ++i) {
+                    xs[j * row + i] = field.box.lo[0] + double(i) * h[0];
+                    ys[j * row + i] = field.box.lo[1] + double(j) * h[1];
+                }
+            for (int k = next++; k <= n[2]; k = next++) {
+                std::fill(zs.begin(), zs.end(), field.box.lo[2] + k * h[2]);
+                sampler.values(xs.data(), ys.data(), zs.data(), plane, out.data());
+                float* to = grid.data() + std::size_t(k) * plane;
+                for (std::size_t p = 0; p < plane; ++p)
+                    to[p] = float(out[p]);
+            }
+        };
+        parallel::WorkPool::shared().run(threads, sample);
+        samplingMs = std::min(samplingMs, std::chrono::duration<double, std::milli>(
+                                              std::chrono::steady_clock::now() - started)
+                                              .count());
+    }
+
+    std::error_code ec;
+    const fs::path dir =
+        fs::temp_directory_path(ec) / ("functionlab-vtk-" + std::to_string(::getpid()));
+    fs::create_directories(dir, ec);
+    const fs::path rawPath = dir / "grid.raw", stlPath = dir / "mesh.stl";
+    {
+        std::ofstream raw(rawPath, std::ios::binary);
+        raw.write(reinterpret_cast<const char*>(grid.data()),
+                  std::streamsize(grid.size() * sizeof(float)));
+        if (!raw) {
+            why = "cannot write the grid to " + rawPath.string();
+            fs::remove_all(dir, ec);
+            return std::nullopt;
+        }
+    }
+    char numbers[512];
+    std::snprintf(numbers, sizeof numbers, "%d %d %d %.17g %.17g %.17g %.17g %.17g %.17g %d 3",
+                  n[0] + 1, n[1] + 1, n[2] + 1, field.box.lo[0], field.box.lo[1], field.box.lo[2],
+                  h[0], h[1], h[2], threads);
+    const std::string command = shellQuoted(python()) + " " +
+                                shellQuoted(FUNCTIONLAB_VTK_PEER_SCRIPT) + " " +
+                                shellQuoted(rawPath.string()) + " " + numbers + " " +
+                                shellQuoted(stlPath.string()) + " 2>&1";
+    std::string output;
+    if (FILE* p = ::popen(command.c_str(), "r")) {
+        char buf[4096];
+        while (std::fgets(buf, sizeof buf, p))
+            output += buf;
+        const int status = ::pclose(p);
+        if (status != 0) output += "\n(exit status " + std::to_string(status) + ")";
+    }
+    const auto ms = jsonNumber(output, "ms");
+    std::string problem;
+    const auto read = ms ? readBinaryStl(stlPath, problem) : std::nullopt;
+    fs::remove_all(dir, ec);
+    if (!ms) {
+        why = "the VTK peer needs Debian's python3-vtk9 (apt-get install python3-vtk9): " +
+              (output.size() > 400 ? output.substr(output.size() - 400) : output);
+        return std::nullopt;
+    }
+    if (!read) {
+        why = "the VTK peer's triangles cannot be read back: " + problem;
+        return std::nullopt;
+    }
+    VtkPeerRow r;
+    r.samplingMs = samplingMs;
+    r.contourMs = *ms;
+    std::smatch m;
+    if (std::regex_search(output, m, std::regex("\"backend\":\\s*\"([A-Za-z]+)\"")))
+        r.backend = m[1].str();
+    r.row.method = measure::Method::Vtk;
+    r.row.resolution = resolution;
+    r.row.triangles = read->triangleCount();
+    r.row.evaluations = points;
+    r.row.milliseconds = samplingMs + *ms;
+    const mesh::SurfaceError e = mesh::measureSurfaceError(field, *read);
+    r.row.maxError = e.max;
+    r.row.meanError = e.mean;
+    return r;
+}
+
+} // namespace fl::cli

@@ -1,0 +1,71 @@
+# `functionlab bench mesh --peer vtk`: the meshers and VTK's Flying Edges on
+# one shape, every row measured by the same code (this checks the output and
+# the peer's agreement with dense marching cubes, it times nothing). The peer
+# is Debian's python3-vtk9 (scripts/test installs it); without it the test
+# says so, and fails where FUNCTIONLAB_REQUIRE_TOOLS is set.
+# Invoked by CTest: cmake -DFUNCTIONLAB=path -P cli_bench_mesh_test.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
+
+run(2 bench mesh --formula "1 - x*x - y*y - z*z" --box -1.2,-1.2,-1.2,1.2,1.2,1.2 --peer libfive)
+expect_match("${ERR}" "the only peer here is vtk")
+run(2 bench mesh --resolutions 16)
+expect_match("${ERR}" "give a scene FILE or --formula")
+
+execute_process(COMMAND /usr/bin/python3 -c "import vtkmodules.vtkFiltersCore"
+                RESULT_VARIABLE have_vtk OUTPUT_QUIET ERROR_QUIET)
+if(NOT have_vtk EQUAL 0)
+  missing_tool("python3-vtk9 is not installed: bench mesh's VTK peer is not run (apt-get install python3-vtk9)")
+  return()
+endif()
+run(0 bench mesh --formula "0.8^2 - x*x - y*y - z*z" --box -1,-1,-1,1,1,1
+    --resolutions 16,24 --threads 1 --json)
+string(JSON n LENGTH "${OUT}")
+# adaptive and dense at 16 and 24, vtk at 16, 24 and 48
+if(NOT n EQUAL 7)
+  message(FATAL_ERROR "expected 7 rows, got ${n}: ${OUT}")
+endif()
+set(dense_error "")
+set(vtk_error "")
+math(EXPR last "${n} - 1")
+foreach(i RANGE ${last})
+  string(JSON method GET "${OUT}" ${i} method)
+  string(JSON resolution GET "${OUT}" ${i} resolution)
+  string(JSON triangles GET "${OUT}" ${i} triangles)
+  string(JSON error GET "${OUT}" ${i} max_error)
+  if(triangles LESS 100)
+    message(FATAL_ERROR "${method} at ${resolution}: only ${triangles} triangles")
+  endif()
+  if(method STREQUAL "dense" AND resolution EQUAL 24)
+    set(dense_error ${error})
+  elseif(method STREQUAL "vtk" AND resolution EQUAL 24)
+    set(vtk_error ${error})
+  endif()
+endforeach()
+# The same grid contoured by two marching-cubes meshers: the same error
+# (within float32 samples), which also shows the grid reached VTK the right
+# way round.
+if(dense_error STREQUAL "" OR vtk_error STREQUAL "")
+  message(FATAL_ERROR "no dense or vtk row at 24: ${OUT}")
+endif()
+execute_process(COMMAND /usr/bin/python3 -c
+                "import sys; d,v=float(sys.argv[1]),float(sys.argv[2]); sys.exit(0 if abs(d-v) <= 0.05*d else 1)"
+                ${dense_error} ${vtk_error} RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "dense max error ${dense_error}, vtk ${vtk_error}: not the same grid")
+endif()
+# An asymmetric shape (a bitten sphere): a grid read the wrong way round by
+# VTK would show here, where a sphere hides it.
+run(0 bench mesh --formula "(1 - x^2 - y^2 - z^2) & (-((z - x) & y & z))"
+    --box -1.1,-1.1,-1.1,1.1,1.1,1.1 --resolutions 24 --threads 1)
+expect_match("${OUT}" "vtk +24 ")
+string(REGEX MATCH "dense +24 +[0-9]+ +[0-9]+ +[0-9.]+ +([0-9.e+-]+)" _ "${OUT}")
+set(d ${CMAKE_MATCH_1})
+string(REGEX MATCH "vtk +24 +[0-9]+ +[0-9]+ +[0-9.]+ +([0-9.e+-]+)" _ "${OUT}")
+set(v ${CMAKE_MATCH_1})
+execute_process(COMMAND /usr/bin/python3 -c
+                "import sys; d,v=float(sys.argv[1]),float(sys.argv[2]); sys.exit(0 if abs(d-v) <= 0.05*d else 1)"
+                ${d} ${v} RESULT_VARIABLE same)
+if(NOT same EQUAL 0)
+  message(FATAL_ERROR "bitten sphere: dense max error ${d}, vtk ${v}\n${OUT}")
+endif()
+expect_match("${OUT}" "as fast|reaches no such error")
