@@ -84,32 +84,17 @@ int benchAccuracyCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(benchAccuracySpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    auto usage = [](const std::string& problem) {
-        return usageError(benchAccuracySpec(), problem, std::cerr);
-    };
-    const std::string file = a->positional("FILE"), formula = a->text("formula"),
-                      plot = a->text("plot");
+    std::string name;
+    const auto shape = benchFieldFromArgs(benchAccuracySpec(), *a, name, exit);
+    if (!shape) return exit;
+    const field::ImplicitField& field = *shape;
+    const std::string plot = a->text("plot");
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{});
     const bool json = a->flag("json");
     measure::SweepOptions sweep;
     sweep.threads = int(a->integer("threads", 0));
     sweep.memoryBudgetBytes = std::size_t(a->integer("memory", 2048)) * 1024 * 1024;
-    if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
-    field::ImplicitField field;
-    std::string name;
-    if (!formula.empty()) {
-        const auto b = a->numbers("box");
-        if (!b) return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
-        field.box = {{(*b)[0], (*b)[1], (*b)[2]}, {(*b)[3], (*b)[4], (*b)[5]}};
-        if (!field.box.valid()) return usage("the box needs max above min on every axis");
-        auto tape = compileFormulaArgument(formula, formula::DefinitionKind::Implicit);
-        if (!tape) return kExitDiagnostic;
-        field.tape = std::move(*tape);
-        name = formula;
-    } else if (!benchFieldFromScene("bench accuracy", file, field, name)) {
-        return kExitDiagnostic;
-    }
     std::vector<std::string> skipped;
     const std::vector<measure::AccuracyRow> rows =
         measure::runAccuracySweep(field, resolutions, sweep, &skipped);

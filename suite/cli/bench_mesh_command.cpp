@@ -86,22 +86,10 @@ int benchMeshCommand(const Args& args) {
     if (a->text("peer", "vtk") != "vtk")
         return usage("the only peer here is vtk (libfive would need building from source, "
                      "which this project's machines cannot fetch)");
-    const std::string file = a->positional("FILE"), formula = a->text("formula");
-    if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
-    field::ImplicitField field;
     std::string name;
-    if (!formula.empty()) {
-        const auto b = a->numbers("box");
-        if (!b) return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
-        field.box = {{(*b)[0], (*b)[1], (*b)[2]}, {(*b)[3], (*b)[4], (*b)[5]}};
-        if (!field.box.valid()) return usage("the box needs max above min on every axis");
-        auto tape = compileFormulaArgument(formula, formula::DefinitionKind::Implicit);
-        if (!tape) return kExitDiagnostic;
-        field.tape = std::move(*tape);
-        name = formula;
-    } else if (!benchFieldFromScene("bench mesh", file, field, name)) {
-        return kExitDiagnostic;
-    }
+    const auto shape = benchFieldFromArgs(benchMeshSpec(), *a, name, exit);
+    if (!shape) return exit;
+    const field::ImplicitField& field = *shape;
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{64, 128, 256});
     measure::SweepOptions sweep;
