@@ -120,10 +120,11 @@ QJsonObject shoot(const QString& url, const QStringList& files, std::string& fai
     return report;
 }
 
-// The example, in a copy of the examples' folder (its files beside it),
-// with a light from above added at the end of the scene.
+// The example, in a copy of the examples' folder of its own (its files
+// beside it; tests run in parallel), with a light from above added at the
+// end of the scene.
 QString litCopy(const std::string& example) {
-    const QString folder = kOutDir + "/examples";
+    const QString folder = kOutDir + "/examples-" + QString::fromStdString(testName(example));
     QDir().mkpath(folder);
     for (const QString& f : QDir(kExamples).entryList(QDir::Files)) {
         QFile::remove(folder + "/" + f);
