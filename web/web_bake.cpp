@@ -189,6 +189,13 @@ class Baker {
             if (t.base != animation::TimeBase::Scene) base = t.base;
         }
         if (!longest) return -1;
+        // A cycle no page can play (a student's cycleInterval of 1e300):
+        // the shape is shown as it is at moment 0, and said.
+        if (!(longest->window.cycleSeconds > 1e-3 && longest->window.cycleSeconds <= 1e7)) {
+            warnOnce("a cycleInterval of " + std::to_string(longest->window.cycleSeconds) +
+                     " s cannot be played as frames: shown as at moment 0");
+            return -1;
+        }
         BakedClock clock;
         clock.cycleSeconds = longest->window.cycleSeconds;
         clock.loop = loop;

@@ -313,3 +313,12 @@ TEST(WebBake, APageTooLargeToOpenIsRefusedWithWhatToLower) {
     // It stopped soon after the budget, not after 200 frames.
     EXPECT_LT(b.triangles, 40'000u);
 }
+
+TEST(WebBake, ACycleNoPageCanPlayIsShownStillAndSaid) {
+    auto s = read("<FShape><FGeometry type='implicit' definition='(0.5 + 0.4*t)^2 - x^2 - y^2 - "
+                  "z^2' cycleInterval='1e300' domainMin='-1 -1 -1' domainMax='1 1 1'/></FShape>");
+    const web::BakeResult b = web::bakeForWeb(*s, small());
+    EXPECT_EQ(b.animated, 0u);
+    EXPECT_EQ(b.roots, 1u);
+    EXPECT_TRUE(mentions(b.warnings, "cannot be played as frames"));
+}
