@@ -120,6 +120,7 @@ const std::vector<Command>& commands() {
         {benchEvalSpec, benchEvalCommand},
         {benchAccuracySpec, benchAccuracyCommand},
         {benchMeshSpec, benchMeshCommand},
+        {benchRemeshSpec, benchRemeshCommand},
         {benchGradingSpec, benchGradingCommand},
         {benchHapticsSpec, benchHapticsCommand},
         {gradeCheckSpec, gradeCheckCommand},

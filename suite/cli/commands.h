@@ -19,6 +19,7 @@ const CommandSpec& convertSpec();
 const CommandSpec& meshSpec();
 const CommandSpec& exportWebSpec();
 const CommandSpec& benchMeshSpec();
+const CommandSpec& benchRemeshSpec();
 const CommandSpec& renderSpec();
 using measure::benchEvalSpec; // measure/bench_eval_spec.h: functionlab-bench reads it too
 const CommandSpec& benchAccuracySpec();
@@ -48,6 +49,7 @@ int convertCommand(const Args& args);
 int meshCommand(const Args& args);
 int exportWebCommand(const Args& args);
 int benchMeshCommand(const Args& args);
+int benchRemeshCommand(const Args& args);
 int renderCommand(const Args& args);
 int benchEvalCommand(const Args& args);      // runs the sibling functionlab-bench
 int benchAccuracyCommand(const Args& args);  // `bench accuracy`

@@ -1,4 +1,5 @@
-# `functionlab bench mesh --peer vtk`: the meshers and VTK's Flying Edges on
+# `functionlab bench remesh` (its output's shape), and `functionlab bench mesh
+# --peer vtk`: the meshers and VTK's Flying Edges on
 # one shape, every row measured by the same code (this checks the output and
 # the peer's agreement with dense marching cubes, it times nothing). The peer
 # is Debian's python3-vtk9 (scripts/test installs it); without it the test
@@ -10,6 +11,24 @@ run(2 bench mesh --formula "1 - x*x - y*y - z*z" --box -1.2,-1.2,-1.2,1.2,1.2,1.
 expect_match("${ERR}" "the only peer here is vtk")
 run(2 bench mesh --resolutions 16)
 expect_match("${ERR}" "give a scene FILE or --formula")
+
+# bench remesh: the time from an edit to its mesh, as p50/p95 (the shape of
+# its JSON; it times nothing here).
+run(0 bench remesh --formula "0.8^2 - x*x - y*y - z*z" --box -1,-1,-1,1,1,1 --resolution 16
+    --edits 4 --threads 1 --json)
+foreach(part compile_ms mesh_ms total_ms)
+  foreach(q p50 p95)
+    string(JSON v GET "${OUT}" ${part} ${q})
+  endforeach()
+endforeach()
+string(JSON edits GET "${OUT}" edits)
+if(NOT edits EQUAL 4)
+  message(FATAL_ERROR "bench remesh: ${OUT}")
+endif()
+run(2 bench remesh --formula "x" --resolution 16)
+expect_match("${ERR}" "--formula needs --box")
+run(1 bench remesh --formula "sine(x)" --box -1,-1,-1,1,1,1 --edits 2)
+expect_match("${ERR}" "did you mean")
 
 execute_process(COMMAND /usr/bin/python3 -c "import vtkmodules.vtkFiltersCore"
                 RESULT_VARIABLE have_vtk OUTPUT_QUIET ERROR_QUIET)
