@@ -12,6 +12,8 @@
 #include "scene/field_access.h"
 #include "scene/scene_reader.h"
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -20,6 +22,12 @@ namespace fl::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The most memory the process has held (resident), in MiB.
+double peakMiB() {
+    rusage usage{};
+    return ::getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) / 1024.0 : 0.0;
+}
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -60,7 +68,8 @@ const CommandSpec& benchRemeshSpec() {
             "to it (so every edit is new to the compiler and to the machine-code cache, as\n"
             "a student's is), and after each compiles it and meshes it with the adaptive\n"
             "mesher at the resolution: the time from an edit to its mesh. Prints the first\n"
-            "(cold) edit and the p50 and p95 of the others, for compiling, meshing and both.\n"
+            "(cold) edit and the p50 and p95 of the others, for compiling, meshing and both,\n"
+            "and the most memory the process held (its peak resident size).\n"
             "A scene's formula is compiled as --formula would be: its set-operation mode\n"
             "and slider values are not applied (the watermelon has neither). A formula that\n"
             "is a script (with ';') is edited by compiling it again unchanged.\n",
@@ -100,7 +109,8 @@ const CommandSpec& benchRemeshSpec() {
                      .max = 256},
                     {.name = "json",
                      .help = "print {\"edits\", \"resolution\", \"cold_ms\", \"compile_ms\": "
-                             "{\"p50\", \"p95\"}, \"mesh_ms\": {...}, \"total_ms\": {...}}"}},
+                             "{\"p50\", \"p95\"}, \"mesh_ms\": {...}, \"total_ms\": {...}, "
+                             "\"peak_mib\"}"}},
         .exitStatus = "0 measured, 1 the input has errors, 2 usage error",
     };
     return spec;
@@ -172,14 +182,16 @@ int benchRemeshCommand(const Args& args) {
         std::printf("{\"edits\": %zu, \"resolution\": %g, \"cold_ms\": %.3f, "
                     "\"compile_ms\": {\"p50\": %.3f, \"p95\": %.3f}, "
                     "\"mesh_ms\": {\"p50\": %.3f, \"p95\": %.3f}, "
-                    "\"total_ms\": {\"p50\": %.3f, \"p95\": %.3f}}\n",
-                    edits, options.resolution, coldMs, c.p50, c.p95, m.p50, m.p95, t.p50, t.p95);
+                    "\"total_ms\": {\"p50\": %.3f, \"p95\": %.3f}, \"peak_mib\": %.1f}\n",
+                    edits, options.resolution, coldMs, c.p50, c.p95, m.p50, m.p95, t.p50, t.p95,
+                    peakMiB());
         return kExitOk;
     }
     std::printf("%zu edits at resolution %g%s: the first %.1f ms; the others p50 %.1f ms, p95 "
                 "%.1f ms (compiling p50 %.2f ms, p95 %.2f ms; meshing p50 %.1f ms, p95 %.1f ms)\n",
                 edits, options.resolution, script ? " (a script: compiled unchanged)" : "", coldMs,
                 t.p50, t.p95, c.p50, c.p95, m.p50, m.p95);
+    std::printf("peak memory of the process: %.0f MiB\n", peakMiB());
     return kExitOk;
 }
 
