@@ -21,7 +21,8 @@ constexpr std::size_t kMaxHeldFrames = 256;
 ClassroomServer::ClassroomServer(ClassSession& session, ServerOptions options, QObject* parent)
     : QObject(parent), session_(session), options_(options),
       server_(new QWebSocketServer(QStringLiteral("functionlab-classroom"),
-                                   QWebSocketServer::NonSecureMode, this)) {
+                                   QWebSocketServer::NonSecureMode, this)),
+      webRequests_(options.webBurst, options.webPerSecond) {
     server_->setMaxPendingConnections(256);
     connect(server_, &QWebSocketServer::newConnection, this, &ClassroomServer::accept);
     tcp_ = new QTcpServer(this);
@@ -184,6 +185,7 @@ void ClassroomServer::headArrived(QTcpSocket* socket) {
     const HeadStatus status =
         findHeadEnd(std::string_view(bytes.constData(), std::size_t(bytes.size())), length);
     if (status == HeadStatus::Incomplete) return;
+    const std::string unreadAddress = unread_.count(socket) ? unread_[socket] : std::string();
     std::string why = "the request head is longer than 8 KiB";
     std::optional<HttpRequest> request;
     if (status == HeadStatus::Complete)
@@ -203,6 +205,11 @@ void ClassroomServer::headArrived(QTcpSocket* socket) {
         return;
     }
     socket->read(qint64(length));
+    if (!webRequests_.take(unreadAddress, webClock_.now())) {
+        reply(socket, "429 Too Many Requests",
+              "Too many requests from this address: wait a few seconds.\n");
+        return;
+    }
     if (live_) {
         live_->serve(socket, *request);
         return;

@@ -14,6 +14,7 @@
 // more observer of it.
 #include "class_session.h"
 #include "live_page.h"
+#include "rate_limit.h"
 
 #include <QHostAddress>
 #include <QObject>
@@ -42,6 +43,10 @@ struct ServerOptions {
     int headMillis = 5000;                  // to send a request head, or be closed
     std::size_t maxUnreadConnections = 256; // connections whose head is not read yet
     std::size_t maxUnreadPerAddress = 16;
+    // Page requests per address: a burst, then so many a second (a page
+    // loads about a dozen files; a projector reloads now and then).
+    double webBurst = 120;
+    double webPerSecond = 20;
 };
 
 class ClassroomServer : public QObject {
@@ -84,6 +89,8 @@ class ClassroomServer : public QObject {
     LivePage* live_ = nullptr;
     std::optional<ConnectionId> webObserver_;
     std::map<QTcpSocket*, std::string> unread_; // connections whose head is not read yet
+    AddressBuckets webRequests_;                // page requests per address
+    SteadyClock webClock_;
     QTimer tick_;
     std::map<ConnectionId, Peer> sockets_;
     QThreadPool checks_; // last: destroyed (waiting for its workers) first

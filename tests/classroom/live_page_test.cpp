@@ -232,5 +232,25 @@ TEST_F(LivePageTest, StrangersWhoNeverFinishTheirHeadsCannotHoardThePort) {
     EXPECT_EQ(get(port(), "GET / HTTP/1.1\r\n\r\n").status, 200);
 }
 
+TEST_F(LivePageTest, OneAddressAskingTooOftenIsToldToWait) {
+    ServerOptions o = withWeb();
+    o.webBurst = 5;
+    o.webPerSecond = 0.5;
+    start(o);
+    int refused = 0;
+    for (int i = 0; i < 8; ++i)
+        refused += get(port(), "GET /live.js HTTP/1.1\r\n\r\n").status == 429;
+    EXPECT_GE(refused, 2);
+    // The class itself is not rate-limited by the page's buckets.
+    ClassroomClient ana;
+    ClassroomClient::JoinOptions j;
+    j.url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(port()));
+    j.classCode = "C1";
+    j.name = "Ana";
+    ana.join(j);
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return ana.state() == ClassroomClient::State::Joined; }, kWaitMs));
+}
+
 } // namespace
 } // namespace fl::classroom
