@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -121,9 +122,43 @@ std::string base64(std::string_view bytes) {
     return out;
 }
 
+// The page's copy of the scene with each image it names carried inside it
+// as a data: url: a page opened from a file may not fetch files/..., but
+// may read data: urls. scene.x3d keeps the files' names for other
+// browsers. Images only, each up to 8 MiB, 32 MiB in all; a name the
+// writer had to escape is left as it is (it still loads over HTTP).
+std::string imagesInside(std::string x3d, const BakeResult& baked) {
+    constexpr std::uintmax_t kMaxImage = 8u << 20, kMaxImages = 32u << 20;
+    std::uintmax_t total = 0;
+    for (const BakedFile& f : baked.files) {
+        std::string ext = fs::path(f.target).extension().string();
+        for (char& c : ext)
+            c = char(std::tolower(static_cast<unsigned char>(c)));
+        const char* type = ext == ".png"                     ? "image/png"
+                           : ext == ".jpg" || ext == ".jpeg" ? "image/jpeg"
+                           : ext == ".gif"                   ? "image/gif"
+                           : ext == ".webp"                  ? "image/webp"
+                                                             : nullptr;
+        std::error_code ec;
+        const std::uintmax_t size = fs::file_size(f.source, ec);
+        if (!type || ec || size > kMaxImage || total + size > kMaxImages) continue;
+        std::string bytes, ignored;
+        if (!readFile(f.source, bytes, ignored)) continue;
+        total += size;
+        const std::string from = "&quot;" + f.target + "&quot;";
+        const std::string to =
+            "&quot;data:" + std::string(type) + ";base64," + base64(bytes) + "&quot;";
+        for (std::size_t at = x3d.find(from); at != std::string::npos;
+             at = x3d.find(from, at + to.size()))
+            x3d.replace(at, from.size(), to);
+    }
+    return x3d;
+}
+
 std::string sceneScript(const BakeResult& baked, const std::string& x3d,
                         const std::vector<std::string>& components) {
-    std::string s = "// Written by functionlab export-web: the scene of scene.x3d, gzipped, for\n"
+    std::string s = "// Written by functionlab export-web: the scene of scene.x3d (its images\n"
+                    "// inside), gzipped, for\n"
                     "// a page opened from a file, which may not fetch it.\n"
                     "window.FunctionLabScene = {\n  clocks: [";
     for (std::size_t i = 0; i < baked.clocks.size(); ++i) {
@@ -203,6 +238,10 @@ std::string javaScriptString(std::string_view text) {
             out += c;
     }
     return out;
+}
+
+std::string withImagesInside(std::string x3d, const BakeResult& baked) {
+    return imagesInside(std::move(x3d), baked);
 }
 
 std::string htmlText(std::string_view text) {
@@ -300,7 +339,7 @@ bool writeWebFolder(const BakeResult& baked, const scene::Scene& source, const f
     }
     return out.write("viewer/functionlab-page.js", kPageScript, error) &&
            out.write("viewer/page.css", kPageStyle, error) && out.write("scene.x3d", x3d, error) &&
-           out.write("scene.js", sceneScript(baked, x3d, components), error) &&
+           out.write("scene.js", sceneScript(baked, imagesInside(x3d, baked), components), error) &&
            out.write("index.html", indexHtml(source, sourceLink, components, options), error);
 }
 

@@ -37,6 +37,11 @@ bool writeWebFolder(const BakeResult& baked, const scene::Scene& source,
                     const std::filesystem::path& dir, const PageOptions& options,
                     PageResult& result, std::string& error);
 
+// The baked scene's X3D text with each image it names (files/...) carried
+// inside as a data: url, as the page's own copy has it (scene.js): a page
+// opened from a file may not fetch, but may read data: urls.
+std::string withImagesInside(std::string x3d, const BakeResult& baked);
+
 // Text as a JavaScript string literal that is safe anywhere in a page:
 // quotes, backslashes, line ends, control characters and '<' escaped.
 std::string javaScriptString(std::string_view text);

@@ -322,3 +322,31 @@ TEST(WebBake, ACycleNoPageCanPlayIsShownStillAndSaid) {
     EXPECT_EQ(b.roots, 1u);
     EXPECT_TRUE(mentions(b.warnings, "cannot be played as frames"));
 }
+
+TEST(WebPage, ImagesTravelInsideThePagesCopyOfTheScene) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("functionlab-web-images-" +
+                      std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+    std::filesystem::create_directories(dir / "pictures");
+    {
+        std::ofstream png(dir / "pictures" / "wood.png", std::ios::binary);
+        png << "\x89PNG\r\n\x1a\n not really an image";
+    }
+    {
+        std::ofstream scene(dir / "scene.x3d");
+        scene << "<?xml version='1.0' encoding='UTF-8'?>\n<X3D profile='Immersive' "
+                 "version='3.3'><Scene><Shape><Appearance><ImageTexture "
+                 "url='\"pictures/wood.png\"'/></Appearance><Box/></Shape></Scene></X3D>\n";
+    }
+    auto r = scene::readSceneFile(dir / "scene.x3d");
+    ASSERT_TRUE(r.ok());
+    const web::BakeResult b = web::bakeForWeb(*r.scene, small());
+    ASSERT_EQ(b.files.size(), 1u);
+    EXPECT_EQ(b.files[0].target, "files/pictures/wood.png");
+    const std::string x3d = scene::writeScene(b.scene, scene::Encoding::Xml);
+    EXPECT_NE(x3d.find("files/pictures/wood.png"), std::string::npos);
+    const std::string inside = web::withImagesInside(x3d, b);
+    EXPECT_EQ(inside.find("files/pictures/wood.png"), std::string::npos);
+    EXPECT_NE(inside.find("data:image/png;base64,iVBORw0K"), std::string::npos);
+    std::filesystem::remove_all(dir);
+}
