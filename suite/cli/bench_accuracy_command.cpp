@@ -6,9 +6,6 @@
 
 #include "formula/compiler.h"
 #include "measure/accuracy_sweep.h"
-#include "mesh/scene_meshing.h"
-#include "scene/field_access.h"
-#include "scene/scene_reader.h"
 
 #include <cmath>
 #include <fstream>
@@ -32,48 +29,37 @@ const CommandSpec& benchAccuracySpec() {
             "(|f|/|grad f| sampled on triangle interiors). Dense marching cubes at 2048\n"
             "takes about a minute and 2-3 GB for a sphere; the adaptive mesher keeps to\n"
             "its memory budget and says when a resolution would exceed it.\n",
-        .positionals = {{.name = "FILE",
-                         .help = "a scene: its first implicit or explicit FShape (or give "
-                                 "--formula and --box)",
-                         .required = false}},
-        .options = {{.name = "formula",
-                     .kind = OptionKind::Text,
-                     .valueName = "SRC",
-                     .help = "sweep this formula (f >= 0 inside) instead of a scene's shape"},
-                    {.name = "box",
-                     .kind = OptionKind::NumberList,
-                     .valueName = "X0,Y0,Z0,X1,Y1,Z1",
-                     .help = "the formula's box, max above min on every axis",
-                     .count = 6},
-                    {.name = "json",
-                     .help = "print a list of {\"method\", \"resolution\", \"triangles\", "
-                             "\"evaluations\", \"ms\", \"max_error\", \"mean_error\"}"},
-                    {.name = "plot",
-                     .kind = OptionKind::Path,
-                     .valueName = "OUT.svg",
-                     .help = "draw error against time (log-log) for both methods as SVG"},
-                    {.name = "resolutions",
-                     .kind = OptionKind::NumberList,
-                     .valueName = "N,N,...",
-                     .help = "the resolutions to sweep, each 1 to 2048",
-                     .defaultValue = "16,32,64,128,256",
-                     .min = 1,
-                     .max = 2048},
-                    {.name = "threads",
-                     .kind = OptionKind::Integer,
-                     .valueName = "N",
-                     .help = "both methods' threads (0: one per core)",
-                     .defaultValue = "0",
-                     .min = 0,
-                     .max = 1024},
-                    {.name = "memory",
-                     .kind = OptionKind::Integer,
-                     .valueName = "MIB",
-                     .help = "the adaptive mesher's memory budget in MiB (a resolution over it "
-                             "is left out with a note on stderr)",
-                     .defaultValue = "2048",
-                     .min = 1,
-                     .max = double(1 << 30)}},
+        .positionals = {benchShapePositional()},
+        .options = benchShapeOptions(
+            {{.name = "json",
+              .help = "print a list of {\"method\", \"resolution\", \"triangles\", "
+                      "\"evaluations\", \"ms\", \"max_error\", \"mean_error\"}"},
+             {.name = "plot",
+              .kind = OptionKind::Path,
+              .valueName = "OUT.svg",
+              .help = "draw error against time (log-log) for both methods as SVG"},
+             {.name = "resolutions",
+              .kind = OptionKind::NumberList,
+              .valueName = "N,N,...",
+              .help = "the resolutions to sweep, each 1 to 2048",
+              .defaultValue = "16,32,64,128,256",
+              .min = 1,
+              .max = 2048},
+             {.name = "threads",
+              .kind = OptionKind::Integer,
+              .valueName = "N",
+              .help = "both methods' threads (0: one per core)",
+              .defaultValue = "0",
+              .min = 0,
+              .max = 1024},
+             {.name = "memory",
+              .kind = OptionKind::Integer,
+              .valueName = "MIB",
+              .help = "the adaptive mesher's memory budget in MiB (a resolution over it "
+                      "is left out with a note on stderr)",
+              .defaultValue = "2048",
+              .min = 1,
+              .max = double(1 << 30)}}),
         .exitStatus = "0 measured, 1 the input has errors or the plot could not be written, 2 "
                       "usage error",
     };
@@ -84,10 +70,10 @@ int benchAccuracyCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(benchAccuracySpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    std::string name;
-    const auto shape = benchFieldFromArgs(benchAccuracySpec(), *a, name, exit);
+    const auto shape = benchShapeFromArgs(benchAccuracySpec(), *a, exit);
     if (!shape) return exit;
-    const field::ImplicitField& field = *shape;
+    const field::ImplicitField& field = shape->field;
+    const std::string& name = shape->name;
     const std::string plot = a->text("plot");
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{});

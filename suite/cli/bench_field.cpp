@@ -11,54 +11,76 @@
 #include <iostream>
 
 namespace fl::cli {
+namespace {
 
-bool benchFieldFromScene(const std::string& command, const std::string& file,
-                         field::ImplicitField& field, std::string& name) {
+std::optional<BenchShape> fromScene(std::string_view command, const std::string& file) {
     scene::ReadResult r = scene::readSceneFile(file);
     for (const auto& d : r.diagnostics)
         std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!r.ok()) return false;
-    bool found = false;
+    if (!r.ok()) return std::nullopt;
+    std::optional<BenchShape> shape;
     r.scene->forEachNode([&](const scene::Node& n) {
-        if (found || n.inProtoBody || n.kind() != scene::NodeKind::FGeometry ||
+        if (shape || n.inProtoBody || n.kind() != scene::NodeKind::FGeometry ||
             scene::stringField(n, "type") == "parametric")
             return;
         const formula::Tape* tape = r.scene->definition(n, "definition");
         if (!tape) return;
-        field.tape = *tape;
-        field.box = mesh::domainOf(n);
-        name = file + ":" + std::to_string(n.where.line);
-        found = true;
+        shape.emplace();
+        shape->field.tape = *tape;
+        shape->field.box = mesh::domainOf(n);
+        shape->source = scene::stringField(n, "definition");
+        shape->name = file + ":" + std::to_string(n.where.line);
     });
-    if (!found)
+    if (!shape)
         std::cerr << "functionlab " << command << ": " << file
                   << " has no implicit or explicit FGeometry\n";
-    return found;
+    return shape;
 }
 
-std::optional<field::ImplicitField> benchFieldFromArgs(const CommandSpec& spec, const ParsedArgs& a,
-                                                       std::string& name, int& exitCode) {
+} // namespace
+
+PositionalSpec benchShapePositional() {
+    return {.name = "FILE",
+            .help = "a scene: its first implicit or explicit FShape (or give --formula and --box)",
+            .required = false};
+}
+
+std::vector<OptionSpec> benchShapeOptions(std::vector<OptionSpec> others) {
+    std::vector<OptionSpec> options{
+        {.name = "formula",
+         .kind = OptionKind::Text,
+         .valueName = "SRC",
+         .help = "this formula (f >= 0 inside) instead of a scene's shape"},
+        {.name = "box",
+         .kind = OptionKind::NumberList,
+         .valueName = "X0,Y0,Z0,X1,Y1,Z1",
+         .help = "the formula's box, max above min on every axis",
+         .count = 6}};
+    options.insert(options.end(), others.begin(), others.end());
+    return options;
+}
+
+std::optional<BenchShape> benchShapeFromArgs(const CommandSpec& spec, const ParsedArgs& a,
+                                             int& exitCode) {
     const std::string file = a.positional("FILE"), formula = a.text("formula");
     auto usage = [&](const std::string& problem) {
         exitCode = usageError(spec, problem, std::cerr);
         return std::nullopt;
     };
     if (file.empty() == formula.empty()) return usage("give a scene FILE or --formula, not both");
-    field::ImplicitField field;
     exitCode = kExitDiagnostic;
-    if (formula.empty())
-        return benchFieldFromScene(std::string(spec.name), file, field, name)
-                   ? std::optional(std::move(field))
-                   : std::nullopt;
+    if (formula.empty()) return fromScene(spec.name, file);
     const auto b = a.numbers("box");
     if (!b) return usage("--formula needs --box X0,Y0,Z0,X1,Y1,Z1");
-    field.box = {{(*b)[0], (*b)[1], (*b)[2]}, {(*b)[3], (*b)[4], (*b)[5]}};
-    if (!field.box.valid()) return usage("the box needs max above min on every axis");
+    BenchShape shape;
+    shape.field.box = {{(*b)[0], (*b)[1], (*b)[2]}, {(*b)[3], (*b)[4], (*b)[5]}};
+    if (!shape.field.box.valid()) return usage("the box needs max above min on every axis");
     auto tape = compileFormulaArgument(formula, formula::DefinitionKind::Implicit);
     if (!tape) return std::nullopt;
-    field.tape = std::move(*tape);
-    name = formula;
-    return field;
+    shape.field.tape = std::move(*tape);
+    shape.source = formula;
+    shape.name = formula;
+    return shape;
 }
 
 } // namespace fl::cli

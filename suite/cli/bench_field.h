@@ -1,24 +1,30 @@
 #pragma once
-// The shape a meshing benchmark measures: the first implicit or explicit
-// FGeometry of a scene (bench accuracy, bench mesh).
+// The shape a meshing benchmark measures (bench accuracy, bench mesh, bench
+// remesh): the first implicit or explicit FGeometry of the scene FILE, or
+// --formula over --box — its arguments, and reading them.
 #include "field/field_sampler.h"
 #include "platform/option_table.h"
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fl::cli {
 
-// False, with the reason on stderr (naming `command`), when the scene cannot
-// be read or has no such geometry; `name` says which one was taken.
-bool benchFieldFromScene(const std::string& command, const std::string& file,
-                         field::ImplicitField& field, std::string& name);
+struct BenchShape {
+    field::ImplicitField field; // a scene's as the scene compiles it
+    std::string source;         // the definition's text
+    std::string name;           // "FILE:LINE", or the formula
+};
 
-// The shape a command names: the scene FILE's (as above) or --formula over
-// --box. None with `exitCode` set (2 for a usage error, said against
-// `spec`; 1 for a scene or formula with errors, said on stderr).
-std::optional<field::ImplicitField> benchFieldFromArgs(const CommandSpec& spec,
-                                                       const ParsedArgs& args, std::string& name,
-                                                       int& exitCode);
+// The optional FILE positional.
+PositionalSpec benchShapePositional();
+// --formula and --box, then `others`.
+std::vector<OptionSpec> benchShapeOptions(std::vector<OptionSpec> others);
+
+// None with `exitCode` set: 2 for a usage error (said against `spec`), 1 for
+// a scene or formula with errors (said on stderr, naming the command).
+std::optional<BenchShape> benchShapeFromArgs(const CommandSpec& spec, const ParsedArgs& args,
+                                             int& exitCode);
 
 } // namespace fl::cli

@@ -36,41 +36,30 @@ const CommandSpec& benchMeshSpec() {
             "the adaptive mesher's finest error. After the table, each resolution's\n"
             "adaptive time against the peer's time at the same max error (read off the\n"
             "peer's log-log line between the rows that bracket it).\n",
-        .positionals = {{.name = "FILE",
-                         .help = "a scene: its first implicit or explicit FShape (or give "
-                                 "--formula and --box)",
-                         .required = false}},
-        .options = {{.name = "formula",
-                     .kind = OptionKind::Text,
-                     .valueName = "SRC",
-                     .help = "this formula (f >= 0 inside) instead of a scene's shape"},
-                    {.name = "box",
-                     .kind = OptionKind::NumberList,
-                     .valueName = "X0,Y0,Z0,X1,Y1,Z1",
-                     .help = "the formula's box, max above min on every axis",
-                     .count = 6},
-                    {.name = "peer",
-                     .kind = OptionKind::Text,
-                     .valueName = "NAME",
-                     .help = "the peer: vtk (python3-vtk9's vtkFlyingEdges3D)",
-                     .defaultValue = "vtk"},
-                    {.name = "resolutions",
-                     .kind = OptionKind::NumberList,
-                     .valueName = "N,N,...",
-                     .help = "the resolutions, each 1 to 1024",
-                     .defaultValue = "64,128,256",
-                     .min = 1,
-                     .max = 1024},
-                    {.name = "threads",
-                     .kind = OptionKind::Integer,
-                     .valueName = "N",
-                     .help = "every method's threads (0: one per core)",
-                     .defaultValue = "0",
-                     .min = 0,
-                     .max = 256},
-                    {.name = "json",
-                     .help = "print a list of {\"method\", \"resolution\", \"triangles\", "
-                             "\"evaluations\", \"ms\", \"max_error\", \"mean_error\"}"}},
+        .positionals = {benchShapePositional()},
+        .options = benchShapeOptions(
+            {{.name = "peer",
+              .kind = OptionKind::Text,
+              .valueName = "NAME",
+              .help = "the peer: vtk (python3-vtk9's vtkFlyingEdges3D)",
+              .defaultValue = "vtk"},
+             {.name = "resolutions",
+              .kind = OptionKind::NumberList,
+              .valueName = "N,N,...",
+              .help = "the resolutions, each 1 to 1024",
+              .defaultValue = "64,128,256",
+              .min = 1,
+              .max = 1024},
+             {.name = "threads",
+              .kind = OptionKind::Integer,
+              .valueName = "N",
+              .help = "every method's threads (0: one per core)",
+              .defaultValue = "0",
+              .min = 0,
+              .max = 256},
+             {.name = "json",
+              .help = "print a list of {\"method\", \"resolution\", \"triangles\", "
+                      "\"evaluations\", \"ms\", \"max_error\", \"mean_error\"}"}}),
         .exitStatus = "0 measured, 1 the input has errors or the peer cannot run, 2 usage error",
     };
     return spec;
@@ -86,10 +75,10 @@ int benchMeshCommand(const Args& args) {
     if (a->text("peer", "vtk") != "vtk")
         return usage("the only peer here is vtk (libfive would need building from source, "
                      "which this project's machines cannot fetch)");
-    std::string name;
-    const auto shape = benchFieldFromArgs(benchMeshSpec(), *a, name, exit);
+    const auto shape = benchShapeFromArgs(benchMeshSpec(), *a, exit);
     if (!shape) return exit;
-    const field::ImplicitField& field = *shape;
+    const field::ImplicitField& field = shape->field;
+    const std::string& name = shape->name;
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{64, 128, 256});
     measure::SweepOptions sweep;

@@ -2,15 +2,13 @@
 // formula compiled again and its shape meshed again — over many edits
 // (issue 31 §3: p50 and p95 at resolution 128).
 #include "cli/arguments.h"
+#include "cli/bench_field.h"
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
 
 #include "formula/compiler.h"
 #include "measure/percentiles.h"
 #include "mesh/dual_contouring.h"
-#include "mesh/scene_meshing.h"
-#include "scene/field_access.h"
-#include "scene/scene_reader.h"
 
 #include <sys/resource.h>
 
@@ -33,27 +31,6 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The first implicit or explicit FGeometry's definition text and box.
-bool formulaFromScene(const std::string& file, std::string& text, field::Box3& box) {
-    scene::ReadResult r = scene::readSceneFile(file);
-    for (const auto& d : r.diagnostics)
-        std::cerr << scene::formatSceneDiagnostic(d) << "\n";
-    if (!r.ok()) return false;
-    bool found = false;
-    r.scene->forEachNode([&](const scene::Node& n) {
-        if (found || n.inProtoBody || n.kind() != scene::NodeKind::FGeometry ||
-            scene::stringField(n, "type") == "parametric")
-            return;
-        text = scene::stringField(n, "definition");
-        box = mesh::domainOf(n);
-        found = !text.empty();
-    });
-    if (!found)
-        std::cerr << "functionlab bench remesh: " << file
-                  << " has no implicit or explicit FGeometry\n";
-    return found;
-}
-
 } // namespace
 
 const CommandSpec& benchRemeshSpec() {
@@ -73,44 +50,33 @@ const CommandSpec& benchRemeshSpec() {
             "A scene's formula is compiled as --formula would be: its set-operation mode\n"
             "and slider values are not applied (the watermelon has neither). A formula that\n"
             "is a script (with ';') is edited by compiling it again unchanged.\n",
-        .positionals = {{.name = "FILE",
-                         .help = "a scene: its first implicit or explicit FShape (or give "
-                                 "--formula and --box)",
-                         .required = false}},
-        .options = {{.name = "formula",
-                     .kind = OptionKind::Text,
-                     .valueName = "SRC",
-                     .help = "this formula (f >= 0 inside) instead of a scene's shape"},
-                    {.name = "box",
-                     .kind = OptionKind::NumberList,
-                     .valueName = "X0,Y0,Z0,X1,Y1,Z1",
-                     .help = "the formula's box, max above min on every axis",
-                     .count = 6},
-                    {.name = "resolution",
-                     .kind = OptionKind::Number,
-                     .valueName = "N",
-                     .help = "cells along the box's longest side",
-                     .defaultValue = "128",
-                     .min = 1,
-                     .max = 1024},
-                    {.name = "edits",
-                     .kind = OptionKind::Integer,
-                     .valueName = "N",
-                     .help = "how many edits",
-                     .defaultValue = "50",
-                     .min = 2,
-                     .max = 100000},
-                    {.name = "threads",
-                     .kind = OptionKind::Integer,
-                     .valueName = "N",
-                     .help = "meshing threads (0: one per core)",
-                     .defaultValue = "0",
-                     .min = 0,
-                     .max = 256},
-                    {.name = "json",
-                     .help = "print {\"edits\", \"resolution\", \"cold_ms\", \"compile_ms\": "
-                             "{\"p50\", \"p95\"}, \"mesh_ms\": {...}, \"total_ms\": {...}, "
-                             "\"peak_mib\"}"}},
+        .positionals = {benchShapePositional()},
+        .options = benchShapeOptions(
+            {{.name = "resolution",
+              .kind = OptionKind::Number,
+              .valueName = "N",
+              .help = "cells along the box's longest side",
+              .defaultValue = "128",
+              .min = 1,
+              .max = 1024},
+             {.name = "edits",
+              .kind = OptionKind::Integer,
+              .valueName = "N",
+              .help = "how many edits",
+              .defaultValue = "50",
+              .min = 2,
+              .max = 100000},
+             {.name = "threads",
+              .kind = OptionKind::Integer,
+              .valueName = "N",
+              .help = "meshing threads (0: one per core)",
+              .defaultValue = "0",
+              .min = 0,
+              .max = 256},
+             {.name = "json",
+              .help = "print {\"edits\", \"resolution\", \"cold_ms\", \"compile_ms\": "
+                      "{\"p50\", \"p95\"}, \"mesh_ms\": {...}, \"total_ms\": {...}, "
+                      "\"peak_mib\"}"}}),
         .exitStatus = "0 measured, 1 the input has errors, 2 usage error",
     };
     return spec;
@@ -120,23 +86,10 @@ int benchRemeshCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(benchRemeshSpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    const std::string file = a->positional("FILE");
-    std::string text = a->text("formula");
-    if (file.empty() == text.empty())
-        return usageError(benchRemeshSpec(), "give a scene FILE or --formula, not both", std::cerr);
-    field::Box3 box;
-    if (!text.empty()) {
-        const auto b = a->numbers("box");
-        if (!b)
-            return usageError(benchRemeshSpec(), "--formula needs --box X0,Y0,Z0,X1,Y1,Z1",
-                              std::cerr);
-        box = {{(*b)[0], (*b)[1], (*b)[2]}, {(*b)[3], (*b)[4], (*b)[5]}};
-        if (!box.valid())
-            return usageError(benchRemeshSpec(), "the box needs max above min on every axis",
-                              std::cerr);
-    } else if (!formulaFromScene(file, text, box)) {
-        return kExitDiagnostic;
-    }
+    const auto shape = benchShapeFromArgs(benchRemeshSpec(), *a, exit);
+    if (!shape) return exit;
+    const std::string& text = shape->source;
+    const field::Box3& box = shape->field.box;
     const bool script = text.find(';') != std::string::npos;
     const std::size_t edits = std::size_t(a->integer("edits", 50));
     mesh::MeshOptions options;
