@@ -25,6 +25,26 @@ PACKAGES=(
   bubblewrap
   libdraco-dev libmeshoptimizer-dev
 )
+# npm_ci_pinned FROM TO MARKER WHAT CONSEQUENCE: the npm packages FROM's
+# package.json and package-lock.json pin, installed into TO with `npm ci`
+# unless MARKER (a file under TO) is there with the same lock file. A
+# failure is said (WHAT could not be installed: CONSEQUENCE), never fatal.
+npm_ci_pinned() {
+  local from="$1" to="$2" marker="$3" what="$4" consequence="$5"
+  if [ -f "$to/$marker" ] && cmp -s "$from/package-lock.json" "$to/package-lock.json"; then
+    return 0
+  fi
+  if ! command -v npm >/dev/null 2>&1; then
+    log "warning: no npm for $what: $consequence"
+    return 0
+  fi
+  log "installing $what (npm ci in $to)"
+  mkdir -p "$to"
+  cp "$from/package.json" "$from/package-lock.json" "$to/"
+  (cd "$to" && npm ci --no-audit --no-fund --loglevel=error >/dev/null) ||
+    log "warning: npm could not install $what: $consequence"
+}
+
 # Node and npm install X_ITE (install_web_viewer); a machine that has them
 # from elsewhere (NodeSource's nodejs carries its own npm, which Debian's npm
 # package conflicts with) keeps them: they are asked of the commands, not of
@@ -114,20 +134,8 @@ install_test_tools() {
     apt_get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null ||
       log "warning: could not install ${missing[*]}: their interop tests will be skipped"
   fi
-  local tools="$BUILD_DIR/interop-tools"
-  if [ -d "$tools/node_modules/gltf-validator" ] &&
-    cmp -s "$ROOT/tests/interop/package-lock.json" "$tools/package-lock.json"; then
-    return 0
-  fi
-  if ! command -v npm >/dev/null 2>&1; then
-    log "warning: no npm: the glTF validator's interop tests will be skipped"
-    return 0
-  fi
-  log "installing the glTF validator (npm ci in $tools)"
-  mkdir -p "$tools"
-  cp "$ROOT/tests/interop/package.json" "$ROOT/tests/interop/package-lock.json" "$tools/"
-  (cd "$tools" && npm ci --no-audit --no-fund --loglevel=error >/dev/null) ||
-    log "warning: npm could not install the glTF validator: its interop tests will be skipped"
+  npm_ci_pinned "$ROOT/tests/interop" "$BUILD_DIR/interop-tools" \
+    node_modules/gltf-validator/package.json "the glTF validator" "its interop tests will be skipped"
 }
 
 # configure DIR [extra cmake args...]: CMake's errors reach stderr.
@@ -162,20 +170,8 @@ configure_and_build() {
 # (web/web_page.h findXite). Without it export-web says how to get it; the
 # rest of the suite does not need it.
 install_web_viewer() {
-  local viewer="$BUILD_DIR/web-viewer"
-  if [ -f "$viewer/node_modules/x_ite/dist/x_ite.min.js" ] &&
-    cmp -s "$ROOT/web/package-lock.json" "$viewer/package-lock.json"; then
-    return 0
-  fi
-  if ! command -v npm >/dev/null 2>&1; then
-    log "warning: no npm: export-web cannot ship X_ITE until it is installed"
-    return 0
-  fi
-  log "installing X_ITE for export-web (npm ci in $viewer)"
-  mkdir -p "$viewer"
-  cp "$ROOT/web/package.json" "$ROOT/web/package-lock.json" "$viewer/"
-  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null) ||
-    log "warning: npm could not install X_ITE: export-web will say so"
+  npm_ci_pinned "$ROOT/web" "$BUILD_DIR/web-viewer" node_modules/x_ite/dist/x_ite.min.js \
+    "X_ITE for export-web" "export-web will say so"
 }
 
 setup() {
