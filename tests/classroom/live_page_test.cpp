@@ -116,6 +116,16 @@ class LivePageTest : public ::testing::Test {
         return o;
     }
     quint16 port() const { return server->port(); }
+    // A member joins the class over WebSocket on the page's own port.
+    bool joins(ClassroomClient& client, const QString& name) const {
+        ClassroomClient::JoinOptions o;
+        o.url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(port()));
+        o.classCode = "C1";
+        o.name = name;
+        client.join(o);
+        return QTest::qWaitFor([&] { return client.state() == ClassroomClient::State::Joined; },
+                               kWaitMs);
+    }
 
     SteadyClock clock;
     std::unique_ptr<ClassSession> session;
@@ -148,13 +158,7 @@ TEST_F(LivePageTest, TheBakedSceneFollowsAnEditAndMembersShareThePort) {
     EXPECT_FALSE(first.body.contains("FShape"));
 
     ClassroomClient ana;
-    ClassroomClient::JoinOptions o;
-    o.url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(port()));
-    o.classCode = "C1";
-    o.name = "Ana";
-    ana.join(o);
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return ana.state() == ClassroomClient::State::Joined; }, kWaitMs));
+    ASSERT_TRUE(joins(ana, "Ana"));
     ana.submitEdit(QString::fromStdString(classScene("sphere(1, 0, 0, 0.5)")));
     ASSERT_TRUE(QTest::qWaitFor([&] { return server->livePage()->shownVersion() >= 2; }, kWaitMs));
     const Answer second = get(port(), "GET /scene.json HTTP/1.1\r\nAccept-Encoding: gzip\r\n\r\n");
@@ -199,13 +203,7 @@ TEST_F(LivePageTest, WithoutTheWebThePortStillServesTheClass) {
     EXPECT_EQ(a.status, 404);
     EXPECT_TRUE(a.body.contains("--no-web"));
     ClassroomClient ana;
-    ClassroomClient::JoinOptions o;
-    o.url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(port()));
-    o.classCode = "C1";
-    o.name = "Ana";
-    ana.join(o);
-    EXPECT_TRUE(
-        QTest::qWaitFor([&] { return ana.state() == ClassroomClient::State::Joined; }, kWaitMs));
+    EXPECT_TRUE(joins(ana, "Ana"));
 }
 
 TEST_F(LivePageTest, StrangersWhoNeverFinishTheirHeadsCannotHoardThePort) {
@@ -243,13 +241,7 @@ TEST_F(LivePageTest, OneAddressAskingTooOftenIsToldToWait) {
     EXPECT_GE(refused, 2);
     // The class itself is not rate-limited by the page's buckets.
     ClassroomClient ana;
-    ClassroomClient::JoinOptions j;
-    j.url = QUrl(QStringLiteral("ws://127.0.0.1:%1").arg(port()));
-    j.classCode = "C1";
-    j.name = "Ana";
-    ana.join(j);
-    EXPECT_TRUE(
-        QTest::qWaitFor([&] { return ana.state() == ClassroomClient::State::Joined; }, kWaitMs));
+    EXPECT_TRUE(joins(ana, "Ana"));
 }
 
 } // namespace

@@ -150,17 +150,23 @@ QString litCopy(const std::string& example) {
     return path;
 }
 
+// What a page in a browser needs and is not here; empty when all is.
+std::string missingBrowserTool() {
+    if (QStandardPaths::findExecutable("node").isEmpty() ||
+        QStandardPaths::findExecutable("chromium").isEmpty())
+        return "node and chromium are not installed (Debian: nodejs chromium)";
+    if (!QFileInfo::exists(kXite + "/x_ite.min.js"))
+        return "X_ITE is not installed: run scripts/run or scripts/test";
+    return {};
+}
+
 class WebPage : public testing::TestWithParam<std::string> {};
 
 } // namespace
 
 TEST_P(WebPage, ShowsTheSceneAsFunctionLabDrawsItAndPlaysItsTime) {
-    if (QStandardPaths::findExecutable("node").isEmpty() ||
-        QStandardPaths::findExecutable("chromium").isEmpty())
-        FUNCTIONLAB_SKIP_WITHOUT_TOOL(
-            "node and chromium are not installed (Debian: nodejs chromium)");
-    if (!QFileInfo::exists(kXite + "/x_ite.min.js"))
-        FUNCTIONLAB_SKIP_WITHOUT_TOOL("X_ITE is not installed: run scripts/run or scripts/test");
+    if (const std::string missing = missingBrowserTool(); !missing.empty())
+        FUNCTIONLAB_SKIP_WITHOUT_TOOL(missing);
     const std::string example = GetParam();
     const QString scene = litCopy(example);
     ASSERT_FALSE(scene.isEmpty()) << "cannot copy " << example;
@@ -236,12 +242,8 @@ const char* kEditedScene = R"(<?xml version="1.0" encoding="UTF-8"?>
 } // namespace
 
 TEST(LiveClassPage, FollowsAnEditMadeOverTheProtocolWithinTwoSeconds) {
-    if (QStandardPaths::findExecutable("node").isEmpty() ||
-        QStandardPaths::findExecutable("chromium").isEmpty())
-        FUNCTIONLAB_SKIP_WITHOUT_TOOL(
-            "node and chromium are not installed (Debian: nodejs chromium)");
-    if (!QFileInfo::exists(kXite + "/x_ite.min.js"))
-        FUNCTIONLAB_SKIP_WITHOUT_TOOL("X_ITE is not installed: run scripts/run or scripts/test");
+    if (const std::string missing = missingBrowserTool(); !missing.empty())
+        FUNCTIONLAB_SKIP_WITHOUT_TOOL(missing);
     int argc = 1;
     char name[] = "web_browser_tests";
     char* argv[] = {name, nullptr};
