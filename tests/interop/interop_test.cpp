@@ -8,6 +8,7 @@
 // A missing tool skips its tests with a message saying how to install it
 // (scripts/test installs them all); where FUNCTIONLAB_REQUIRE_TOOLS is set, as
 // in CI, it fails them. CTest label: interop.
+#include "../common/example_files.h"
 #include "../common/required_tool.h"
 #include "../common/tool_run.h"
 
@@ -50,18 +51,11 @@ QString tool(const QString& name) {
 
 // Every example scene, by file name (watermelon.x3d and watermelon.x3dv both).
 std::vector<std::string> examples() {
-    std::vector<std::string> names;
-    const QStringList files =
-        QDir(kExamples).entryList({"*.x3d", "*.x3dv", "*.wrl"}, QDir::Files, QDir::Name);
-    for (const QString& f : files)
-        names.push_back(f.toStdString());
-    return names;
+    return fl::test::exampleFiles(kExamples);
 }
 
 std::string testName(const std::string& file) {
-    std::string s = file;
-    std::replace(s.begin(), s.end(), '.', '_');
-    return s;
+    return fl::test::exampleTestName(file);
 }
 
 QString outputPath(const std::string& example, const QString& suffix) {

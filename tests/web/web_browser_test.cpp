@@ -16,6 +16,7 @@
 // where FUNCTIONLAB_REQUIRE_TOOLS is set (CI). CTest label: interop.
 // The class's live page (LiveClassPage) is opened from `functionlab serve`
 // and must show an edit sent over the protocol within 2 s.
+#include "../common/example_files.h"
 #include "../common/required_tool.h"
 #include "../common/tool_run.h"
 
@@ -54,17 +55,11 @@ using fl::test::run;
 using fl::test::ToolRun;
 
 std::vector<std::string> examples() {
-    std::vector<std::string> names;
-    for (const QString& f :
-         QDir(kExamples).entryList({"*.x3d", "*.x3dv", "*.wrl"}, QDir::Files, QDir::Name))
-        names.push_back(f.toStdString());
-    return names;
+    return fl::test::exampleFiles(kExamples);
 }
 
 std::string testName(const std::string& file) {
-    std::string s = file;
-    std::replace(s.begin(), s.end(), '.', '_');
-    return s;
+    return fl::test::exampleTestName(file);
 }
 
 // Pixels unlike the background, which fills the image's corner.
