@@ -119,6 +119,14 @@ class Baker {
         src_.forEachNode([&](const Node& n) {
             if (!n.defName.empty()) names_.insert(n.defName);
         });
+        // Urls resolve inside the scene's folder, found once.
+        if (const std::string& path = src_.pathOf(0); !path.empty()) {
+            std::error_code ec;
+            urlContext_.emplace();
+            urlContext_->root = std::filesystem::weakly_canonical(
+                std::filesystem::absolute(path).parent_path(), ec);
+            urlContext_->displayRoot = urlContext_->root;
+        }
     }
 
     void run() {
@@ -516,16 +524,12 @@ class Baker {
     }
 
     std::optional<std::string> localFile(const Node& n, const std::string& url, std::string& why) {
-        const std::string& scenePath = src_.pathOf(0);
-        if (scenePath.empty()) {
+        if (!urlContext_) {
             why = "the scene was not read from a file";
             return std::nullopt;
         }
+        const scene::ReferenceContext& context = *urlContext_;
         std::error_code ec;
-        scene::ReferenceContext context;
-        context.root = std::filesystem::weakly_canonical(
-            std::filesystem::absolute(scenePath).parent_path(), ec);
-        context.displayRoot = context.root;
         const std::string& nodePath = src_.pathOf(n.file);
         const std::filesystem::path base =
             nodePath.empty() ? context.root : std::filesystem::absolute(nodePath, ec).parent_path();
@@ -582,6 +586,7 @@ class Baker {
     std::vector<const Node*> instances_;
     std::vector<const scene::Scene*> inlined_;
     std::set<std::string> names_;
+    std::optional<scene::ReferenceContext> urlContext_; // none: the scene came from memory
     std::size_t droppedRoutes_ = 0;
 };
 
