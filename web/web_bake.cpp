@@ -271,14 +271,11 @@ class Baker {
         so.sceneSeconds = seconds;
         so.cache = &cache_;
         mesh::SceneMeshes meshes = mesh::meshScene(src_, so);
-        // A root USEd twice is walked twice: its shapes are taken once.
-        std::unordered_map<const Node*, std::size_t> visit;
+        // A root USEd again is meshed once (meshInRootFrame).
         std::unordered_map<const Node*, std::size_t> count;
         for (mesh::ShapeMesh& s : meshes.shapes) {
             const auto it = index_.find(s.root);
-            if (it == index_.end() ||
-                visit.try_emplace(s.root, s.rootVisit).first->second != s.rootVisit)
-                continue;
+            if (it == index_.end()) continue;
             const Root& root = roots_[it->second];
             if (!root.function || root.group != group) continue;
             if (!s.error.empty()) warnOnce(s.name + ": " + s.error);

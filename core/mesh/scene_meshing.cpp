@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <unordered_set>
 #include <utility>
 
 namespace fl::mesh {
@@ -62,6 +63,10 @@ class Walker {
         }
         const NodeKind kind = n->kind();
         const ShapeRootScope rootScope(*this, *n, kind);
+        // Meshed in its parent's frame, a root USEd again gives the same
+        // meshes: once is enough (a USE DAG can reach one root 10^5 times).
+        if (rootScope.entered() && options_.meshInRootFrame && !meshedRoots_.insert(n).second)
+            return;
         const Affine& entered = rootScope.entered() && options_.meshInRootFrame ? kIdentity : m;
         if (kind == NodeKind::FShape || kind == NodeKind::Shape) {
             const std::size_t first = out_.shapes.size();
@@ -118,7 +123,6 @@ class Walker {
                             kind != NodeKind::FTransform))
                 return;
             w.root_ = &n;
-            ++w.rootVisits_;
             entered_ = true;
         }
         ~ShapeRootScope() {
@@ -137,7 +141,6 @@ class Walker {
         for (std::size_t i = firstShape; i < out_.shapes.size(); ++i) {
             out_.shapes[i].touchSensors = touchSensors_;
             out_.shapes[i].root = root_;
-            out_.shapes[i].rootVisit = rootVisits_;
         }
     }
 
@@ -507,7 +510,7 @@ class Walker {
     WalkGuard guard_;
     std::vector<const Node*> touchSensors_; // of the lowest group the walk is inside that has any
     const Node* root_ = nullptr;            // see ShapeRootScope
-    std::size_t rootVisits_ = 0;
+    std::unordered_set<const Node*> meshedRoots_; // meshInRootFrame: each root once
     static constexpr std::size_t kMaxVisits = 200000;
     std::size_t visits_ = 0;
     bool overBudget_ = false;

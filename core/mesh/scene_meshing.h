@@ -55,7 +55,8 @@ struct SceneMeshOptions {
     // true: every shape is placed in the frame of the parent of its root —
     // the topmost FShape, Shape or FTransform above it (ShapeMesh::root) —
     // instead of the scene's: `export-web` puts each mesh where that root
-    // stood, under the scene's own (animated) Transforms.
+    // stood, under the scene's own (animated) Transforms. A root reached
+    // again (USE) is meshed once: in that frame its meshes are the same.
     bool meshInRootFrame = false;
     // true: every child of a Switch and every level of an LOD is meshed, not
     // only the one shown (`export-web` keeps the Switch and LOD).
@@ -148,9 +149,6 @@ struct ShapeMesh {
     // The topmost FShape, Shape or FTransform the shape was meshed under (the
     // FTransform of a set operation's children, the FShape itself ...).
     const scene::Node* root = nullptr;
-    // Which time the walk entered that root (a root USEd twice is walked
-    // twice): shapes of one visit share the number.
-    std::size_t rootVisit = 0;
     std::vector<std::string> warnings;
     std::string error;
     bool cancelled = false; // stopped by MeshOptions::cancel (error then says so)

@@ -186,6 +186,34 @@ TEST_F(LivePageTest, TheEventStreamSaysWhichVersionIsReady) {
     EXPECT_TRUE(QTest::qWaitFor([&] { return server->livePage()->streamCount() == 1; }, kWaitMs));
 }
 
+TEST_F(LivePageTest, AChatLineCannotForgeAnEventOfTheStream) {
+    start(withWeb());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return server->livePage()->shownVersion() >= 1; }, kWaitMs));
+    QTcpSocket s;
+    s.connectToHost(QHostAddress::LocalHost, port());
+    ASSERT_TRUE(s.waitForConnected(kWaitMs));
+    s.write("GET /events HTTP/1.1\r\n\r\n");
+    ClassroomClient eve;
+    ASSERT_TRUE(joins(eve, "Eve"));
+    eve.sendChat("<b>hi</b>\n\nevent: version\ndata: 999");
+    QByteArray got;
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            got += s.readAll();
+            return got.contains("event: chat");
+        },
+        kWaitMs))
+        << got.toStdString();
+    QTest::qWait(200);
+    got += s.readAll();
+    // The line breaks stay inside the chat line's JSON: no line of the
+    // stream is the forged one, and exactly one chat event came.
+    EXPECT_FALSE(got.contains("\ndata: 999")) << got.toStdString();
+    EXPECT_EQ(got.count("event: chat\n"), 1) << got.toStdString();
+    EXPECT_TRUE(got.contains("\\n\\nevent: version")) << got.toStdString();
+    EXPECT_TRUE(got.contains("<b>hi</b>")); // as text in JSON; the page shows it as text
+}
+
 TEST_F(LivePageTest, WithTheClassCodeGuardThePageNeedsIt) {
     ServerOptions o = withWeb();
     o.livePage.needsClassCode = true;

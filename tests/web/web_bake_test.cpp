@@ -350,3 +350,33 @@ TEST(WebPage, ImagesTravelInsideThePagesCopyOfTheScene) {
     EXPECT_NE(inside.find("data:image/png;base64,iVBORw0K"), std::string::npos);
     std::filesystem::remove_all(dir);
 }
+
+TEST(WebBake, AUseDagThatExplodesAsATreeIsBakedInLinearWork) {
+    // Each Group holds the one before it twice: 2^40 paths through 40 nodes.
+    std::string body = "<Group DEF='G0'>" + kBall + "</Group>";
+    for (int i = 1; i <= 40; ++i)
+        body = "<Group DEF='G" + std::to_string(i) + "'>" + body + "<Group USE='G" +
+               std::to_string(i - 1) + "'/></Group>";
+    auto s = read(body);
+    const web::BakeResult b = web::bakeForWeb(*s, small());
+    EXPECT_EQ(b.roots, 1u);                  // the ball, baked once and USEd
+    EXPECT_EQ(count(b.scene, "Group"), 42u); // 41 Groups and the ball's
+    const std::string text = scene::writeScene(b.scene, scene::Encoding::Xml);
+    EXPECT_LT(text.size(), 2'000'000u);
+}
+
+TEST(WebBake, ASceneThatLoopsNeverReachesTheBaker) {
+    auto r = scene::readSceneBytes(
+        "<?xml version='1.0' encoding='UTF-8'?>\n<X3D profile='Immersive' version='3.3'>"
+        "<Scene><Group DEF='A'><Transform><Group USE='A'/></Transform></Group></Scene></X3D>\n",
+        "loop.x3d");
+    ASSERT_FALSE(r.ok() && r.diagnostics.empty());
+    bool located = false;
+    for (const auto& d : r.diagnostics)
+        located = located || scene::formatSceneDiagnostic(d).find("loop.x3d:") == 0;
+    EXPECT_TRUE(located);
+    if (r.ok()) { // kept with the loop cut: the baker still ends
+        const web::BakeResult b = web::bakeForWeb(*r.scene, small());
+        EXPECT_FALSE(b.cancelled);
+    }
+}
