@@ -2,6 +2,9 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
+#include <cmath>
+
 namespace fl::mesh {
 
 void Qef::add(const std::array<double, 3>& p, const std::array<double, 3>& n) {
@@ -65,6 +68,75 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
             x += v * (v.dot(rhs) / values[k]);
         }
     return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
+}
+
+std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
+                                      const std::array<double, 3>& hi,
+                                      double relativeCutoff) const {
+    std::array<double, 3> x = solve(relativeCutoff);
+    if (!count_) return x;
+    auto outside = [&](const std::array<double, 3>& p, std::size_t a) {
+        return !(p[a] >= lo[a] && p[a] <= hi[a]); // NaN counts as outside
+    };
+    if (!outside(x, 0) && !outside(x, 1) && !outside(x, 2)) return x;
+    // Relative to the origin: E(y) = y^T M y - 2 y^T r + const, M = A^T A.
+    Eigen::Matrix3d m;
+    m << ata_[0], ata_[1], ata_[2], ata_[1], ata_[3], ata_[4], ata_[2], ata_[4], ata_[5];
+    const Eigen::Vector3d r(atb_[0], atb_[1], atb_[2]);
+    const Eigen::Vector3d c(pointSum_[0] / count_, pointSum_[1] / count_, pointSum_[2] / count_);
+    const double largest = std::max({m(0, 0), m(1, 1), m(2, 2)}); // trace-sized: a scale only
+    std::array<bool, 3> held{};
+    Eigen::Vector3d y(c);
+    for (std::size_t a = 0; a < 3; ++a)
+        y[Eigen::Index(a)] =
+            (std::isfinite(x[a]) ? x[a] : origin_[a] + c[Eigen::Index(a)]) - origin_[a];
+    for (int round = 0; round < 3; ++round) {
+        // Hold every coordinate outside the box on the face it crossed.
+        bool any = false;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double p = origin_[a] + y[Eigen::Index(a)];
+            if (held[a] || (p >= lo[a] && p <= hi[a])) continue;
+            held[a] = true;
+            any = true;
+            y[Eigen::Index(a)] = (p < lo[a] ? lo[a] : hi[a]) - origin_[a];
+        }
+        if (!any) break;
+        // The free coordinates minimise E with the held ones fixed:
+        // M_ff y_f = r_f - M_fh y_h, solved about the mass point with small
+        // eigenvalues truncated as solve() does, but with a cutoff a hundred
+        // times lower: the box bounds the answer now, and a crease that runs
+        // obliquely to the held face needs the small eigenvalue (a cutoff
+        // of solve()'s size kept the vertex off the crease by a third of a
+        // cell on the watermelon's cut).
+        int free[3], nf = 0;
+        for (int a = 0; a < 3; ++a)
+            if (!held[std::size_t(a)]) free[nf++] = a;
+        if (nf == 0) break;
+        Eigen::MatrixXd mff(nf, nf);
+        Eigen::VectorXd rhs(nf);
+        for (int i = 0; i < nf; ++i) {
+            double v = r[free[i]];
+            for (int a = 0; a < 3; ++a)
+                v -= m(free[i], a) * (held[std::size_t(a)] ? y[a] : c[a]);
+            rhs[i] = v;
+            for (int j = 0; j < nf; ++j)
+                mff(i, j) = m(free[i], free[j]);
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mff);
+        Eigen::VectorXd delta = Eigen::VectorXd::Zero(nf);
+        for (int k = 0; k < nf; ++k) {
+            const double value = eig.eigenvalues()[k];
+            if (!(std::abs(value) >= 0.01 * relativeCutoff * largest) || value == 0) continue;
+            const Eigen::VectorXd v = eig.eigenvectors().col(k);
+            delta += v * (v.dot(rhs) / value);
+        }
+        for (int i = 0; i < nf; ++i)
+            y[free[i]] = c[free[i]] + delta[i];
+    }
+    std::array<double, 3> out{};
+    for (std::size_t a = 0; a < 3; ++a)
+        out[a] = std::clamp(origin_[a] + y[Eigen::Index(a)], lo[a], hi[a]);
+    return out;
 }
 
 } // namespace fl::mesh

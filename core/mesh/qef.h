@@ -18,6 +18,16 @@ class Qef {
     // The minimiser; eigenvalues below `relativeCutoff` times the largest are
     // treated as zero (the solution then moves only along the others).
     std::array<double, 3> solve(double relativeCutoff = 0.05) const;
+    // The minimiser within the box [lo, hi] (a cell): solve()'s point when it
+    // lies there; else the coordinates it leaves the box by are held on the
+    // box's faces and the others minimise the QEF again (at most three
+    // rounds, each holding one more). A crease that passes just outside the
+    // cell puts the vertex on the cell's face nearest it, on both surfaces,
+    // where falling back to the mass point left it inside the solid by up to
+    // half a cell.
+    std::array<double, 3> solveInBox(const std::array<double, 3>& lo,
+                                     const std::array<double, 3>& hi,
+                                     double relativeCutoff = 0.05) const;
 
   private:
     std::array<double, 3> origin_{}; // the first point: sums are relative to it
