@@ -65,6 +65,39 @@ TEST(DualContouring, MinMaxCubeKeepsItsEdgesAndCornersSharp) {
     EXPECT_NEAR(analyseTopology(r.mesh).signedVolume, 1.0, 1e-3);
 }
 
+TEST(DualContouring, ACreasePassingBesideACellStillGetsItsVertexOnIt) {
+    // The watermelon's shape: a ball with a wedge cut out. Its creases run
+    // obliquely through the grid, so many cells hold both surfaces of a
+    // crease but not the line where they meet; their vertices used to fall
+    // back to the crossings' centre, up to half a cell inside the solid
+    // (max error 5e-3 of the diagonal at 64, from a few hundred triangles).
+    const ImplicitField f = field("min(1 - x^2 - y^2 - z^2, -min(min(z - x, y), z))", 1.1);
+    MeshOptions o;
+    o.resolution = 64;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok()) << r.error;
+    expectWatertight(r.mesh);
+    EXPECT_LT(maxSurfaceError(f, r.mesh), 1.5e-3);
+    // No triangle folded over at the creases: each faces the way -grad f
+    // does at its centre, give or take the turn of the crease itself.
+    FieldSampler sampler(f);
+    for (const Triangle& t : r.mesh.triangles) {
+        const Vec3f& a = r.mesh.positions[t[0]];
+        const Vec3f& b = r.mesh.positions[t[1]];
+        const Vec3f& c = r.mesh.positions[t[2]];
+        const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                             u[0] * v[1] - u[1] * v[0]};
+        const fl::formula::Dual g = sampler.gradient(
+            {(a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0, (a[2] + b[2] + c[2]) / 3.0});
+        const double dot = -(n[0] * g.d[0] + n[1] * g.d[1] + n[2] * g.d[2]);
+        const double size = std::hypot(n[0], n[1], n[2]) * std::hypot(g.d[0], g.d[1], g.d[2]);
+        EXPECT_GT(dot, -0.5 * size)
+            << "folded triangle near " << a[0] << ", " << a[1] << ", " << a[2];
+    }
+}
+
 TEST(DualContouring, TheBoxClosesTheSolidOrLeavesItOpen) {
     // The half-space z <= 0.3 fills most of the box.
     const ImplicitField closed = field("0.3 - z");
