@@ -212,7 +212,12 @@ std::vector<double> vertexDistances(const Mesh& from, const TriangleTree& to) {
 }
 
 SurfaceDistance compareSurfaces(const Mesh& a, const Mesh& b, std::size_t samplesEachWay) {
-    const TriangleTree ta(a), tb(b);
+    return compareSurfaces(a, TriangleTree(a), b, samplesEachWay);
+}
+
+SurfaceDistance compareSurfaces(const Mesh& a, const TriangleTree& ta, const Mesh& b,
+                                std::size_t samplesEachWay) {
+    const TriangleTree tb(b);
     const OneWayDistance ab = distanceFrom(a, tb, samplesEachWay, 1);
     const OneWayDistance ba = distanceFrom(b, ta, samplesEachWay, 2);
     SurfaceDistance out;

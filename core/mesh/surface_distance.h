@@ -58,5 +58,9 @@ struct SurfaceDistance {
     std::size_t samples = 0;
 };
 SurfaceDistance compareSurfaces(const Mesh& a, const Mesh& b, std::size_t samplesEachWay);
+// The same with `a`'s tree built by the caller (who measures many meshes
+// against one: the import dialog's fits of one original).
+SurfaceDistance compareSurfaces(const Mesh& a, const TriangleTree& aTree, const Mesh& b,
+                                std::size_t samplesEachWay);
 
 } // namespace fl::mesh

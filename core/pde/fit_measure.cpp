@@ -13,7 +13,9 @@ std::optional<FitMeasure> measureFit(const mesh::Mesh& original, const Model& mo
     }
     m.model = std::move(*back.model);
     m.rebuilt = meshModel(m.model, o.grid);
-    m.distance = mesh::compareSurfaces(original, m.rebuilt, o.samples);
+    m.distance = o.originalTree
+                     ? mesh::compareSurfaces(original, *o.originalTree, m.rebuilt, o.samples)
+                     : mesh::compareSurfaces(original, m.rebuilt, o.samples);
     m.diagonal = m.model.diagonal() > 0 ? m.model.diagonal() : 1.0;
     return m;
 }

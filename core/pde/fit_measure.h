@@ -29,6 +29,9 @@ struct MeasureOptions {
     EncodeOptions encode;
     std::size_t samples = 100000; // each way
     MeshOptions grid{16, 32};
+    // The original's tree, when the caller keeps one for many fits of it
+    // (built here otherwise); it must be of `original`.
+    const mesh::TriangleTree* originalTree = nullptr;
 };
 
 // Nullopt, with `why`, only when the encoded model does not read back (a bug).

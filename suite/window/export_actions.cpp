@@ -34,15 +34,16 @@ void ExportActions::fillMenu(QMenu* file) {
 PdeImportDialog* ExportActions::importMeshAsPde(const QString& objPath) {
     auto* dialog = new PdeImportDialog(context_.window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    QString why;
-    if (!dialog->load(objPath, &why)) {
-        delete dialog;
+    // The file is read on a worker: the dialog opens at once and says it is
+    // reading; a file that is not a mesh closes it and is said in the window.
+    connect(dialog, &PdeImportDialog::loadFailed, this, [this, dialog](const QString& why) {
+        dialog->close();
         context_.problem(why);
-        return nullptr;
-    }
+    });
     connect(dialog, &PdeImportDialog::sceneSaved, this, [this](const QString& scene) {
         if (context_.keepChanges()) context_.open(scene);
     });
+    dialog->load(objPath);
     dialog->show();
     return dialog;
 }

@@ -27,7 +27,9 @@ class ExportActions : public QObject {
 
     void fillMenu(QMenu* file);
 
-    // Opens the import dialog on this mesh (the menu asks for the file).
+    // Opens the import dialog on this mesh (the menu asks for the file); it
+    // reads the file on a worker, and closes with the window told why when
+    // the file is not a mesh it can fit.
     PdeImportDialog* importMeshAsPde(const QString& objPath);
 
   private:

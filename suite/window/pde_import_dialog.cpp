@@ -13,7 +13,6 @@
 #include "pde/pde_scene.h"
 #include "viewer/scene_widget.h"
 
-#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -89,6 +88,9 @@ PdeImportDialog::PdeImportDialog(QWidget* parent)
       figuresText_(plainLabel()), legend_(plainLabel()), progress_(new QProgressBar),
       curveButton_(new QPushButton(tr("Measure the curve"))),
       saveButton_(new QPushButton(tr("Save…"))),
+      reader_(
+          this, [](const QString& path) { return readOriginal(path); },
+          [this](const QString& path, Read r) { readDone(path, std::move(r)); }),
       worker_(
           this, [this](const Job& job) { return runFit(job); },
           [this](const Job& job, Outcome r) { fitDone(job, std::move(r)); }) {
@@ -166,28 +168,51 @@ PdeImportDialog::~PdeImportDialog() {
     *alive_ = false; // progress from a fit still running goes nowhere
 }
 
-bool PdeImportDialog::load(const QString& objPath, QString* error) {
-    // Read here (a 2 MB mesh in about 50 ms); a large one shows the wait cursor.
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    const mesh::ObjReadResult read = mesh::readObjFile(objPath.toStdString());
-    QApplication::restoreOverrideCursor();
-    if (!read.ok()) {
-        if (error) *error = QString::fromStdString(read.error);
-        return false;
-    }
-    auto m = std::make_shared<mesh::Mesh>(*read.mesh);
-    if (m->normals.size() != m->positions.size()) m->normals = mesh::vertexNormals(*m);
-    mesh_ = std::move(m);
-    lines_ = std::make_shared<const std::vector<std::uint32_t>>(read.triangleLines);
+void PdeImportDialog::load(const QString& objPath) {
     objPath_ = objPath;
-    std::error_code ec;
-    objBytes_ = std::size_t(std::filesystem::file_size(objPath.toStdString(), ec));
-    setWindowTitle(tr("Import %1 as PDE").arg(QFileInfo(objPath).fileName()));
+    original_.reset();
     figures_.reset();
     last_.reset();
     chart_->setRows({});
+    saveButton_->setEnabled(false);
+    ++generation_; // a fit of the mesh before is no longer shown
+    worker_.cancel();
+    const QString name = QFileInfo(objPath).fileName();
+    setWindowTitle(tr("Import %1 as PDE").arg(name));
+    progress_->setVisible(true);
+    progress_->setFormat(tr("reading %1…").arg(name));
+    reader_.request(objPath);
+}
+
+PdeImportDialog::Read PdeImportDialog::readOriginal(const QString& objPath) {
+    Read out;
+    mesh::ObjReadResult read = mesh::readObjFile(objPath.toStdString());
+    if (!read.ok()) {
+        out.why = QString::fromStdString(read.error);
+        return out;
+    }
+    auto original = std::make_shared<Original>();
+    original->mesh = std::move(*read.mesh);
+    if (original->mesh.normals.size() != original->mesh.positions.size())
+        original->mesh.normals = mesh::vertexNormals(original->mesh);
+    original->lines = std::move(read.triangleLines);
+    original->tree = std::make_unique<const mesh::TriangleTree>(original->mesh);
+    std::error_code ec;
+    original->fileBytes = std::size_t(std::filesystem::file_size(objPath.toStdString(), ec));
+    out.original = std::move(original);
+    return out;
+}
+
+void PdeImportDialog::readDone(const QString& objPath, Read r) {
+    if (objPath != objPath_) return; // another file was asked for since
+    if (!r.original) {
+        progress_->setVisible(false);
+        figuresText_->setText(tr("The mesh could not be read: %1").arg(r.why));
+        Q_EMIT loadFailed(r.why);
+        return;
+    }
+    original_ = std::move(r.original);
     requestFit();
-    return true;
 }
 
 double PdeImportDialog::goalValue() const {
@@ -197,7 +222,7 @@ double PdeImportDialog::goalValue() const {
 void PdeImportDialog::setGoal(Goal goal, double value) {
     showGoal(goal, value);
     curve_.clear(); // the student chose: a curve being measured gives way
-    if (mesh_) requestFit();
+    if (original_) requestFit();
 }
 
 void PdeImportDialog::showGoal(Goal goal, double value) {
@@ -224,13 +249,13 @@ void PdeImportDialog::showGoalText() {
 }
 
 bool PdeImportDialog::fitting() const {
-    return worker_.busy() || settle_.isActive();
+    return reader_.busy() || worker_.busy() || settle_.isActive();
 }
 
 void PdeImportDialog::requestFit() {
     settle_.stop();
-    if (!mesh_) return;
-    Job job{++generation_, mesh_, lines_, goal_, goalValue()};
+    if (!original_) return;
+    Job job{++generation_, original_, goal_, goalValue()};
     if (!curve_.empty()) {
         job.goal = Goal::Patches;
         job.value = double(curve_.front());
@@ -268,7 +293,8 @@ PdeImportDialog::Outcome PdeImportDialog::runFit(const Job& job) {
     };
     const auto started = std::chrono::steady_clock::now();
     std::string why;
-    const auto fit = pde::fitMesh(*job.mesh, o, &why, job.lines.get());
+    const Original& original = *job.original;
+    const auto fit = pde::fitMesh(original.mesh, o, &why, &original.lines);
     out.fitMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
             .count();
@@ -276,14 +302,16 @@ PdeImportDialog::Outcome PdeImportDialog::runFit(const Job& job) {
         out.why = QString::fromStdString(why);
         return out;
     }
-    out.measured = pde::measureFit(*job.mesh, fit->model, {}, &why);
+    pde::MeasureOptions measuring;
+    measuring.originalTree = original.tree.get();
+    out.measured = pde::measureFit(original.mesh, fit->model, measuring, &why);
     if (!out.measured) {
         out.why = QString::fromStdString(why);
         return out;
     }
     // The reconstruction coloured by each vertex's distance to the mesh.
     mesh::Mesh& rebuilt = out.measured->rebuilt;
-    const std::vector<double> d = mesh::vertexDistances(rebuilt, mesh::TriangleTree(*job.mesh));
+    const std::vector<double> d = mesh::vertexDistances(rebuilt, *original.tree);
     rebuilt.colours.resize(d.size());
     for (std::size_t i = 0; i < d.size(); ++i)
         rebuilt.colours[i] = errorColour(d[i] / out.measured->diagonal);
@@ -319,7 +347,7 @@ void PdeImportDialog::showFit(const Outcome& r) {
     f.patches = m.model.patches.size();
     f.maxRadii = m.model.maxRadii();
     f.bytes = m.bytes.size();
-    f.objBytes = objBytes_;
+    f.objBytes = original_ ? original_->fileBytes : 0;
     f.rms = m.rms();
     f.hausdorff = m.hausdorff();
     f.fitMs = r.fitMs;
@@ -343,7 +371,7 @@ void PdeImportDialog::showFit(const Outcome& r) {
     const double width = m.model.hi[0] - m.model.lo[0];
     const double apart = 0.55 * (width > 0 ? width : m.diagonal) + 0.05 * m.diagonal;
     auto meshes = std::make_shared<mesh::SceneMeshes>();
-    meshes->shapes.push_back(shapeOf("the mesh", *mesh_, -apart));
+    meshes->shapes.push_back(shapeOf("the mesh", original_->mesh, -apart));
     meshes->shapes.push_back(shapeOf("the PDE model", m.rebuilt, apart));
     view_->setMeshes(meshes);
 }

@@ -39,9 +39,10 @@ class PdeImportDialog : public QDialog {
     explicit PdeImportDialog(QWidget* parent = nullptr);
     ~PdeImportDialog() override;
 
-    // Reads the mesh and starts fitting it; false, with a located message in
-    // `error`, for a file that is not a mesh one can fit.
-    bool load(const QString& objPath, QString* error);
+    // Reads the mesh on a worker thread (the dialog says it is reading: a
+    // large file must not freeze the window), then fits it. A file that is
+    // not a mesh one can fit is said by loadFailed, with a located message.
+    void load(const QString& objPath);
 
     enum class Goal { Error, Patches };
     // What the slider sets: the RMS miss to reach (a fraction of the box
@@ -74,14 +75,30 @@ class PdeImportDialog : public QDialog {
 
   Q_SIGNALS:
     void fitted(); // a fit ended (shown, failed, or cancelled by a newer one)
+    // The file given to load() could not be read as a mesh ("notes.obj:2:7: ...").
+    void loadFailed(const QString& why);
     // Save wrote this scene: the window opens it.
     void sceneSaved(const QString& scenePath);
 
   private:
+    // The mesh as read, with what every fit of it needs: the OBJ lines of its
+    // triangles (for located messages) and its distance tree, built once
+    // (each fit is measured and coloured against it).
+    struct Original {
+        mesh::Mesh mesh;
+        std::vector<std::uint32_t> lines;
+        std::unique_ptr<const mesh::TriangleTree> tree; // of `mesh`
+        std::size_t fileBytes = 0;
+    };
+    struct Read {
+        std::shared_ptr<const Original> original;
+        QString why; // empty when read
+    };
+    static Read readOriginal(const QString& objPath); // on the reader
+    void readDone(const QString& objPath, Read r);    // on the interface thread
     struct Job {
         int generation = 0;
-        std::shared_ptr<const mesh::Mesh> mesh;
-        std::shared_ptr<const std::vector<std::uint32_t>> lines;
+        std::shared_ptr<const Original> original;
         Goal goal = Goal::Error;
         double value = 0;
         bool curve = false; // a count of "Measure the curve"
@@ -102,10 +119,8 @@ class PdeImportDialog : public QDialog {
     void saveAsked();
     void addChartRow(const Figures& f);
 
-    std::shared_ptr<const mesh::Mesh> mesh_;
-    std::shared_ptr<const std::vector<std::uint32_t>> lines_;
+    std::shared_ptr<const Original> original_;
     QString objPath_;
-    std::size_t objBytes_ = 0;
     Goal goal_ = Goal::Error;
     double value_ = 0.003; // the goal's error or patch count
     int generation_ = 0;
@@ -125,7 +140,8 @@ class PdeImportDialog : public QDialog {
     QTimer settle_; // a slider still moving is not fitted at every step
 
     std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
-    // Last: it stops and joins the running fit before the rest goes.
+    // Last: they stop and join the running read and fit before the rest goes.
+    platform::NewestOnlyWorker<QString, Read> reader_;
     platform::NewestOnlyWorker<Job, Outcome> worker_;
 };
 
