@@ -201,9 +201,12 @@ struct Observations {
     }
 };
 
-// From the highest sample, Newton steps towards f = 0: does f become
-// positive somewhere (a solid thinner than a cell), or only touch zero (no
-// inside at all, as f = -g^2)? Returns the highest value reached.
+// From the highest sample, Newton steps towards f = 0, each 1 % longer than
+// Newton's: does f become positive somewhere (a solid thinner than a cell:
+// the longer steps cross its surface instead of creeping up to it from
+// outside, which only rounding could decide), or only touch zero (no inside
+// at all, as f = -g^2: the steps still shrink towards g = 0)? Returns the
+// highest value reached.
 double climbTowardsZero(FieldSampler& sampler, Vec3 p) {
     double best = sampler.value(p);
     for (int step = 0; step < 60 && best < 0; ++step) {
@@ -211,7 +214,7 @@ double climbTowardsZero(FieldSampler& sampler, Vec3 p) {
         const double g2 = d.d[0] * d.d[0] + d.d[1] * d.d[1] + d.d[2] * d.d[2];
         if (!(g2 > 0) || !std::isfinite(d.v)) break;
         for (std::size_t a = 0; a < 3; ++a)
-            p[a] -= d.v * d.d[a] / g2;
+            p[a] -= 1.01 * d.v * d.d[a] / g2;
         const double f = sampler.value(p);
         if (!std::isfinite(f)) break;
         best = std::max(best, f);
@@ -581,16 +584,28 @@ class Contourer {
             }
         }
         // Normals: the gradients of all the block's crossings in one call.
+        // A crossing at a grid corner (f exactly 0 there: a surface through
+        // the lattice, as a plane x = 0 in a box symmetric about it) may sit
+        // on a crease of min/max, where the gradient is either side's; a
+        // step of 1e-4 of the edge into it gives the side this edge crosses.
+        // (Taken at the corner, the wedge cut out of the watermelon got one
+        // plane's normal on both of its faces' crossings along their shared
+        // edge, and that edge's vertices sat a cell off it.)
+        constexpr double kIntoTheEdge = 1e-4;
+        crossingAt_.clear();
         gradientAt_.clear();
-        for (const PendingCrossing& p : pending_)
-            gradientAt_.push_back(at(p, std::clamp(p.t, 0.0, 1.0)));
+        for (const PendingCrossing& p : pending_) {
+            const double t = std::clamp(p.t, 0.0, 1.0);
+            crossingAt_.push_back(at(p, t));
+            gradientAt_.push_back(at(p, std::clamp(t, kIntoTheEdge, 1 - kIntoTheEdge)));
+        }
         gradientOut_.resize(gradientAt_.size());
         if (!gradientAt_.empty())
             sampler.gradients(gradientAt_.data(), gradientAt_.size(), gradientOut_.data());
         for (std::size_t n = 0; n < pending_.size(); ++n) {
             const PendingCrossing& p = pending_[n];
             Crossing& x = crossings_[std::size_t(p.slot)];
-            x.point = gradientAt_[n];
+            x.point = crossingAt_[n];
             bool ok = false;
             x.normal = normalised(gradientOut_[n].d, ok);
             if (!ok) { // no gradient here: the edge's own direction
@@ -829,7 +844,7 @@ class Contourer {
     std::array<double, kCorners> values_{}; // of the block being sampled (NaN: not evaluated)
     IndexSet<3 * kCorners> edgesSeen_;      // the block's sign-changing edges, by slot
     std::vector<int> found_;                // those edges in increasing order
-    std::vector<Vec3> gradientAt_;
+    std::vector<Vec3> crossingAt_, gradientAt_;
     std::vector<formula::Dual> gradientOut_;
     struct CellQef {
         std::uint32_t vertex = 0; // block-local, once made
@@ -946,7 +961,15 @@ Grid makeGrid(const ImplicitField& field, double resolution) {
         // Closed: half a cell of margin on each side, so the box faces cut
         // cells through their middle and never land on corners.
         const bool closed = field.boundary == BoxBoundary::Closed;
-        g.origin[a] = field.box.lo[a] - (closed ? g.h[a] / 2 : 0);
+        // Open: the lattice is moved back by a few millionths of a cell
+        // (different on each axis), so that the planes through a box's
+        // centre that students write (x = 0, z = x) do not pass exactly
+        // through its corners: there f is 0 on whole lines of corners and a
+        // crease's crossings sit on the crease itself, where the gradient is
+        // either side's (the watermelon's cut had its inner edge's vertices
+        // half a cell off it, max error 1.1e-3 of the diagonal at 128).
+        static constexpr double kOpenShift[3] = {3.1e-6, 4.3e-6, 5.7e-6};
+        g.origin[a] = field.box.lo[a] - (closed ? g.h[a] / 2 : kOpenShift[a] * g.h[a]);
         g.cells[a] = n + (closed ? 1 : 0);
         g.blocks[a] = (g.cells[a] + kB - 1) / kB;
     }

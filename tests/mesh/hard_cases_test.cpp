@@ -172,3 +172,24 @@ TEST(HardCases, TwoSheetsInOneCellGetTwoVertices) {
     for (const Vec3f& p : r.mesh.positions)
         EXPECT_NEAR(std::abs(p[1] - 0.013f), 0.03f, 1e-4f);
 }
+
+TEST(HardCases, PlanesThroughTheBoxCentreMissTheLatticeCorners) {
+    // A symmetric open box puts grid corners on x = 0, z = 0 and z = x: on
+    // the watermelon's cut, f is 0 on whole lines of corners and its inner
+    // edge (x = z = 0) runs along grid edges. The lattice is moved off by
+    // millionths of a cell, so every crossing lies on one face of the cut.
+    const ImplicitField f =
+        field("min(1 - x^2 - y^2 - z^2, -min(min(z - x, y), z))", 1.1, BoxBoundary::Open);
+    MeshOptions o;
+    o.resolution = 64;
+    const MeshResult r = meshImplicit(f, o);
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_LT(maxSurfaceError(f, r.mesh), 1e-3);
+    // The inner edge has its own vertices on it (they sat a cell away, on
+    // neither face, when crossings at corners took either face's normal).
+    std::size_t onTheEdge = 0;
+    for (const Vec3f& p : r.mesh.positions)
+        if (p[1] > 0.2f && p[1] < 0.8f && std::hypot(p[0], p[2]) < 1e-4f) ++onTheEdge;
+    EXPECT_GT(onTheEdge, 10u);
+}
