@@ -1,5 +1,6 @@
 #include "accuracy_chart.h"
 
+#include <QFontMetricsF>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -190,7 +191,17 @@ void AccuracyChart::paintEvent(QPaintEvent*) {
     p.save();
     p.translate(10, a.center().y());
     p.rotate(-90);
-    p.drawText(QRectF(-a.height() / 2, -8, a.height(), 14), Qt::AlignHCenter, yLabel());
+    // Up the side of a short chart the title would be cut at both ends: a
+    // smaller font first (down to 7 points), then an ellipsis.
+    QFont titleFont = p.font();
+    QFontMetricsF fits(titleFont);
+    while (fits.horizontalAdvance(yLabel()) > a.height() && titleFont.pointSizeF() > 7) {
+        titleFont.setPointSizeF(titleFont.pointSizeF() - 0.5);
+        fits = QFontMetricsF(titleFont);
+    }
+    p.setFont(titleFont);
+    p.drawText(QRectF(-a.height() / 2, -8, a.height(), 14), Qt::AlignHCenter,
+               fits.elidedText(yLabel(), Qt::ElideRight, a.height()));
     p.restore();
     // The level of detail's range: a band under the adaptive points it may use.
     if (lod_.second > 0) {
