@@ -133,9 +133,16 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
         for (int i = 0; i < nf; ++i)
             y[free[i]] = c[free[i]] + delta[i];
     }
+    // In the box, and finite whatever the sums did (planes at 1e300 overflow
+    // them): the mass point, or the box's centre, stands in for a NaN.
+    const std::array<double, 3> mass = massPoint();
     std::array<double, 3> out{};
-    for (std::size_t a = 0; a < 3; ++a)
-        out[a] = std::clamp(origin_[a] + y[Eigen::Index(a)], lo[a], hi[a]);
+    for (std::size_t a = 0; a < 3; ++a) {
+        double v = origin_[a] + y[Eigen::Index(a)];
+        if (!std::isfinite(v)) v = mass[a];
+        if (!std::isfinite(v)) v = lo[a] / 2 + hi[a] / 2;
+        out[a] = std::clamp(v, lo[a], hi[a]);
+    }
     return out;
 }
 

@@ -85,3 +85,18 @@ TEST(Qef, NothingAddedOrNotFiniteStaysInTheBox) {
     for (double c : r)
         EXPECT_NEAR(c, 0.5, 1e-12);
 }
+
+TEST(Qef, PlanesFarBeyondTheBoxStillGiveAFinitePointInIt) {
+    // Planes at +-1.5e308: their differences from the first overflow to
+    // infinity; the point must still be a number in the box.
+    Qef q;
+    q.add({1.5e308, 0, 0}, {1, 0, 0});
+    q.add({-1.5e308, 1.5e308, 0}, {0, 1, 0});
+    q.add({-1.5e308, -1.5e308, 1.5e308}, {0.6, 0, 0.8});
+    const Point p = q.solveInBox({-1, -1, -1}, {1, 1, 1}, 0.1);
+    for (double c : p) {
+        EXPECT_TRUE(std::isfinite(c));
+        EXPECT_GE(c, -1.0);
+        EXPECT_LE(c, 1.0);
+    }
+}
