@@ -128,6 +128,7 @@ struct PendingCrossing {
     double fa = 0, fb = 0;
     double ta = 0, tb = 1, t = 0.5;
     bool done = false;
+    int kept = 0; // which end the last step kept: +1 b, -1 a (Illinois)
 };
 
 // What a vertex costs from sampling to the finished mesh: in its block (its
@@ -613,6 +614,7 @@ class Contourer {
         gradientOut_.resize(gradientAt_.size());
         if (!gradientAt_.empty())
             sampler.gradients(gradientAt_.data(), gradientAt_.size(), gradientOut_.data());
+        refineStragglers(sampler, at);
         for (std::size_t n = 0; n < pending_.size(); ++n) {
             const PendingCrossing& p = pending_[n];
             Crossing& x = crossings_[std::size_t(p.slot)];
@@ -625,6 +627,86 @@ class Contourer {
             }
         }
         edgesSeen_.appendTo(found_); // every edge seen has its crossing now, in a fixed order
+    }
+
+    // Crossings the regula falsi steps left more than a thousandth of a cell
+    // off the surface (by the value and gradient just taken there): where
+    // min/max kinks f along the edge, the line through the edge's ends
+    // misses the zero by much of the edge — on the watermelon, a sphere
+    // crossing put a tenth of a cell up the edge, inside the solid, with the
+    // cut plane's normal — and plain regula falsi crawls from one side.
+    // These few take more steps of Illinois's variant (the end kept twice
+    // has its value halved, so the bracket closes from both sides), then
+    // their gradients again. A smooth field's crossings never come here.
+    template <class At>
+    void refineStragglers(FieldSampler& sampler, At at) {
+        constexpr int kMoreSteps = 12;
+        constexpr double kOffBy = 1e-3; // of the cell
+        stragglers_.clear();
+        for (std::size_t n = 0; n < pending_.size(); ++n) {
+            const PendingCrossing& p = pending_[n];
+            const formula::Dual& g = gradientOut_[n];
+            const double slope = std::sqrt(g.d[0] * g.d[0] + g.d[1] * g.d[1] + g.d[2] * g.d[2]);
+            if (!(slope > 0) || !std::isfinite(g.v)) continue;
+            if (std::abs(g.v) > kOffBy * grid_.h[std::size_t(p.axis)] * slope)
+                stragglers_.push_back(n);
+        }
+        if (stragglers_.empty()) return;
+        for (std::size_t n : stragglers_)
+            pending_[n].done = false;
+        for (int step = 0; step < kMoreSteps; ++step) {
+            xs_.clear();
+            ys_.clear();
+            zs_.clear();
+            for (std::size_t n : stragglers_) {
+                const Vec3 q = at(pending_[n], pending_[n].t);
+                xs_.push_back(q[0]);
+                ys_.push_back(q[1]);
+                zs_.push_back(q[2]);
+            }
+            out_.resize(stragglers_.size());
+            sampler.values(xs_.data(), ys_.data(), zs_.data(), stragglers_.size(), out_.data());
+            bool any = false;
+            for (std::size_t i = 0; i < stragglers_.size(); ++i) {
+                PendingCrossing& p = pending_[stragglers_[i]];
+                const double f = out_[i];
+                if (p.done) continue;
+                if (!std::isfinite(f) || f == 0) {
+                    p.done = true;
+                    continue;
+                }
+                if (inside(f) == inside(p.fa)) {
+                    p.ta = p.t;
+                    p.fa = f;
+                    if (p.kept == 1) p.fb /= 2; // b kept twice
+                    p.kept = 1;
+                } else {
+                    p.tb = p.t;
+                    p.fb = f;
+                    if (p.kept == -1) p.fa /= 2; // a kept twice
+                    p.kept = -1;
+                }
+                const double next = p.ta - p.fa * (p.tb - p.ta) / (p.fb - p.fa);
+                if (!(next >= p.ta && next <= p.tb) || p.tb - p.ta < 1e-12) {
+                    p.done = true;
+                    continue;
+                }
+                p.t = next;
+                any = true;
+            }
+            if (!any) break;
+        }
+        gradientAt_.resize(stragglers_.size());
+        for (std::size_t i = 0; i < stragglers_.size(); ++i) {
+            const PendingCrossing& p = pending_[stragglers_[i]];
+            const double t = std::clamp(p.t, 0.0, 1.0);
+            crossingAt_[stragglers_[i]] = at(p, t);
+            gradientAt_[i] = at(p, std::clamp(t, 1e-4, 1 - 1e-4));
+        }
+        redoneOut_.resize(stragglers_.size());
+        sampler.gradients(gradientAt_.data(), stragglers_.size(), redoneOut_.data());
+        for (std::size_t i = 0; i < stragglers_.size(); ++i)
+            gradientOut_[stragglers_[i]] = redoneOut_[i];
     }
 
     // One vertex per cell the crossings touch: each crossing adds its plane
@@ -871,6 +953,8 @@ class Contourer {
     IndexSet<3 * kCorners> edgesSeen_;      // the block's sign-changing edges, by slot
     std::vector<int> found_;                // those edges in increasing order
     std::vector<Vec3> crossingAt_, gradientAt_;
+    std::vector<std::size_t> stragglers_;  // pending_ entries refined further
+    std::vector<formula::Dual> redoneOut_; // their gradients
     std::vector<formula::Dual> gradientOut_;
     struct CellQef {
         std::uint32_t vertex = 0; // block-local, once made
