@@ -1071,15 +1071,24 @@ Grid makeGrid(const ImplicitField& field, double resolution) {
         // Closed: half a cell of margin on each side, so the box faces cut
         // cells through their middle and never land on corners.
         const bool closed = field.boundary == BoxBoundary::Closed;
-        // Open: the lattice is moved back by a few millionths of a cell
-        // (different on each axis), so that the planes through a box's
-        // centre that students write (x = 0, z = x) do not pass exactly
-        // through its corners: there f is 0 on whole lines of corners and a
-        // crease's crossings sit on the crease itself, where the gradient is
-        // either side's (the watermelon's cut had its inner edge's vertices
-        // half a cell off it, max error 1.1e-3 of the diagonal at 128).
-        static constexpr double kOpenShift[3] = {3.1e-6, 4.3e-6, 5.7e-6};
-        g.origin[a] = field.box.lo[a] - (closed ? g.h[a] / 2 : kOpenShift[a] * g.h[a]);
+        // Open: the lattice reaches a few millionths of a cell past the box
+        // on each side, by different amounts (and per axis), so that the
+        // planes through a box's centre that students write (x = 0, z = x)
+        // do not pass exactly through its corners: there f is 0 on whole
+        // lines of corners and a crease's crossings sit on the crease
+        // itself, where the gradient is either side's (the watermelon's cut
+        // had its inner edge's vertices half a cell off it, max error 1.1e-3
+        // of the diagonal at 128). Past the box on both sides, not moved:
+        // a ball touching the box's faces still closes at its tips.
+        static constexpr double kBefore[3] = {3.1e-6, 4.3e-6, 5.7e-6};
+        static constexpr double kAfter[3] = {7.3e-6, 2.9e-6, 6.1e-6};
+        if (!closed) {
+            const double h0 = g.h[a];
+            g.h[a] = (size + (kBefore[a] + kAfter[a]) * h0) / n;
+            g.origin[a] = field.box.lo[a] - kBefore[a] * h0;
+        } else {
+            g.origin[a] = field.box.lo[a] - g.h[a] / 2;
+        }
         g.cells[a] = n + (closed ? 1 : 0);
         g.blocks[a] = (g.cells[a] + kB - 1) / kB;
     }

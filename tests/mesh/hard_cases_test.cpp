@@ -210,3 +210,20 @@ TEST(HardCases, ACrossingOnAKinkedEdgeIsFoundOnTheSurface) {
     ASSERT_TRUE(r.ok()) << r.error;
     EXPECT_LT(measureSurfaceError(f, r.mesh).max, 5e-5); // 7 points a triangle, as bench accuracy
 }
+
+TEST(HardCases, ABallTouchingItsOpenBoxIsStillClosed) {
+    // The window's new scene: the unit ball in its default box [-1, 1]^3,
+    // touching the faces at six points. The open lattice reaches a hair past
+    // the box on every side (it is only moved off the box's planes), so the
+    // tips are meshed and the ball is closed.
+    const ImplicitField f = field("1 - x^2 - y^2 - z^2", 1.0, BoxBoundary::Open);
+    for (double resolution : {16.0, 40.0, 64.0}) {
+        MeshOptions o;
+        o.resolution = resolution;
+        const MeshResult r = meshImplicit(f, o);
+        ASSERT_TRUE(r.ok()) << r.error;
+        const Topology t = analyseTopology(r.mesh);
+        EXPECT_EQ(t.boundaryEdges, 0u) << resolution;
+        EXPECT_EQ(t.eulerCharacteristic, 2) << resolution;
+    }
+}
