@@ -24,6 +24,9 @@ constexpr int kCorners = kC * kC * kC;
 constexpr int kCells = kB * kB * kB;
 // How far outside its cell (in cells) a vertex may be placed (buildVertices).
 constexpr double kVertexRoom = 0.5;
+// Where a crossing's gradient is taken: this fraction of its edge inside it
+// when the crossing lies at a corner (computeCrossings says why).
+constexpr double kIntoTheEdge = 1e-4;
 
 // FRep: f >= 0 is the solid, f = 0 its boundary. The mesher meshes the
 // boundary of the interior f > 0, which is the same surface for every regular
@@ -603,7 +606,6 @@ class Contourer {
         // (Taken at the corner, the wedge cut out of the watermelon got one
         // plane's normal on both of its faces' crossings along their shared
         // edge, and that edge's vertices sat a cell off it.)
-        constexpr double kIntoTheEdge = 1e-4;
         crossingAt_.clear();
         gradientAt_.clear();
         for (const PendingCrossing& p : pending_) {
@@ -701,7 +703,7 @@ class Contourer {
             const PendingCrossing& p = pending_[stragglers_[i]];
             const double t = std::clamp(p.t, 0.0, 1.0);
             crossingAt_[stragglers_[i]] = at(p, t);
-            gradientAt_[i] = at(p, std::clamp(t, 1e-4, 1 - 1e-4));
+            gradientAt_[i] = at(p, std::clamp(t, kIntoTheEdge, 1 - kIntoTheEdge));
         }
         redoneOut_.resize(stragglers_.size());
         sampler.gradients(gradientAt_.data(), stragglers_.size(), redoneOut_.data());
