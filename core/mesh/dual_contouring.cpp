@@ -256,10 +256,27 @@ int cellConfig(const std::vector<std::uint8_t>& states, int ci, int cj, int ck) 
 
 // The piece of surface edge `edge` of a cell is on (0 for a cell of unknown
 // configuration: one piece).
+// (edgeGroups' answers for every configuration, in a table of 3 KB made
+// once: the mesher asks about four times a vertex, and the call with its
+// guarded static was a twentieth of buildVertices.)
+const std::array<std::array<std::int8_t, 12>, 256>& pieceTable() {
+    static const auto table = [] {
+        std::array<std::array<std::int8_t, 12>, 256> t{};
+        for (int config = 0; config < 256; ++config)
+            for (std::size_t edge = 0; edge < 12; ++edge) {
+                const int piece = edgeGroups(config).group[edge];
+                t[std::size_t(config)][edge] =
+                    std::int8_t(piece >= 0 && piece < kPieces ? piece : 0);
+            }
+        return t;
+    }();
+    return table;
+}
+int pieceOf(const std::array<std::array<std::int8_t, 12>, 256>& table, int config, int edge) {
+    return config < 0 ? 0 : table[std::size_t(config)][std::size_t(edge)];
+}
 int pieceOf(int config, int edge) {
-    if (config < 0) return 0;
-    const int piece = edgeGroups(config).group[std::size_t(edge)];
-    return piece >= 0 && piece < kPieces ? piece : 0;
+    return pieceOf(pieceTable(), config, edge);
 }
 
 // The block-local vertex of a cell's piece of surface that `edge` is on, or
@@ -719,6 +736,7 @@ class Contourer {
         qefs_.clear();
         cellsTouched_.clear();
         around_.assign(found_.size(), {-1, -1, -1, -1});
+        const auto& pieces = pieceTable();
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int slot = found_[n];
             const Crossing& x = crossings_[std::size_t(slot)];
@@ -741,7 +759,8 @@ class Contourer {
                 const int edge = cubeEdge(axis, corner[u] - cell[u], corner[v] - cell[v]);
                 const int index =
                     cellIndex(cell[0], cell[1], cell[2]) * kPieces +
-                    pieceOf(configs_[std::size_t(cellIndex(cell[0], cell[1], cell[2]))], edge);
+                    pieceOf(pieces, configs_[std::size_t(cellIndex(cell[0], cell[1], cell[2]))],
+                            edge);
                 if (!cellsTouched_.contains(std::size_t(index))) {
                     cellsTouched_.insert(std::size_t(index));
                     qefSlot_[std::size_t(index)] = std::uint16_t(qefs_.size());

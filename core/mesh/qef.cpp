@@ -7,28 +7,6 @@
 
 namespace fl::mesh {
 
-void Qef::add(const std::array<double, 3>& p, const std::array<double, 3>& n) {
-    if (count_ == 0) origin_ = p;
-    const double x = p[0] - origin_[0], y = p[1] - origin_[1], z = p[2] - origin_[2];
-    const double d = n[0] * x + n[1] * y + n[2] * z;
-    ata_[0] += n[0] * n[0];
-    ata_[1] += n[0] * n[1];
-    ata_[2] += n[0] * n[2];
-    ata_[3] += n[1] * n[1];
-    ata_[4] += n[1] * n[2];
-    ata_[5] += n[2] * n[2];
-    atb_[0] += n[0] * d;
-    atb_[1] += n[1] * d;
-    atb_[2] += n[2] * d;
-    pointSum_[0] += x;
-    pointSum_[1] += y;
-    pointSum_[2] += z;
-    normalSum_[0] += n[0];
-    normalSum_[1] += n[1];
-    normalSum_[2] += n[2];
-    ++count_;
-}
-
 std::array<double, 3> Qef::massPoint() const {
     if (!count_) return {0, 0, 0};
     return {origin_[0] + pointSum_[0] / count_, origin_[1] + pointSum_[1] / count_,

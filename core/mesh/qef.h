@@ -12,7 +12,29 @@ namespace fl::mesh {
 
 class Qef {
   public:
-    void add(const std::array<double, 3>& point, const std::array<double, 3>& normal);
+    // Inline: the mesher adds about four planes a vertex.
+    void add(const std::array<double, 3>& point, const std::array<double, 3>& normal) {
+        if (count_ == 0) origin_ = point;
+        const double x = point[0] - origin_[0], y = point[1] - origin_[1],
+                     z = point[2] - origin_[2];
+        const double d = normal[0] * x + normal[1] * y + normal[2] * z;
+        ata_[0] += normal[0] * normal[0];
+        ata_[1] += normal[0] * normal[1];
+        ata_[2] += normal[0] * normal[2];
+        ata_[3] += normal[1] * normal[1];
+        ata_[4] += normal[1] * normal[2];
+        ata_[5] += normal[2] * normal[2];
+        atb_[0] += normal[0] * d;
+        atb_[1] += normal[1] * d;
+        atb_[2] += normal[2] * d;
+        pointSum_[0] += x;
+        pointSum_[1] += y;
+        pointSum_[2] += z;
+        normalSum_[0] += normal[0];
+        normalSum_[1] += normal[1];
+        normalSum_[2] += normal[2];
+        ++count_;
+    }
     int count() const { return count_; }
     std::array<double, 3> massPoint() const;
     // The minimiser; eigenvalues below `relativeCutoff` times the largest are
