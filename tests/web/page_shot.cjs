@@ -1,9 +1,13 @@
 // Opens a FunctionLab web page in headless Chromium and takes screenshots:
-//   node page_shot.cjs URL WIDTHxHEIGHT FIRST.png [SECOND.png] [--timeout SECONDS] [--follow]
+//   node page_shot.cjs URL WIDTHxHEIGHT FIRST.png [SECOND.png [THIRD.png]]
+//                      [--timeout SECONDS] [--follow]
 // Waits until the page says it is ready (body[data-ready], set by
 // viewer/functionlab-page.js), lets two frames pass, saves FIRST.png; with
 // SECOND.png, waits a quarter of the shortest cycle among the page's active
-// TimeSensors (1 s when none plays; at most 20 s) and saves it too.
+// TimeSensors (1 s when none plays; at most 20 s) and saves it too; with
+// THIRD.png, waits another 0.15 of that cycle and saves it (a motion that is
+// symmetric in time — a bounce — can look the same a quarter cycle apart,
+// but not both a quarter and 0.4 of a cycle apart).
 // Prints one JSON line: {ready, status, activeCycles, waitedMs, errors}.
 // --follow (the class's live page): after FIRST.png prints {ready, version},
 // waits for a line on stdin (the test has sent an edit), then for the page's
@@ -27,9 +31,10 @@ for (let i = 0; i < args.length; ++i) {
   else if (args[i] === "--follow") follow = true;
   else positional.push(args[i]);
 }
-const [url, size, first, second] = positional;
+const [url, size, first, second, third] = positional;
 if (!url || !/^\d+x\d+$/.test(size || "") || !first) {
-  console.error("usage: node page_shot.cjs URL WIDTHxHEIGHT FIRST.png [SECOND.png] [--timeout S]");
+  console.error(
+    "usage: node page_shot.cjs URL WIDTHxHEIGHT FIRST.png [SECOND.png [THIRD.png]] [--timeout S]");
   process.exit(2);
 }
 const [width, height] = size.split("x").map(Number);
@@ -135,6 +140,12 @@ setTimeout(() => finish(1, { ready: "timeout", status: "no answer in " + timeout
     await sleep(waitedMs);
     await evaluate(frames);
     await shoot(second);
+    if (third) {
+      const more = Math.min(12000, shortest * 150);
+      await sleep(more);
+      await evaluate(frames);
+      await shoot(third);
+    }
   }
   finish(0, { ready, status, activeCycles, waitedMs, errors });
 })().catch(error => finish(1, { ready: "error", status: String(error), errors }));
