@@ -576,44 +576,10 @@ class Contourer {
                             visit(axis, s0[0] + di, s0[1] + dj, s0[2] + dk);
             }
         }
-        auto at = [](const PendingCrossing& p, double t) {
-            Vec3 q = p.pa;
-            const std::size_t a = std::size_t(p.axis);
-            q[a] = p.pa[a] + t * (p.pb[a] - p.pa[a]);
-            return q;
-        };
         for (int step = 0; step < options_.refineSteps && !pending_.empty(); ++step) {
-            xs_.clear();
-            ys_.clear();
-            zs_.clear();
-            for (const PendingCrossing& p : pending_) {
-                const Vec3 q = at(p, p.t);
-                xs_.push_back(q[0]);
-                ys_.push_back(q[1]);
-                zs_.push_back(q[2]);
-            }
-            out_.resize(pending_.size());
-            sampler.values(xs_.data(), ys_.data(), zs_.data(), pending_.size(), out_.data());
-            for (std::size_t n = 0; n < pending_.size(); ++n) {
-                PendingCrossing& p = pending_[n];
-                const double f = out_[n];
-                if (p.done || !std::isfinite(f) || f == 0) {
-                    p.done = true;
-                    continue;
-                }
-                if (inside(f) == inside(p.fa)) {
-                    p.ta = p.t;
-                    p.fa = f;
-                } else {
-                    p.tb = p.t;
-                    p.fb = f;
-                }
-                const double next = p.ta - p.fa * (p.tb - p.ta) / (p.fb - p.fa);
-                if (next >= p.ta && next <= p.tb)
-                    p.t = next;
-                else
-                    p.done = true;
-            }
+            evaluateGuesses(sampler, nullptr);
+            for (std::size_t n = 0; n < pending_.size(); ++n)
+                bracketStep(pending_[n], out_[n], false);
         }
         // Normals: the gradients of all the block's crossings in one call.
         // A crossing at a grid corner (f exactly 0 there: a surface through
@@ -623,17 +589,14 @@ class Contourer {
         // (Taken at the corner, the wedge cut out of the watermelon got one
         // plane's normal on both of its faces' crossings along their shared
         // edge, and that edge's vertices sat a cell off it.)
-        crossingAt_.clear();
-        gradientAt_.clear();
-        for (const PendingCrossing& p : pending_) {
-            const double t = std::clamp(p.t, 0.0, 1.0);
-            crossingAt_.push_back(at(p, t));
-            gradientAt_.push_back(at(p, std::clamp(t, kIntoTheEdge, 1 - kIntoTheEdge)));
-        }
+        crossingAt_.resize(pending_.size());
+        gradientAt_.resize(pending_.size());
+        for (std::size_t n = 0; n < pending_.size(); ++n)
+            place(pending_[n], crossingAt_[n], gradientAt_[n]);
         gradientOut_.resize(gradientAt_.size());
         if (!gradientAt_.empty())
             sampler.gradients(gradientAt_.data(), gradientAt_.size(), gradientOut_.data());
-        refineStragglers(sampler, at);
+        refineStragglers(sampler);
         for (std::size_t n = 0; n < pending_.size(); ++n) {
             const PendingCrossing& p = pending_[n];
             Crossing& x = crossings_[std::size_t(p.slot)];
@@ -657,8 +620,7 @@ class Contourer {
     // These few take more steps of Illinois's variant (the end kept twice
     // has its value halved, so the bracket closes from both sides), then
     // their gradients again. A smooth field's crossings never come here.
-    template <class At>
-    void refineStragglers(FieldSampler& sampler, At at) {
+    void refineStragglers(FieldSampler& sampler) {
         constexpr int kMoreSteps = 12;
         constexpr double kOffBy = 1e-3; // of the cell
         stragglers_.clear();
@@ -674,58 +636,81 @@ class Contourer {
         for (std::size_t n : stragglers_)
             pending_[n].done = false;
         for (int step = 0; step < kMoreSteps; ++step) {
-            xs_.clear();
-            ys_.clear();
-            zs_.clear();
-            for (std::size_t n : stragglers_) {
-                const Vec3 q = at(pending_[n], pending_[n].t);
-                xs_.push_back(q[0]);
-                ys_.push_back(q[1]);
-                zs_.push_back(q[2]);
-            }
-            out_.resize(stragglers_.size());
-            sampler.values(xs_.data(), ys_.data(), zs_.data(), stragglers_.size(), out_.data());
+            evaluateGuesses(sampler, &stragglers_);
             bool any = false;
-            for (std::size_t i = 0; i < stragglers_.size(); ++i) {
-                PendingCrossing& p = pending_[stragglers_[i]];
-                const double f = out_[i];
-                if (p.done) continue;
-                if (!std::isfinite(f) || f == 0) {
-                    p.done = true;
-                    continue;
-                }
-                if (inside(f) == inside(p.fa)) {
-                    p.ta = p.t;
-                    p.fa = f;
-                    if (p.kept == 1) p.fb /= 2; // b kept twice
-                    p.kept = 1;
-                } else {
-                    p.tb = p.t;
-                    p.fb = f;
-                    if (p.kept == -1) p.fa /= 2; // a kept twice
-                    p.kept = -1;
-                }
-                const double next = p.ta - p.fa * (p.tb - p.ta) / (p.fb - p.fa);
-                if (!(next >= p.ta && next <= p.tb) || p.tb - p.ta < 1e-12) {
-                    p.done = true;
-                    continue;
-                }
-                p.t = next;
-                any = true;
-            }
+            for (std::size_t i = 0; i < stragglers_.size(); ++i)
+                any = bracketStep(pending_[stragglers_[i]], out_[i], true) || any;
             if (!any) break;
         }
         gradientAt_.resize(stragglers_.size());
-        for (std::size_t i = 0; i < stragglers_.size(); ++i) {
-            const PendingCrossing& p = pending_[stragglers_[i]];
-            const double t = std::clamp(p.t, 0.0, 1.0);
-            crossingAt_[stragglers_[i]] = at(p, t);
-            gradientAt_[i] = at(p, std::clamp(t, kIntoTheEdge, 1 - kIntoTheEdge));
-        }
+        for (std::size_t i = 0; i < stragglers_.size(); ++i)
+            place(pending_[stragglers_[i]], crossingAt_[stragglers_[i]], gradientAt_[i]);
         redoneOut_.resize(stragglers_.size());
         sampler.gradients(gradientAt_.data(), stragglers_.size(), redoneOut_.data());
         for (std::size_t i = 0; i < stragglers_.size(); ++i)
             gradientOut_[stragglers_[i]] = redoneOut_[i];
+    }
+
+    static Vec3 pointOnEdge(const PendingCrossing& p, double t) {
+        Vec3 q = p.pa;
+        const std::size_t a = std::size_t(p.axis);
+        q[a] = p.pa[a] + t * (p.pb[a] - p.pa[a]);
+        return q;
+    }
+    // The crossing's point at its current guess, and where its gradient is
+    // taken (kIntoTheEdge inside the edge when the guess is at a corner).
+    static void place(const PendingCrossing& p, Vec3& point, Vec3& gradientAt) {
+        const double t = std::clamp(p.t, 0.0, 1.0);
+        point = pointOnEdge(p, t);
+        gradientAt = pointOnEdge(p, std::clamp(t, kIntoTheEdge, 1 - kIntoTheEdge));
+    }
+    // f at the current guesses of the crossings `which` names (all pending
+    // ones for none), into out_, in one batch.
+    void evaluateGuesses(FieldSampler& sampler, const std::vector<std::size_t>* which) {
+        const std::size_t count = which ? which->size() : pending_.size();
+        xs_.clear();
+        ys_.clear();
+        zs_.clear();
+        for (std::size_t i = 0; i < count; ++i) {
+            const PendingCrossing& p = pending_[which ? (*which)[i] : i];
+            const Vec3 q = pointOnEdge(p, p.t);
+            xs_.push_back(q[0]);
+            ys_.push_back(q[1]);
+            zs_.push_back(q[2]);
+        }
+        out_.resize(count);
+        sampler.values(xs_.data(), ys_.data(), zs_.data(), count, out_.data());
+    }
+    // One regula falsi step of a crossing given f at its guess: the bracket
+    // keeps the end on f's other side and the next guess is where the line
+    // through the ends meets zero. With `illinois`, an end kept twice has
+    // its value halved (so a kinked f is closed in from both sides) and a
+    // bracket narrower than 1e-12 of the edge ends the search. False once
+    // the crossing is done (f exactly 0, undefined, or no better guess).
+    static bool bracketStep(PendingCrossing& p, double f, bool illinois) {
+        if (p.done) return false;
+        if (!std::isfinite(f) || f == 0) {
+            p.done = true;
+            return false;
+        }
+        if (inside(f) == inside(p.fa)) {
+            p.ta = p.t;
+            p.fa = f;
+            if (illinois && p.kept == 1) p.fb /= 2; // b kept twice
+            if (illinois) p.kept = 1;
+        } else {
+            p.tb = p.t;
+            p.fb = f;
+            if (illinois && p.kept == -1) p.fa /= 2; // a kept twice
+            if (illinois) p.kept = -1;
+        }
+        const double next = p.ta - p.fa * (p.tb - p.ta) / (p.fb - p.fa);
+        if (!(next >= p.ta && next <= p.tb) || (illinois && p.tb - p.ta < 1e-12)) {
+            p.done = true;
+            return false;
+        }
+        p.t = next;
+        return true;
     }
 
     // One vertex per cell the crossings touch: each crossing adds its plane
