@@ -90,8 +90,11 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
         for (int a = 0; a < 3; ++a)
             if (!held[std::size_t(a)]) free[nf++] = a;
         if (nf == 0) break;
-        Eigen::MatrixXd mff(nf, nf);
-        Eigen::VectorXd rhs(nf);
+        // At most 3 x 3: fixed-capacity storage, no allocation per cell.
+        using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+        using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+        Small mff(nf, nf);
+        SmallVector rhs(nf);
         for (int i = 0; i < nf; ++i) {
             double v = r[free[i]];
             for (int a = 0; a < 3; ++a)
@@ -100,12 +103,12 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
             for (int j = 0; j < nf; ++j)
                 mff(i, j) = m(free[i], free[j]);
         }
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mff);
-        Eigen::VectorXd delta = Eigen::VectorXd::Zero(nf);
+        Eigen::SelfAdjointEigenSolver<Small> eig(mff);
+        SmallVector delta = SmallVector::Zero(nf);
         for (int k = 0; k < nf; ++k) {
             const double value = eig.eigenvalues()[k];
             if (!(std::abs(value) >= 0.01 * relativeCutoff * largest) || value == 0) continue;
-            const Eigen::VectorXd v = eig.eigenvectors().col(k);
+            const SmallVector v = eig.eigenvectors().col(k);
             delta += v * (v.dot(rhs) / value);
         }
         for (int i = 0; i < nf; ++i)
