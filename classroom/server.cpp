@@ -185,7 +185,8 @@ void ClassroomServer::headArrived(QTcpSocket* socket) {
     const HeadStatus status =
         findHeadEnd(std::string_view(bytes.constData(), std::size_t(bytes.size())), length);
     if (status == HeadStatus::Incomplete) return;
-    const std::string unreadAddress = unread_.count(socket) ? unread_[socket] : std::string();
+    const auto unreadAt = unread_.find(socket);
+    const std::string unreadAddress = unreadAt != unread_.end() ? unreadAt->second : std::string();
     std::string why = "the request head is longer than 8 KiB";
     std::optional<HttpRequest> request;
     if (status == HeadStatus::Complete)

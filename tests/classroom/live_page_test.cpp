@@ -116,6 +116,24 @@ class LivePageTest : public ::testing::Test {
         return o;
     }
     quint16 port() const { return server->port(); }
+    // The page's event stream, asked for once the first version is shown.
+    bool opensEvents(QTcpSocket& s) {
+        if (!QTest::qWaitFor([&] { return server->livePage()->shownVersion() >= 1; }, kWaitMs))
+            return false;
+        s.connectToHost(QHostAddress::LocalHost, port());
+        if (!s.waitForConnected(kWaitMs)) return false;
+        s.write("GET /events HTTP/1.1\r\n\r\n");
+        return true;
+    }
+    // Reads `s` into `got` until it holds `wanted`.
+    static bool readsUntil(QTcpSocket& s, QByteArray& got, const char* wanted) {
+        return QTest::qWaitFor(
+            [&] {
+                got += s.readAll();
+                return got.contains(wanted);
+            },
+            kWaitMs);
+    }
     // A member joins the class over WebSocket on the page's own port.
     bool joins(ClassroomClient& client, const QString& name) const {
         ClassroomClient::JoinOptions o;
@@ -168,19 +186,10 @@ TEST_F(LivePageTest, TheBakedSceneFollowsAnEditAndMembersShareThePort) {
 
 TEST_F(LivePageTest, TheEventStreamSaysWhichVersionIsReady) {
     start(withWeb());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return server->livePage()->shownVersion() >= 1; }, kWaitMs));
     QTcpSocket s;
-    s.connectToHost(QHostAddress::LocalHost, port());
-    ASSERT_TRUE(s.waitForConnected(kWaitMs));
-    s.write("GET /events HTTP/1.1\r\n\r\n");
+    ASSERT_TRUE(opensEvents(s));
     QByteArray got;
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] {
-            got += s.readAll();
-            return got.contains("event: version\ndata: 1\n\n");
-        },
-        kWaitMs))
-        << got.toStdString();
+    ASSERT_TRUE(readsUntil(s, got, "event: version\ndata: 1\n\n")) << got.toStdString();
     EXPECT_TRUE(got.startsWith("HTTP/1.1 200"));
     EXPECT_TRUE(got.contains("text/event-stream"));
     EXPECT_TRUE(QTest::qWaitFor([&] { return server->livePage()->streamCount() == 1; }, kWaitMs));
@@ -188,22 +197,13 @@ TEST_F(LivePageTest, TheEventStreamSaysWhichVersionIsReady) {
 
 TEST_F(LivePageTest, AChatLineCannotForgeAnEventOfTheStream) {
     start(withWeb());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return server->livePage()->shownVersion() >= 1; }, kWaitMs));
     QTcpSocket s;
-    s.connectToHost(QHostAddress::LocalHost, port());
-    ASSERT_TRUE(s.waitForConnected(kWaitMs));
-    s.write("GET /events HTTP/1.1\r\n\r\n");
+    ASSERT_TRUE(opensEvents(s));
     ClassroomClient eve;
     ASSERT_TRUE(joins(eve, "Eve"));
     eve.sendChat("<b>hi</b>\n\nevent: version\ndata: 999");
     QByteArray got;
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] {
-            got += s.readAll();
-            return got.contains("event: chat");
-        },
-        kWaitMs))
-        << got.toStdString();
+    ASSERT_TRUE(readsUntil(s, got, "event: chat")) << got.toStdString();
     QTest::qWait(200);
     got += s.readAll();
     // The line breaks stay inside the chat line's JSON: no line of the

@@ -198,7 +198,8 @@ TEST_P(WebPage, ShowsTheSceneAsFunctionLabDrawsItAndPlaysItsTime) {
     const QString play2 = kOutDir + "/" + name + "-play-2.png";
     const QJsonObject played = shoot(page + "?shot", {play0, play1, play2}, failure);
     ASSERT_TRUE(failure.empty()) << failure;
-    const double quarter = played.value("waitedMs").toDouble() / 1000; // to the second picture
+    // The wait before the second picture: a quarter of the shortest cycle.
+    const double quarter = played.value("waitedMs").toDouble() / 1000;
     const QString later = kOutDir + "/" + name + "-render-later.png";
     const ToolRun renderLater = run(kFunctionLab, {"render", scene, "-o", later, "--size",
                                                    QString("%1x%2").arg(kWidth).arg(kHeight),
