@@ -178,7 +178,7 @@ void PdeImportDialog::load(const QString& objPath) {
     ++generation_; // a fit of the mesh before is no longer shown
     worker_.cancel();
     const QString name = QFileInfo(objPath).fileName();
-    setWindowTitle(tr("Import %1 as PDE").arg(name));
+    setWindowTitle(tr("Import %1 as PDE").arg(visibleText(name)));
     progress_->setVisible(true);
     progress_->setFormat(tr("reading %1…").arg(name));
     reader_.request(objPath);
@@ -207,7 +207,8 @@ void PdeImportDialog::readDone(const QString& objPath, Read r) {
     if (objPath != objPath_) return; // another file was asked for since
     if (!r.original) {
         progress_->setVisible(false);
-        figuresText_->setText(tr("The mesh could not be read: %1").arg(r.why));
+        // The message names the file: a name is anybody's text.
+        figuresText_->setText(tr("The mesh could not be read: %1").arg(visibleText(r.why, true)));
         Q_EMIT loadFailed(r.why);
         return;
     }

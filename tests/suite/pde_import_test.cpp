@@ -189,6 +189,25 @@ class PdeImportTest : public QObject {
         QVERIFY(d.figuresLabel()->text().contains(QStringLiteral("notes.obj:2:")));
     }
 
+    void aFileNameOfMarkupAndControlsIsShownAsText() {
+        // A name with markup and a right-to-left override: the title and the
+        // message show it as characters, the override made visible.
+        QTemporaryDir dir;
+        const QString name = QStringLiteral("<b>evil &amp; \u202Egpj.obj");
+        const QString path = dir.path() + "/" + name;
+        std::ofstream(path.toStdString()) << "v 0 0 0\nv 1 0 x\n";
+        suite::PdeImportDialog d;
+        QSignalSpy failed(&d, &suite::PdeImportDialog::loadFailed);
+        d.load(path);
+        QVERIFY(failed.wait(10000));
+        QVERIFY(!d.windowTitle().contains(QChar(0x202E)));
+        QVERIFY(d.windowTitle().contains(QStringLiteral("<b>evil &amp;")));
+        const QString shown = d.figuresLabel()->text();
+        QVERIFY2(!shown.contains(QChar(0x202E)), qPrintable(shown));
+        QVERIFY2(shown.contains(QStringLiteral("<b>evil &amp;")), qPrintable(shown));
+        QCOMPARE(d.figuresLabel()->textFormat(), Qt::PlainText);
+    }
+
     void theFileIsReadWithoutHoldingTheWindow() {
         // A mesh of 200 000 faces (about 7 MB) takes the reader a while: the
         // dialog has returned from load() at once and keeps answering events
