@@ -119,6 +119,11 @@ struct Reader {
     }
 };
 
+bool hasStartBorders(const Model& model) {
+    return std::any_of(model.startBorders.begin(), model.startBorders.end(),
+                       [](const auto& loop) { return !loop.empty(); });
+}
+
 std::string payloadOf(const Model& model, double step) {
     Writer w;
     for (double v : model.lo)
@@ -148,20 +153,23 @@ std::string payloadOf(const Model& model, double step) {
             w.zigzag(q - last[k]);
             last[k] = q;
         }
-    for (std::size_t i = 0; i < model.patches.size(); ++i) {
-        const auto& loop =
-            i < model.borders.size() ? model.borders[i] : std::vector<std::uint32_t>{};
-        w.varint(loop.size());
-        std::int64_t previous = 0;
-        for (std::uint32_t index : loop) {
-            w.zigzag(std::int64_t(index) - previous);
-            previous = index;
+    auto loops = [&](const std::vector<std::vector<std::uint32_t>>& all) {
+        for (std::size_t i = 0; i < model.patches.size(); ++i) {
+            const auto& loop = i < all.size() ? all[i] : std::vector<std::uint32_t>{};
+            w.varint(loop.size());
+            std::int64_t previous = 0;
+            for (std::uint32_t index : loop) {
+                w.zigzag(std::int64_t(index) - previous);
+                previous = index;
+            }
         }
-    }
+    };
+    loops(model.borders);
+    if (hasStartBorders(model)) loops(model.startBorders); // version 2
     return w.out;
 }
 
-bool readPayload(Reader& r, Model& m) {
+bool readPayload(Reader& r, Model& m, int version) {
     for (double& v : m.lo)
         if (!r.f64(v, "the box")) return false;
     for (double& v : m.hi)
@@ -228,23 +236,33 @@ bool readPayload(Reader& r, Model& m) {
             last[k] += d;
             p[k] = m.lo[k] + double(last[k]) * step;
         }
-    m.borders.resize(m.patches.size());
-    for (auto& loop : m.borders) {
-        std::uint64_t length = 0;
-        if (!r.varint(length, "a border's length")) return false;
-        if (length > r.left()) return r.fail("a border longer than the bytes that follow");
-        if (length > 0 && length < 3) return r.fail("a border of fewer than three points");
-        loop.resize(std::size_t(length));
-        std::int64_t previous = 0;
-        for (std::uint32_t& index : loop) {
-            std::int64_t d = 0;
-            if (!r.zigzag(d, "a border index")) return false;
-            if (d > std::int64_t(points) || d < -std::int64_t(points) || previous + d < 0 ||
-                previous + d >= std::int64_t(points))
-                return r.fail("a border names a point that is not there");
-            previous += d;
-            index = std::uint32_t(previous);
+    auto readLoops = [&](std::vector<std::vector<std::uint32_t>>& all) {
+        all.resize(m.patches.size());
+        for (auto& loop : all) {
+            std::uint64_t length = 0;
+            if (!r.varint(length, "a border's length")) return false;
+            if (length > r.left()) return r.fail("a border longer than the bytes that follow");
+            if (length > 0 && length < 3) return r.fail("a border of fewer than three points");
+            loop.resize(std::size_t(length));
+            std::int64_t previous = 0;
+            for (std::uint32_t& index : loop) {
+                std::int64_t d = 0;
+                if (!r.zigzag(d, "a border index")) return false;
+                if (d > std::int64_t(points) || d < -std::int64_t(points) || previous + d < 0 ||
+                    previous + d >= std::int64_t(points))
+                    return r.fail("a border names a point that is not there");
+                previous += d;
+                index = std::uint32_t(previous);
+            }
         }
+        return true;
+    };
+    if (!readLoops(m.borders)) return false;
+    if (version >= 2) {
+        if (!readLoops(m.startBorders)) return false;
+        for (std::size_t i = 0; i < m.patches.size(); ++i)
+            if (m.patches[i].cap && !m.startBorders[i].empty())
+                return r.fail("a cap (one point at u = 0) with a start border");
     }
     if (r.left() != 0) return r.fail(std::to_string(r.left()) + " bytes follow the last border");
     return true;
@@ -258,8 +276,8 @@ ReadResult readBinary(std::string_view bytes, std::string_view name) {
     };
     if (bytes.size() < 12) return fail("byte 0: too short for a .pde header");
     const int version = std::uint8_t(bytes[6]);
-    if (version != kFormatVersion)
-        return fail("byte 6: version " + std::to_string(version) + " (this program reads " +
+    if (version < 1 || version > kFormatVersion)
+        return fail("byte 6: version " + std::to_string(version) + " (this program reads 1 to " +
                     std::to_string(kFormatVersion) + ")");
     std::uint32_t size = 0;
     for (int i = 0; i < 4; ++i)
@@ -281,7 +299,7 @@ ReadResult readBinary(std::string_view bytes, std::string_view name) {
     Reader r;
     r.bytes = payload;
     Model m;
-    if (!readPayload(r, m)) return fail(r.error);
+    if (!readPayload(r, m, version)) return fail(r.error);
     out.model = std::move(m);
     return out;
 }
@@ -432,12 +450,18 @@ ReadResult readText(std::string_view bytes, std::string_view name) {
             if (!modeLine(p.cosines[k], "cos", k + 1) || !modeLine(p.sines[k], "sin", k + 1))
                 return out;
         completeCap(p); // a cap's fixed coefficients follow from the free ones
-        auto& loop = m.borders.emplace_back();
+        m.borders.emplace_back();
+        m.startBorders.emplace_back();
         more = nextLine();
-        if (more && t[0].text == "border") {
+        // Its border (u = 1), then for a tube its start border (u = 0).
+        for (const char* keyword : {"border", "start"}) {
+            if (!more || t[0].text != keyword) continue;
             if (t.size() < 4) return fail(t[0], "a border has at least three points"), out;
             if (m.borderPoints.empty())
                 return fail(t[0], "a border, but no 'point' lines before the patches"), out;
+            if (cap && t[0].text == "start")
+                return fail(t[0], "a cap (one point at u = 0) has no start border"), out;
+            auto& loop = t[0].text == "border" ? m.borders.back() : m.startBorders.back();
             for (std::size_t i = 1; i < t.size(); ++i) {
                 std::size_t index = 0;
                 if (!wholeAt(i, index, m.borderPoints.size() - 1, "a point number")) return out;
@@ -446,6 +470,7 @@ ReadResult readText(std::string_view bytes, std::string_view name) {
             more = nextLine();
         }
     }
+    if (!hasStartBorders(m)) m.startBorders.clear();
     out.model = std::move(m);
     return out;
 }
@@ -466,7 +491,7 @@ std::string encodeBinary(const Model& model, const EncodeOptions& options) {
               reinterpret_cast<const Bytef*>(payload.data()), uLong(payload.size()), 9);
     z.resize(size);
     std::string out(kMagic, sizeof kMagic);
-    out.push_back(char(kFormatVersion));
+    out.push_back(char(hasStartBorders(model) ? 2 : 1));
     out.push_back('\0');
     const auto n = std::uint32_t(payload.size());
     for (int i = 0; i < 4; ++i)
@@ -499,7 +524,7 @@ std::string encodeText(const Model& model) {
     };
     if (!model.borderPoints.empty())
         o << "# The boundary curves' points (numbered from 0); a patch's 'border' line\n"
-             "# lists its loop, which the patch meets at u = 1.\n";
+             "# lists its loop, which the patch meets at u = 1 ('start': at u = 0).\n";
     for (const Vec3& p : model.borderPoints)
         o << "point " << number(p[0]) << " " << number(p[1]) << " " << number(p[2]) << "\n";
     for (std::size_t i = 0; i < model.patches.size(); ++i) {
@@ -510,12 +535,15 @@ std::string encodeText(const Model& model) {
             mode("cos", k + 1, p.cosines[k]);
             mode("sin", k + 1, p.sines[k]);
         }
-        if (i < model.borders.size() && !model.borders[i].empty()) {
-            o << "border";
-            for (std::uint32_t index : model.borders[i])
+        auto loop = [&](const char* keyword, const std::vector<std::vector<std::uint32_t>>& all) {
+            if (i >= all.size() || all[i].empty()) return;
+            o << keyword;
+            for (std::uint32_t index : all[i])
                 o << " " << index;
             o << "\n";
-        }
+        };
+        loop("border", model.borders);
+        loop("start", model.startBorders);
     }
     return o.str();
 }

@@ -24,7 +24,10 @@ inline constexpr std::size_t kMaxFileBytes = 64u << 20;     // 64 MiB
 inline constexpr std::size_t kMaxPayloadBytes = 256u << 20; // inflated
 inline constexpr std::size_t kMaxRadii = 64;
 inline constexpr std::size_t kMaxPatches = 1u << 20;
-inline constexpr int kFormatVersion = 1;
+// Version 2 adds the tubes' start borders (Model::startBorders) after the
+// borders; a model without any is written as version 1, byte for byte as
+// before, and both versions are read.
+inline constexpr int kFormatVersion = 2;
 
 struct EncodeOptions {
     // The step coefficients are rounded to: the box diagonal / 2^bits.

@@ -32,14 +32,15 @@ bool ringIsAPoint(const Patch& patch, double u, int steps, double tolerance) {
     return true;
 }
 
-// The v at which the patch's u = 1 curve passes nearest each border point,
-// increasing along the loop (unwrapped: v[0] <= ... < v[0] + 2π).
-std::vector<double> borderParameters(const Patch& patch, const std::vector<Vec3>& points) {
+// The v at which the patch's curve at u (0 or 1) passes nearest each border
+// point, increasing along the loop (unwrapped: v[0] <= ... < v[0] + 2π).
+std::vector<double> borderParameters(const Patch& patch, const std::vector<Vec3>& points,
+                                     double u) {
     const std::size_t n = points.size();
     const std::size_t m = std::clamp<std::size_t>(16 * n, 256, 8192);
     std::vector<Vec3> curve(m);
     for (std::size_t j = 0; j < m; ++j)
-        curve[j] = position(patch, 1, kTwoPi * double(j) / double(m));
+        curve[j] = position(patch, u, kTwoPi * double(j) / double(m));
     std::size_t first = 0;
     for (std::size_t j = 1; j < m; ++j)
         if (distance(curve[j], points[0]) < distance(curve[first], points[0])) first = j;
@@ -61,6 +62,41 @@ std::vector<double> borderParameters(const Patch& patch, const std::vector<Vec3>
     return v;
 }
 
+// A border loop a patch meets at u (0 or 1): its points, the v at which
+// the patch's curve there passes each, and the pull B(v) - X(u, v) that
+// brings the patch's rows near it onto it.
+struct Ring {
+    double u = 1;
+    std::vector<Vec3> points;
+    std::vector<double> v;
+    bool bordered() const { return points.size() >= 3; }
+    Vec3 pull(const Patch& patch, double at) const {
+        double w = std::fmod(at - v[0], kTwoPi);
+        if (w < 0) w += kTwoPi;
+        w += v[0];
+        const auto it = std::upper_bound(v.begin(), v.end(), w);
+        const std::size_t k = std::size_t(it - v.begin()) - 1, next = (k + 1) % v.size();
+        const double hi = next == 0 ? v[0] + kTwoPi : v[next];
+        const double t = hi > v[k] ? (w - v[k]) / (hi - v[k]) : 0;
+        const Vec3 x = position(patch, u, at);
+        Vec3 d;
+        for (std::size_t c = 0; c < 3; ++c)
+            d[c] = points[k][c] + t * (points[next][c] - points[k][c]) - x[c];
+        return d;
+    }
+};
+
+Ring ringOf(const Patch& patch, const std::vector<Vec3>& points,
+            const std::vector<std::uint32_t>* loop, double u) {
+    Ring r;
+    r.u = u;
+    if (!loop || loop->size() < 3) return r;
+    for (std::uint32_t i : *loop)
+        r.points.push_back(points[i]);
+    r.v = borderParameters(patch, r.points, u);
+    return r;
+}
+
 class PatchMesher {
   public:
     PatchMesher(mesh::Mesh& out, std::vector<std::int64_t>& shared,
@@ -68,40 +104,24 @@ class PatchMesher {
         : out_(out), shared_(shared), sharedNormals_(sharedNormals) {}
 
     void mesh(const Patch& patch, int nu, int nv, double tolerance, const std::vector<Vec3>& points,
-              const std::vector<std::uint32_t>* loop) {
-        const bool bordered = loop && loop->size() >= 3;
-        std::vector<Vec3> border;
-        std::vector<double> bv;
-        if (bordered) {
-            for (std::uint32_t i : *loop)
-                border.push_back(points[i]);
-            bv = borderParameters(patch, border);
-        }
-        const double v0 = bordered ? bv[0] : 0;
-        // The pull towards the border, B(v) - X(1, v), with B the loop's
-        // polyline at v; weighted by a smoothstep from u = 0.6 to 1.
-        auto pull = [&](double v) {
-            double w = std::fmod(v - v0, kTwoPi);
-            if (w < 0) w += kTwoPi;
-            w += v0;
-            const auto it = std::upper_bound(bv.begin(), bv.end(), w);
-            const std::size_t k = std::size_t(it - bv.begin()) - 1, next = (k + 1) % bv.size();
-            const double hi = next == 0 ? bv[0] + kTwoPi : bv[next];
-            const double t = hi > bv[k] ? (w - bv[k]) / (hi - bv[k]) : 0;
-            const Vec3 x = position(patch, 1, v);
-            Vec3 d;
-            for (std::size_t c = 0; c < 3; ++c)
-                d[c] = border[k][c] + t * (border[next][c] - border[k][c]) - x[c];
-            return d;
-        };
-        const int rows = bordered ? nu - 1 : nu; // the last ring is the border itself
-        const bool pointAtStart = patch.cap || ringIsAPoint(patch, 0, nv, tolerance);
-        const bool pointAtEnd = !bordered && ringIsAPoint(patch, 1, nv, tolerance);
+              const std::vector<std::uint32_t>* loop, const std::vector<std::uint32_t>* startLoop) {
+        const Ring end = ringOf(patch, points, loop, 1);
+        const Ring start = patch.cap ? Ring{} : ringOf(patch, points, startLoop, 0);
+        const double v0 = end.bordered() ? end.v[0] : 0;
+        // The rows of the grid: the last (first) ring is the border itself.
+        const int first = start.bordered() ? 1 : 0;
+        const int rows = end.bordered() ? nu - 1 : nu;
+        const bool pointAtStart =
+            !start.bordered() && (patch.cap || ringIsAPoint(patch, 0, nv, tolerance));
+        const bool pointAtEnd = !end.bordered() && ringIsAPoint(patch, 1, nv, tolerance);
         std::vector<std::uint32_t> index(std::size_t(rows + 1) * std::size_t(nv));
-        for (int i = 0; i <= rows; ++i) {
+        for (int i = first; i <= rows; ++i) {
             const double u = double(i) / nu;
             const bool point = (i == 0 && pointAtStart) || (i == nu && pointAtEnd);
+            // Pulled towards the border by a smoothstep from u = 0.6 to 1
+            // (from 0.4 to 0 towards a start border).
             const double s = std::clamp((u - 0.6) / 0.4, 0.0, 1.0), w = s * s * (3 - 2 * s);
+            const double r = std::clamp((0.4 - u) / 0.4, 0.0, 1.0), ws = r * r * (3 - 2 * r);
             for (int j = 0; j < nv; ++j) {
                 const double v = v0 + kTwoPi * j / nv;
                 auto& slot = index[std::size_t(i) * std::size_t(nv) + std::size_t(j)];
@@ -111,10 +131,15 @@ class PatchMesher {
                 }
                 const Point p = evaluate(patch, u, v);
                 Vec3 x = p.position;
-                if (bordered && w > 0) {
-                    const Vec3 d = pull(v);
+                if (end.bordered() && w > 0) {
+                    const Vec3 d = end.pull(patch, v);
                     for (std::size_t c = 0; c < 3; ++c)
                         x[c] += w * d[c];
+                }
+                if (start.bordered() && ws > 0) {
+                    const Vec3 d = start.pull(patch, v);
+                    for (std::size_t c = 0; c < 3; ++c)
+                        x[c] += ws * d[c];
                 }
                 slot = std::uint32_t(out_.positions.size());
                 out_.positions.push_back(toFloat(x));
@@ -126,43 +151,78 @@ class PatchMesher {
         auto at = [&](int i, int j) {
             return index[std::size_t(i) * std::size_t(nv) + std::size_t(j % nv)];
         };
-        for (int i = 0; i < rows; ++i)
+        for (int i = first; i < rows; ++i)
             for (int j = 0; j < nv; ++j)
                 quad(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-        if (!bordered) return;
-        // The border ring: one vertex per shared point for every patch.
-        std::vector<std::uint32_t> ring;
-        for (std::size_t k = 0; k < border.size(); ++k) {
-            const std::uint32_t point = (*loop)[k];
-            if (shared_[point] < 0) {
-                shared_[point] = std::int64_t(out_.positions.size());
-                out_.positions.push_back(toFloat(border[k]));
-                out_.normals.push_back({0, 0, 0});
-                out_.parameters.push_back({1, float(bv[k]), 0});
+        if (end.bordered()) {
+            const std::vector<std::uint32_t> ring = sharedRing(patch, *loop, end);
+            // Zip the last grid row (v0 + 2πj/nv) to the ring (end.v[k]), by v.
+            const std::size_t nr = ring.size();
+            std::size_t p = 0, q = 0;
+            while (p < std::size_t(nv) || q < nr) {
+                const double nextTop = v0 + kTwoPi * double(p + 1) / nv;
+                const double nextRing = q + 1 < nr ? end.v[q + 1] : v0 + kTwoPi;
+                const std::uint32_t top = at(rows, int(p % std::size_t(nv)));
+                if (q < nr && (p >= std::size_t(nv) || nextRing <= nextTop)) {
+                    triangle(top, ring[q % nr], ring[(q + 1) % nr]);
+                    ++q;
+                } else {
+                    triangle(top, ring[q % nr], at(rows, int((p + 1) % std::size_t(nv))));
+                    ++p;
+                }
             }
-            const Vec3 n = unitNormal(evaluate(patch, 1, bv[k]));
-            for (std::size_t c = 0; c < 3; ++c)
-                sharedNormals_[point][c] += n[c];
-            ring.push_back(std::uint32_t(shared_[point]));
         }
-        // Zip the last grid row (v0 + 2πj/nv) to the ring (bv[k]), by v.
-        const std::size_t nr = ring.size();
-        std::size_t p = 0, q = 0;
-        while (p < std::size_t(nv) || q < nr) {
-            const double nextTop = v0 + kTwoPi * double(p + 1) / nv;
-            const double nextRing = q + 1 < nr ? bv[q + 1] : v0 + kTwoPi;
-            const std::uint32_t top = at(rows, int(p % std::size_t(nv)));
-            if (q < nr && (p >= std::size_t(nv) || nextRing <= nextTop)) {
-                triangle(top, ring[q % nr], ring[(q + 1) % nr]);
-                ++q;
-            } else {
-                triangle(top, ring[q % nr], at(rows, int((p + 1) % std::size_t(nv))));
-                ++p;
+        if (start.bordered()) {
+            const std::vector<std::uint32_t> ring = sharedRing(patch, *startLoop, start);
+            // The same zip below the first grid row, the ring's v taken from
+            // v0 and started at the point that follows v0 most closely.
+            const std::size_t nr = ring.size();
+            std::vector<double> rv(nr);
+            for (std::size_t k = 0; k < nr; ++k) {
+                rv[k] = std::fmod(start.v[k] - v0, kTwoPi);
+                if (rv[k] < 0) rv[k] += kTwoPi;
+            }
+            const std::size_t k0 = std::size_t(std::min_element(rv.begin(), rv.end()) - rv.begin());
+            std::size_t p = 0, q = 0;
+            auto ringAt = [&](std::size_t k) { return ring[(k0 + k) % nr]; };
+            auto ringV = [&](std::size_t k) {
+                return k < nr ? rv[(k0 + k) % nr] : rv[k0] + kTwoPi;
+            };
+            while (p < std::size_t(nv) || q < nr) {
+                const double nextRow = kTwoPi * double(p + 1) / nv;
+                const std::uint32_t low = ringAt(q);
+                if (q < nr && (p >= std::size_t(nv) || ringV(q + 1) <= nextRow)) {
+                    triangle(low, at(first, int(p % std::size_t(nv))), ringAt(q + 1));
+                    ++q;
+                } else {
+                    triangle(low, at(first, int(p % std::size_t(nv))),
+                             at(first, int((p + 1) % std::size_t(nv))));
+                    ++p;
+                }
             }
         }
     }
 
   private:
+    // The border ring: one vertex per shared point for every patch.
+    std::vector<std::uint32_t> sharedRing(const Patch& patch,
+                                          const std::vector<std::uint32_t>& loop, const Ring& r) {
+        std::vector<std::uint32_t> ring;
+        for (std::size_t k = 0; k < r.points.size(); ++k) {
+            const std::uint32_t point = loop[k];
+            if (shared_[point] < 0) {
+                shared_[point] = std::int64_t(out_.positions.size());
+                out_.positions.push_back(toFloat(r.points[k]));
+                out_.normals.push_back({0, 0, 0});
+                out_.parameters.push_back({float(r.u), float(r.v[k]), 0});
+            }
+            const Vec3 n = unitNormal(evaluate(patch, r.u, r.v[k]));
+            for (std::size_t c = 0; c < 3; ++c)
+                sharedNormals_[point][c] += n[c];
+            ring.push_back(std::uint32_t(shared_[point]));
+        }
+        return ring;
+    }
     static Vec3 capNormal(const Patch& patch, bool start, int nv) {
         // The average of the next ring's normals, seen from the cap's point.
         const double inner = start ? 1e-4 : 1 - 1e-4;
@@ -220,13 +280,15 @@ mesh::Mesh meshModel(const Model& model, const MeshOptions& options) {
     std::vector<Vec3> sharedNormals(model.borderPoints.size(), Vec3{});
     PatchMesher mesher(out, shared, sharedNormals);
     for (std::size_t i = 0; i < model.patches.size(); ++i) {
-        const auto* loop = i < model.borders.size() ? &model.borders[i] : nullptr;
-        bool valid = loop && loop->size() >= 3;
-        if (valid)
-            for (std::uint32_t k : *loop)
-                valid = valid && k < model.borderPoints.size();
-        mesher.mesh(model.patches[i], nu, nv, tolerance, model.borderPoints,
-                    valid ? loop : nullptr);
+        auto valid = [&](const std::vector<std::vector<std::uint32_t>>& all)
+            -> const std::vector<std::uint32_t>* {
+            if (i >= all.size() || all[i].size() < 3) return nullptr;
+            for (std::uint32_t k : all[i])
+                if (k >= model.borderPoints.size()) return nullptr;
+            return &all[i];
+        };
+        mesher.mesh(model.patches[i], nu, nv, tolerance, model.borderPoints, valid(model.borders),
+                    valid(model.startBorders));
     }
     for (std::size_t k = 0; k < shared.size(); ++k)
         if (shared[k] >= 0) {

@@ -4,6 +4,8 @@
 // the boundary curves the patches share (the paper's curves, as polylines):
 // a patch with a border is pulled onto it near u = 1 (pde_mesh.h), so two
 // patches that share a curve meet along it exactly — no crack between them.
+// A tube (a patch open at both ends, C0 a curve too) may also have a start
+// border, which it meets at u = 0 the same way.
 #include "pde_patch.h"
 
 #include <cstdint>
@@ -18,6 +20,9 @@ struct Model {
     // Per patch (empty, or one list a patch): its border loop, indices into
     // borderPoints in the order v increases; an empty loop: C3 as it is.
     std::vector<std::vector<std::uint32_t>> borders;
+    // Per patch (empty, or one list a patch): its loop at u = 0 (C0), in the
+    // order v increases; empty for a cap and for a C0 as it is.
+    std::vector<std::vector<std::uint32_t>> startBorders;
 
     double diagonal() const;
     std::size_t coefficientCount() const; // vector coefficients, all patches

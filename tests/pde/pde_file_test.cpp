@@ -118,6 +118,42 @@ TEST(PdeFile, SharedBordersAreWrittenAndReadBackInBothForms) {
         << bad.error;
 }
 
+TEST(PdeFile, ATubesStartBorderMakesVersionTwoAndVersionOneStillReads) {
+    Model m = randomModel(3, 2); // patches 0 and 2 are open at u = 0, 1 is a cap
+    m.borderPoints = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0.25}};
+    m.borders = {{0, 1, 2, 3}, {}, {4, 3, 2}};
+    // Without start borders the file is version 1, as before tubes.
+    const std::string v1 = encodeBinary(m);
+    EXPECT_EQ(v1[6], 1);
+    ReadResult r = readModel(v1, "v1.pde");
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_TRUE(r.model->startBorders.empty());
+    m.startBorders = {{3, 2, 1, 0}, {}, {2, 3, 4}};
+    const std::string v2 = encodeBinary(m);
+    EXPECT_EQ(v2[6], 2);
+    r = readModel(v2, "v2.pde");
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.model->borders, m.borders);
+    EXPECT_EQ(r.model->startBorders, m.startBorders);
+    const std::string text = encodeText(m);
+    EXPECT_NE(text.find("\nstart 3 2 1 0\n"), std::string::npos) << text;
+    r = readModel(text, "v2.pde");
+    ASSERT_TRUE(r.ok()) << r.error;
+    EXPECT_EQ(r.model->startBorders, m.startBorders);
+    EXPECT_EQ(r.model->borders, m.borders);
+    // A cap has one point at u = 0: a start border there is refused, located.
+    Model capped = m;
+    capped.startBorders[1] = {0, 1, 2};
+    r = readModel(encodeBinary(capped), "cap.pde");
+    EXPECT_NE(r.error.find("a cap (one point at u = 0) with a start border"), std::string::npos)
+        << r.error;
+    r = readModel("FLPDE text 1\nbox 0 0 0 1 1 1\npoint 0 0 0\npoint 1 0 0\npoint 0 1 0\n"
+                  "patch radii 0 a 1 cap\nspine 0 0 0 0 0 0 0 0 0 0 0 0\nstart 0 1 2\n",
+                  "cap.pde");
+    EXPECT_EQ(r.error.rfind("cap.pde:8:1: a cap (one point at u = 0) has no start border", 0), 0u)
+        << r.error;
+}
+
 TEST(PdeFile, EveryTruncationAndEveryFlippedByteIsRefusedOrReadNeverACrash) {
     const std::string bytes = encodeBinary(randomModel(6, 9));
     for (std::size_t n = 0; n < bytes.size(); ++n) {
