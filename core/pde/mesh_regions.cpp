@@ -1,8 +1,11 @@
 #include "mesh_regions.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <queue>
 #include <set>
 #include <tuple>
@@ -231,9 +234,17 @@ std::array<Faces, 2> splitRegion(const FaceGraph& g, const Faces& region) {
     return halves;
 }
 
-std::optional<std::vector<std::uint32_t>> diskBoundary(const FaceGraph& g, const Faces& region) {
+namespace {
+
+// The region's boundary edges (a -> b in its faces' winding), and its Euler
+// characteristic; nullopt at a pinched vertex (two boundary edges leave it).
+struct Boundary {
+    std::unordered_map<std::uint32_t, std::uint32_t> next;
+    std::int64_t euler = 0;
+};
+std::optional<Boundary> boundaryOf(const FaceGraph& g, const Faces& region) {
     const std::unordered_set<std::uint32_t> in(region.begin(), region.end());
-    std::unordered_map<std::uint32_t, std::uint32_t> next; // boundary edge a -> b
+    Boundary out;
     std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
     std::unordered_set<std::uint32_t> vertices;
     for (std::uint32_t f : region) {
@@ -244,27 +255,107 @@ std::optional<std::vector<std::uint32_t>> diskBoundary(const FaceGraph& g, const
             edges.insert({std::min(a, b), std::max(a, b)});
             const std::int32_t n = g.across[f][std::size_t(k)];
             if (n < 0 || !in.count(std::uint32_t(n)))
-                if (!next.emplace(a, b).second) return std::nullopt; // a pinched vertex
+                if (!out.next.emplace(a, b).second) return std::nullopt; // a pinched vertex
         }
     }
-    if (next.empty()) return std::nullopt; // closed: no border
-    if (std::int64_t(vertices.size()) - std::int64_t(edges.size()) + std::int64_t(region.size()) !=
-        1)
-        return std::nullopt;
-    std::vector<std::uint32_t> loop;
-    std::uint32_t at = next.begin()->first;
-    // Start at the smallest vertex, so the same region gives the same loop.
-    for (const auto& [a, b] : next)
-        at = std::min(at, a);
-    const std::uint32_t start = at;
-    do {
-        loop.push_back(at);
-        const auto it = next.find(at);
-        if (it == next.end() || loop.size() > next.size()) return std::nullopt;
-        at = it->second;
-    } while (at != start);
-    if (loop.size() != next.size()) return std::nullopt; // more than one loop
-    return loop;
+    out.euler =
+        std::int64_t(vertices.size()) - std::int64_t(edges.size()) + std::int64_t(region.size());
+    return out;
+}
+
+// The loops of boundary edges, each started at its smallest vertex (the
+// same region gives the same loops), in the order of those vertices.
+std::vector<std::vector<std::uint32_t>> loopsOf(const Boundary& b) {
+    std::vector<std::vector<std::uint32_t>> loops;
+    std::unordered_set<std::uint32_t> done;
+    std::vector<std::uint32_t> starts;
+    for (const auto& [a, next] : b.next)
+        starts.push_back(a);
+    std::sort(starts.begin(), starts.end());
+    for (std::uint32_t start : starts) {
+        if (done.count(start)) continue;
+        std::vector<std::uint32_t> loop;
+        std::uint32_t at = start;
+        do {
+            if (!done.insert(at).second) return {}; // not a simple loop
+            loop.push_back(at);
+            const auto it = b.next.find(at);
+            if (it == b.next.end()) return {};
+            at = it->second;
+        } while (at != start);
+        loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+} // namespace
+
+std::optional<std::vector<std::uint32_t>> diskBoundary(const FaceGraph& g, const Faces& region) {
+    const auto b = boundaryOf(g, region);
+    if (!b || b->next.empty() || b->euler != 1) return std::nullopt; // closed, or not a disk
+    auto loops = loopsOf(*b);
+    if (loops.size() != 1) return std::nullopt; // more than one loop
+    return std::move(loops[0]);
+}
+
+std::optional<std::array<std::vector<std::uint32_t>, 2>> annulusBoundaries(const FaceGraph& g,
+                                                                           const Faces& region) {
+    const auto b = boundaryOf(g, region);
+    if (!b || b->euler != 0) return std::nullopt;
+    auto loops = loopsOf(*b);
+    if (loops.size() != 2 || loops[0].size() < 3 || loops[1].size() < 3) return std::nullopt;
+    return std::array<std::vector<std::uint32_t>, 2>{std::move(loops[0]), std::move(loops[1])};
+}
+
+std::vector<Faces> bands(const FaceGraph& g, const Faces& part, std::size_t count) {
+    if (count < 1 || part.empty()) return {};
+    const mesh::Mesh& m = *g.mesh;
+    std::vector<std::uint32_t> vertices;
+    for (std::uint32_t f : part)
+        for (std::uint32_t v : m.triangles[f])
+            vertices.push_back(v);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (std::uint32_t v : vertices)
+        mean += Eigen::Vector3d(m.positions[v][0], m.positions[v][1], m.positions[v][2]);
+    mean /= double(vertices.size());
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (std::uint32_t v : vertices) {
+        const Eigen::Vector3d d =
+            Eigen::Vector3d(m.positions[v][0], m.positions[v][1], m.positions[v][2]) - mean;
+        covariance += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+    const Eigen::Vector3d axis = eigen.eigenvectors().col(2); // the largest eigenvalue's
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::uint32_t v : vertices) {
+        const double h =
+            axis.dot(Eigen::Vector3d(m.positions[v][0], m.positions[v][1], m.positions[v][2]));
+        lo = std::min(lo, h);
+        hi = std::max(hi, h);
+    }
+    if (!(hi > lo)) return {};
+    const auto boundary = boundaryOf(g, part);
+    const bool closed = boundary && boundary->next.empty();
+    std::vector<double> cuts; // along the axis, as fractions of [lo, hi]
+    for (std::size_t k = 1; k < count; ++k)
+        cuts.push_back(closed ? (1 - std::cos(std::numbers::pi * double(k) / double(count))) / 2
+                              : double(k) / double(count));
+    // A face goes by its lowest corner, not its centre: the two triangles
+    // of a quad of a ring-like mesh (a UV sphere's strip) then go together,
+    // where their centres, a third of the strip apart, could straddle a cut
+    // and make the border a zigzag that no patch's end follows.
+    std::vector<Faces> out(count);
+    for (std::uint32_t f : part) {
+        double h = std::numeric_limits<double>::infinity();
+        for (std::uint32_t v : m.triangles[f])
+            h = std::min(h, axis.dot(Eigen::Vector3d(m.positions[v][0], m.positions[v][1],
+                                                     m.positions[v][2])));
+        h = (h - lo) / (hi - lo);
+        out[std::size_t(std::upper_bound(cuts.begin(), cuts.end(), h) - cuts.begin())].push_back(f);
+    }
+    return out;
 }
 
 } // namespace fl::pde

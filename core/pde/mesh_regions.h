@@ -46,4 +46,21 @@ std::array<Faces, 2> splitRegion(const FaceGraph& graph, const Faces& region);
 // on the left), when the region is a disk; nullopt otherwise.
 std::optional<std::vector<std::uint32_t>> diskBoundary(const FaceGraph& graph, const Faces& region);
 
+// The two boundary loops of `region` (each in the direction its faces wind)
+// when the region is an annulus — a tube open at both ends: edge-connected,
+// Euler characteristic 0, two loops that visit no vertex twice; nullopt
+// otherwise.
+std::optional<std::array<std::vector<std::uint32_t>, 2>> annulusBoundaries(const FaceGraph& graph,
+                                                                           const Faces& region);
+
+// A part of a mesh cut into `count` bands across its long axis (the
+// principal axis of its vertices, along which they spread most): faces go
+// by where their lowest corners lie along the axis. A closed part's first and last
+// bands are its ends (caps); the bands between, and every band of a part
+// open at both ends (an annulus), are tubes. A closed part's cuts fall at
+// equal angles of a sphere round the axis (its ends are round, so its caps
+// stay small), an open part's at equal steps. The bands are in order along
+// the axis; they are not checked to be disks or annuli.
+std::vector<Faces> bands(const FaceGraph& graph, const Faces& part, std::size_t count);
+
 } // namespace fl::pde
