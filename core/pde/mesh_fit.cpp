@@ -1,5 +1,6 @@
 #include "mesh_fit.h"
 
+#include "annulus_map.h"
 #include "border_curves.h"
 #include "disk_map.h"
 #include "mesh_regions.h"
@@ -21,9 +22,58 @@ struct FittedRegion {
     double missed = 0; // Σ w |X - p|²
     double weight = 0; // Σ w
     bool disk = false;
+    // A tube (both ends open): its loops at u = 0 and u = 1, each as its
+    // faces wind (the start loop so runs the way v decreases).
+    bool tube = false;
+    std::vector<std::uint32_t> startLoop, endLoop;
 };
+FittedRegion regionOf(Faces faces) {
+    FittedRegion r;
+    r.faces = std::move(faces);
+    return r;
+}
 
 constexpr double kReach = 0.05; // how far correction may move a sample in u (2x in v)
+
+// The least squares' Tikhonov weight for the large regions of a band
+// layout: 1e-6, as for the disks, pulls a sphere's bands off it by 1e-4
+// of the diagonal; their thousands of samples need no more than this.
+constexpr double kBandRidge = 1e-10;
+
+// The barycentric grid step of a face's samples: thirds (corners, edge
+// thirds and centre), sixths in a region of a few faces (so that even one
+// face fixes a patch's coefficients); for the large regions of a band
+// layout (`fewer`), halves or only the corners once a region has so many
+// faces that thirds would pass kEnoughSamples.
+constexpr std::size_t kEnoughSamples = 6000;
+int sampleSteps(std::size_t faces, bool fewer) {
+    if (faces < 8) return 6;
+    if (!fewer || faces * 10 <= kEnoughSamples) return 3;
+    return faces * 6 <= kEnoughSamples ? 2 : 1;
+}
+
+// A band layout's region of more faces than even their corners make
+// kEnoughSamples — half a bunny is 100 000 samples — keeps about that many
+// of its samples inside, chosen by a hash of their order (no pattern of the
+// mesh's), each standing for the ones left out; every border sample stays.
+// The least squares' cost grows with the samples, and its coefficients are
+// fixed many times over by these.
+void thin(std::vector<Sample>& samples) {
+    if (samples.size() <= kEnoughSamples) return;
+    const std::size_t keepOneIn = (samples.size() + kEnoughSamples - 1) / kEnoughSamples;
+    std::vector<Sample> kept;
+    kept.reserve(samples.size() / keepOneIn + 1);
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+        Sample s = samples[i];
+        if (s.u <= 1e-9 || s.u >= 1 - 1e-9) {
+            kept.push_back(s);
+        } else if (std::uint32_t(i * 2654435761u) % keepOneIn == 0) {
+            s.weight *= double(keepOneIn);
+            kept.push_back(s);
+        }
+    }
+    samples = std::move(kept);
+}
 
 // Two Gauss-Newton steps towards the point of `patch` nearest the sample,
 // never far from where the disk map put it (`mapped`): the samples must
@@ -58,6 +108,7 @@ void correctParameters(const Patch& patch, Sample& s, const Sample& mapped, bool
 // patch and fit again (parameter correction): the fit then answers for how
 // far the surface is from the points, not for how the disk map spread them
 // along it. Border samples keep u = 1 and slide along v.
+// A tube's samples on its start loop (u = 0) slide along v too.
 bool fitCorrected(std::vector<Sample>& samples, const std::vector<Sample>& mapped,
                   const FitOptions& fo, int corrections, Patch& out) {
     for (int round = 0; round <= corrections; ++round) {
@@ -66,7 +117,8 @@ bool fitCorrected(std::vector<Sample>& samples, const std::vector<Sample>& mappe
         out = *patch;
         if (round == corrections) break;
         for (std::size_t i = 0; i < samples.size(); ++i)
-            correctParameters(out, samples[i], mapped[i], mapped[i].u >= 1 - 1e-9);
+            correctParameters(out, samples[i], mapped[i],
+                              mapped[i].u >= 1 - 1e-9 || (!fo.pointAtStart && mapped[i].u <= 1e-9));
     }
     return true;
 }
@@ -210,8 +262,51 @@ bool fitByCurves(const mesh::Mesh& m, FittedRegion& r, const DiskMap& map,
     return true;
 }
 
+// Fits r.patch to the samples with parameter correction, and measures its
+// misses. Radii the region can fix: small regions take fewer. A fit that
+// wanders between its samples (a grid point of the patch far from every
+// sample) is made again with half the radii.
+bool fitSamples(const std::vector<Sample>& mapped, FitOptions fo, const MeshFitOptions& o,
+                FittedRegion& r) {
+    fo.a = o.a;
+    std::vector<Sample> samples;
+    for (fo.radii = std::clamp<std::size_t>(r.faces.size() / 4, 1, o.radii);;) {
+        samples = mapped;
+        if (!fitCorrected(samples, mapped, fo, o.corrections, r.patch)) return false;
+        if (fo.radii == 1 || staysNearItsSamples(r.patch, samples)) break;
+        fo.radii /= 2;
+    }
+    measureMisses(r, samples);
+    return true;
+}
+
+// fitSamples with the PDE's a that misses least of o.a / 4, o.a / 2 and
+// o.a, as a band layout's regions take it. a sets how fast the radii may
+// bend along u: a sphere's bands and caps mostly miss about a third as much
+// at a / 4 as at a, but not every one.
+bool fitWithBestA(const std::vector<Sample>& mapped, const FitOptions& fo, const MeshFitOptions& o,
+                  FittedRegion& r) {
+    bool any = false;
+    for (const double a : {o.a / 4, o.a / 2, o.a}) {
+        MeshFitOptions with = o;
+        with.a = a;
+        FittedRegion tried = regionOf(r.faces);
+        if (!fitSamples(mapped, fo, with, tried) || (any && !(tried.missed < r.missed))) continue;
+        r.patch = std::move(tried.patch);
+        r.missed = tried.missed;
+        r.weight = tried.weight;
+        any = true;
+    }
+    return any;
+}
+
 // Fits one disk region; false when it is not a disk (or the map failed).
-bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
+// `byLength`: the disk map's radius made proportional to length from the
+// pole (LengthParameter), as the caps of a band layout take it (on a
+// sphere's cap the conformal radius is tan(θ/2), whose z = cos θ a cubic
+// spine misses near the pole by 1e-3).
+bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o,
+               bool byLength = false) {
     const auto border = diskBoundary(g, r.faces);
     if (!border) return false;
     const auto map = mapToDisk(g, r.faces, *border);
@@ -219,11 +314,28 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
     RadialStretch stretch;
     if (!stretch.build(*map) && r.faces.size() > 1) return false;
     const mesh::Mesh& m = *g.mesh;
-    // Samples on a barycentric grid of each face (step 1/3: corners, edge
-    // thirds and centre; 1/6 in a region of a few faces, so that even one
-    // face fixes a patch's coefficients), each with its share of the face's
-    // area; a sample on the border (u = 1) counts `borderWeight` times.
-    const int steps = r.faces.size() < 8 ? 6 : 3;
+    // Samples on a barycentric grid of each face (sampleSteps), each with its
+    // share of the face's area; a sample on the border (u = 1) counts
+    // `borderWeight` times.
+    std::optional<LengthParameter> length;
+    if (byLength) {
+        FaceParameters corners;
+        for (std::uint32_t f : r.faces) {
+            auto& c = corners[f];
+            for (std::size_t k = 0; k < 3; ++k) {
+                const auto [u, v] = stretch(map->at.at(m.triangles[f][k]));
+                c[k] = {u, v};
+            }
+            // v unwrapped within the face; at the pole (u = 0) it is the others'.
+            for (std::size_t k = 1; k < 3; ++k)
+                c[k][1] +=
+                    2 * std::numbers::pi * std::round((c[0][1] - c[k][1]) / (2 * std::numbers::pi));
+            for (std::size_t k = 0; k < 3; ++k)
+                if (c[k][0] < 1e-12) c[k][1] = (c[(k + 1) % 3][1] + c[(k + 2) % 3][1]) / 2;
+        }
+        length.emplace(m, corners);
+    }
+    const int steps = sampleSteps(r.faces.size(), byLength);
     const double perFace = (steps + 1) * (steps + 2) / 2.0;
     std::vector<Sample> samples;
     samples.reserve(std::size_t(perFace) * r.faces.size());
@@ -238,36 +350,97 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
                 for (int c = 0; c < 3; ++c)
                     for (int k = 0; k < 3; ++k)
                         p[std::size_t(c)] += w[k] * m.positions[t[std::size_t(k)]][std::size_t(c)];
-                const auto [u, v] = stretch(w[0] * z[0] + w[1] * z[1] + w[2] * z[2]);
+                auto [u, v] = stretch(w[0] * z[0] + w[1] * z[1] + w[2] * z[2]);
+                if (length) u = (*length)(u);
                 samples.push_back(
                     {u, v, p, g.area[f] / perFace * (u >= 1 - 1e-9 ? o.borderWeight : 1.0)});
             }
     }
+    if (byLength) thin(samples);
     if (o.method == FitMethod::BoundaryCurves) {
         if (!fitByCurves(m, r, *map, stretch, o)) return false;
         measureMisses(r, samples);
         r.disk = true;
         return true;
     }
-    // Radii the region can fix: small regions take fewer. A fit that wanders
-    // between its samples (a grid point of the patch far from every sample)
-    // is made again with half the radii.
     FitOptions fo;
-    fo.radii = std::clamp<std::size_t>(r.faces.size() / 4, 1, o.radii);
-    fo.a = o.a;
     fo.pointAtStart = true;
     fo.smoothPole = true;
-    fo.ridge = 1e-6;
-    const std::vector<Sample> mapped = samples;
-    while (true) {
-        samples = mapped;
-        if (!fitCorrected(samples, mapped, fo, o.corrections, r.patch)) return false;
-        if (fo.radii == 1 || staysNearItsSamples(r.patch, samples)) break;
-        fo.radii /= 2;
-    }
-    measureMisses(r, samples);
+    fo.ridge = byLength ? kBandRidge : 1e-6;
+    if (!(byLength ? fitWithBestA(samples, fo, o, r) : fitSamples(samples, fo, o, r))) return false;
     r.disk = true;
     return true;
+}
+
+// Fits one tube region (an annulus: open at both ends) as a patch whose C0
+// and C3 are its two loops; false when it is not an annulus or the map
+// failed.
+bool fitTube(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
+    const auto loops = annulusBoundaries(g, r.faces);
+    if (!loops) return false;
+    const auto map = mapToAnnulus(g, r.faces, (*loops)[0], (*loops)[1]);
+    if (!map) return false;
+    const mesh::Mesh& m = *g.mesh;
+    const int steps = sampleSteps(r.faces.size(), true);
+    const double perFace = (steps + 1) * (steps + 2) / 2.0;
+    std::vector<Sample> mapped;
+    mapped.reserve(std::size_t(perFace) * r.faces.size());
+    for (std::uint32_t f : r.faces) {
+        const auto& t = m.triangles[f];
+        const auto& uv = map->faces.at(f);
+        for (int i = 0; i <= steps; ++i)
+            for (int j = 0; i + j <= steps; ++j) {
+                const double w[3] = {double(i) / steps, double(j) / steps,
+                                     double(steps - i - j) / steps};
+                Sample s;
+                for (int k = 0; k < 3; ++k) {
+                    for (int c = 0; c < 3; ++c)
+                        s.point[std::size_t(c)] +=
+                            w[k] * m.positions[t[std::size_t(k)]][std::size_t(c)];
+                    s.u += w[k] * uv[std::size_t(k)][0];
+                    s.v += w[k] * uv[std::size_t(k)][1];
+                }
+                s.u = std::clamp(s.u, 0.0, 1.0);
+                const bool border = s.u <= 1e-9 || s.u >= 1 - 1e-9;
+                s.weight = g.area[f] / perFace * (border ? o.borderWeight : 1.0);
+                mapped.push_back(s);
+            }
+    }
+    thin(mapped);
+    FitOptions fo;
+    fo.ridge = kBandRidge;
+    if (!fitWithBestA(mapped, fo, o, r)) return false;
+    r.disk = r.tube = true;
+    r.startLoop = (*loops)[0];
+    r.endLoop = (*loops)[1];
+    return true;
+}
+
+// A mesh of one part — closed like a sphere, or open at both ends like a
+// cylinder — as `count` bands across its long axis (mesh_regions.h): a
+// closed part's end bands as caps, every other band as a tube; the paper's
+// layout for such shapes. Nullopt when a band is not a disk or an annulus
+// as it must be, or a fit fails.
+std::optional<std::vector<FittedRegion>> fitBands(const FaceGraph& g, const Faces& part,
+                                                  std::size_t count, const MeshFitOptions& o) {
+    std::vector<Faces> cut = bands(g, part, count);
+    if (cut.size() != count) return std::nullopt;
+    std::vector<bool> tube(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (cut[i].empty()) return std::nullopt;
+        if (annulusBoundaries(g, cut[i]))
+            tube[i] = true;
+        else if (!(i == 0 || i + 1 == count) || !diskBoundary(g, cut[i]))
+            return std::nullopt;
+    }
+    std::vector<FittedRegion> out;
+    for (std::size_t i = 0; i < count; ++i) {
+        FittedRegion r = regionOf(std::move(cut[i]));
+        const bool fitted = tube[i] ? fitTube(g, r, o) : fitRegion(g, r, o, true);
+        if (!fitted) return std::nullopt;
+        out.push_back(std::move(r));
+    }
+    return out;
 }
 
 } // namespace
@@ -304,7 +477,7 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
                 continue;
             }
             for (Faces& half : splitRegion(*graph, r.faces))
-                if (!half.empty()) pending.push_back({std::move(half), {}, 0, 0, false});
+                if (!half.empty()) pending.push_back(regionOf(std::move(half)));
         }
     };
     auto rms = [&]() {
@@ -313,14 +486,15 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
             missed += r.missed, weight += r.weight;
         return weight > 0 ? std::sqrt(missed / weight) / diagonal : 0.0;
     };
-    if (connectedRegions(*graph).empty()) {
+    const std::vector<Faces> parts = connectedRegions(*graph);
+    if (parts.empty()) {
         if (why) *why = "every face has a repeated vertex (no area)";
         return std::nullopt;
     }
     auto fitWith = [&](std::size_t count) {
         regions.clear();
         for (Faces& f : partition(*graph, count))
-            pending.push_back({std::move(f), {}, 0, 0, false});
+            pending.push_back(regionOf(std::move(f)));
         settle();
         if (o.progress && !stopped()) o.progress(regions.size(), rms());
     };
@@ -328,9 +502,54 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
         if (why) *why = "cancelled";
         return std::nullopt;
     };
-    if (o.patches) {
+    // A mesh of one part may be a sphere- or tube-like shape that a few
+    // bands fit far better than disks (the paper's layout: caps at the ends,
+    // tubes between); tried first, with as many bands as patches asked for,
+    // or with a few counts up to kMostBands until the error is reached.
+    std::optional<std::vector<FittedRegion>> banded;
+    double bandedRms = std::numeric_limits<double>::infinity();
+    if (parts.size() == 1 && o.method == FitMethod::Points) {
+        constexpr std::size_t kMostBands = 8;
+        // Without a count: 1 (a tube), 2 (two caps), 3, 4, 6, 8 — a band's miss
+        // falls fast with its length, so few tries find the count; and none
+        // past the point where the misses so far, falling as a power of the
+        // count, would still miss the error at kMostBands (the bunny: 1.3 %
+        // at 2, 0.96 % at 3, so about 0.45 % at 8; a sphere's fall as the
+        // count to the 1.5th power or faster).
+        std::vector<std::size_t> counts{1, 2, 3, 4, 6, 8};
+        if (o.patches) counts = {o.patches};
+        std::size_t lastCount = 0;
+        double lastRms = 0;
+        for (std::size_t count : counts) {
+            if (count > kMostBands || stopped()) break;
+            auto tried = fitBands(*graph, parts[0], count, o);
+            if (!tried) continue;
+            regions = std::move(*tried);
+            const double now = rms();
+            if (now < bandedRms) {
+                bandedRms = now;
+                banded = regions;
+            }
+            if (o.progress) o.progress(regions.size(), now);
+            if (!o.patches && bandedRms <= o.error) break;
+            if (lastCount > 0 && now < lastRms) {
+                const double power =
+                    std::log(lastRms / now) / std::log(double(count) / double(lastCount));
+                if (now * std::pow(double(count) / double(kMostBands), power) > o.error) break;
+            } else if (lastCount > 0) {
+                break; // more bands missed more
+            }
+            lastCount = count;
+            lastRms = now;
+        }
+        if (stopped()) return cancelled();
+    }
+    if (banded && !o.patches && bandedRms <= o.error) {
+        regions = std::move(*banded); // no layout of disks would take fewer patches
+    } else if (o.patches) {
         fitWith(o.patches);
         if (stopped()) return cancelled();
+        if (banded && bandedRms < rms()) regions = std::move(*banded);
     } else {
         // The miss shrinks about as a patch's size, so as 1/sqrt(count): the
         // next count is guessed from that, at least 1.25 times the last.
@@ -376,23 +595,47 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
             if (bestRms <= o.error) break;
         }
         regions = std::move(best);
+        if (banded && bandedRms < bestRms) regions = std::move(*banded);
     }
     out.rms = rms();
     out.reached = o.patches ? true : out.rms <= o.error;
     // Each patch's border loop (in the order v increases: the faces' own
     // winding, as the disk map laid it), simplified to the error asked
     // for, its points shared with the neighbours along the same seams.
+    // A tube's start loop goes in as its faces wind, like every other loop
+    // (so that the seams are found), and is turned round after.
     std::vector<std::vector<std::uint32_t>> loops;
+    std::vector<std::size_t> startOf; // per patch: its start loop in `loops`, or none
+    constexpr std::size_t kNone = std::size_t(-1);
     for (FittedRegion& r : regions) {
         if (!r.disk) continue; // a lone face that could not be mapped: left out
-        const auto border = diskBoundary(*graph, r.faces);
-        loops.push_back(border ? *border : std::vector<std::uint32_t>{});
+        if (r.tube) {
+            loops.push_back(r.endLoop);
+        } else {
+            const auto border = diskBoundary(*graph, r.faces);
+            loops.push_back(border ? *border : std::vector<std::uint32_t>{});
+        }
         out.model.patches.push_back(std::move(r.patch));
         out.regions.push_back(std::move(r.faces));
+        startOf.push_back(r.tube ? kNone - 1 : kNone);
     }
+    const std::size_t patchCount = loops.size();
+    std::size_t next = 0;
+    for (const FittedRegion& r : regions)
+        if (r.disk && r.tube) loops.push_back(r.startLoop);
+    for (std::size_t& s : startOf)
+        if (s != kNone) s = patchCount + next++;
     BorderCurves curves = borderCurves(mesh, loops, 2 * o.error * diagonal);
     out.model.borderPoints = std::move(curves.points);
-    out.model.borders = std::move(curves.loops);
+    out.model.borders.assign(curves.loops.begin(),
+                             curves.loops.begin() + std::ptrdiff_t(patchCount));
+    if (next > 0) {
+        out.model.startBorders.resize(patchCount);
+        for (std::size_t i = 0; i < patchCount; ++i)
+            if (startOf[i] != kNone)
+                out.model.startBorders[i].assign(curves.loops[startOf[i]].rbegin(),
+                                                 curves.loops[startOf[i]].rend());
+    }
     return out;
 }
 

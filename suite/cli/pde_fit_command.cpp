@@ -45,7 +45,10 @@ const CommandSpec& pdeFitSpec() {
             "Cuts the mesh into disk-like regions and fits each with a Bloor-Wilson PDE\n"
             "patch (a cubic spine and N Fourier radii, the u = 0 curve a point), splitting\n"
             "the region the fit misses most until --patches N patches, or until the fit's RMS\n"
-            "miss is at most E of the bounding-box diagonal (--error, default 0.003). Writes\n"
+            "miss is at most E of the bounding-box diagonal (--error, default 0.003). A mesh\n"
+            "of one part shaped like a sphere or a tube is also tried as up to 8 bands across\n"
+            "its long axis - caps at its ends, tubes (both ends open curves) between - and\n"
+            "kept when that takes fewer patches or misses less. Writes\n"
             "the model to MODEL.pde (binary, coefficients rounded to the diagonal / 2^B), or\n"
             "as text with --text. Then meshes the model and measures it against the mesh:\n"
             "RMS and symmetric Hausdorff distance, exact point-to-triangle, 10^5 samples each\n"
@@ -95,7 +98,8 @@ const CommandSpec& pdeFitSpec() {
                      .kind = OptionKind::Number,
                      .valueName = "A",
                      .help = "the PDE's a: the relative rate of smoothing along u and v (the paper "
-                             "takes a >= 1; smaller is nearer a cubic along u)",
+                             "takes a >= 1; smaller is nearer a cubic along u; bands take the best "
+                             "of A/4, A/2 and A each)",
                      .defaultValue = "1",
                      .min = 0.05,
                      .max = 8},

@@ -11,81 +11,21 @@
 #include "pde/mesh_fit.h"
 #include "pde/pde_file.h"
 #include "pde/pde_mesh.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
+#include <iostream>
 #include <numbers>
 
 using namespace fl;
 using fl::mesh::Mesh;
+using namespace fl::pde::test;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-// A welded UV sphere: one vertex at each pole, no seam.
-Mesh sphere(int rings = 48, int segments = 96, double r = 1) {
-    Mesh m;
-    m.positions.push_back({0, 0, float(r)});
-    for (int i = 1; i < rings; ++i)
-        for (int j = 0; j < segments; ++j) {
-            const double t = kPi * i / rings, p = 2 * kPi * j / segments;
-            m.positions.push_back({float(r * std::sin(t) * std::cos(p)),
-                                   float(r * std::sin(t) * std::sin(p)), float(r * std::cos(t))});
-        }
-    m.positions.push_back({0, 0, float(-r)});
-    const auto south = std::uint32_t(m.positions.size() - 1);
-    auto at = [&](int i, int j) { return std::uint32_t(1 + (i - 1) * segments + (j % segments)); };
-    for (int j = 0; j < segments; ++j)
-        m.triangles.push_back({0, at(1, j), at(1, j + 1)});
-    for (int i = 1; i + 1 < rings; ++i)
-        for (int j = 0; j < segments; ++j) {
-            m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    for (int j = 0; j < segments; ++j)
-        m.triangles.push_back({at(rings - 1, j), south, at(rings - 1, j + 1)});
-    return m;
-}
-
-// A grid of rows x columns over (s, t) in [0,1] x [0,1), closed round t
-// when `wrap`, its points from `f`.
-template <typename F>
-Mesh grid(int rows, int columns, bool wrapRows, F&& f) {
-    Mesh m;
-    const int ringCount = wrapRows ? rows : rows + 1;
-    for (int i = 0; i < ringCount; ++i)
-        for (int j = 0; j < columns; ++j) {
-            const auto p = f(double(i) / rows, double(j) / columns);
-            m.positions.push_back({float(p[0]), float(p[1]), float(p[2])});
-        }
-    auto at = [&](int i, int j) {
-        return std::uint32_t((i % ringCount) * columns + (j % columns));
-    };
-    for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < columns; ++j) {
-            m.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    return m;
-}
-
-Mesh cylinder() { // open at both ends
-    return grid(24, 96, false, [](double s, double t) {
-        return std::array<double, 3>{0.5 * std::cos(2 * kPi * t), 0.5 * std::sin(2 * kPi * t),
-                                     2 * s - 1};
-    });
-}
-
-Mesh torus() {
-    return grid(64, 32, true, [](double s, double t) {
-        const double a = 2 * kPi * s, b = 2 * kPi * t;
-        return std::array<double, 3>{(1 + 0.35 * std::cos(b)) * std::cos(a),
-                                     (1 + 0.35 * std::cos(b)) * std::sin(a), 0.35 * std::sin(b)};
-    });
-}
 
 struct Measured {
     std::size_t patches = 0, bytes = 0;
@@ -116,16 +56,111 @@ std::optional<Mesh> shared(const char* name) {
 
 } // namespace
 
-TEST(PdeMeshFit, ASphereAndACylinderAreRecoveredWithFewPatches) {
-    for (const auto& [name, m] :
-         {std::pair{"sphere", sphere()}, std::pair{"cylinder", cylinder()}}) {
-        pde::MeshFitOptions o;
-        o.radii = 8; // the radii search is the bunny's test
-        const Measured s = fitAndMeasure(m, o);
-        EXPECT_LE(s.patches, 16u) << name;
-        EXPECT_LT(s.rms, 2e-3) << name;
-        EXPECT_LT(s.hausdorff, 0.03) << name;
+// The area-weighted RMS of `distance` over a mesh's triangles (three
+// points each), a fraction of `diagonal`.
+template <typename F>
+double rmsOver(const Mesh& m, F&& distance, double diagonal) {
+    double sum = 0, area = 0;
+    for (const auto& t : m.triangles) {
+        std::array<std::array<double, 3>, 3> p{};
+        for (std::size_t k = 0; k < 3; ++k)
+            for (std::size_t c = 0; c < 3; ++c)
+                p[k][c] = m.positions[t[k]][c];
+        const std::array<double, 3> e1{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]},
+            e2{p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+        const double a =
+            0.5 * std::hypot(e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                             e1[0] * e2[1] - e1[1] * e2[0]);
+        for (const auto& w :
+             {std::array{4.0, 1.0, 1.0}, std::array{1.0, 4.0, 1.0}, std::array{1.0, 1.0, 4.0}}) {
+            std::array<double, 3> x{};
+            for (std::size_t k = 0; k < 3; ++k)
+                for (std::size_t c = 0; c < 3; ++c)
+                    x[c] += w[k] / 6 * p[k][c];
+            const double d = distance(x);
+            sum += a / 3 * d * d;
+            area += a / 3;
+        }
     }
+    return std::sqrt(sum / area) / diagonal;
+}
+
+TEST(PdeMeshFit, ASphereAndACylinderAreRecoveredToATenThousandthOfTheDiagonal) {
+    // Issue 30 §5: recovered to 1e-4 of the diagonal with few radii. The
+    // recovered shape is the sphere (the cylinder), so it is measured
+    // against it, on the model meshed finely; against the mesh it stands
+    // for, it may not be farther than the mesh's own facets are from the
+    // shape (the sphere's: 1.8e-4 of the diagonal) and 1e-4 more. Both are
+    // the paper's layout: caps at the ends and tubes between (one tube for
+    // the cylinder, open at both ends), with 16-bit coefficients.
+    struct Case {
+        const char* name;
+        Mesh mesh;
+        std::function<double(const std::array<double, 3>&)> distance;
+        double error;
+    };
+    const Case cases[] = {
+        {"sphere", sphere(),
+         [](const std::array<double, 3>& x) { return std::hypot(x[0], x[1], x[2]) - 1; }, 5e-5},
+        {"cylinder", cylinder(),
+         [](const std::array<double, 3>& x) { return std::hypot(x[0], x[1]) - 0.5; }, 1e-4},
+    };
+    for (const Case& c : cases) {
+        pde::MeshFitOptions o;
+        o.radii = 8;
+        o.error = c.error;
+        std::string why;
+        const auto fit = pde::fitMesh(c.mesh, o, &why);
+        ASSERT_TRUE(fit) << why;
+        EXPECT_TRUE(fit->reached) << c.name;
+        EXPECT_LE(fit->model.patches.size(), 8u) << c.name;
+        EXPECT_LE(fit->model.maxRadii(), 8u) << c.name;
+        std::size_t tubes = 0;
+        for (const pde::Patch& p : fit->model.patches)
+            tubes += p.cap ? 0 : 1;
+        EXPECT_GE(tubes, 1u) << c.name;
+        pde::MeasureOptions mo;
+        mo.samples = 20000;
+        mo.grid = {64, 256};
+        mo.encode.bits = 16;
+        const auto measured = pde::measureFit(c.mesh, fit->model, mo, &why);
+        ASSERT_TRUE(measured) << why;
+        const double recovered = rmsOver(measured->rebuilt, c.distance, measured->diagonal);
+        const double facets = rmsOver(c.mesh, c.distance, measured->diagonal);
+        EXPECT_LT(recovered, 1e-4) << c.name;
+        EXPECT_LT(measured->rms(), facets + 1e-4) << c.name;
+        EXPECT_LT(measured->hausdorff(), 2e-3) << c.name;
+        std::cout << c.name << ": " << fit->model.patches.size() << " patches (" << tubes
+                  << " tubes), " << measured->bytes.size() << " bytes, RMS from the shape "
+                  << recovered << ", from the mesh " << measured->rms() << " (its facets " << facets
+                  << "), Hausdorff " << measured->hausdorff() << "\n";
+    }
+}
+
+TEST(PdeMeshFit, ASpheresBandsMeetWithoutACrackAndFaceOut) {
+    // Caps and tubes share their loops: the tubes are pulled onto both.
+    pde::MeshFitOptions o;
+    o.patches = 4;
+    o.radii = 6;
+    std::string why;
+    const auto fit = pde::fitMesh(sphere(24, 48), o, &why);
+    ASSERT_TRUE(fit) << why;
+    ASSERT_EQ(fit->model.patches.size(), 4u);
+    EXPECT_TRUE(fit->model.patches.front().cap);
+    EXPECT_FALSE(fit->model.patches[1].cap);
+    const pde::ReadResult back = pde::readModel(pde::encodeBinary(fit->model), "s.pde");
+    ASSERT_TRUE(back.ok()) << back.error;
+    for (const pde::MeshOptions grid : {pde::MeshOptions{8, 16}, pde::MeshOptions{5, 37}}) {
+        const mesh::Topology t = mesh::analyseTopology(pde::meshModel(*back.model, grid));
+        EXPECT_EQ(t.boundaryEdges, 0u);
+        EXPECT_EQ(t.nonManifoldEdges, 0u);
+        EXPECT_EQ(t.misorientedEdges, 0u);
+        EXPECT_GT(t.signedVolume, 0);
+    }
+    // Without the start borders the tubes' u = 0 ends leave cracks.
+    pde::Model bare = *back.model;
+    bare.startBorders.clear();
+    EXPECT_GT(mesh::analyseTopology(pde::meshModel(bare, {8, 16})).boundaryEdges, 0u);
 }
 
 TEST(PdeMeshFit, NeighbouringPatchesMeetWithoutACrack) {
