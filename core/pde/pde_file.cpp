@@ -440,7 +440,8 @@ ReadResult readText(std::string_view bytes, std::string_view name) {
         std::size_t radii = 0;
         double a = 0;
         if (!wholeAt(2, radii, kMaxRadii, "radii") || !numberAt(4, a, "a")) return out;
-        if (!(a > 0)) return fail(t[4], "a must be positive"), out;
+        // (Binary files keep a as a float32: the same model must write in both forms.)
+        if (!(a >= 1e-30 && a <= 1e30)) return fail(t[4], "a must be from 1e-30 to 1e30"), out;
         Patch& p = m.patches.emplace_back();
         p.a = a;
         p.cap = cap;

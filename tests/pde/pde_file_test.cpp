@@ -154,6 +154,18 @@ TEST(PdeFile, ATubesStartBorderMakesVersionTwoAndVersionOneStillReads) {
         << r.error;
 }
 
+TEST(PdeFile, ATextAThatNoBinaryFileCanHoldIsRefusedLocated) {
+    // The binary form keeps a as a float32: a text model with a = 1e300
+    // read, then failed to write back (found by the fuzz target).
+    for (const char* a : {"1e300", "1e-300", "0", "-1"}) {
+        const ReadResult r =
+            readModel(std::string("FLPDE text 1\nbox 0 0 0 1 1 1\npatch radii 0 a ") + a +
+                          "\nspine 0 0 0 0 0 0 0 0 0 0 0 0\n",
+                      "a.pde");
+        EXPECT_EQ(r.error.rfind("a.pde:3:17: a must be from 1e-30 to 1e30", 0), 0u) << r.error;
+    }
+}
+
 TEST(PdeFile, EveryTruncationAndEveryFlippedByteIsRefusedOrReadNeverACrash) {
     const std::string bytes = encodeBinary(randomModel(6, 9));
     for (std::size_t n = 0; n < bytes.size(); ++n) {
@@ -197,7 +209,8 @@ TEST(PdeFile, TextMistakesAreLocatedByLineAndColumn) {
         {"FLPDE text 2\n", "t.pde:1:7: expected 'FLPDE text 1'"},
         {"FLPDE text 1\nbox 0 0 0 1 1\n", "t.pde:2:14: expected a box coordinate"},
         {"FLPDE text 1\nbox 0 0 0 1 -1 1\n", "t.pde:2:7: the box's low corner"},
-        {"FLPDE text 1\nbox 0 0 0 1 1 1\npatch radii 1 a 0\n", "t.pde:3:17: a must be positive"},
+        {"FLPDE text 1\nbox 0 0 0 1 1 1\npatch radii 1 a 0\n",
+         "t.pde:3:17: a must be from 1e-30 to 1e30"},
         {"FLPDE text 1\nbox 0 0 0 1 1 1\npatch radii 99 a 1\n", "t.pde:3:13: radii must be"},
         {"FLPDE text 1\nbox 0 0 0 1 1 1\npatch radii 0 a 1\nspine 1 2 3 4 5 6 7 8 9 10 11 x\n",
          "t.pde:4:31: expected a coefficient, not 'x'"},
