@@ -52,6 +52,27 @@ int sampleSteps(std::size_t faces, bool fewer) {
     return faces * 6 <= kEnoughSamples ? 2 : 1;
 }
 
+// Calls f(face, w) at the points of a barycentric grid of step 1/steps on
+// each face, corners included, w the point's weights of the face's corners.
+template <typename F>
+void forEachFacePoint(const Faces& faces, int steps, F&& f) {
+    for (std::uint32_t face : faces)
+        for (int i = 0; i <= steps; ++i)
+            for (int j = 0; i + j <= steps; ++j)
+                f(face, std::array<double, 3>{double(i) / steps, double(j) / steps,
+                                              double(steps - i - j) / steps});
+}
+
+// The point of a face at the barycentric weights w.
+Vec3 pointOf(const mesh::Mesh& m, std::uint32_t face, const std::array<double, 3>& w) {
+    const auto& t = m.triangles[face];
+    Vec3 p{};
+    for (std::size_t c = 0; c < 3; ++c)
+        for (std::size_t k = 0; k < 3; ++k)
+            p[c] += w[k] * m.positions[t[k]][c];
+    return p;
+}
+
 // A band layout's region of more faces than even their corners make
 // kEnoughSamples — half a bunny is 100 000 samples — keeps about that many
 // of its samples inside, chosen by a hash of their order (no pattern of the
@@ -339,23 +360,14 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o,
     const double perFace = (steps + 1) * (steps + 2) / 2.0;
     std::vector<Sample> samples;
     samples.reserve(std::size_t(perFace) * r.faces.size());
-    for (std::uint32_t f : r.faces) {
+    forEachFacePoint(r.faces, steps, [&](std::uint32_t f, const std::array<double, 3>& w) {
         const auto& t = m.triangles[f];
-        const std::complex<double> z[3] = {map->at.at(t[0]), map->at.at(t[1]), map->at.at(t[2])};
-        for (int i = 0; i <= steps; ++i)
-            for (int j = 0; i + j <= steps; ++j) {
-                const double w[3] = {double(i) / steps, double(j) / steps,
-                                     double(steps - i - j) / steps};
-                Vec3 p{};
-                for (int c = 0; c < 3; ++c)
-                    for (int k = 0; k < 3; ++k)
-                        p[std::size_t(c)] += w[k] * m.positions[t[std::size_t(k)]][std::size_t(c)];
-                auto [u, v] = stretch(w[0] * z[0] + w[1] * z[1] + w[2] * z[2]);
-                if (length) u = (*length)(u);
-                samples.push_back(
-                    {u, v, p, g.area[f] / perFace * (u >= 1 - 1e-9 ? o.borderWeight : 1.0)});
-            }
-    }
+        auto [u, v] =
+            stretch(w[0] * map->at.at(t[0]) + w[1] * map->at.at(t[1]) + w[2] * map->at.at(t[2]));
+        if (length) u = (*length)(u);
+        samples.push_back(
+            {u, v, pointOf(m, f, w), g.area[f] / perFace * (u >= 1 - 1e-9 ? o.borderWeight : 1.0)});
+    });
     if (byLength) thin(samples);
     if (o.method == FitMethod::BoundaryCurves) {
         if (!fitByCurves(m, r, *map, stretch, o)) return false;
@@ -385,27 +397,19 @@ bool fitTube(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
     const double perFace = (steps + 1) * (steps + 2) / 2.0;
     std::vector<Sample> mapped;
     mapped.reserve(std::size_t(perFace) * r.faces.size());
-    for (std::uint32_t f : r.faces) {
-        const auto& t = m.triangles[f];
+    forEachFacePoint(r.faces, steps, [&](std::uint32_t f, const std::array<double, 3>& w) {
         const auto& uv = map->faces.at(f);
-        for (int i = 0; i <= steps; ++i)
-            for (int j = 0; i + j <= steps; ++j) {
-                const double w[3] = {double(i) / steps, double(j) / steps,
-                                     double(steps - i - j) / steps};
-                Sample s;
-                for (int k = 0; k < 3; ++k) {
-                    for (int c = 0; c < 3; ++c)
-                        s.point[std::size_t(c)] +=
-                            w[k] * m.positions[t[std::size_t(k)]][std::size_t(c)];
-                    s.u += w[k] * uv[std::size_t(k)][0];
-                    s.v += w[k] * uv[std::size_t(k)][1];
-                }
-                s.u = std::clamp(s.u, 0.0, 1.0);
-                const bool border = s.u <= 1e-9 || s.u >= 1 - 1e-9;
-                s.weight = g.area[f] / perFace * (border ? o.borderWeight : 1.0);
-                mapped.push_back(s);
-            }
-    }
+        Sample s;
+        s.point = pointOf(m, f, w);
+        for (std::size_t k = 0; k < 3; ++k) {
+            s.u += w[k] * uv[k][0];
+            s.v += w[k] * uv[k][1];
+        }
+        s.u = std::clamp(s.u, 0.0, 1.0);
+        const bool border = s.u <= 1e-9 || s.u >= 1 - 1e-9;
+        s.weight = g.area[f] / perFace * (border ? o.borderWeight : 1.0);
+        mapped.push_back(s);
+    });
     thin(mapped);
     FitOptions fo;
     fo.ridge = kBandRidge;

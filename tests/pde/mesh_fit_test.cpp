@@ -137,28 +137,44 @@ TEST(PdeMeshFit, ASphereAndACylinderAreRecoveredToATenThousandthOfTheDiagonal) {
     }
 }
 
-TEST(PdeMeshFit, ASpheresBandsMeetWithoutACrackAndFaceOut) {
-    // Caps and tubes share their loops: the tubes are pulled onto both.
+namespace {
+
+// A sphere fitted with `patches` patches, as any reader sees the model
+// (written and read back).
+pde::Model fittedSphere(std::size_t patches) {
     pde::MeshFitOptions o;
-    o.patches = 4;
+    o.patches = patches;
     o.radii = 6;
     std::string why;
     const auto fit = pde::fitMesh(sphere(24, 48), o, &why);
-    ASSERT_TRUE(fit) << why;
-    ASSERT_EQ(fit->model.patches.size(), 4u);
-    EXPECT_TRUE(fit->model.patches.front().cap);
-    EXPECT_FALSE(fit->model.patches[1].cap);
+    EXPECT_TRUE(fit) << why;
+    if (!fit) return {};
     const pde::ReadResult back = pde::readModel(pde::encodeBinary(fit->model), "s.pde");
-    ASSERT_TRUE(back.ok()) << back.error;
-    for (const pde::MeshOptions grid : {pde::MeshOptions{8, 16}, pde::MeshOptions{5, 37}}) {
-        const mesh::Topology t = mesh::analyseTopology(pde::meshModel(*back.model, grid));
-        EXPECT_EQ(t.boundaryEdges, 0u);
-        EXPECT_EQ(t.nonManifoldEdges, 0u);
-        EXPECT_EQ(t.misorientedEdges, 0u);
-        EXPECT_GT(t.signedVolume, 0);
-    }
+    EXPECT_TRUE(back.ok()) << back.error;
+    return back.ok() ? *back.model : pde::Model{};
+}
+
+// Every edge of the meshed model has two triangles wound alike, facing out.
+void expectClosed(const pde::Model& model, pde::MeshOptions grid) {
+    const mesh::Topology t = mesh::analyseTopology(pde::meshModel(model, grid));
+    EXPECT_EQ(t.boundaryEdges, 0u);
+    EXPECT_EQ(t.nonManifoldEdges, 0u);
+    EXPECT_EQ(t.misorientedEdges, 0u);
+    EXPECT_GT(t.signedVolume, 0); // facing out, as the mesh did
+}
+
+} // namespace
+
+TEST(PdeMeshFit, ASpheresBandsMeetWithoutACrackAndFaceOut) {
+    // Caps and tubes share their loops: the tubes are pulled onto both.
+    const pde::Model model = fittedSphere(4);
+    ASSERT_EQ(model.patches.size(), 4u);
+    EXPECT_TRUE(model.patches.front().cap);
+    EXPECT_FALSE(model.patches[1].cap);
+    expectClosed(model, {8, 16});
+    expectClosed(model, {5, 37});
     // Without the start borders the tubes' u = 0 ends leave cracks.
-    pde::Model bare = *back.model;
+    pde::Model bare = model;
     bare.startBorders.clear();
     EXPECT_GT(mesh::analyseTopology(pde::meshModel(bare, {8, 16})).boundaryEdges, 0u);
 }
@@ -166,21 +182,11 @@ TEST(PdeMeshFit, ASpheresBandsMeetWithoutACrackAndFaceOut) {
 TEST(PdeMeshFit, NeighbouringPatchesMeetWithoutACrack) {
     // A closed mesh gives a closed model: every edge of the meshed patches
     // has two triangles, the shared border points being one vertex each.
-    pde::MeshFitOptions o;
-    o.patches = 12;
-    o.radii = 6;
-    std::string why;
-    const auto fit = pde::fitMesh(sphere(24, 48), o, &why);
-    ASSERT_TRUE(fit) << why;
-    const pde::ReadResult back = pde::readModel(pde::encodeBinary(fit->model), "s.pde");
-    ASSERT_TRUE(back.ok()) << back.error;
-    const mesh::Topology t = mesh::analyseTopology(pde::meshModel(*back.model, {8, 16}));
-    EXPECT_EQ(t.boundaryEdges, 0u);
-    EXPECT_EQ(t.nonManifoldEdges, 0u);
-    EXPECT_EQ(t.misorientedEdges, 0u);
-    EXPECT_GT(t.signedVolume, 0); // facing out, as the mesh did
+    const pde::Model model = fittedSphere(12);
+    ASSERT_FALSE(model.patches.empty());
+    expectClosed(model, {8, 16});
     // Without the borders the same patches leave cracks (the check can fail).
-    pde::Model bare = *back.model;
+    pde::Model bare = model;
     bare.borders.clear();
     EXPECT_GT(mesh::analyseTopology(pde::meshModel(bare, {8, 16})).boundaryEdges, 0u);
 }
