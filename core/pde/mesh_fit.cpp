@@ -439,6 +439,8 @@ std::optional<std::vector<FittedRegion>> fitBands(const FaceGraph& g, const Face
     }
     std::vector<FittedRegion> out;
     for (std::size_t i = 0; i < count; ++i) {
+        // A large band takes a second: a cancelled fit stops between bands.
+        if (o.cancel && o.cancel->load(std::memory_order_relaxed)) return std::nullopt;
         FittedRegion r = regionOf(std::move(cut[i]));
         const bool fitted = tube[i] ? fitTube(g, r, o) : fitRegion(g, r, o, true);
         if (!fitted) return std::nullopt;
