@@ -100,6 +100,35 @@ int cubeEdge(int a, int du, int dv) {
     }
 }
 
+// One bit per corner of a block (bit c % 64 of word c / 64).
+using CornerBits = std::array<std::uint64_t, (kCorners + 63) / 64>;
+
+// Bit c of the result is bit c + s of `bits` (zero past the last corner).
+CornerBits shiftedDown(const CornerBits& bits, int s) {
+    CornerBits out{};
+    const std::size_t words = std::size_t(s) / 64, shift = std::size_t(s) % 64;
+    for (std::size_t w = 0; w + words < out.size(); ++w) {
+        out[w] = bits[w + words] >> shift;
+        if (shift != 0 && w + words + 1 < out.size()) out[w] |= bits[w + words + 1] << (64 - shift);
+    }
+    return out;
+}
+
+// The corners an edge along `axis` can start from: all but the block's far
+// face on that axis.
+const CornerBits& edgeStarts(int axis) {
+    static const std::array<CornerBits, 3> masks = [] {
+        std::array<CornerBits, 3> m{};
+        for (int c = 0; c < kCorners; ++c) {
+            const std::array<int, 3> at = cornerAt(c);
+            for (std::size_t a = 0; a < 3; ++a)
+                if (at[a] < kB) m[a][std::size_t(c / 64)] |= std::uint64_t(1) << (c % 64);
+        }
+        return m;
+    }();
+    return masks[std::size_t(axis)];
+}
+
 // A set of small indices, cleared per block and read back in increasing
 // order (which replaces sorting the lists of a block's crossings and cells).
 template <std::size_t N>
@@ -342,16 +371,22 @@ class Contourer {
             sampler.values(xs_.data(), ys_.data(), zs_.data(), index_.size(), out_.data());
         // (values_ is read only where a corner was evaluated: no clearing.)
         block.states.assign(kCorners, kUnknown);
+        known_.fill(0);
+        insideBits_.fill(0);
         allInBox_ = blockInBox(block);
         for (std::size_t n = 0; n < index_.size(); ++n) {
             const int c = index_[n];
             const double v = out_[n];
             values_[std::size_t(c)] = v;
+            const std::uint64_t bit = std::uint64_t(1) << (c % 64);
             if (!allInBox_ && !cornerInBox(block, c)) {
                 block.states[std::size_t(c)] = kOut; // margin of a closed box
+                known_[std::size_t(c / 64)] |= bit;
                 continue;
             }
             block.states[std::size_t(c)] = std::isnan(v) ? kUndefined : inside(v) ? kIn : kOut;
+            if (!std::isnan(v)) known_[std::size_t(c / 64)] |= bit;
+            if (inside(v)) insideBits_[std::size_t(c / 64)] |= bit;
             if (std::isnan(v)) {
                 if (!seen.sawNaN) seen.nanPoint = {xs_[n], ys_[n], zs_[n]};
                 seen.sawNaN = true;
@@ -522,18 +557,13 @@ class Contourer {
     void computeCrossings(const Block& block, FieldSampler& sampler) {
         pending_.clear();
         found_.clear();
-        edgesSeen_.clear();
-        // The lattice edges of the kept 2x2x2-cell sub-blocks (only their
-        // corners were evaluated; an edge two of them share is seen once).
         static constexpr int kStride[3] = {1, kC, kC * kC};
-        auto visit = [&](int axis, int ci, int cj, int ck) {
-            const int c = cornerIndex(ci, cj, ck);
+        // A sign-changing edge from corner c along `axis` (found_ takes its
+        // slot: the edges come in increasing slot order).
+        auto visit = [&](int axis, int c) {
             const int cb = c + kStride[axis];
-            const std::uint8_t sa = block.states[std::size_t(c)],
-                               sb = block.states[std::size_t(cb)];
-            if (!crosses(sa, sb)) return;
-            if (edgesSeen_.contains(std::size_t(axis * kCorners + c))) return; // from a neighbour
-            edgesSeen_.insert(std::size_t(axis * kCorners + c));
+            found_.push_back(axis * kCorners + c);
+            const auto [ci, cj, ck] = cornerAt(c);
             PendingCrossing p;
             p.slot = axis * kCorners + c;
             p.axis = axis;
@@ -565,16 +595,22 @@ class Contourer {
             p.t = p.fa / (p.fa - p.fb);
             pending_.push_back(p);
         };
-        for (std::uint8_t sub : block.kept) {
-            const std::array<int, 3> s0 = subBlockOrigin(sub);
-            for (int axis = 0; axis < 3; ++axis) {
-                int n[3] = {3, 3, 3}; // corners along each axis of the sub-block ...
-                n[axis] = 2;          // ... and 2 edges along the scanned one
-                for (int dk = 0; dk < n[2]; ++dk)
-                    for (int dj = 0; dj < n[1]; ++dj)
-                        for (int di = 0; di < n[0]; ++di)
-                            visit(axis, s0[0] + di, s0[1] + dj, s0[2] + dk);
-            }
+        // The sign-changing edges: both ends evaluated and defined, one
+        // inside — bit rows over the block's corners, the far ends' row the
+        // near ends' shifted by the axis's stride. These are exactly the
+        // kept 2x2x2-cell sub-blocks' sign-changing edges (which a walk of
+        // those sub-blocks found, each shared edge twice): such an edge lies
+        // in a sub-block that holds both its ends, and that sub-block has
+        // corners on both sides, so it was kept.
+        for (int axis = 0; axis < 3; ++axis) {
+            const CornerBits far = shiftedDown(known_, kStride[axis]);
+            const CornerBits farInside = shiftedDown(insideBits_, kStride[axis]);
+            const CornerBits& nearEnds = edgeStarts(axis);
+            for (std::size_t w = 0; w < known_.size(); ++w)
+                for (std::uint64_t bits =
+                         known_[w] & far[w] & (insideBits_[w] ^ farInside[w]) & nearEnds[w];
+                     bits != 0; bits &= bits - 1)
+                    visit(axis, int(w * 64 + std::size_t(std::countr_zero(bits))));
         }
         for (int step = 0; step < options_.refineSteps && !pending_.empty(); ++step) {
             evaluateGuesses(sampler, nullptr);
@@ -608,7 +644,6 @@ class Contourer {
                 x.normal[std::size_t(p.axis)] = 1;
             }
         }
-        edgesSeen_.appendTo(found_); // every edge seen has its crossing now, in a fixed order
     }
 
     // Crossings the regula falsi steps left more than a thousandth of a cell
@@ -956,8 +991,9 @@ class Contourer {
     std::vector<PendingCrossing> pending_;
     std::array<double, kCorners> values_{}; // of the block being sampled (where evaluated)
     bool allInBox_ = true;                  // every corner of that block is in the domain box
-    IndexSet<3 * kCorners> edgesSeen_;      // the block's sign-changing edges, by slot
-    std::vector<int> found_;                // those edges in increasing order
+    CornerBits known_{};                    // the block's corners evaluated and defined (bit c)
+    CornerBits insideBits_{};               // those inside
+    std::vector<int> found_; // the block's sign-changing edges, by slot, in increasing order
     std::vector<Vec3> crossingAt_, gradientAt_;
     std::vector<std::size_t> stragglers_;  // pending_ entries refined further
     std::vector<formula::Dual> redoneOut_; // their gradients
