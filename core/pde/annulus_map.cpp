@@ -1,5 +1,8 @@
 #include "annulus_map.h"
 
+#include "cotangent_weights.h"
+#include "field/vec3.h"
+
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -17,12 +20,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 
 P pos(const mesh::Mesh& m, std::uint32_t v) {
     return {m.positions[v][0], m.positions[v][1], m.positions[v][2]};
-}
-double cotangent(const P& a, const P& b, const P& c) { // at a, of the angle b-a-c
-    const P u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const P x{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    const double s = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-    return s > 0 ? (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / s : 0;
 }
 
 using Edge = std::pair<std::uint32_t, std::uint32_t>; // directed
@@ -80,17 +77,14 @@ LengthParameter::LengthParameter(const mesh::Mesh& m, const FaceParameters& face
     std::vector<double> length(slices, 0.0);
     for (const auto& [f, c] : faces) {
         const auto& t = m.triangles[f];
-        const P a = pos(m, t[0]), b = pos(m, t[1]), d = pos(m, t[2]);
-        const P e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-            e2{d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+        const P a = pos(m, t[0]);
+        const P e1 = field::minus(pos(m, t[1]), a), e2 = field::minus(pos(m, t[2]), a);
         // |∇v| of the linear v on the face: |Δv2 e1 - Δv1 e2| / (2 area).
-        const P n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                  e1[0] * e2[1] - e1[1] * e2[0]};
-        const double twiceArea = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const double twiceArea = field::length(field::cross(e1, e2));
         if (!(twiceArea > 0)) continue;
         const double dv1 = c[1][1] - c[0][1], dv2 = c[2][1] - c[0][1];
-        const P g{dv2 * e1[0] - dv1 * e2[0], dv2 * e1[1] - dv1 * e2[1], dv2 * e1[2] - dv1 * e2[2]};
-        const double gradV = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) / twiceArea;
+        const double gradV =
+            field::length(field::minus(field::scaled(e1, dv2), field::scaled(e2, dv1))) / twiceArea;
         const double u = (c[0][0] + c[1][0] + c[2][0]) / 3;
         if (!std::isfinite(gradV) || !std::isfinite(u)) continue;
         const auto slice = std::min(slices - 1, std::size_t(std::max(0.0, u) * double(slices)));
@@ -122,23 +116,14 @@ std::optional<AnnulusMap> mapToAnnulus(const FaceGraph& g, const Faces& region,
     const std::unordered_set<std::uint32_t> in(region.begin(), region.end());
     const std::unordered_set<std::uint32_t> onStart(start.begin(), start.end()),
         onEnd(end.begin(), end.end());
-    // Weights per edge, stored both ways: half the cotangent of each angle
-    // opposite it, clamped positive (no fold-overs).
+    // The cotangent weights, clamped positive (no fold-overs), stored both ways.
     std::map<Edge, double> weight;
+    for (const auto& [e, w] : cotangentWeights(m, region))
+        weight[e] = weight[{e.second, e.first}] = std::max(w, 1e-3);
     std::vector<std::uint32_t> vertices;
-    for (std::uint32_t f : region) {
-        const auto& t = m.triangles[f];
-        for (int k = 0; k < 3; ++k) {
-            const auto [a, b] = edgeOf(t, k);
-            const double w =
-                0.5 * cotangent(pos(m, t[std::size_t((k + 2) % 3)]), pos(m, a), pos(m, b));
-            weight[{a, b}] += w;
-            weight[{b, a}] += w;
-            vertices.push_back(a);
-        }
-    }
-    for (auto& [e, w] : weight)
-        w = std::max(w, 1e-3);
+    for (std::uint32_t f : region)
+        for (std::uint32_t v : m.triangles[f])
+            vertices.push_back(v);
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
 

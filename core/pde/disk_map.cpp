@@ -1,5 +1,8 @@
 #include "disk_map.h"
 
+#include "cotangent_weights.h"
+#include "field/vec3.h"
+
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -11,26 +14,8 @@
 namespace fl::pde {
 namespace {
 
-using P = std::array<double, 3>;
-
-P pos(const mesh::Mesh& m, std::uint32_t v) {
+field::Vec3 pos(const mesh::Mesh& m, std::uint32_t v) {
     return {m.positions[v][0], m.positions[v][1], m.positions[v][2]};
-}
-P sub(const P& a, const P& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const P& a, const P& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double len(const P& a) {
-    return std::sqrt(dot(a, a));
-}
-
-double cotangent(const P& a, const P& b, const P& c) { // at a, of the angle b-a-c
-    const P u = sub(b, a), v = sub(c, a);
-    const P x{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    const double s = len(x);
-    return s > 0 ? dot(u, v) / s : 0;
 }
 
 } // namespace
@@ -50,7 +35,8 @@ std::optional<DiskMap> mapToDisk(const FaceGraph& g, const Faces& region,
     std::vector<double> arc{0};
     for (std::size_t i = 0; i < border.size(); ++i)
         arc.push_back(arc.back() +
-                      len(sub(pos(m, border[(i + 1) % border.size()]), pos(m, border[i]))));
+                      field::length(field::minus(pos(m, border[(i + 1) % border.size()]),
+                                                 pos(m, border[i]))));
     const double total = arc.back();
     for (std::size_t i = 0; i < border.size(); ++i) {
         const double t = total > 0 ? arc[i] / total : double(i) / double(border.size());
@@ -59,21 +45,13 @@ std::optional<DiskMap> mapToDisk(const FaceGraph& g, const Faces& region,
     // Interior vertices, numbered; weights per undirected edge.
     std::unordered_map<std::uint32_t, int> index;
     std::vector<std::uint32_t> inner;
-    std::map<std::pair<std::uint32_t, std::uint32_t>, double> weight;
-    for (std::uint32_t f : region) {
-        const auto& t = m.triangles[f];
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)],
-                                c = t[std::size_t((k + 2) % 3)];
-            // The cotangent of the angle opposite edge a-b, halved.
-            weight[{std::min(a, b), std::max(a, b)}] +=
-                0.5 * cotangent(pos(m, c), pos(m, a), pos(m, b));
+    const EdgeWeights weight = cotangentWeights(m, region);
+    for (std::uint32_t f : region)
+        for (std::uint32_t a : m.triangles[f])
             if (!out.at.count(a) && !index.count(a)) {
                 index[a] = int(inner.size());
                 inner.push_back(a);
             }
-        }
-    }
     if (!inner.empty()) {
         const auto n = Eigen::Index(inner.size());
         std::vector<Eigen::Triplet<double>> entries;
