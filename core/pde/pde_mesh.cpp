@@ -164,28 +164,21 @@ class PatchMesher {
         for (int i = first; i < rows; ++i)
             for (int j = 0; j < nv; ++j)
                 quad(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+        const std::size_t columns = std::size_t(nv);
         if (end.bordered()) {
+            // The last grid row (v0 + 2πj/nv) zipped to the ring (end.v[k]).
             const std::vector<std::uint32_t> ring = sharedRing(patch, *loop, end);
-            // Zip the last grid row (v0 + 2πj/nv) to the ring (end.v[k]), by v.
-            const std::size_t nr = ring.size();
-            std::size_t p = 0, q = 0;
-            while (p < std::size_t(nv) || q < nr) {
-                const double nextTop = v0 + kTwoPi * double(p + 1) / nv;
-                const double nextRing = q + 1 < nr ? end.v[q + 1] : v0 + kTwoPi;
-                const std::uint32_t top = at(rows, int(p % std::size_t(nv)));
-                if (q < nr && (p >= std::size_t(nv) || nextRing <= nextTop)) {
-                    triangle(top, ring[q % nr], ring[(q + 1) % nr]);
-                    ++q;
-                } else {
-                    triangle(top, ring[q % nr], at(rows, int((p + 1) % std::size_t(nv))));
-                    ++p;
-                }
-            }
+            zip(
+                columns, ring.size(), [&](std::size_t p) { return at(rows, int(p % columns)); },
+                [&](std::size_t p) { return v0 + kTwoPi * double(p) / nv; },
+                [&](std::size_t q) { return ring[q % ring.size()]; },
+                [&](std::size_t q) { return q < ring.size() ? end.v[q] : v0 + kTwoPi; }, true);
         }
         if (start.bordered()) {
+            // The first grid row zipped to the ring below it, the ring's v
+            // taken from v0 and started at the point that follows v0 most
+            // closely.
             const std::vector<std::uint32_t> ring = sharedRing(patch, *startLoop, start);
-            // The same zip below the first grid row, the ring's v taken from
-            // v0 and started at the point that follows v0 most closely.
             const std::size_t nr = ring.size();
             std::vector<double> rv(nr);
             for (std::size_t k = 0; k < nr; ++k) {
@@ -193,27 +186,37 @@ class PatchMesher {
                 if (rv[k] < 0) rv[k] += kTwoPi;
             }
             const std::size_t k0 = std::size_t(std::min_element(rv.begin(), rv.end()) - rv.begin());
-            std::size_t p = 0, q = 0;
-            auto ringAt = [&](std::size_t k) { return ring[(k0 + k) % nr]; };
-            auto ringV = [&](std::size_t k) {
-                return k < nr ? rv[(k0 + k) % nr] : rv[k0] + kTwoPi;
-            };
-            while (p < std::size_t(nv) || q < nr) {
-                const double nextRow = kTwoPi * double(p + 1) / nv;
-                const std::uint32_t low = ringAt(q);
-                if (q < nr && (p >= std::size_t(nv) || ringV(q + 1) <= nextRow)) {
-                    triangle(low, at(first, int(p % std::size_t(nv))), ringAt(q + 1));
-                    ++q;
-                } else {
-                    triangle(low, at(first, int(p % std::size_t(nv))),
-                             at(first, int((p + 1) % std::size_t(nv))));
-                    ++p;
-                }
-            }
+            zip(
+                columns, nr, [&](std::size_t p) { return at(first, int(p % columns)); },
+                [&](std::size_t p) { return kTwoPi * double(p) / nv; },
+                [&](std::size_t q) { return ring[(k0 + q) % nr]; },
+                [&](std::size_t q) { return q < nr ? rv[(k0 + q) % nr] : rv[k0] + kTwoPi; }, false);
         }
     }
 
   private:
+    // Triangles between a grid row and a border ring, by v: the row's
+    // columns p < columns at rowV(p), the ring's points q < points at
+    // ringV(q) (at p = columns and q = points: the first again, a turn on),
+    // the ring beyond the row in u (`above`: the end border) or before it.
+    template <typename RowAt, typename RowV, typename RingAt, typename RingV>
+    void zip(std::size_t columns, std::size_t points, RowAt rowAt, RowV rowV, RingAt ringAt,
+             RingV ringV, bool above) {
+        auto add = [&](std::uint32_t row, std::uint32_t ring, std::uint32_t next) {
+            above ? triangle(row, ring, next) : triangle(ring, row, next);
+        };
+        std::size_t p = 0, q = 0;
+        while (p < columns || q < points) {
+            if (q < points && (p >= columns || ringV(q + 1) <= rowV(p + 1))) {
+                add(rowAt(p), ringAt(q), ringAt(q + 1));
+                ++q;
+            } else {
+                add(rowAt(p), ringAt(q), rowAt(p + 1));
+                ++p;
+            }
+        }
+    }
+
     // The border ring: one vertex per shared point for every patch.
     std::vector<std::uint32_t> sharedRing(const Patch& patch,
                                           const std::vector<std::uint32_t>& loop, const Ring& r) {
