@@ -360,10 +360,15 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o,
     const double perFace = (steps + 1) * (steps + 2) / 2.0;
     std::vector<Sample> samples;
     samples.reserve(std::size_t(perFace) * r.faces.size());
+    std::uint32_t cornersOf = std::uint32_t(-1); // the face z holds the disk points of
+    std::array<std::complex<double>, 3> z{};
     forEachFacePoint(r.faces, steps, [&](std::uint32_t f, const std::array<double, 3>& w) {
-        const auto& t = m.triangles[f];
-        auto [u, v] =
-            stretch(w[0] * map->at.at(t[0]) + w[1] * map->at.at(t[1]) + w[2] * map->at.at(t[2]));
+        if (f != cornersOf) {
+            for (std::size_t k = 0; k < 3; ++k)
+                z[k] = map->at.at(m.triangles[f][k]);
+            cornersOf = f;
+        }
+        auto [u, v] = stretch(w[0] * z[0] + w[1] * z[1] + w[2] * z[2]);
         if (length) u = (*length)(u);
         samples.push_back(
             {u, v, pointOf(m, f, w), g.area[f] / perFace * (u >= 1 - 1e-9 ? o.borderWeight : 1.0)});
@@ -384,13 +389,12 @@ bool fitRegion(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o,
     return true;
 }
 
-// Fits one tube region (an annulus: open at both ends) as a patch whose C0
-// and C3 are its two loops; false when it is not an annulus or the map
-// failed.
-bool fitTube(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
-    const auto loops = annulusBoundaries(g, r.faces);
-    if (!loops) return false;
-    const auto map = mapToAnnulus(g, r.faces, (*loops)[0], (*loops)[1]);
+// Fits one tube region (an annulus: open at both ends, its two `loops` as
+// annulusBoundaries gave them) as a patch whose C0 and C3 are its loops;
+// false when the map failed.
+bool fitTube(const FaceGraph& g, FittedRegion& r,
+             const std::array<std::vector<std::uint32_t>, 2>& loops, const MeshFitOptions& o) {
+    const auto map = mapToAnnulus(g, r.faces, loops[0], loops[1]);
     if (!map) return false;
     const mesh::Mesh& m = *g.mesh;
     const int steps = sampleSteps(r.faces.size(), true);
@@ -415,8 +419,8 @@ bool fitTube(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
     fo.ridge = kBandRidge;
     if (!fitWithBestA(mapped, fo, o, r)) return false;
     r.disk = r.tube = true;
-    r.startLoop = (*loops)[0];
-    r.endLoop = (*loops)[1];
+    r.startLoop = loops[0];
+    r.endLoop = loops[1];
     return true;
 }
 
@@ -425,16 +429,16 @@ bool fitTube(const FaceGraph& g, FittedRegion& r, const MeshFitOptions& o) {
 // closed part's end bands as caps, every other band as a tube; the paper's
 // layout for such shapes. Nullopt when a band is not a disk or an annulus
 // as it must be, or a fit fails.
-std::optional<std::vector<FittedRegion>> fitBands(const FaceGraph& g, const Faces& part,
+std::optional<std::vector<FittedRegion>> fitBands(const FaceGraph& g, const Bands& bands,
                                                   std::size_t count, const MeshFitOptions& o) {
-    std::vector<Faces> cut = bands(g, part, count);
+    std::vector<Faces> cut = bands.cut(count);
     if (cut.size() != count) return std::nullopt;
-    std::vector<bool> tube(count);
+    // Every band's shape before any is fitted: a tube's loops, or a disk at an end.
+    std::vector<std::optional<std::array<std::vector<std::uint32_t>, 2>>> tube(count);
     for (std::size_t i = 0; i < count; ++i) {
         if (cut[i].empty()) return std::nullopt;
-        if (annulusBoundaries(g, cut[i]))
-            tube[i] = true;
-        else if (!(i == 0 || i + 1 == count) || !diskBoundary(g, cut[i]))
+        tube[i] = annulusBoundaries(g, cut[i]);
+        if (!tube[i] && (!(i == 0 || i + 1 == count) || !diskBoundary(g, cut[i])))
             return std::nullopt;
     }
     std::vector<FittedRegion> out;
@@ -442,7 +446,7 @@ std::optional<std::vector<FittedRegion>> fitBands(const FaceGraph& g, const Face
         // A large band takes a second: a cancelled fit stops between bands.
         if (o.cancel && o.cancel->load(std::memory_order_relaxed)) return std::nullopt;
         FittedRegion r = regionOf(std::move(cut[i]));
-        const bool fitted = tube[i] ? fitTube(g, r, o) : fitRegion(g, r, o, true);
+        const bool fitted = tube[i] ? fitTube(g, r, *tube[i], o) : fitRegion(g, r, o, true);
         if (!fitted) return std::nullopt;
         out.push_back(std::move(r));
     }
@@ -526,9 +530,10 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
         if (o.patches) counts = {o.patches};
         std::size_t lastCount = 0;
         double lastRms = 0;
+        const Bands bands(*graph, parts[0]);
         for (std::size_t count : counts) {
             if (count > kMostBands || stopped()) break;
-            auto tried = fitBands(*graph, parts[0], count, o);
+            auto tried = fitBands(*graph, bands, count, o);
             if (!tried) continue;
             regions = std::move(*tried);
             const double now = rms();
@@ -608,39 +613,39 @@ std::optional<MeshFit> fitMesh(const mesh::Mesh& mesh, const MeshFitOptions& o, 
     // Each patch's border loop (in the order v increases: the faces' own
     // winding, as the disk map laid it), simplified to the error asked
     // for, its points shared with the neighbours along the same seams.
-    // A tube's start loop goes in as its faces wind, like every other loop
-    // (so that the seams are found), and is turned round after.
-    std::vector<std::vector<std::uint32_t>> loops;
-    std::vector<std::size_t> startOf; // per patch: its start loop in `loops`, or none
-    constexpr std::size_t kNone = std::size_t(-1);
+    // A tube's start loop goes in after every patch's border, as its faces
+    // wind like every other loop (so that the seams are found), and is
+    // turned round after.
+    std::vector<std::vector<std::uint32_t>> loops, starts; // per patch
     for (FittedRegion& r : regions) {
         if (!r.disk) continue; // a lone face that could not be mapped: left out
         if (r.tube) {
-            loops.push_back(r.endLoop);
+            loops.push_back(std::move(r.endLoop));
         } else {
             const auto border = diskBoundary(*graph, r.faces);
             loops.push_back(border ? *border : std::vector<std::uint32_t>{});
         }
+        starts.push_back(std::move(r.startLoop)); // empty but for a tube
         out.model.patches.push_back(std::move(r.patch));
         out.regions.push_back(std::move(r.faces));
-        startOf.push_back(r.tube ? kNone - 1 : kNone);
     }
     const std::size_t patchCount = loops.size();
-    std::size_t next = 0;
-    for (const FittedRegion& r : regions)
-        if (r.disk && r.tube) loops.push_back(r.startLoop);
-    for (std::size_t& s : startOf)
-        if (s != kNone) s = patchCount + next++;
+    std::vector<std::size_t> startAt(patchCount, 0); // in `loops`; 0: none
+    for (std::size_t i = 0; i < patchCount; ++i)
+        if (!starts[i].empty()) {
+            startAt[i] = loops.size();
+            loops.push_back(std::move(starts[i]));
+        }
     BorderCurves curves = borderCurves(mesh, loops, 2 * o.error * diagonal);
     out.model.borderPoints = std::move(curves.points);
     out.model.borders.assign(curves.loops.begin(),
                              curves.loops.begin() + std::ptrdiff_t(patchCount));
-    if (next > 0) {
+    if (loops.size() > patchCount) {
         out.model.startBorders.resize(patchCount);
         for (std::size_t i = 0; i < patchCount; ++i)
-            if (startOf[i] != kNone)
-                out.model.startBorders[i].assign(curves.loops[startOf[i]].rbegin(),
-                                                 curves.loops[startOf[i]].rend());
+            if (startAt[i] != 0)
+                out.model.startBorders[i].assign(curves.loops[startAt[i]].rbegin(),
+                                                 curves.loops[startAt[i]].rend());
     }
     return out;
 }

@@ -307,8 +307,8 @@ std::optional<std::array<std::vector<std::uint32_t>, 2>> annulusBoundaries(const
     return std::array<std::vector<std::uint32_t>, 2>{std::move(loops[0]), std::move(loops[1])};
 }
 
-std::vector<Faces> bands(const FaceGraph& g, const Faces& part, std::size_t count) {
-    if (count < 1 || part.empty()) return {};
+Bands::Bands(const FaceGraph& g, const Faces& part) : part_(part) {
+    if (part.empty()) return;
     const mesh::Mesh& m = *g.mesh;
     std::vector<std::uint32_t> vertices;
     for (std::uint32_t f : part)
@@ -335,26 +335,33 @@ std::vector<Faces> bands(const FaceGraph& g, const Faces& part, std::size_t coun
         lo = std::min(lo, h);
         hi = std::max(hi, h);
     }
-    if (!(hi > lo)) return {};
+    if (!(hi > lo)) return;
     const auto boundary = boundaryOf(g, part);
-    const bool closed = boundary && boundary->next.empty();
-    std::vector<double> cuts; // along the axis, as fractions of [lo, hi]
-    for (std::size_t k = 1; k < count; ++k)
-        cuts.push_back(closed ? (1 - std::cos(std::numbers::pi * double(k) / double(count))) / 2
-                              : double(k) / double(count));
+    closed_ = boundary && boundary->next.empty();
     // A face goes by its lowest corner, not its centre: the two triangles
     // of a quad of a ring-like mesh (a UV sphere's strip) then go together,
     // where their centres, a third of the strip apart, could straddle a cut
     // and make the border a zigzag that no patch's end follows.
-    std::vector<Faces> out(count);
+    height_.reserve(part.size());
     for (std::uint32_t f : part) {
         double h = std::numeric_limits<double>::infinity();
         for (std::uint32_t v : m.triangles[f])
             h = std::min(h, axis.dot(Eigen::Vector3d(m.positions[v][0], m.positions[v][1],
                                                      m.positions[v][2])));
-        h = (h - lo) / (hi - lo);
-        out[std::size_t(std::upper_bound(cuts.begin(), cuts.end(), h) - cuts.begin())].push_back(f);
+        height_.push_back((h - lo) / (hi - lo));
     }
+}
+
+std::vector<Faces> Bands::cut(std::size_t count) const {
+    if (count < 1 || height_.empty()) return {};
+    std::vector<double> cuts; // along the axis, as fractions of [lo, hi]
+    for (std::size_t k = 1; k < count; ++k)
+        cuts.push_back(closed_ ? (1 - std::cos(std::numbers::pi * double(k) / double(count))) / 2
+                               : double(k) / double(count));
+    std::vector<Faces> out(count);
+    for (std::size_t i = 0; i < part_.size(); ++i)
+        out[std::size_t(std::upper_bound(cuts.begin(), cuts.end(), height_[i]) - cuts.begin())]
+            .push_back(part_[i]);
     return out;
 }
 

@@ -60,7 +60,18 @@ std::optional<std::array<std::vector<std::uint32_t>, 2>> annulusBoundaries(const
 // open at both ends (an annulus), are tubes. A closed part's cuts fall at
 // equal angles of a sphere round the axis (its ends are round, so its caps
 // stay small), an open part's at equal steps. The bands are in order along
-// the axis; they are not checked to be disks or annuli.
-std::vector<Faces> bands(const FaceGraph& graph, const Faces& part, std::size_t count);
+// the axis; they are not checked to be disks or annuli. The axis and each
+// face's place along it are found once, for every count tried.
+class Bands {
+  public:
+    Bands(const FaceGraph& graph, const Faces& part);
+    // None when the part has no length along its axis.
+    std::vector<Faces> cut(std::size_t count) const;
+
+  private:
+    Faces part_;
+    std::vector<double> height_; // per face of part_: its lowest corner, 0..1 along the axis
+    bool closed_ = false;
+};
 
 } // namespace fl::pde

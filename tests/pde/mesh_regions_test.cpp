@@ -51,8 +51,9 @@ TEST(PdeRegions, ASpheresBandsAreTwoCapsAndTubesCutAlongItsRings) {
     const Mesh ball = sphere(24, 48);
     const auto g = buildFaceGraph(ball, nullptr);
     ASSERT_TRUE(g);
+    const Bands ballBands(*g, allFaces(ball));
     for (std::size_t count : {2u, 3u, 4u, 6u}) {
-        const std::vector<Faces> b = bands(*g, allFaces(ball), count);
+        const std::vector<Faces> b = ballBands.cut(count);
         ASSERT_EQ(b.size(), count);
         std::size_t faces = 0;
         for (std::size_t i = 0; i < count; ++i) {
@@ -75,7 +76,7 @@ TEST(PdeRegions, ASpheresBandsAreTwoCapsAndTubesCutAlongItsRings) {
     // An open cylinder's bands are all tubes.
     const Mesh tube = cylinder();
     const auto gt = buildFaceGraph(tube, nullptr);
-    for (const Faces& b : bands(*gt, allFaces(tube), 3))
+    for (const Faces& b : Bands(*gt, allFaces(tube)).cut(3))
         EXPECT_TRUE(annulusBoundaries(*gt, b));
 }
 
