@@ -562,10 +562,10 @@ class Contourer {
         // slot: the edges come in increasing slot order).
         auto visit = [&](int axis, int c) {
             const int cb = c + kStride[axis];
-            found_.push_back(axis * kCorners + c);
             const auto [ci, cj, ck] = cornerAt(c);
             PendingCrossing p;
             p.slot = axis * kCorners + c;
+            found_.push_back(p.slot);
             p.axis = axis;
             const BlockCoord& b = block.coord;
             p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
