@@ -4,6 +4,7 @@
 // each measured the way any tool would (the model written, read back,
 // meshed, and compared by exact distances both ways); bad meshes refused
 // with where and why; more radii never miss more.
+#include "field/vec3.h"
 #include "mesh/mesh_topology.h"
 #include "mesh/obj_reader.h"
 #include "mesh/surface_distance.h"
@@ -62,21 +63,16 @@ template <typename F>
 double rmsOver(const Mesh& m, F&& distance, double diagonal) {
     double sum = 0, area = 0;
     for (const auto& t : m.triangles) {
-        std::array<std::array<double, 3>, 3> p{};
+        std::array<field::Vec3, 3> p{};
         for (std::size_t k = 0; k < 3; ++k)
-            for (std::size_t c = 0; c < 3; ++c)
-                p[k][c] = m.positions[t[k]][c];
-        const std::array<double, 3> e1{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]},
-            e2{p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+            p[k] = {m.positions[t[k]][0], m.positions[t[k]][1], m.positions[t[k]][2]};
         const double a =
-            0.5 * std::hypot(e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                             e1[0] * e2[1] - e1[1] * e2[0]);
+            0.5 * field::length(field::cross(field::minus(p[1], p[0]), field::minus(p[2], p[0])));
         for (const auto& w :
              {std::array{4.0, 1.0, 1.0}, std::array{1.0, 4.0, 1.0}, std::array{1.0, 1.0, 4.0}}) {
-            std::array<double, 3> x{};
+            field::Vec3 x{};
             for (std::size_t k = 0; k < 3; ++k)
-                for (std::size_t c = 0; c < 3; ++c)
-                    x[c] += w[k] / 6 * p[k][c];
+                x = field::plus(x, field::scaled(p[k], w[k] / 6));
             const double d = distance(x);
             sum += a / 3 * d * d;
             area += a / 3;
