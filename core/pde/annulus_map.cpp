@@ -120,12 +120,7 @@ std::optional<AnnulusMap> mapToAnnulus(const FaceGraph& g, const Faces& region,
     std::map<Edge, double> weight;
     for (const auto& [e, w] : cotangentWeights(m, region))
         weight[e] = weight[{e.second, e.first}] = std::max(w, 1e-3);
-    std::vector<std::uint32_t> vertices;
-    for (std::uint32_t f : region)
-        for (std::uint32_t v : m.triangles[f])
-            vertices.push_back(v);
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const std::vector<std::uint32_t> vertices = verticesOf(m, region);
 
     // u: 0 on the start loop, 1 on the end loop.
     std::unordered_map<std::uint32_t, double> fixedU, u;

@@ -307,15 +307,20 @@ std::optional<std::array<std::vector<std::uint32_t>, 2>> annulusBoundaries(const
     return std::array<std::vector<std::uint32_t>, 2>{std::move(loops[0]), std::move(loops[1])};
 }
 
-Bands::Bands(const FaceGraph& g, const Faces& part) : part_(part) {
-    if (part.empty()) return;
-    const mesh::Mesh& m = *g.mesh;
+std::vector<std::uint32_t> verticesOf(const mesh::Mesh& m, const Faces& region) {
     std::vector<std::uint32_t> vertices;
-    for (std::uint32_t f : part)
+    for (std::uint32_t f : region)
         for (std::uint32_t v : m.triangles[f])
             vertices.push_back(v);
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+}
+
+Bands::Bands(const FaceGraph& g, const Faces& part) : part_(part) {
+    if (part.empty()) return;
+    const mesh::Mesh& m = *g.mesh;
+    const std::vector<std::uint32_t> vertices = verticesOf(m, part);
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     for (std::uint32_t v : vertices)
         mean += Eigen::Vector3d(m.positions[v][0], m.positions[v][1], m.positions[v][2]);

@@ -32,6 +32,9 @@ std::optional<FaceGraph> buildFaceGraph(const mesh::Mesh& mesh, std::string* why
 
 std::vector<Faces> connectedRegions(const FaceGraph& graph);
 
+// The vertices of a region's faces, each once, in increasing order.
+std::vector<std::uint32_t> verticesOf(const mesh::Mesh& mesh, const Faces& region);
+
 // About `count` compact regions (at least one a connected part): seeds
 // spread by farthest-point sampling over each part (as many as its share
 // of the area), regions grown from them by Dijkstra, and `relaxations`
