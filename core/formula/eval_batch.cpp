@@ -171,7 +171,7 @@ FL_BATCH_LOOP void chainDispatch(const Step& s, double* const* base, double* o, 
 
 } // namespace
 
-BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape) {
+BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape_) {
     const std::size_t regs = static_cast<std::size_t>(tape.registerCount);
     std::size_t bytes = (regs + 3) * kStride * sizeof(double);
     workspace_ = static_cast<double*>(std::aligned_alloc(64, bytes));

@@ -223,7 +223,7 @@ struct DualDomain {
 } // namespace
 
 GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt)
-    : tape_(tape), wrt_(wrt), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount)) {}
+    : tape_(tape), wrt_(wrt), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount)) {}
 
 void GradientEvaluator::run(const Point& p) {
     Dual* r = regs_.data();

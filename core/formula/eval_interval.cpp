@@ -30,7 +30,7 @@ struct IntervalDomain {
 } // namespace
 
 IntervalEvaluator::IntervalEvaluator(const Tape& tape)
-    : tape_(tape), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount)) {}
+    : tape_(tape), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount)) {}
 
 void IntervalEvaluator::run(const Box& box) {
     Interval* r = regs_.data();

@@ -33,7 +33,7 @@ struct ScalarDomain {
 } // namespace
 
 ScalarEvaluator::ScalarEvaluator(const Tape& tape)
-    : tape_(tape), params_(tape), regs_(static_cast<std::size_t>(tape.registerCount), 0.0) {}
+    : tape_(tape), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount), 0.0) {}
 
 void ScalarEvaluator::run(const Point& p) {
     double* r = regs_.data();

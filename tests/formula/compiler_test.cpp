@@ -1,8 +1,13 @@
 #include "test_helpers.h"
 
+#include "formula/eval_batch.h"
+#include "formula/eval_gradient.h"
+#include "formula/eval_interval.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 namespace fl::formula {
 namespace {
@@ -92,6 +97,39 @@ TEST(Compiler, ParametersAreInputsWithDefaultsAndRanges) {
     EXPECT_TRUE(e.parameters().set("R", 2.0));
     EXPECT_FALSE(e.parameters().set("Q", 2.0));
     EXPECT_DOUBLE_EQ(e.evaluate(pointXYZ(1, 0, 0)), 3.0);
+}
+
+// Evaluators copy the tape: their parameters must name the copy's, not the
+// tape they were made from (which may be gone: ASan saw the read after free).
+TEST(Compiler, ParametersOutliveTheTapeAnEvaluatorWasMadeFrom) {
+    std::optional<ScalarEvaluator> scalar;
+    std::optional<IntervalEvaluator> interval;
+    std::optional<GradientEvaluator> gradient;
+    std::optional<BatchEvaluator> batch;
+    {
+        CompileResult r = compile("param R = 0.5 in [0.1, 2]; return R^2 - x^2;");
+        ASSERT_TRUE(r.ok());
+        scalar.emplace(*r.tape);
+        interval.emplace(*r.tape);
+        gradient.emplace(*r.tape);
+        batch.emplace(*r.tape);
+    }
+    EXPECT_TRUE(scalar->parameters().set("R", 2.0));
+    EXPECT_TRUE(interval->parameters().set("R", 2.0));
+    EXPECT_TRUE(gradient->parameters().set("R", 2.0));
+    EXPECT_TRUE(batch->parameters().set("R", 2.0));
+    EXPECT_DOUBLE_EQ(scalar->evaluate(pointXYZ(1, 0, 0)), 3.0);
+    EXPECT_DOUBLE_EQ(gradient->evaluate(pointXYZ(1, 0, 0)).v, 3.0);
+    EXPECT_TRUE(interval->evaluate(boxXYZ(1, 1, 0, 0, 0, 0)).contains(3.0));
+    const double x = 1, y = 0, z = 0;
+    double out = 0;
+    BatchInputs in;
+    in.set(Input::X, &x);
+    in.set(Input::Y, &y);
+    in.set(Input::Z, &z);
+    in.set(Input::T, 0.0);
+    batch->evaluate(in, 1, &out);
+    EXPECT_DOUBLE_EQ(out, 3.0);
 }
 
 TEST(Compiler, ExternalParametersFromTheScene) {
