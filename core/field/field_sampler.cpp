@@ -31,6 +31,29 @@ struct FieldSampler::DisplacementEvaluators {
     bool readsUvw;
 };
 
+struct FieldSampler::Evaluators {
+    Evaluators(const formula::Tape& t, const ImplicitField& field)
+        : instructions(t.code.size()), batch(t), scalar(t), gradient(t), interval(t) {
+        setParameters(batch, field);
+        setParameters(scalar, field);
+        setParameters(gradient, field);
+        setParameters(interval, field);
+    }
+    std::size_t instructions;
+    formula::BatchEvaluator batch;
+    formula::ScalarEvaluator scalar;
+    formula::GradientEvaluator gradient;
+    formula::IntervalEvaluator interval;
+};
+
+// A simplified tape's evaluators, found again by what the box decided.
+struct FieldSampler::Simplified {
+    std::uint64_t hash = 0;
+    std::vector<formula::Keep> keep;
+    std::unique_ptr<Evaluators> evaluators;
+    std::uint64_t lastUse = 0;
+};
+
 FieldSampler::~FieldSampler() = default;
 
 std::array<double, 6> FieldSampler::mapped(const Vec3& p) const {
@@ -38,12 +61,9 @@ std::array<double, 6> FieldSampler::mapped(const Vec3& p) const {
 }
 
 FieldSampler::FieldSampler(const ImplicitField& field)
-    : field_(field), clip_(field.boundary == BoxBoundary::Closed), batch_(field.tape),
-      scalar_(field.tape), gradient_(field.tape), interval_(field.tape) {
-    setParameters(batch_, field);
-    setParameters(scalar_, field);
-    setParameters(gradient_, field);
-    setParameters(interval_, field);
+    : field_(field), clip_(field.boundary == BoxBoundary::Closed),
+      full_(std::make_unique<Evaluators>(field.tape, field)), now_(full_.get()),
+      mayNarrow_(formula::hasChoices(field.tape)) {
     if (field.displacement)
         displacement_ = std::make_unique<DisplacementEvaluators>(field.displacement->tape);
 }
@@ -55,7 +75,7 @@ void FieldSampler::values(const double* x, const double* y, const double* z, std
     in.set(formula::Input::Y, y);
     in.set(formula::Input::Z, z);
     in.set(formula::Input::T, field_.t);
-    batch_.evaluate(in, n, out);
+    now_->batch.evaluate(in, n, out);
     counts_.points += n;
     if (!displacement_) return;
     for (auto& v : mappedInputs_)
@@ -81,7 +101,7 @@ void FieldSampler::values(const double* x, const double* y, const double* z, std
 
 double FieldSampler::value(const Vec3& p) {
     ++counts_.points;
-    const double f = scalar_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    const double f = now_->scalar.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
     if (!displacement_) return f;
     const auto m = mapped(p);
     return f + displacement_->scalar.evaluate({m[0], m[1], m[2], field_.t, m[3], m[4], m[5]});
@@ -89,7 +109,7 @@ double FieldSampler::value(const Vec3& p) {
 
 formula::Dual FieldSampler::gradient(const Vec3& p) {
     ++counts_.gradients;
-    formula::Dual d = gradient_.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    formula::Dual d = now_->gradient.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
     if (!displacement_) return d;
     // Chain rule through the linear map: d/dp = d/dx' * (c / g) + d/du * (1 / g).
     const auto m = mapped(p);
@@ -117,13 +137,13 @@ void FieldSampler::gradients(const Vec3* points, std::size_t n, formula::Dual* o
     gradientPoints_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         gradientPoints_[i] = formula::pointXYZ(points[i][0], points[i][1], points[i][2], field_.t);
-    gradient_.evaluateMany(gradientPoints_.data(), n, out);
+    now_->gradient.evaluateMany(gradientPoints_.data(), n, out);
 }
 
 formula::Interval FieldSampler::interval(const Vec3& lo, const Vec3& hi) {
     ++counts_.intervals;
-    formula::Interval r =
-        interval_.evaluate(formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t));
+    formula::Interval r = now_->interval.evaluate(
+        formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t));
     if (displacement_) {
         const auto mlo = mapped(lo), mhi = mapped(hi);
         formula::Box b{};
@@ -149,6 +169,44 @@ formula::Interval FieldSampler::interval(const Vec3& lo, const Vec3& hi) {
     }
     if (r.empty()) return r;
     return formula::Interval::of(std::min(r.lo, bLo), std::min(r.hi, bHi), r.nan);
+}
+
+void FieldSampler::narrow(const Vec3& lo, const Vec3& hi) {
+    now_ = full_.get();
+    if (!mayNarrow_) return;
+    ++counts_.intervals;
+    full_->interval.evaluate(formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t),
+                             keep_);
+    std::uint64_t hash = 1469598103934665603ull; // FNV-1a over the decisions
+    bool any = false;
+    for (formula::Keep k : keep_) {
+        any = any || k != formula::Keep::All;
+        hash = (hash ^ std::uint64_t(k)) * 1099511628211ull;
+    }
+    if (!any) return;
+    ++uses_;
+    for (Simplified& s : simplified_)
+        if (s.hash == hash && s.keep == keep_) {
+            s.lastUse = uses_;
+            now_ = s.evaluators.get();
+            return;
+        }
+    if (simplified_.size() == kCachedTapes) // the least recently used makes room
+        simplified_.erase(std::min_element(
+            simplified_.begin(), simplified_.end(),
+            [](const Simplified& a, const Simplified& b) { return a.lastUse < b.lastUse; }));
+    simplified_.push_back({hash, keep_,
+                           std::make_unique<Evaluators>(simplifyTape(field_.tape, keep_), field_),
+                           uses_});
+    now_ = simplified_.back().evaluators.get();
+}
+
+void FieldSampler::widen() {
+    now_ = full_.get();
+}
+
+std::size_t FieldSampler::instructions() const {
+    return now_->instructions;
 }
 
 } // namespace fl::field

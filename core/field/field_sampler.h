@@ -10,6 +10,7 @@
 #include "formula/eval_interval.h"
 #include "formula/eval_scalar.h"
 #include "formula/tape.h"
+#include "formula/tape_simplify.h"
 
 #include "box3.h"
 
@@ -73,6 +74,18 @@ class FieldSampler {
     // (can the solid's boundary pass through here?), so the two units may mix.
     formula::Interval interval(const Vec3& lo, const Vec3& hi);
 
+    // Narrows the sampler to the box [lo, hi] (issue 31 §1): the min, max
+    // and select operations whose interval over the box decides them drop
+    // their dead operand (formula/tape_simplify.h), and values, gradients and
+    // intervals run that shorter tape until widen(). Every point evaluated
+    // meanwhile must lie in the box; the results are the full tape's, bit
+    // for bit. The shorter tapes' evaluators are kept for the next boxes
+    // that decide the same (the last kCachedTapes patterns).
+    void narrow(const Vec3& lo, const Vec3& hi);
+    void widen();
+    // Instructions the evaluators run now (the full tape's when wide).
+    std::size_t instructions() const;
+
     const EvaluationCounts& counts() const { return counts_; }
     const ImplicitField& field() const { return field_; }
 
@@ -80,12 +93,19 @@ class FieldSampler {
     // The displacement's view of a point: (x', y', z', u, v, w).
     std::array<double, 6> mapped(const Vec3& p) const;
 
+    // The evaluators of one tape (the field's, or a simplified one).
+    struct Evaluators;
+    struct Simplified;
+    static constexpr std::size_t kCachedTapes = 64;
+
     const ImplicitField& field_;
     bool clip_;
-    formula::BatchEvaluator batch_;
-    formula::ScalarEvaluator scalar_;
-    formula::GradientEvaluator gradient_;
-    formula::IntervalEvaluator interval_;
+    std::unique_ptr<Evaluators> full_;
+    Evaluators* now_; // full_, or a simplified tape's while narrowed
+    bool mayNarrow_;  // the tape has a min, max or select
+    std::vector<Simplified> simplified_;
+    std::vector<formula::Keep> keep_;
+    std::uint64_t uses_ = 0; // a clock for evicting the least recently used
     // The displacement's evaluators (when there is one).
     struct DisplacementEvaluators;
     std::unique_ptr<DisplacementEvaluators> displacement_;
@@ -96,6 +116,20 @@ class FieldSampler {
 
   public:
     ~FieldSampler();
+};
+
+// A sampler narrowed to a box for as long as this lives.
+class Narrowing {
+  public:
+    Narrowing(FieldSampler& sampler, const Vec3& lo, const Vec3& hi) : sampler_(sampler) {
+        sampler_.narrow(lo, hi);
+    }
+    ~Narrowing() { sampler_.widen(); }
+    Narrowing(const Narrowing&) = delete;
+    Narrowing& operator=(const Narrowing&) = delete;
+
+  private:
+    FieldSampler& sampler_;
 };
 
 } // namespace fl::field

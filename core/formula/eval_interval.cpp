@@ -32,18 +32,32 @@ struct IntervalDomain {
 IntervalEvaluator::IntervalEvaluator(const Tape& tape)
     : tape_(tape), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount)) {}
 
-void IntervalEvaluator::run(const Box& box) {
+void IntervalEvaluator::load(const Box& box) {
     Interval* r = regs_.data();
     for (int i = 0; i < kInputCount; ++i)
         r[i] = box[i];
     const std::vector<double>& pv = params_.values();
     for (std::size_t i = 0; i < pv.size(); ++i)
         r[kInputCount + i] = Interval::point(pv[i]);
-    walkTape<IntervalDomain>(tape_, r);
+}
+
+void IntervalEvaluator::run(const Box& box) {
+    load(box);
+    walkTape<IntervalDomain>(tape_, regs_.data());
 }
 
 Interval IntervalEvaluator::evaluate(const Box& box) {
     run(box);
+    return tape_.outputs.empty() ? Interval::point(0.0)
+                                 : tapeOutput<IntervalDomain>(tape_, regs_.data(), 0);
+}
+
+Interval IntervalEvaluator::evaluate(const Box& box, std::vector<Keep>& keep) {
+    load(box);
+    keep.assign(tape_.code.size(), Keep::All);
+    walkTape<IntervalDomain>(tape_, regs_.data(),
+                             [&keep](std::size_t i, const Instruction& ins, const Interval& a,
+                                     const Interval& b) { keep[i] = decide(ins.op, a, b); });
     return tape_.outputs.empty() ? Interval::point(0.0)
                                  : tapeOutput<IntervalDomain>(tape_, regs_.data(), 0);
 }

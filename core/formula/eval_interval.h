@@ -3,6 +3,7 @@
 // scalar evaluator can produce inside it (the mesher's license to skip space).
 #include "eval_scalar.h"
 #include "interval.h"
+#include "tape_simplify.h"
 
 #include <array>
 #include <vector>
@@ -21,12 +22,17 @@ class IntervalEvaluator {
     ParameterValues& parameters() { return params_; }
 
     Interval evaluate(const Box& box);
+    // The same, and what the box decides at each instruction (one entry per
+    // instruction: which operand a min, max or select keeps everywhere in
+    // the box), for simplifyTape.
+    Interval evaluate(const Box& box, std::vector<Keep>& keep);
     void evaluateAll(const Box& box, Interval* outputs);
 
   private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
     std::vector<Interval> regs_;
+    void load(const Box& box);
     void run(const Box& box);
 };
 

@@ -16,22 +16,37 @@
 
 namespace fl::formula {
 
-template <typename Domain>
-void walkTape(const Tape& tape, typename Domain::Value* regs) {
+// What walkTape calls before each instruction of two or more operands, with
+// the first two operands' values (the interval evaluator records there what
+// each min, max and select decides: tape_simplify.h).
+struct NoOperandHook {
+    template <typename Value>
+    void operator()(std::size_t, const Instruction&, const Value&, const Value&) const {}
+};
+
+template <typename Domain, typename Hook = NoOperandHook>
+void walkTape(const Tape& tape, typename Domain::Value* regs, Hook hook = {}) {
     auto get = [regs](const Operand& o) {
         return o.isConst() ? Domain::constant(o.value) : regs[o.reg];
     };
-    for (const Instruction& ins : tape.code) {
+    for (std::size_t i = 0; i < tape.code.size(); ++i) {
+        const Instruction& ins = tape.code[i];
         switch (opArity(ins.op)) {
         case 1:
             regs[ins.out] = Domain::unary(ins.op, get(ins.a), ins.imm0);
             break;
-        case 2:
-            regs[ins.out] = Domain::binary(ins.op, get(ins.a), get(ins.b), ins.imm0, ins.imm1);
+        case 2: {
+            const typename Domain::Value a = get(ins.a), b = get(ins.b);
+            hook(i, ins, a, b);
+            regs[ins.out] = Domain::binary(ins.op, a, b, ins.imm0, ins.imm1);
             break;
-        default:
-            regs[ins.out] = Domain::ternary(ins.op, get(ins.a), get(ins.b), get(ins.c));
+        }
+        default: {
+            const typename Domain::Value a = get(ins.a), b = get(ins.b);
+            hook(i, ins, a, b);
+            regs[ins.out] = Domain::ternary(ins.op, a, b, get(ins.c));
             break;
+        }
         }
     }
 }

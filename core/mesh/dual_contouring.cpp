@@ -348,6 +348,14 @@ class Contourer {
     void sampleBlock(Block& block, FieldSampler& sampler, Observations& seen) {
         const BlockCoord& b = block.coord;
         const long i0 = long(b[0]) * kB, j0 = long(b[1]) * kB, k0 = long(b[2]) * kB;
+        // The formula simplified for this block (tape_simplify.h): every
+        // point sampled below lies in a cell of the block or, for a vertex's
+        // gradient, at most kVertexRoom of a cell outside it — within a cell
+        // of its faces, the margin narrowed to.
+        std::optional<field::Narrowing> narrowed;
+        if (options_.simplifyPerBlock)
+            narrowed.emplace(sampler, grid_.corner(i0 - 1, j0 - 1, k0 - 1),
+                             grid_.corner(i0 + kB + 1, j0 + kB + 1, k0 + kB + 1));
         // Which corners to evaluate: those of the octants the intervals
         // cannot rule out.
         std::array<bool, kCorners> needed{};

@@ -25,7 +25,11 @@ struct MeshOptions {
     // Regula falsi steps that move each edge crossing onto f = 0 after the
     // linear guess (0: linear interpolation only, as marching cubes does).
     int refineSteps = 1;
-    int threads = 0;                            // 0: one per core
+    int threads = 0; // 0: one per core
+    // Each block samples the formula simplified for it (the min, max and
+    // select its interval decides dropped: formula/tape_simplify.h); the mesh
+    // is the same bit for bit either way (off: for tests and benchmarks).
+    bool simplifyPerBlock = true;
     std::size_t memoryBudgetBytes = 2ull << 30; // refuse (with a message) what would need more
     const std::atomic<bool>* cancel = nullptr;  // set it to stop early
     // Fraction done in [0, 1]; called from worker threads, one call at a time.

@@ -3,13 +3,17 @@
 // share: laws over random rays, and the named hard cases (thin shells,
 // grazing rays, closed boxes, open surfaces, undefined regions).
 #include "field/box3.h"
+#include "field/field_sampler.h"
 #include "field/ray_march.h"
 #include "formula/compiler.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 using namespace fl::field;
 
@@ -169,4 +173,62 @@ TEST(RayMarch, DegenerateRaysFindNothingAndDoNotHang) {
     // Grazing the sphere along its tangent plane: found or not, it ends.
     (void)marchToSurface(sampler, {-3, 1, 0}, {1, 0, 0});
     EXPECT_LT(sampler.counts().points, 5'000'000u);
+}
+
+// A sampler narrowed to a box runs the tape simplified for it
+// (formula/tape_simplify.h) and answers as the full tape does, bit for bit;
+// widened, the full tape again. A chain of spheres: each box near one of
+// them decides the union differently, more patterns than the sampler keeps.
+TEST(FieldSampler, NarrowedToABoxItAnswersAsTheFullTapeDoes) {
+    std::string chain = "sphere(-4, 0, 0, 0.6)";
+    for (int k = -3; k <= 4; ++k)
+        chain = "(" + chain + ") | sphere(" + std::to_string(k) + ", 0, 0, 0.6)";
+    const ImplicitField field = fieldOf(chain.c_str(), {{-5, -1, -1}, {5, 1, 1}});
+    FieldSampler wide(field), narrowed(field);
+    const std::size_t full = narrowed.instructions();
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::size_t fewest = full;
+    for (int round = 0; round < 3; ++round)
+        for (int b = 0; b < 100; ++b) { // 100 boxes along the chain, again and again
+            const Vec3 lo{-5 + 0.1 * b, -0.5 + 0.01 * round, -0.3}, hi{lo[0] + 0.1, 0.5, 0.3};
+            const Narrowing scope(narrowed, lo, hi);
+            fewest = std::min(fewest, narrowed.instructions());
+            std::vector<double> xs, ys, zs;
+            std::vector<Vec3> points;
+            for (int s = 0; s < 12; ++s) {
+                points.push_back({lo[0] + u(rng) * (hi[0] - lo[0]),
+                                  lo[1] + u(rng) * (hi[1] - lo[1]),
+                                  lo[2] + u(rng) * (hi[2] - lo[2])});
+                xs.push_back(points.back()[0]);
+                ys.push_back(points.back()[1]);
+                zs.push_back(points.back()[2]);
+            }
+            std::vector<double> a(points.size()), c(points.size());
+            wide.values(xs.data(), ys.data(), zs.data(), xs.size(), a.data());
+            narrowed.values(xs.data(), ys.data(), zs.data(), xs.size(), c.data());
+            std::vector<fl::formula::Dual> g(points.size()), h(points.size());
+            wide.gradients(points.data(), points.size(), g.data());
+            narrowed.gradients(points.data(), points.size(), h.data());
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                ASSERT_EQ(a[i], c[i]) << b;
+                ASSERT_EQ(wide.value(points[i]), narrowed.value(points[i]));
+                ASSERT_EQ(g[i].v, h[i].v);
+                ASSERT_EQ(g[i].d, h[i].d);
+                ASSERT_EQ(wide.gradient(points[i]).d, narrowed.gradient(points[i]).d);
+            }
+            const Vec3 mid{(lo[0] + hi[0]) / 2, 0, 0};
+            const fl::formula::Interval wi = wide.interval(lo, mid),
+                                        ni = narrowed.interval(lo, mid);
+            ASSERT_EQ(wi.lo, ni.lo);
+            ASSERT_EQ(wi.hi, ni.hi);
+        }
+    EXPECT_LT(fewest * 4, full) << "one sphere's box should need about a ninth of the chain";
+    narrowed.widen();
+    EXPECT_EQ(narrowed.instructions(), full);
+    // A tape without min, max or select is never narrowed.
+    FieldSampler smooth(fieldOf("1 - x^2 - y^2 - z^2", {{-1, -1, -1}, {1, 1, 1}}));
+    const std::size_t before = smooth.counts().intervals;
+    smooth.narrow({0, 0, 0}, {0.5, 0.5, 0.5});
+    EXPECT_EQ(smooth.counts().intervals, before);
 }

@@ -6,6 +6,8 @@
 // contains scalar, the gradient evaluator's value == scalar, and its
 // derivatives match central differences wherever f is smooth there (the
 // one-sided differences agree, so kinks such as abs(x) at 0 are not judged).
+// And a fifth: the tape simplified for the box of the interval check
+// (tape_simplify.h) gives the full tape's bits at every point in it.
 #include "formula/batch_jit.h"
 #include "formula/compiler.h"
 #include "formula/eval_batch.h"
@@ -13,6 +15,7 @@
 #include "formula/eval_interval.h"
 #include "formula/eval_scalar.h"
 #include "formula/nonfinite_report.h"
+#include "formula/tape_simplify.h"
 
 #include <bit>
 #include <cmath>
@@ -119,8 +122,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         box[k] = Interval::of(-1.25, 3.0);
     box[3] = Interval::point(points[0][3]);
     interval.evaluateAll(box, ranges.data());
+    std::vector<Keep> keep;
+    (void)interval.evaluate(box, keep);
+    const Tape simplified = simplifyTape(tape, keep);
+    ScalarEvaluator simple(simplified);
+    std::vector<double> simpleOut(outs);
     for (int i = 0; i < 5; ++i) {
         scalar.evaluateAll(points[i], scalarOut.data());
+        simple.evaluateAll(points[i], simpleOut.data());
+        for (std::size_t o = 0; o < outs; ++o)
+            if (std::bit_cast<std::uint64_t>(simpleOut[o]) !=
+                    std::bit_cast<std::uint64_t>(scalarOut[o]) &&
+                !(std::isnan(simpleOut[o]) && std::isnan(scalarOut[o]))) {
+                std::fprintf(stderr, "simplified %.17g != full %.17g (point %d)\n", simpleOut[o],
+                             scalarOut[o], i);
+                std::abort();
+            }
         gradient.evaluateAll(points[i], grads.data());
         (void)explainNonFinite(tape, {}, points[i]);
         for (std::size_t o = 0; o < outs; ++o) {

@@ -131,6 +131,33 @@ TEST(DualContouring, SameOutputWhateverTheNumberOfThreads) {
     expectWatertight(a.mesh); // a gyroid closed by the box
 }
 
+// Each block samples the formula simplified for it (formula/tape_simplify.h):
+// the mesh is the full formula's, bit for bit — set operations, a select, an
+// undefined region, an open box.
+TEST(DualContouring, SimplifiedPerBlockTheMeshIsTheSame) {
+    for (const char* src : {"(1-x^2-y^2-z^2) & (-((z-x) & y & z))",
+                            "max(max(0.3^2-(x-0.4)^2-y^2-z^2, 0.3^2-(x+0.4)^2-y^2-z^2), "
+                            "min(0.2-abs(y), 0.5-abs(x)))",
+                            "(x > 0) ? 0.5 - x*x - y*y - z*z : 0.3 - y*y - z*z - 4*x*x",
+                            "min(sqrt(x + 0.5) - 0.5, 0.7 - y*y - z*z)"}) {
+        for (const BoxBoundary boundary : {BoxBoundary::Closed, BoxBoundary::Open}) {
+            ImplicitField f = field(src);
+            f.boundary = boundary;
+            MeshOptions simplified, full;
+            simplified.resolution = full.resolution = 40;
+            full.simplifyPerBlock = false;
+            const MeshResult a = meshImplicit(f, simplified), b = meshImplicit(f, full);
+            ASSERT_TRUE(a.ok()) << src;
+            ASSERT_TRUE(b.ok()) << src;
+            EXPECT_GT(a.mesh.triangles.size(), 100u) << src;
+            EXPECT_EQ(a.mesh.positions, b.mesh.positions) << src;
+            EXPECT_EQ(a.mesh.normals, b.mesh.normals) << src;
+            EXPECT_EQ(a.mesh.triangles, b.mesh.triangles) << src;
+            EXPECT_EQ(a.warnings, b.warnings) << src;
+        }
+    }
+}
+
 TEST(DualContouring, IntervalsSkipEmptySpace) {
     const ImplicitField f = field("0.1^2 - x*x - y*y - z*z"); // a small ball in a big box
     MeshOptions o;
