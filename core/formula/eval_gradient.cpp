@@ -253,138 +253,229 @@ void GradientEvaluator::evaluateAll(const Point& p, Dual* outputs) {
 namespace fl::formula {
 
 namespace {
-// One instruction over a block, the operation fixed at compile time for the
-// commonest ones: with `flatten` the compiler inlines ad::binary/unary and
-// folds their switch away, leaving a plain loop (same arithmetic, same bits).
-template <Op kOp>
-[[gnu::flatten]] void binaryLoop(Dual* dst, const Dual* a, const Dual* b, std::size_t m) {
-    for (std::size_t j = 0; j < m; ++j)
-        dst[j] = ad::binary(kOp, a[j], b[j], 0.0, 0.0);
+
+// evaluateMany keeps each register of a block of points as four rows — the
+// values and the three derivatives, kManyBlock doubles each — so that the
+// commonest operations run as plain loops over rows, which the compiler
+// vectorises (an AVX2 clone where the CPU has it). Each loop is ad::unary's
+// or ad::binary's arithmetic written for rows: the same operations in the
+// same order, the same zero rule (0 times anything is 0), so the bits are
+// evaluate()'s exactly (GradientMany.* tests).
+constexpr std::size_t kManyBlock = 64;
+constexpr std::size_t kRow = kManyBlock;
+constexpr std::size_t kRegisterStride = 4 * kRow; // v, d0, d1, d2
+
+// f' * da under the zero rule: the product always taken, then chosen (no
+// branch, so the loops vectorise to a compare and a blend).
+inline double term(double da, double fprime) {
+    const double product = fprime * da;
+    return ((da == 0.0) | (fprime == 0.0)) ? 0.0 : product;
 }
+
 template <Op kOp>
-[[gnu::flatten]] void unaryLoop(Dual* dst, const Dual* a, std::size_t m) {
-    for (std::size_t j = 0; j < m; ++j)
-        dst[j] = ad::unary(kOp, a[j], 0.0);
+[[gnu::flatten]] __attribute__((target_clones("avx2", "default"))) void
+binaryRows(double* __restrict dst, const double* __restrict a, const double* __restrict b,
+           std::size_t m) {
+    const double* av = a;
+    const double* bv = b;
+    double* out = dst;
+    for (std::size_t k = 1; k <= 3; ++k) {
+        const double* ad = a + k * kRow;
+        const double* bd = b + k * kRow;
+        double* od = dst + k * kRow;
+        for (std::size_t j = 0; j < m; ++j) {
+            const double x = av[j], y = bv[j];
+            if constexpr (kOp == Op::Add) {
+                od[j] = term(ad[j], 1.0) + term(bd[j], 1.0);
+            } else if constexpr (kOp == Op::Sub) {
+                od[j] = term(ad[j], 1.0) + term(bd[j], -1.0);
+            } else if constexpr (kOp == Op::Mul) {
+                od[j] = term(ad[j], y) + term(bd[j], x);
+            } else { // Min, Max: the chosen operand's slope; at a tie the mean
+                const bool first = kOp == Op::Min ? ((x < y) | (x != x)) : ((x > y) | (x != x));
+                const double tie = term(ad[j], 0.5) + term(bd[j], 0.5);
+                od[j] = x == y ? tie : first ? ad[j] : bd[j];
+            }
+        }
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+        const double x = av[j], y = bv[j];
+        if constexpr (kOp == Op::Add)
+            out[j] = x + y;
+        else if constexpr (kOp == Op::Sub)
+            out[j] = x - y;
+        else if constexpr (kOp == Op::Mul)
+            out[j] = x * y;
+        else if constexpr (kOp == Op::Min)
+            out[j] = minPropagating(x, y);
+        else
+            out[j] = maxPropagating(x, y);
+    }
+}
+
+template <Op kOp>
+[[gnu::flatten]] __attribute__((target_clones("avx2", "default"))) void
+unaryRows(double* __restrict dst, const double* __restrict a, std::size_t m) {
+    for (std::size_t j = 0; j < m; ++j) {
+        const double x = a[j];
+        if constexpr (kOp == Op::Neg)
+            dst[j] = -x;
+        else if constexpr (kOp == Op::Square)
+            dst[j] = x * x;
+        else
+            dst[j] = std::sqrt(x);
+    }
+    for (std::size_t k = 1; k <= 3; ++k) {
+        const double* ad = a + k * kRow;
+        double* od = dst + k * kRow;
+        for (std::size_t j = 0; j < m; ++j) {
+            double fprime;
+            if constexpr (kOp == Op::Neg)
+                fprime = -1.0;
+            else if constexpr (kOp == Op::Square)
+                fprime = 2.0 * a[j];
+            else
+                fprime = 0.5 / dst[j];
+            od[j] = term(ad[j], fprime);
+        }
+    }
 }
 
 // sin and cos of a row at once, each through SLEEF's array form (4 lanes
 // with AVX2): a dual number needs both, and the gyroid-like formulas that
 // use them spend most of a gradient there. The arrays give the scalar bits
 // (vector_math_variant.inc), so this matches ad::unary exactly.
-void trigLoop(bool sine, Dual* dst, const Dual* a, std::size_t m) {
-    constexpr std::size_t kMax = 64;
-    double x[kMax], s[kMax], c[kMax];
+void trigRows(bool sine, double* dst, const double* a, std::size_t m) {
+    double s[kRow], c[kRow];
     const auto& vm = vmath::implementation();
-    for (std::size_t start = 0; start < m; start += kMax) {
-        const std::size_t n = std::min(kMax, m - start);
-        for (std::size_t j = 0; j < n; ++j)
-            x[j] = a[start + j].v;
-        vm.unaryArray[int(vmath::Unary::Sin)](x, s, n);
-        vm.unaryArray[int(vmath::Unary::Cos)](x, c, n);
-        for (std::size_t j = 0; j < n; ++j) {
-            const Dual& in = a[start + j];
-            Dual& out = dst[start + j];
-            const double slope = sine ? c[j] : -s[j];
-            out.v = sine ? s[j] : c[j];
-            for (int i = 0; i < 3; ++i)
-                out.d[i] = (in.d[i] == 0.0 || slope == 0.0) ? 0.0 : slope * in.d[i];
-        }
-    }
+    vm.unaryArray[int(vmath::Unary::Sin)](a, s, m);
+    vm.unaryArray[int(vmath::Unary::Cos)](a, c, m);
+    for (std::size_t k = 1; k <= 3; ++k)
+        for (std::size_t j = 0; j < m; ++j)
+            dst[k * kRow + j] = term(a[k * kRow + j], sine ? c[j] : -s[j]);
+    for (std::size_t j = 0; j < m; ++j)
+        dst[j] = sine ? s[j] : c[j];
 }
+
+Dual dualAt(const double* rows, std::size_t j) {
+    return Dual{rows[j], {rows[kRow + j], rows[2 * kRow + j], rows[3 * kRow + j]}};
+}
+void setDual(double* rows, std::size_t j, const Dual& d) {
+    rows[j] = d.v;
+    for (std::size_t k = 0; k < 3; ++k)
+        rows[(k + 1) * kRow + j] = d.d[k];
+}
+
 } // namespace
 
 void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* out) {
-    constexpr std::size_t kManyBlock = 64;
     if (tape_.outputs.empty()) {
         for (std::size_t i = 0; i < n; ++i)
             out[i] = Dual{};
         return;
     }
     const std::size_t regCount = std::size_t(tape_.registerCount);
-    blockRegs_.resize(regCount * kManyBlock);
-    Dual* r = blockRegs_.data();
+    blockRegs_.resize(regCount * kRegisterStride);
+    double* r = blockRegs_.data();
+    auto rows = [r](std::int32_t reg) { return r + std::size_t(reg) * kRegisterStride; };
     const std::vector<double>& pv = params_.values();
+    // Constant operands as rows (the value, zero slopes), made once a call.
+    const std::size_t first = std::min(n, kManyBlock);
+    auto spread = [first](double* dst, double v) {
+        std::fill(dst, dst + first, v);
+        for (std::size_t k = 1; k <= 3; ++k)
+            std::fill(dst + k * kRow, dst + k * kRow + first, 0.0);
+    };
+    constSlot_.assign(tape_.code.size() * 3, -1);
+    std::size_t constants = 0;
+    for (std::size_t i = 0; i < tape_.code.size(); ++i) {
+        const Instruction& ins = tape_.code[i];
+        const Operand* ops[3] = {&ins.a, &ins.b, &ins.c};
+        for (std::size_t k = 0; k < std::size_t(opArity(ins.op)); ++k)
+            if (ops[k]->isConst()) constSlot_[3 * i + k] = std::int32_t(constants++);
+    }
+    constRows_.resize(constants * kRegisterStride);
+    for (std::size_t i = 0; i < tape_.code.size(); ++i) {
+        const Instruction& ins = tape_.code[i];
+        const Operand* ops[3] = {&ins.a, &ins.b, &ins.c};
+        for (std::size_t k = 0; k < 3; ++k)
+            if (constSlot_[3 * i + k] >= 0)
+                spread(constRows_.data() + std::size_t(constSlot_[3 * i + k]) * kRegisterStride,
+                       ops[k]->value);
+    }
+    auto operandRows = [&](std::size_t i, std::size_t k, const Operand& o) -> const double* {
+        return o.isConst()
+                   ? constRows_.data() + std::size_t(constSlot_[3 * i + k]) * kRegisterStride
+                   : rows(o.reg);
+    };
+    // Inputs and parameters are never written by the tape: their slopes
+    // (1 along the input they are, else 0) and the parameters' rows are
+    // set once a call, the inputs' values per block.
+    for (int i = 0; i < kInputCount; ++i)
+        std::fill(rows(i) + kRow, rows(i) + kRegisterStride, 0.0);
+    for (std::size_t k = 0; k < 3; ++k)
+        std::fill_n(rows(std::int32_t(wrt_[k])) + (k + 1) * kRow, first, 1.0);
+    for (std::size_t i = 0; i < pv.size(); ++i)
+        spread(rows(std::int32_t(kInputCount + i)), pv[i]);
     for (std::size_t start = 0; start < n; start += kManyBlock) {
         const std::size_t m = std::min(kManyBlock, n - start);
-        for (std::size_t j = 0; j < m; ++j) {
-            const Point& p = points[start + j];
-            for (int i = 0; i < kInputCount; ++i)
-                r[std::size_t(i) * kManyBlock + j] = DualDomain::constant(p[std::size_t(i)]);
-            for (int k = 0; k < 3; ++k)
-                r[std::size_t(wrt_[std::size_t(k)]) * kManyBlock + j].d[std::size_t(k)] = 1.0;
-            for (std::size_t i = 0; i < pv.size(); ++i)
-                r[(kInputCount + i) * kManyBlock + j] = DualDomain::constant(pv[i]);
-        }
-        auto operand = [&](const Operand& o, std::size_t j) {
-            return o.isConst() ? DualDomain::constant(o.value)
-                               : r[std::size_t(o.reg) * kManyBlock + j];
-        };
-        // Operands as rows (a constant is spread over a scratch row).
-        auto row = [&](const Operand& o, Dual* scratch) -> const Dual* {
-            if (!o.isConst()) return r + std::size_t(o.reg) * kManyBlock;
+        for (int i = 0; i < kInputCount; ++i) {
+            if (!tape_.usesInput[std::size_t(i)]) continue;
+            double* in = rows(i);
             for (std::size_t j = 0; j < m; ++j)
-                scratch[j] = DualDomain::constant(o.value);
-            return scratch;
-        };
-        Dual sa[kManyBlock], sb[kManyBlock];
-        for (const Instruction& ins : tape_.code) {
-            Dual* dst = r + std::size_t(ins.out) * kManyBlock;
-            bool done = true;
+                in[j] = points[start + j][std::size_t(i)];
+        }
+        for (std::size_t i = 0; i < tape_.code.size(); ++i) {
+            const Instruction& ins = tape_.code[i];
+            double* dst = rows(ins.out);
+            const double* a = operandRows(i, 0, ins.a);
             switch (ins.op) {
             case Op::Add:
-                binaryLoop<Op::Add>(dst, row(ins.a, sa), row(ins.b, sb), m);
-                break;
+                binaryRows<Op::Add>(dst, a, operandRows(i, 1, ins.b), m);
+                continue;
             case Op::Sub:
-                binaryLoop<Op::Sub>(dst, row(ins.a, sa), row(ins.b, sb), m);
-                break;
+                binaryRows<Op::Sub>(dst, a, operandRows(i, 1, ins.b), m);
+                continue;
             case Op::Mul:
-                binaryLoop<Op::Mul>(dst, row(ins.a, sa), row(ins.b, sb), m);
-                break;
+                binaryRows<Op::Mul>(dst, a, operandRows(i, 1, ins.b), m);
+                continue;
             case Op::Min:
-                binaryLoop<Op::Min>(dst, row(ins.a, sa), row(ins.b, sb), m);
-                break;
+                binaryRows<Op::Min>(dst, a, operandRows(i, 1, ins.b), m);
+                continue;
             case Op::Max:
-                binaryLoop<Op::Max>(dst, row(ins.a, sa), row(ins.b, sb), m);
-                break;
+                binaryRows<Op::Max>(dst, a, operandRows(i, 1, ins.b), m);
+                continue;
             case Op::Neg:
-                unaryLoop<Op::Neg>(dst, row(ins.a, sa), m);
-                break;
+                unaryRows<Op::Neg>(dst, a, m);
+                continue;
             case Op::Square:
-                unaryLoop<Op::Square>(dst, row(ins.a, sa), m);
-                break;
-            case Op::Sin:
-                trigLoop(true, dst, row(ins.a, sa), m);
-                break;
-            case Op::Cos:
-                trigLoop(false, dst, row(ins.a, sa), m);
-                break;
+                unaryRows<Op::Square>(dst, a, m);
+                continue;
             case Op::Sqrt:
-                unaryLoop<Op::Sqrt>(dst, row(ins.a, sa), m);
-                break;
+                unaryRows<Op::Sqrt>(dst, a, m);
+                continue;
+            case Op::Sin:
+            case Op::Cos:
+                trigRows(ins.op == Op::Sin, dst, a, m);
+                continue;
             default:
-                done = false;
+                break;
             }
-            if (done) continue;
-            switch (opArity(ins.op)) {
-            case 1:
-                for (std::size_t j = 0; j < m; ++j)
-                    dst[j] = ad::unary(ins.op, operand(ins.a, j), ins.imm0);
-                break;
-            case 2:
-                for (std::size_t j = 0; j < m; ++j)
-                    dst[j] = ad::binary(ins.op, operand(ins.a, j), operand(ins.b, j), ins.imm0,
-                                        ins.imm1);
-                break;
-            default:
-                for (std::size_t j = 0; j < m; ++j)
-                    dst[j] = ad::ternary(ins.op, operand(ins.a, j), operand(ins.b, j),
-                                         operand(ins.c, j));
-                break;
+            // The rest point by point through ad::*.
+            const int arity = opArity(ins.op);
+            const double* b = arity >= 2 ? operandRows(i, 1, ins.b) : nullptr;
+            const double* c = arity >= 3 ? operandRows(i, 2, ins.c) : nullptr;
+            for (std::size_t j = 0; j < m; ++j) {
+                const Dual x = dualAt(a, j);
+                setDual(dst, j,
+                        arity == 1   ? ad::unary(ins.op, x, ins.imm0)
+                        : arity == 2 ? ad::binary(ins.op, x, dualAt(b, j), ins.imm0, ins.imm1)
+                                     : ad::ternary(ins.op, x, dualAt(b, j), dualAt(c, j)));
             }
         }
         const Operand& o = tape_.outputs[0].value;
         for (std::size_t j = 0; j < m; ++j)
-            out[start + j] = operand(o, j);
+            out[start + j] = o.isConst() ? DualDomain::constant(o.value) : dualAt(rows(o.reg), j);
     }
 }
 

@@ -37,7 +37,11 @@ class GradientEvaluator {
     std::array<Input, 3> wrt_;
     ParameterValues params_;
     std::vector<Dual> regs_;
-    std::vector<Dual> blockRegs_; // registerCount x kManyBlock, for evaluateMany
+    // evaluateMany's rows: per register its values and three derivatives
+    // over a block of points; per instruction its constant operands'.
+    std::vector<double> blockRegs_;
+    std::vector<double> constRows_;
+    std::vector<std::int32_t> constSlot_; // per instruction and operand: its row, or -1
     void run(const Point& p);
 };
 
