@@ -31,26 +31,50 @@ struct FieldSampler::DisplacementEvaluators {
     bool readsUvw;
 };
 
+// The evaluators of one tape: the interval evaluator at once (an octree's
+// nodes need only it), the others when first asked for.
 struct FieldSampler::Evaluators {
-    Evaluators(const formula::Tape& t, const ImplicitField& field)
-        : instructions(t.code.size()), batch(t), scalar(t), gradient(t), interval(t) {
-        setParameters(batch, field);
-        setParameters(scalar, field);
-        setParameters(gradient, field);
+    Evaluators(std::shared_ptr<const NarrowedTape> n, const ImplicitField& f)
+        : narrowed(std::move(n)), tape(narrowed ? narrowed->tape : f.tape), field(f),
+          mayNarrow(formula::hasChoices(tape)), interval(tape) {
         setParameters(interval, field);
     }
-    std::size_t instructions;
-    formula::BatchEvaluator batch;
-    formula::ScalarEvaluator scalar;
-    formula::GradientEvaluator gradient;
+    std::shared_ptr<const NarrowedTape> narrowed; // null: the field's own tape
+    const formula::Tape& tape;
+    const ImplicitField& field;
+    bool mayNarrow; // the tape has a min, max or select left
     formula::IntervalEvaluator interval;
+
+    // (A simplified tape is interpreted: a mesher block evaluates it a few
+    // times, and compiling each of a union's many patterns cost more.)
+    formula::BatchEvaluator& batch() {
+        if (!batch_) {
+            batch_.emplace(tape, narrowed == nullptr);
+            setParameters(*batch_, field);
+        }
+        return *batch_;
+    }
+    formula::ScalarEvaluator& scalar() { return made(scalar_); }
+    formula::GradientEvaluator& gradient() { return made(gradient_); }
+
+  private:
+    template <class E>
+    E& made(std::optional<E>& e) {
+        if (!e) {
+            e.emplace(tape);
+            setParameters(*e, field);
+        }
+        return *e;
+    }
+    std::optional<formula::BatchEvaluator> batch_;
+    std::optional<formula::ScalarEvaluator> scalar_;
+    std::optional<formula::GradientEvaluator> gradient_;
 };
 
-// A simplified tape's evaluators, found again by what the box decided.
+// A simplified tape's evaluators, found again by what was decided.
 struct FieldSampler::Simplified {
     std::uint64_t hash = 0;
-    std::vector<formula::Keep> keep;
-    std::unique_ptr<Evaluators> evaluators;
+    std::shared_ptr<Evaluators> evaluators;
     std::uint64_t lastUse = 0;
 };
 
@@ -61,9 +85,10 @@ std::array<double, 6> FieldSampler::mapped(const Vec3& p) const {
 }
 
 FieldSampler::FieldSampler(const ImplicitField& field)
-    : field_(field), clip_(field.boundary == BoxBoundary::Closed),
-      full_(std::make_unique<Evaluators>(field.tape, field)), now_(full_.get()),
-      mayNarrow_(formula::hasChoices(field.tape)) {
+    : field_(field),
+      clip_(field.boundary == BoxBoundary::Closed), stack_{std::make_shared<Evaluators>(nullptr,
+                                                                                        field)},
+      now_(stack_.back().get()) {
     if (field.displacement)
         displacement_ = std::make_unique<DisplacementEvaluators>(field.displacement->tape);
 }
@@ -75,7 +100,7 @@ void FieldSampler::values(const double* x, const double* y, const double* z, std
     in.set(formula::Input::Y, y);
     in.set(formula::Input::Z, z);
     in.set(formula::Input::T, field_.t);
-    now_->batch.evaluate(in, n, out);
+    now_->batch().evaluate(in, n, out);
     counts_.points += n;
     if (!displacement_) return;
     for (auto& v : mappedInputs_)
@@ -101,7 +126,7 @@ void FieldSampler::values(const double* x, const double* y, const double* z, std
 
 double FieldSampler::value(const Vec3& p) {
     ++counts_.points;
-    const double f = now_->scalar.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    const double f = now_->scalar().evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
     if (!displacement_) return f;
     const auto m = mapped(p);
     return f + displacement_->scalar.evaluate({m[0], m[1], m[2], field_.t, m[3], m[4], m[5]});
@@ -109,7 +134,7 @@ double FieldSampler::value(const Vec3& p) {
 
 formula::Dual FieldSampler::gradient(const Vec3& p) {
     ++counts_.gradients;
-    formula::Dual d = now_->gradient.evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
+    formula::Dual d = now_->gradient().evaluate(formula::pointXYZ(p[0], p[1], p[2], field_.t));
     if (!displacement_) return d;
     // Chain rule through the linear map: d/dp = d/dx' * (c / g) + d/du * (1 / g).
     const auto m = mapped(p);
@@ -137,7 +162,7 @@ void FieldSampler::gradients(const Vec3* points, std::size_t n, formula::Dual* o
     gradientPoints_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         gradientPoints_[i] = formula::pointXYZ(points[i][0], points[i][1], points[i][2], field_.t);
-    now_->gradient.evaluateMany(gradientPoints_.data(), n, out);
+    now_->gradient().evaluateMany(gradientPoints_.data(), n, out);
 }
 
 formula::Interval FieldSampler::interval(const Vec3& lo, const Vec3& hi) {
@@ -171,42 +196,84 @@ formula::Interval FieldSampler::interval(const Vec3& lo, const Vec3& hi) {
     return formula::Interval::of(std::min(r.lo, bLo), std::min(r.hi, bHi), r.nan);
 }
 
+void FieldSampler::push(std::shared_ptr<Evaluators> e) {
+    now_ = e.get();
+    stack_.push_back(std::move(e));
+}
+
 void FieldSampler::narrow(const Vec3& lo, const Vec3& hi) {
-    now_ = full_.get();
-    if (!mayNarrow_) return;
+    const std::shared_ptr<Evaluators> parent = stack_.back();
+    if (!parent->mayNarrow) return push(parent);
     ++counts_.intervals;
-    full_->interval.evaluate(formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t),
-                             keep_);
-    std::uint64_t hash = 1469598103934665603ull; // FNV-1a over the decisions
+    parent->interval.evaluate(formula::boxXYZ(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], field_.t),
+                              keep_);
+    // The decisions carried back to the field's tape, added to the parent's.
+    const NarrowedTape* from = parent->narrowed.get();
+    if (from)
+        decided_ = from->decided;
+    else
+        decided_.assign(field_.tape.code.size(), formula::Keep::All);
     bool any = false;
-    for (formula::Keep k : keep_) {
-        any = any || k != formula::Keep::All;
+    for (std::size_t i = 0; i < keep_.size(); ++i)
+        if (keep_[i] != formula::Keep::All) {
+            decided_[from ? std::size_t(from->source[i]) : i] = keep_[i];
+            any = true;
+        }
+    if (!any) return push(parent);
+    std::uint64_t hash = 1469598103934665603ull; // FNV-1a
+    for (formula::Keep k : decided_)
         hash = (hash ^ std::uint64_t(k)) * 1099511628211ull;
-    }
-    if (!any) return;
+    push(evaluatorsFor(hash, nullptr, parent.get()));
+}
+
+std::shared_ptr<FieldSampler::Evaluators>
+FieldSampler::evaluatorsFor(std::uint64_t hash, const std::shared_ptr<const NarrowedTape>& adopted,
+                            const Evaluators* parent) {
+    const std::vector<formula::Keep>& decided = adopted ? adopted->decided : decided_;
     ++uses_;
     for (Simplified& s : simplified_)
-        if (s.hash == hash && s.keep == keep_) {
+        if (s.hash == hash && s.evaluators->narrowed->decided == decided) {
             s.lastUse = uses_;
-            now_ = s.evaluators.get();
-            return;
+            return s.evaluators;
         }
     if (simplified_.size() == kCachedTapes) // the least recently used makes room
         simplified_.erase(std::min_element(
             simplified_.begin(), simplified_.end(),
             [](const Simplified& a, const Simplified& b) { return a.lastUse < b.lastUse; }));
-    simplified_.push_back({hash, keep_,
-                           std::make_unique<Evaluators>(simplifyTape(field_.tape, keep_), field_),
-                           uses_});
-    now_ = simplified_.back().evaluators.get();
+    std::shared_ptr<const NarrowedTape> narrowed = adopted;
+    if (!narrowed) {
+        // Simplified from the parent's tape with this box's decisions (the
+        // same tape as the field's with all of decided_, made from fewer
+        // instructions), its instructions traced back to the field's.
+        auto made = std::make_shared<NarrowedTape>();
+        made->tape = formula::simplifyTape(parent->tape, keep_, &made->source);
+        if (parent->narrowed)
+            for (std::int32_t& i : made->source)
+                i = parent->narrowed->source[std::size_t(i)];
+        made->decided = decided_;
+        made->hash = hash;
+        narrowed = std::move(made);
+    }
+    simplified_.push_back({hash, std::make_shared<Evaluators>(std::move(narrowed), field_), uses_});
+    return simplified_.back().evaluators;
+}
+
+void FieldSampler::adopt(const std::shared_ptr<const NarrowedTape>& tape) {
+    if (!tape) return push(stack_.front());
+    push(evaluatorsFor(tape->hash, tape, nullptr));
 }
 
 void FieldSampler::widen() {
-    now_ = full_.get();
+    if (stack_.size() > 1) stack_.pop_back();
+    now_ = stack_.back().get();
+}
+
+std::shared_ptr<const NarrowedTape> FieldSampler::tapeNow() const {
+    return now_->narrowed;
 }
 
 std::size_t FieldSampler::instructions() const {
-    return now_->instructions;
+    return now_->tape.code.size();
 }
 
 } // namespace fl::field

@@ -58,6 +58,16 @@ struct EvaluationCounts {
     }
 };
 
+// A formula narrowed to a region: the field's tape with what the region's
+// interval decided dropped (formula/tape_simplify.h). Immutable, so the
+// samplers of one field share it (FieldSampler::adopt).
+struct NarrowedTape {
+    formula::Tape tape;
+    std::vector<formula::Keep> decided; // per instruction of the field's tape
+    std::vector<std::int32_t> source;   // per instruction of `tape`: its index in the field's
+    std::uint64_t hash = 0;             // of `decided`
+};
+
 class FieldSampler {
   public:
     explicit FieldSampler(const ImplicitField& field);
@@ -79,10 +89,19 @@ class FieldSampler {
     // their dead operand (formula/tape_simplify.h), and values, gradients and
     // intervals run that shorter tape until widen(). Every point evaluated
     // meanwhile must lie in the box; the results are the full tape's, bit
-    // for bit. The shorter tapes' evaluators are kept for the next boxes
-    // that decide the same (the last kCachedTapes patterns).
+    // for bit. Narrowings nest (an octree's boxes): each simplifies the
+    // tape the sampler runs at the time, and widen() undoes the last one.
+    // The shorter tapes' evaluators are kept for the next boxes that decide
+    // the same (the last kCachedTapes).
     void narrow(const Vec3& lo, const Vec3& hi);
     void widen();
+    // The tape the sampler runs now (null while it runs the field's own), to
+    // hand to another sampler of the same field: adopt() makes that one run
+    // it, as a narrowing that widen() undoes (null: the field's own again).
+    // A tape is known by what was decided, not by the boxes: two boxes that
+    // decide the same share one tape and one set of evaluators.
+    std::shared_ptr<const NarrowedTape> tapeNow() const;
+    void adopt(const std::shared_ptr<const NarrowedTape>& tape);
     // Instructions the evaluators run now (the full tape's when wide).
     std::size_t instructions() const;
 
@@ -96,15 +115,23 @@ class FieldSampler {
     // The evaluators of one tape (the field's, or a simplified one).
     struct Evaluators;
     struct Simplified;
-    static constexpr std::size_t kCachedTapes = 64;
+    static constexpr std::size_t kCachedTapes = 256;
+
+    // The cached evaluators of the tape that decides decided_ (made if new,
+    // from `parent`'s tape and keep_), or of `adopted` when given.
+    std::shared_ptr<Evaluators> evaluatorsFor(std::uint64_t hash,
+                                              const std::shared_ptr<const NarrowedTape>& adopted,
+                                              const Evaluators* parent);
+    void push(std::shared_ptr<Evaluators> e);
 
     const ImplicitField& field_;
     bool clip_;
-    std::unique_ptr<Evaluators> full_;
-    Evaluators* now_; // full_, or a simplified tape's while narrowed
-    bool mayNarrow_;  // the tape has a min, max or select
+    // The narrowings in force, the field's own tape at the bottom; now_ is
+    // the top's (evaluators stay alive while on it, even once evicted).
+    std::vector<std::shared_ptr<Evaluators>> stack_;
+    Evaluators* now_;
     std::vector<Simplified> simplified_;
-    std::vector<formula::Keep> keep_;
+    std::vector<formula::Keep> keep_, decided_;
     std::uint64_t uses_ = 0; // a clock for evicting the least recently used
     // The displacement's evaluators (when there is one).
     struct DisplacementEvaluators;
@@ -118,11 +145,16 @@ class FieldSampler {
     ~FieldSampler();
 };
 
-// A sampler narrowed to a box for as long as this lives.
+// A sampler narrowed to a box (or running an adopted tape) while this lives.
 class Narrowing {
   public:
     Narrowing(FieldSampler& sampler, const Vec3& lo, const Vec3& hi) : sampler_(sampler) {
         sampler_.narrow(lo, hi);
+    }
+    // Running a tape another sampler narrowed to (FieldSampler::adopt).
+    Narrowing(FieldSampler& sampler, const std::shared_ptr<const NarrowedTape>& tape)
+        : sampler_(sampler) {
+        sampler_.adopt(tape);
     }
     ~Narrowing() { sampler_.widen(); }
     Narrowing(const Narrowing&) = delete;

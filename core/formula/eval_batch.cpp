@@ -171,7 +171,8 @@ FL_BATCH_LOOP void chainDispatch(const Step& s, double* const* base, double* o, 
 
 } // namespace
 
-BatchEvaluator::BatchEvaluator(const Tape& tape) : tape_(tape), params_(tape_) {
+BatchEvaluator::BatchEvaluator(const Tape& tape, bool compile)
+    : tape_(tape), params_(tape_), compile_(compile) {
     const std::size_t regs = static_cast<std::size_t>(tape.registerCount);
     std::size_t bytes = (regs + 3) * kStride * sizeof(double);
     workspace_ = static_cast<double*>(std::aligned_alloc(64, bytes));
@@ -251,7 +252,7 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
         if (!o.value.isConst() && !isUniform_[std::size_t(o.value.reg)])
             liveOut[std::size_t(o.value.reg)] = 1;
     const auto started = std::chrono::steady_clock::now();
-    jit_ = BatchJit::compile(steps_, liveOut, tape_.registerCount);
+    jit_ = compile_ ? BatchJit::compile(steps_, liveOut, tape_.registerCount) : nullptr;
     jitCompileUs_ =
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started)
             .count();

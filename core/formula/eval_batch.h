@@ -38,7 +38,10 @@ class BatchEvaluator {
     // (4K aliasing stalls loads behind unrelated stores).
     static constexpr std::size_t kStride = kBlock + 16;
 
-    explicit BatchEvaluator(const Tape& tape);
+    // `compile`: whether to make machine code (batch_jit.h) when it can; a
+    // tape evaluated a few times only (one simplified for a mesher block)
+    // is cheaper interpreted than compiled.
+    explicit BatchEvaluator(const Tape& tape, bool compile = true);
     ~BatchEvaluator();
     BatchEvaluator(const BatchEvaluator&) = delete;
     BatchEvaluator& operator=(const BatchEvaluator&) = delete;
@@ -76,6 +79,7 @@ class BatchEvaluator {
     std::array<double, kInputCount> specialisedUniform_{};
     std::vector<double> specialisedParams_;
     bool specialised_ = false;
+    bool compile_ = true;
     std::shared_ptr<const BatchJit> jit_; // the steps as machine code, when it can be made
     double jitCompileUs_ = 0;             // what making it took (the last specialisation)
     std::vector<double*> tailBase_;       // the rows from the point the JIT stopped at

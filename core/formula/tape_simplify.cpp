@@ -49,12 +49,14 @@ struct Value {
 
 struct Node {
     const Instruction* ins = nullptr;
+    std::int32_t index = 0; // in the tape simplified
     Value a, b, c;
 };
 
 } // namespace
 
-Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep) {
+Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep,
+                  std::vector<std::int32_t>* source) {
     const std::int32_t fixed = kInputCount + std::int32_t(tape.params.size());
     // Forward: what each register holds, as a value of the simplified tape.
     std::vector<Value> holds(std::size_t(tape.registerCount));
@@ -74,7 +76,7 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep) {
             continue;
         }
         const int arity = opArity(ins.op);
-        Node n{&ins, valueOf(ins.a), arity >= 2 ? valueOf(ins.b) : Value{},
+        Node n{&ins, std::int32_t(i), valueOf(ins.a), arity >= 2 ? valueOf(ins.b) : Value{},
                arity >= 3 ? valueOf(ins.c) : Value{}};
         const bool constant = n.a.kind == Value::Constant &&
                               (arity < 2 || n.b.kind == Value::Constant) &&
@@ -95,6 +97,7 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep) {
     // Backward: which nodes the outputs need, and each one's last reader.
     constexpr std::int32_t kForever = std::numeric_limits<std::int32_t>::max();
     const std::int32_t count = std::int32_t(nodes.size());
+    if (source) source->clear();
     std::vector<char> live(std::size_t(count), 0);
     std::vector<std::int32_t> lastUse(std::size_t(count), -1);
     for (const Value& v : outputs)
@@ -150,6 +153,7 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep) {
         ins.b = arity >= 2 ? operand(n.b) : Operand{};
         ins.c = arity >= 3 ? operand(n.c) : Operand{};
         out.code.push_back(ins);
+        if (source) source->push_back(n.index);
         // Release the operands that die here, each register once.
         std::int32_t released[3] = {-1, -1, -1};
         int k = 0;

@@ -41,6 +41,9 @@ Keep decide(Op op, const Interval& a, const Interval& b);
 // `keep` has one entry per instruction of tape.code. Inputs, parameters and
 // outputs keep their registers' meaning (the evaluators' parameter names
 // still apply); origins are kept, so diagnostics still point at the source.
-Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep);
+// `source`, when given, receives for each instruction of the result the
+// index of the instruction of `tape` it is (to carry later decisions back).
+Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep,
+                  std::vector<std::int32_t>* source = nullptr);
 
 } // namespace fl::formula

@@ -228,6 +228,10 @@ struct SurfaceCell {
 // What phase 1 leaves for each active block.
 struct Block {
     BlockCoord coord{};
+    // The formula as the octree narrowed it to this block and a cell around
+    // it (null: nothing to drop), until the block is sampled.
+    std::shared_ptr<const field::NarrowedTape> tape;
+    bool narrowed = false;            // tape is the octree's (blocks found later narrow themselves)
     std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
     std::vector<SurfaceCell> cells;   // sorted by cell
     std::vector<std::uint8_t> kept;   // the 2x2x2-cell sub-blocks that may hold surface
@@ -383,9 +387,12 @@ class Contourer {
         // gradient, at most kVertexRoom of a cell outside it — within a cell
         // of its faces, the margin narrowed to.
         std::optional<field::Narrowing> narrowed;
-        if (options_.simplifyPerBlock)
+        if (options_.simplifyPerBlock && block.narrowed)
+            narrowed.emplace(sampler, block.tape);
+        else if (options_.simplifyPerBlock)
             narrowed.emplace(sampler, grid_.corner(i0 - 1, j0 - 1, k0 - 1),
                              grid_.corner(i0 + kB + 1, j0 + kB + 1, k0 + kB + 1));
+        block.tape.reset();
         // Which corners to evaluate: those of the octants the intervals
         // cannot rule out.
         CornerBits needed{};
@@ -812,6 +819,9 @@ class Contourer {
         qefs_.clear();
         cellsTouched_.clear();
         around_.assign(found_.size(), {-1, -1, -1, -1});
+        normalAt_.clear();
+        normalOf_.clear();
+        normalSums_.clear();
         const auto& pieces = pieceTable();
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int slot = found_[n];
@@ -874,10 +884,14 @@ class Contourer {
             const double length =
                 std::sqrt(cq.normalSum[0] * cq.normalSum[0] + cq.normalSum[1] * cq.normalSum[1] +
                           cq.normalSum[2] * cq.normalSum[2]);
-            const Vec3 n = length > 0.9995 * cq.qef.count()
-                               ? Vec3{cq.normalSum[0] / length, cq.normalSum[1] / length,
-                                      cq.normalSum[2] / length}
-                               : vertexNormal(sampler, p, cq.normalSum);
+            Vec3 n{};
+            if (length > 0.9995 * cq.qef.count()) {
+                n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
+            } else { // all of the block's such vertices at once, below
+                normalAt_.push_back(p);
+                normalOf_.push_back(std::uint32_t(block.positions.size()));
+                normalSums_.push_back(cq.normalSum);
+            }
             // touched_ is sorted, so a cell's pieces come in order, one after another.
             if (block.cells.empty() || block.cells.back().cell != cell)
                 block.cells.push_back({std::uint16_t(cell), configs_[std::size_t(cell)],
@@ -886,6 +900,14 @@ class Contourer {
             cq.vertex = std::uint32_t(block.positions.size());
             block.positions.push_back({float(p[0]), float(p[1]), float(p[2])});
             block.normals.push_back({float(n[0]), float(n[1]), float(n[2])});
+        }
+        if (!normalAt_.empty()) {
+            normalGradients_.resize(normalAt_.size());
+            sampler.gradients(normalAt_.data(), normalAt_.size(), normalGradients_.data());
+            for (std::size_t k = 0; k < normalAt_.size(); ++k) {
+                const Vec3 n = vertexNormal(normalGradients_[k], normalAt_[k], normalSums_[k]);
+                block.normals[normalOf_[k]] = {float(n[0]), float(n[1]), float(n[2])};
+            }
         }
         block.occupied.fill(0);
         for (const SurfaceCell& c : block.cells)
@@ -955,8 +977,8 @@ class Contourer {
     // Outward unit normal at a vertex: the box face's where the vertex is
     // nearer to a face than to the shape's surface (closed boundary), else
     // -grad f; where the gradient vanishes, the crossings' normals.
-    Vec3 vertexNormal(FieldSampler& sampler, const Vec3& p, const Vec3& crossingNormals) {
-        const formula::Dual d = sampler.gradient(p);
+    // (d: f and its gradient at p, from one batch for the block's vertices.)
+    Vec3 vertexNormal(const formula::Dual& d, const Vec3& p, const Vec3& crossingNormals) const {
         bool ok = false;
         Vec3 n = normalised({-d.d[0], -d.d[1], -d.d[2]}, ok);
         if (field_.boundary == BoxBoundary::Closed) {
@@ -1053,6 +1075,12 @@ class Contourer {
     std::vector<std::size_t> stragglers_;  // pending_ entries refined further
     std::vector<formula::Dual> redoneOut_; // their gradients
     std::vector<formula::Dual> gradientOut_;
+    // The block's vertices whose normal is the gradient there: where, which
+    // vertex, their crossings' normals summed, and the gradients.
+    std::vector<Vec3> normalAt_;
+    std::vector<std::uint32_t> normalOf_;
+    std::vector<Vec3> normalSums_;
+    std::vector<formula::Dual> normalGradients_;
     struct CellQef {
         std::uint32_t vertex = 0; // block-local, once made
         Qef qef;
@@ -1079,6 +1107,7 @@ using BlockRange = std::array<std::array<int, 3>, 2>; // [lo, hi) in blocks
 // What pruning found: the blocks to mesh, and where to look for warnings.
 struct PruneFindings {
     std::vector<BlockCoord> active;
+    std::vector<std::shared_ptr<const field::NarrowedTape>> tapes; // per active block (Block::tape)
     std::vector<Vec3> undefinedCentres; // boxes where f may be undefined (first few)
     std::vector<Vec3> touchCentres;     // boxes where f <= 0 reaches 0 at most (first few)
     bool overLimit = false;
@@ -1086,6 +1115,7 @@ struct PruneFindings {
     // A subtree's findings after these, in a fixed order.
     void append(PruneFindings&& later) {
         active.insert(active.end(), later.active.begin(), later.active.end());
+        tapes.insert(tapes.end(), later.tapes.begin(), later.tapes.end());
         for (const Vec3& c : later.undefinedCentres)
             if (undefinedCentres.size() < 8) undefinedCentres.push_back(c);
         if (touchCentres.empty()) touchCentres = std::move(later.touchCentres);
@@ -1099,15 +1129,19 @@ struct PruneFindings {
 // their subtrees then run on the threads, each with a Pruner of its own.
 struct Pruner {
     Pruner(const Grid& g, FieldSampler& s, std::size_t blockLimit, std::atomic<std::size_t>& count,
-           int depth = -1)
-        : grid(g), sampler(s), limit(blockLimit), activeCount(count), splitDepth(depth) {}
+           bool simplifyTapes, int depth = -1)
+        : grid(g), sampler(s), limit(blockLimit), activeCount(count), simplify(simplifyTapes),
+          splitDepth(depth) {}
 
     const Grid& grid;
     FieldSampler& sampler;
     std::size_t limit;
     std::atomic<std::size_t>& activeCount; // all the pruners' active blocks
+    bool simplify;                         // narrow the formula down the tree
     int splitDepth = -1;
     std::vector<BlockRange> tasks;
+    std::vector<std::shared_ptr<const field::NarrowedTape>>
+        taskTapes; // the formula narrowed to each
     PruneFindings found;
 
     void run(std::array<int, 3> lo, std::array<int, 3> hi, int depth = 0) {
@@ -1120,6 +1154,16 @@ struct Pruner {
             boxLo[a] = grid.origin[a] + double(lo[a]) * kB * grid.h[a];
             boxHi[a] = grid.origin[a] + double(std::min(hi[a] * kB, grid.cells[a])) * grid.h[a];
         }
+        // The formula simplified for this node from its parent's (libfive's
+        // way down an octree; tape_simplify.h), over the node and a cell
+        // around it: its blocks sample that far (sampleBlock), so a block
+        // takes its leaf's tape as it is.
+        std::optional<field::Narrowing> narrowed;
+        if (simplify)
+            narrowed.emplace(
+                sampler,
+                grid.corner(long(lo[0]) * kB - 1, long(lo[1]) * kB - 1, long(lo[2]) * kB - 1),
+                grid.corner(long(hi[0]) * kB + 1, long(hi[1]) * kB + 1, long(hi[2]) * kB + 1));
         const formula::Interval r = sampler.interval(boxLo, boxHi);
         const Vec3 centre{(boxLo[0] + boxHi[0]) / 2, (boxLo[1] + boxHi[1]) / 2,
                           (boxLo[2] + boxHi[2]) / 2};
@@ -1142,11 +1186,13 @@ struct Pruner {
                 return;
             }
             found.active.push_back(lo);
+            found.tapes.push_back(sampler.tapeNow());
             if (++activeCount > limit) found.overLimit = true;
             return;
         }
         if (depth == splitDepth) {
             tasks.push_back({lo, hi});
+            taskTapes.push_back(sampler.tapeNow());
             return;
         }
         const int mid = lo[axis] + (hi[axis] - lo[axis]) / 2;
@@ -1247,7 +1293,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     // mesher's threads.
     FieldSampler pruneSampler(field);
     std::atomic<std::size_t> activeCount{0};
-    Pruner top(grid, pruneSampler, blockLimit, activeCount, 6);
+    Pruner top(grid, pruneSampler, blockLimit, activeCount, options.simplifyPerBlock, 6);
     top.run({0, 0, 0}, grid.blocks);
     PruneFindings pruned = std::move(top.found);
     EvaluationCounts counts = pruneSampler.counts();
@@ -1256,7 +1302,9 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         std::vector<PruneFindings> subtrees(top.tasks.size());
         parallelFor(subtrees.size(), threads, field, taskCounts,
                     [&](std::size_t i, FieldSampler& s, int) {
-                        Pruner task(grid, s, blockLimit, activeCount);
+                        Pruner task(grid, s, blockLimit, activeCount, options.simplifyPerBlock);
+                        std::optional<field::Narrowing> adopted;
+                        if (options.simplifyPerBlock) adopted.emplace(s, top.taskTapes[i]);
                         task.run(top.tasks[i][0], top.tasks[i][1]);
                         subtrees[i] = std::move(task.found);
                     });
@@ -1275,12 +1323,14 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         result.stats.evaluations = counts;
         return result;
     }
-    std::sort(pruned.active.begin(), pruned.active.end(),
-              [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
-
     std::vector<Block> blocks(pruned.active.size());
-    for (std::size_t i = 0; i < blocks.size(); ++i)
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
         blocks[i].coord = pruned.active[i];
+        blocks[i].tape = std::move(pruned.tapes[i]);
+        blocks[i].narrowed = true;
+    }
+    std::sort(blocks.begin(), blocks.end(),
+              [](const Block& a, const Block& b) { return keyOf(a.coord) < keyOf(b.coord); });
     std::vector<EvaluationCounts> perThread(static_cast<std::size_t>(threads));
     std::vector<Observations> seen(static_cast<std::size_t>(threads));
     std::atomic<bool> stopped{false};

@@ -37,7 +37,8 @@ const CommandSpec& benchRemeshSpec() {
     static const CommandSpec spec{
         .name = "bench remesh",
         .summary = "what an edit costs: the formula compiled and its shape meshed again",
-        .synopsis = {"bench remesh FILE [--resolution N] [--edits N] [--threads N] [--json]",
+        .synopsis = {"bench remesh FILE [--resolution N] [--edits N] [--threads N] [--whole-tape] "
+                     "[--json]",
                      "bench remesh --formula \"SRC\" --box X0,Y0,Z0,X1,Y1,Z1 [options]"},
         .description =
             "Edits the formula of one shape — the first implicit or explicit FShape of the\n"
@@ -73,6 +74,10 @@ const CommandSpec& benchRemeshSpec() {
               .defaultValue = "0",
               .min = 0,
               .max = 256},
+             {.name = "whole-tape",
+              .help = "mesh without simplifying the formula per block (the min, max and "
+                      "select each block's interval decides are kept): the baseline of "
+                      "that step, same mesh"},
              {.name = "json",
               .help = "print {\"edits\", \"resolution\", \"cold_ms\", \"compile_ms\": "
                       "{\"p50\", \"p95\"}, \"mesh_ms\": {...}, \"total_ms\": {...}, "
@@ -95,6 +100,7 @@ int benchRemeshCommand(const Args& args) {
     mesh::MeshOptions options;
     options.resolution = a->number("resolution", 128);
     options.threads = int(a->integer("threads", 0));
+    options.simplifyPerBlock = !a->flag("whole-tape");
     std::vector<double> compileMs, meshMs, totalMs;
     double coldMs = 0;
     for (std::size_t k = 0; k < edits; ++k) {

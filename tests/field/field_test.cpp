@@ -226,6 +226,29 @@ TEST(FieldSampler, NarrowedToABoxItAnswersAsTheFullTapeDoes) {
     EXPECT_LT(fewest * 4, full) << "one sphere's box should need about a ninth of the chain";
     narrowed.widen();
     EXPECT_EQ(narrowed.instructions(), full);
+    // Nested: a box inside a box simplifies the tape already simplified, to
+    // the tape one narrowing to the inner box makes (known by what was
+    // decided, so shared), and another sampler can run it (adopt).
+    {
+        const Narrowing outer(narrowed, {-1.2, -0.5, -0.5}, {1.2, 0.5, 0.5});
+        const std::size_t middle = narrowed.instructions();
+        EXPECT_LT(middle, full);
+        const Narrowing inner(narrowed, {-0.2, -0.3, -0.3}, {0.2, 0.3, 0.3});
+        EXPECT_LT(narrowed.instructions(), middle);
+        FieldSampler other(field);
+        const Narrowing direct(other, {-0.2, -0.3, -0.3}, {0.2, 0.3, 0.3});
+        EXPECT_EQ(other.instructions(), narrowed.instructions());
+        FieldSampler third(field);
+        const Narrowing adopted(third, narrowed.tapeNow());
+        EXPECT_EQ(third.instructions(), narrowed.instructions());
+        for (double x = -0.2; x <= 0.2; x += 0.05) {
+            const Vec3 p{x, 0.1 * x, -0.2 * x};
+            EXPECT_EQ(third.value(p), wide.value(p));
+            EXPECT_EQ(other.gradient(p).d, wide.gradient(p).d);
+        }
+    }
+    EXPECT_EQ(narrowed.instructions(), full);
+    EXPECT_EQ(narrowed.tapeNow(), nullptr);
     // A tape without min, max or select is never narrowed.
     FieldSampler smooth(fieldOf("1 - x^2 - y^2 - z^2", {{-1, -1, -1}, {1, 1, 1}}));
     const std::size_t before = smooth.counts().intervals;
