@@ -40,6 +40,23 @@ const char* methodName(Method method) {
     return "adaptive";
 }
 
+namespace {
+
+// A quick run's time is the least of three (the same mesh each time): the
+// first run in a process also pays for what is made once — tables, machine
+// code, the threads — which a student's next edit does not. Runs of 100 ms
+// or more are timed once (the sweep to 2048 would take minutes more).
+template <class Rerun>
+double leastTime(double first, Rerun rerun) {
+    constexpr double kRepeatBelowMs = 100;
+    double least = first;
+    for (int k = 1; k < 3 && least < kRepeatBelowMs; ++k)
+        least = std::min(least, rerun());
+    return least;
+}
+
+} // namespace
+
 std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
                                           const std::vector<double>& resolutions,
                                           const SweepOptions& options,
@@ -57,17 +74,24 @@ std::vector<AccuracyRow> runAccuracySweep(const field::ImplicitField& field,
         const mesh::MeshResult a = mesh::meshImplicit(open, o);
         if (a.ok()) {
             const mesh::SurfaceError e = mesh::measureSurfaceError(open, a.mesh);
+            const double ms = leastTime(a.stats.milliseconds, [&] {
+                const mesh::MeshResult again = mesh::meshImplicit(open, o);
+                return again.ok() ? again.stats.milliseconds : a.stats.milliseconds;
+            });
             rows.push_back({Method::Adaptive, res, a.mesh.triangleCount(),
                             a.stats.evaluations.points + a.stats.evaluations.gradients,
-                            a.stats.evaluations.intervals, a.stats.milliseconds, e.max, e.mean});
+                            a.stats.evaluations.intervals, ms, e.max, e.mean});
         } else if (skipped) {
             skipped->push_back("adaptive at resolution " + num(res) + ": " +
                                (a.cancelled ? std::string("cancelled") : a.error));
         }
         const mesh::DenseResult d = mesh::marchingCubes(open, res, options.threads);
         const mesh::SurfaceError e = mesh::measureSurfaceError(open, d.mesh);
-        rows.push_back({Method::Dense, res, d.mesh.triangleCount(), d.evaluations.points, 0,
-                        d.milliseconds, e.max, e.mean});
+        const double ms = leastTime(d.milliseconds, [&] {
+            return mesh::marchingCubes(open, res, options.threads).milliseconds;
+        });
+        rows.push_back({Method::Dense, res, d.mesh.triangleCount(), d.evaluations.points, 0, ms,
+                        e.max, e.mean});
     }
     return rows;
 }

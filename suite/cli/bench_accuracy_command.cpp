@@ -24,9 +24,11 @@ const CommandSpec& benchAccuracySpec() {
         .description =
             "Sweeps the resolution (cells along the longest side) for the adaptive mesher\n"
             "and for dense marching cubes in the same run, and reports per row: method,\n"
-            "resolution, triangles, function evaluations, milliseconds, and the max and\n"
-            "mean distance from mesh to true surface as a fraction of the box diagonal\n"
-            "(|f|/|grad f| sampled on triangle interiors). Dense marching cubes at 2048\n"
+            "resolution, triangles, function evaluations, milliseconds (a run under\n"
+            "100 ms: the least of three, as the first in a process also makes tables\n"
+            "and machine code once), and the max and mean distance from mesh to true\n"
+            "surface as a fraction of the box diagonal (|f|/|grad f| sampled on\n"
+            "triangle interiors). Dense marching cubes at 2048\n"
             "takes about a minute and 2-3 GB for a sphere; the adaptive mesher keeps to\n"
             "its memory budget and says when a resolution would exceed it.\n",
         .positionals = {benchShapePositional()},
