@@ -616,6 +616,7 @@ class Contourer {
     void computeCrossings(const Block& block, FieldSampler& sampler) {
         pending_.clear();
         found_.clear();
+        throughFace_.clear();
         static constexpr int kStride[3] = {1, kC, kC * kC};
         // A sign-changing edge from corner c along `axis` (found_ takes its
         // slot: the edges come in increasing slot order).
@@ -636,20 +637,14 @@ class Contourer {
                        bInBox = allInBox_ || cornerInBox(block, cb);
             if (!aInBox || !bInBox) {
                 // Through a face of the closed box: the solid ends at the
-                // face, or before it where f turns negative first.
+                // face, or before it where f turns negative first (f at the
+                // block's face points in one batch, below).
                 Vec3 face = aInBox ? p.pa : p.pb;
                 face[std::size_t(axis)] =
                     aInBox ? field_.box.hi[std::size_t(axis)] : field_.box.lo[std::size_t(axis)];
-                const double ff = sampler.value(face);
-                if (inside(ff) || std::isnan(ff)) {
-                    Crossing& x = crossings_[std::size_t(p.slot)];
-                    x.point = face;
-                    x.normal = {0, 0, 0};
-                    x.normal[std::size_t(axis)] = 1;
-                    return;
-                }
                 (aInBox ? p.pb : p.pa) = face;
-                (aInBox ? p.fb : p.fa) = ff;
+                throughFace_.push_back({p, aInBox});
+                return;
             }
             p.t = p.fa / (p.fa - p.fb);
             pending_.push_back(p);
@@ -671,6 +666,7 @@ class Contourer {
                      bits != 0; bits &= bits - 1)
                     visit(axis, int(w * 64 + std::size_t(std::countr_zero(bits))));
         }
+        resolveFaceCrossings(sampler);
         for (int step = 0; step < options_.refineSteps && !pending_.empty(); ++step) {
             evaluateGuesses(sampler, nullptr);
             for (std::size_t n = 0; n < pending_.size(); ++n)
@@ -702,6 +698,39 @@ class Contourer {
                 x.normal = {0, 0, 0};
                 x.normal[std::size_t(p.axis)] = 1;
             }
+        }
+    }
+
+    // The edges through a face of the closed box: f where each meets the
+    // face, in one batch. Where the solid reaches the face (or f is
+    // undefined there) the crossing is that point, facing along the edge;
+    // else the edge is cut at the face and its crossing refined as any other.
+    void resolveFaceCrossings(FieldSampler& sampler) {
+        if (throughFace_.empty()) return;
+        xs_.clear();
+        ys_.clear();
+        zs_.clear();
+        for (const auto& [p, faceIsB] : throughFace_) {
+            const Vec3& face = faceIsB ? p.pb : p.pa;
+            xs_.push_back(face[0]);
+            ys_.push_back(face[1]);
+            zs_.push_back(face[2]);
+        }
+        out_.resize(throughFace_.size());
+        sampler.values(xs_.data(), ys_.data(), zs_.data(), throughFace_.size(), out_.data());
+        for (std::size_t n = 0; n < throughFace_.size(); ++n) {
+            auto [p, aInBox] = throughFace_[n]; // (the face is b when a is in the box)
+            const double ff = out_[n];
+            if (inside(ff) || std::isnan(ff)) {
+                Crossing& x = crossings_[std::size_t(p.slot)];
+                x.point = aInBox ? p.pb : p.pa;
+                x.normal = {0, 0, 0};
+                x.normal[std::size_t(p.axis)] = 1;
+                continue;
+            }
+            (aInBox ? p.fb : p.fa) = ff;
+            p.t = p.fa / (p.fa - p.fb);
+            pending_.push_back(p);
         }
     }
 
@@ -1066,6 +1095,8 @@ class Contourer {
     std::array<double, kCorners> cornerX_{}, cornerY_{}, cornerZ_{};
     std::vector<Crossing> crossings_;
     std::vector<PendingCrossing> pending_;
+    // Edges through a closed box's face, cut there, and whether b is the face.
+    std::vector<std::pair<PendingCrossing, bool>> throughFace_;
     std::array<double, kCorners> values_{}; // of the block being sampled (where evaluated)
     bool allInBox_ = true;                  // every corner of that block is in the domain box
     CornerBits known_{};                    // the block's corners evaluated and defined (bit c)
