@@ -3,6 +3,7 @@
 // The subcommands and their help come from one table (cli/commands.cpp).
 #include "cli/commands.h"
 #include "platform/exit_codes.h"
+#include "platform/memory_policy.h"
 #include "window/gui.h"
 
 #include <iostream>
@@ -10,6 +11,7 @@
 #include <vector>
 
 int main(int argc, char** argv) {
+    fl::platform::keepFreedMemoryMapped(); // a re-mesh reuses the last one's pages
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) return fl::suite::runWindow(argc, argv, {});
     std::string joinError;
