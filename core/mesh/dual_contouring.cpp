@@ -852,27 +852,42 @@ class Contourer {
         normalOf_.clear();
         normalSums_.clear();
         const auto& pieces = pieceTable();
+        // Cell q around an edge along `axis` lies at -(q & 1) along u and
+        // -(q >> 1) along v from the edge's first corner: its index from the
+        // corner's, and the edge as that cell numbers it.
+        static constexpr int kU[3] = {1, 2, 0}, kV[3] = {2, 0, 1};
+        static constexpr int kCellStride[3] = {1, kB, kB * kB};
+        static const auto kEdge = [] {
+            std::array<std::array<std::int8_t, 4>, 3> e{};
+            for (int a = 0; a < 3; ++a)
+                for (int q = 0; q < 4; ++q)
+                    e[std::size_t(a)][std::size_t(q)] = std::int8_t(cubeEdge(a, q & 1, q >> 1));
+            return e;
+        }();
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int slot = found_[n];
             const Crossing& x = crossings_[std::size_t(slot)];
             const int axis = slot / kCorners, c = slot % kCorners;
             const std::array<int, 3> corner = cornerAt(c);
-            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+            const int u = kU[axis], v = kV[axis];
+            if (corner[std::size_t(axis)] >= limit[axis]) continue; // on the block's far face
+            // Which of the four cells lie in the block (and the grid).
+            const bool inU[2] = {corner[std::size_t(u)] < limit[u],
+                                 corner[std::size_t(u)] >= 1 && corner[std::size_t(u)] <= limit[u]};
+            const bool inV[2] = {corner[std::size_t(v)] < limit[v],
+                                 corner[std::size_t(v)] >= 1 && corner[std::size_t(v)] <= limit[v]};
+            const int own = (corner[2] * kB + corner[1]) * kB + corner[0];
             // Outward: along the edge from its inside corner to its outside one.
             const bool lowerIn = block.states[std::size_t(c)] == kIn;
             const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
+            const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
+            const Qef::Products products = Qef::productsOf(x.normal);
             for (int q = 0; q < 4; ++q) {
-                int cell[3] = {corner[0], corner[1], corner[2]};
-                cell[u] -= q & 1;
-                cell[v] -= (q >> 1) & 1;
-                if (cell[u] < 0 || cell[v] < 0 || cell[0] >= limit[0] || cell[1] >= limit[1] ||
-                    cell[2] >= limit[2])
-                    continue;
-                const int edge = cubeEdge(axis, corner[u] - cell[u], corner[v] - cell[v]);
+                if (!inU[q & 1] || !inV[q >> 1]) continue;
+                const int cell = own - (q & 1) * kCellStride[u] - (q >> 1) * kCellStride[v];
                 const int index =
-                    cellIndex(cell[0], cell[1], cell[2]) * kPieces +
-                    pieceOf(pieces, configs_[std::size_t(cellIndex(cell[0], cell[1], cell[2]))],
-                            edge);
+                    cell * kPieces + pieceOf(pieces, configs_[std::size_t(cell)],
+                                             kEdge[std::size_t(axis)][std::size_t(q)]);
                 if (!cellsTouched_.contains(std::size_t(index))) {
                     cellsTouched_.insert(std::size_t(index));
                     qefSlot_[std::size_t(index)] = std::uint16_t(qefs_.size());
@@ -880,9 +895,9 @@ class Contourer {
                 }
                 CellQef& cq = qefs_[qefSlot_[std::size_t(index)]];
                 around_[n][std::size_t(q)] = index;
-                cq.qef.add(x.point, x.normal);
+                cq.qef.add(x.point, x.normal, products);
                 for (std::size_t k = 0; k < 3; ++k)
-                    cq.normalSum[k] += sign * x.normal[k];
+                    cq.normalSum[k] += signedNormal[k];
             }
         }
         touched_.clear();

@@ -7,23 +7,30 @@
 // as sums (A^T A, A^T b, the point sum) relative to the first point, so adding
 // a plane is a few multiplications and nothing is stored per plane.
 #include <array>
+#include <cstddef>
 
 namespace fl::mesh {
 
 class Qef {
   public:
+    // A normal's products n n^T (xx xy xz yy yz zz): the mesher adds each
+    // crossing's plane to up to four cells and makes them once.
+    using Products = std::array<double, 6>;
+    static Products productsOf(const std::array<double, 3>& n) {
+        return {n[0] * n[0], n[0] * n[1], n[0] * n[2], n[1] * n[1], n[1] * n[2], n[2] * n[2]};
+    }
     // Inline: the mesher adds about four planes a vertex.
     void add(const std::array<double, 3>& point, const std::array<double, 3>& normal) {
+        add(point, normal, productsOf(normal));
+    }
+    void add(const std::array<double, 3>& point, const std::array<double, 3>& normal,
+             const Products& products) {
         if (count_ == 0) origin_ = point;
         const double x = point[0] - origin_[0], y = point[1] - origin_[1],
                      z = point[2] - origin_[2];
         const double d = normal[0] * x + normal[1] * y + normal[2] * z;
-        ata_[0] += normal[0] * normal[0];
-        ata_[1] += normal[0] * normal[1];
-        ata_[2] += normal[0] * normal[2];
-        ata_[3] += normal[1] * normal[1];
-        ata_[4] += normal[1] * normal[2];
-        ata_[5] += normal[2] * normal[2];
+        for (std::size_t k = 0; k < 6; ++k)
+            ata_[k] += products[k];
         atb_[0] += normal[0] * d;
         atb_[1] += normal[1] * d;
         atb_[2] += normal[2] * d;
