@@ -1,7 +1,5 @@
 #include "tape_simplify.h"
 
-#include "scalar_ops.h"
-
 #include <algorithm>
 #include <limits>
 
@@ -78,15 +76,6 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep,
         const int arity = opArity(ins.op);
         Node n{&ins, std::int32_t(i), valueOf(ins.a), arity >= 2 ? valueOf(ins.b) : Value{},
                arity >= 3 ? valueOf(ins.c) : Value{}};
-        const bool constant = n.a.kind == Value::Constant &&
-                              (arity < 2 || n.b.kind == Value::Constant) &&
-                              (arity < 3 || n.c.kind == Value::Constant);
-        if (constant) { // every operand a constant now: the evaluators' own value
-            out = {
-                Value::Constant, 0,
-                ops::apply(ins.op, n.a.constant, n.b.constant, n.c.constant, ins.imm0, ins.imm1)};
-            continue;
-        }
         out = {Value::Node, std::int32_t(nodes.size()), 0};
         nodes.push_back(n);
     }

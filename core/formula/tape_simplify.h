@@ -37,7 +37,11 @@ bool hasChoices(const Tape& tape);
 Keep decide(Op op, const Interval& a, const Interval& b);
 
 // The tape with every decided instruction replaced by the operand it keeps,
-// then dead code dropped, constants folded and registers assigned again.
+// then dead code dropped and registers assigned again. An operation whose
+// operands all became constants stays an operation (not folded): the
+// interval evaluator widens its result by two ulps as it does on the full
+// tape, so the simplified tape's intervals are the full tape's and the
+// mesher prunes the same blocks (its warnings depend on which).
 // `keep` has one entry per instruction of tape.code. Inputs, parameters and
 // outputs keep their registers' meaning (the evaluators' parameter names
 // still apply); origins are kept, so diagnostics still point at the source.

@@ -646,7 +646,7 @@ class Contourer {
                 throughFace_.push_back({p, aInBox});
                 return;
             }
-            p.t = p.fa / (p.fa - p.fb);
+            p.t = firstGuess(p.fa, p.fb);
             pending_.push_back(p);
         };
         // The sign-changing edges: both ends evaluated and defined, one
@@ -729,7 +729,7 @@ class Contourer {
                 continue;
             }
             (aInBox ? p.fb : p.fa) = ff;
-            p.t = p.fa / (p.fa - p.fb);
+            p.t = firstGuess(p.fa, p.fb);
             pending_.push_back(p);
         }
     }
@@ -774,6 +774,13 @@ class Contourer {
             gradientOut_[stragglers_[i]] = redoneOut_[i];
     }
 
+    // Where the line through the edge's ends meets zero — or the middle,
+    // where that is no number on the edge (an end at ±inf gives inf / inf):
+    // a guess off the edge would be evaluated outside the block.
+    static double firstGuess(double fa, double fb) {
+        const double t = fa / (fa - fb);
+        return t >= 0 && t <= 1 ? t : 0.5;
+    }
     static Vec3 pointOnEdge(const PendingCrossing& p, double t) {
         Vec3 q = p.pa;
         const std::size_t a = std::size_t(p.axis);

@@ -139,7 +139,13 @@ TEST(DualContouring, SimplifiedPerBlockTheMeshIsTheSame) {
                             "max(max(0.3^2-(x-0.4)^2-y^2-z^2, 0.3^2-(x+0.4)^2-y^2-z^2), "
                             "min(0.2-abs(y), 0.5-abs(x)))",
                             "(x > 0) ? 0.5 - x*x - y*y - z*z : 0.3 - y*y - z*z - 4*x*x",
-                            "min(sqrt(x + 0.5) - 0.5, 0.7 - y*y - z*z)"}) {
+                            "min(sqrt(x + 0.5) - 0.5, 0.7 - y*y - z*z)",
+                            // infinite at the corners x < 0.5: a crossing's first guess
+                            // was inf / inf, evaluated off its edge (and the box)
+                            "((x < 0.5) ? 1e300*1e300 : -1) + min(z, x + 100)",
+                            // sin([0, 0]) is widened on the full tape: the simplified
+                            // one must not prune more (the warnings would differ)
+                            "sin(max(x - 10, 0)) - y*y"}) {
         for (const BoxBoundary boundary : {BoxBoundary::Closed, BoxBoundary::Open}) {
             ImplicitField f = field(src);
             f.boundary = boundary;
@@ -149,7 +155,15 @@ TEST(DualContouring, SimplifiedPerBlockTheMeshIsTheSame) {
             const MeshResult a = meshImplicit(f, simplified), b = meshImplicit(f, full);
             ASSERT_TRUE(a.ok()) << src;
             ASSERT_TRUE(b.ok()) << src;
-            EXPECT_GT(a.mesh.triangles.size(), 100u) << src;
+            if (std::string(src).rfind("sin(max", 0) != 0) { // that one has no inside
+                EXPECT_GT(a.mesh.triangles.size(), 100u) << src;
+            }
+            for (const auto& p : a.mesh.positions)
+                ASSERT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+                    << src;
+            for (const auto& n : a.mesh.normals)
+                ASSERT_TRUE(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]))
+                    << src;
             EXPECT_EQ(a.mesh.positions, b.mesh.positions) << src;
             EXPECT_EQ(a.mesh.normals, b.mesh.normals) << src;
             EXPECT_EQ(a.mesh.triangles, b.mesh.triangles) << src;
