@@ -1,5 +1,7 @@
 #include "tape_builder.h"
 
+#include "register_pool.h"
+
 #include "scalar_ops.h"
 
 #include <algorithm>
@@ -220,8 +222,7 @@ Tape TapeBuilder::finish(const std::vector<Output>& outputs,
     tape.params = std::move(params);
     const std::int32_t firstTemp = kInputCount + static_cast<std::int32_t>(tape.params.size());
     std::vector<std::int32_t> regOf(n, -1);
-    std::vector<std::int32_t> freeRegs;
-    std::int32_t nextReg = firstTemp;
+    RegisterPool registers(firstTemp);
     for (std::int32_t id = 0; id < n; ++id) {
         if (!live[id]) continue;
         const Node& node = nodes_[id];
@@ -230,16 +231,7 @@ Tape TapeBuilder::finish(const std::vector<Output>& outputs,
             if (node.leafRegister < kInputCount) tape.usesInput[node.leafRegister] = true;
             continue;
         }
-        // Take the output register before releasing the operands' registers,
-        // so an instruction never writes a register it reads (the batch loops
-        // rely on that to vectorise without alias checks).
-        std::int32_t reg;
-        if (!freeRegs.empty()) {
-            reg = freeRegs.back();
-            freeRegs.pop_back();
-        } else {
-            reg = nextReg++;
-        }
+        const std::int32_t reg = registers.take(); // before the operands' are released
         regOf[id] = reg;
         Instruction ins;
         ins.op = node.op;
@@ -256,25 +248,20 @@ Tape TapeBuilder::finish(const std::vector<Output>& outputs,
         ins.imm1 = node.imm1;
         ins.origin = node.origin;
         tape.code.push_back(ins);
-        // release operands that die here (each register once)
-        std::int32_t released[3] = {-1, -1, -1};
-        int k = 0;
-        for (const Val* v : {&node.a, &node.b, &node.c}) {
-            if (k >= arity) break;
-            ++k;
+        // Release the operands that die here.
+        std::array<std::int32_t, 3> dying{-1, -1, -1};
+        const Val* operands[3] = {&node.a, &node.b, &node.c};
+        for (int k = 0; k < arity; ++k) {
+            const Val* v = operands[k];
             if (v->isConst() || v->node < 0) continue;
-            const Node& src = nodes_[v->node];
-            if (src.isLeaf || lastUse[v->node] != id) continue;
-            std::int32_t r = regOf[v->node];
-            if (std::find(std::begin(released), std::end(released), r) != std::end(released))
-                continue;
-            released[k - 1] = r;
-            freeRegs.push_back(r);
+            if (nodes_[v->node].isLeaf || lastUse[v->node] != id) continue;
+            dying[std::size_t(k)] = regOf[v->node];
         }
+        registers.release(dying);
         if (lastUse[id] == -1)
-            freeRegs.push_back(reg); // computed but unused (cannot happen when live)
+            registers.release(reg); // computed but unused (cannot happen when live)
     }
-    tape.registerCount = nextReg;
+    tape.registerCount = registers.count();
     tape.origins = origins_;
     for (const Output& o : outputs) {
         OutputInfo info;

@@ -1,5 +1,7 @@
 #include "tape_simplify.h"
 
+#include "register_pool.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -104,15 +106,12 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep,
             }
     }
 
-    // Registers by liveness, as the tape builder assigns them: an
-    // instruction takes its output register before its operands' die, so it
-    // never writes a register it reads.
+    // Registers by liveness, as the tape builder assigns them.
     Tape out;
     out.params = tape.params;
     out.origins = tape.origins;
     std::vector<std::int32_t> regOf(std::size_t(count), -1);
-    std::vector<std::int32_t> freeRegs;
-    std::int32_t nextReg = fixed;
+    RegisterPool registers(fixed);
     auto operand = [&](const Value& v) {
         switch (v.kind) {
         case Value::Fixed:
@@ -127,13 +126,7 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep,
     for (std::int32_t id = 0; id < count; ++id) {
         if (!live[std::size_t(id)]) continue;
         const Node& n = nodes[std::size_t(id)];
-        std::int32_t reg;
-        if (!freeRegs.empty()) {
-            reg = freeRegs.back();
-            freeRegs.pop_back();
-        } else {
-            reg = nextReg++;
-        }
+        const std::int32_t reg = registers.take();
         regOf[std::size_t(id)] = reg;
         Instruction ins = *n.ins;
         ins.out = reg;
@@ -143,20 +136,16 @@ Tape simplifyTape(const Tape& tape, const std::vector<Keep>& keep,
         ins.c = arity >= 3 ? operand(n.c) : Operand{};
         out.code.push_back(ins);
         if (source) source->push_back(n.index);
-        // Release the operands that die here, each register once.
-        std::int32_t released[3] = {-1, -1, -1};
-        int k = 0;
-        for (const Value* v : {&n.a, &n.b, &n.c}) {
-            if (k++ >= arity || v->kind != Value::Node || lastUse[std::size_t(v->index)] != id)
-                continue;
-            const std::int32_t r = regOf[std::size_t(v->index)];
-            if (std::find(std::begin(released), std::end(released), r) != std::end(released))
-                continue;
-            released[k - 1] = r;
-            freeRegs.push_back(r);
+        std::array<std::int32_t, 3> dying{-1, -1, -1}; // the operands that die here
+        const Value* operands[3] = {&n.a, &n.b, &n.c};
+        for (int k = 0; k < arity; ++k) {
+            const Value* v = operands[k];
+            if (v->kind == Value::Node && lastUse[std::size_t(v->index)] == id)
+                dying[std::size_t(k)] = regOf[std::size_t(v->index)];
         }
+        registers.release(dying);
     }
-    out.registerCount = nextReg;
+    out.registerCount = registers.count();
     for (std::size_t i = 0; i < tape.outputs.size(); ++i)
         out.outputs.push_back({tape.outputs[i].name, operand(outputs[i])});
     return out;
