@@ -265,6 +265,14 @@ constexpr std::size_t kManyBlock = 64;
 constexpr std::size_t kRow = kManyBlock;
 constexpr std::size_t kRegisterStride = 4 * kRow; // v, d0, d1, d2
 
+// The row loops are built twice by GCC, baseline and AVX2, and picked at
+// load time by the CPU; clang (the fuzzing build) cannot clone templates.
+#if defined(__clang__)
+#define FL_ROW_LOOP
+#else
+#define FL_ROW_LOOP __attribute__((target_clones("avx2", "default")))
+#endif
+
 // f' * da under the zero rule: the product always taken, then chosen (no
 // branch, so the loops vectorise to a compare and a blend).
 inline double term(double da, double fprime) {
@@ -273,9 +281,8 @@ inline double term(double da, double fprime) {
 }
 
 template <Op kOp>
-[[gnu::flatten]] __attribute__((target_clones("avx2", "default"))) void
-binaryRows(double* __restrict dst, const double* __restrict a, const double* __restrict b,
-           std::size_t m) {
+FL_ROW_LOOP void binaryRows(double* __restrict dst, const double* __restrict a,
+                            const double* __restrict b, std::size_t m) {
     const double* av = a;
     const double* bv = b;
     double* out = dst;
@@ -314,8 +321,7 @@ binaryRows(double* __restrict dst, const double* __restrict a, const double* __r
 }
 
 template <Op kOp>
-[[gnu::flatten]] __attribute__((target_clones("avx2", "default"))) void
-unaryRows(double* __restrict dst, const double* __restrict a, std::size_t m) {
+FL_ROW_LOOP void unaryRows(double* __restrict dst, const double* __restrict a, std::size_t m) {
     for (std::size_t j = 0; j < m; ++j) {
         const double x = a[j];
         if constexpr (kOp == Op::Neg)
