@@ -1191,6 +1191,7 @@ struct Pruner {
     std::size_t limit;
     std::atomic<std::size_t>& activeCount; // all the pruners' active blocks
     bool simplify;                         // narrow the formula down the tree
+    bool rootNarrowed = false;             // the sampler already runs the root's tape (a task)
     int splitDepth = -1;
     std::vector<BlockRange> tasks;
     std::vector<std::shared_ptr<const field::NarrowedTape>>
@@ -1212,7 +1213,7 @@ struct Pruner {
         // around it: its blocks sample that far (sampleBlock), so a block
         // takes its leaf's tape as it is.
         std::optional<field::Narrowing> narrowed;
-        if (simplify)
+        if (simplify && !(depth == 0 && rootNarrowed))
             narrowed.emplace(
                 sampler,
                 grid.corner(long(lo[0]) * kB - 1, long(lo[1]) * kB - 1, long(lo[2]) * kB - 1),
@@ -1358,6 +1359,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                         Pruner task(grid, s, blockLimit, activeCount, options.simplifyPerBlock);
                         std::optional<field::Narrowing> adopted;
                         if (options.simplifyPerBlock) adopted.emplace(s, top.taskTapes[i]);
+                        task.rootNarrowed = options.simplifyPerBlock;
                         task.run(top.tasks[i][0], top.tasks[i][1]);
                         subtrees[i] = std::move(task.found);
                     });
