@@ -44,19 +44,28 @@ bool crosses(std::uint8_t a, std::uint8_t b) {
     return a != b && a <= kIn && b <= kIn;
 }
 
+using BlockCoord = std::array<int, 3>;
+
 struct Grid {
     Vec3 origin{};
     Vec3 h{};
     std::array<int, 3> cells{};
     std::array<int, 3> blocks{};
 
+    // The lattice's i-th coordinate along axis a (every corner is made so:
+    // the mesher relies on equal corners having equal bits).
+    double coordinate(std::size_t a, long i) const { return origin[a] + double(i) * h[a]; }
     Vec3 corner(long i, long j, long k) const {
-        return {origin[0] + double(i) * h[0], origin[1] + double(j) * h[1],
-                origin[2] + double(k) * h[2]};
+        return {coordinate(0, i), coordinate(1, j), coordinate(2, k)};
+    }
+    // The box of the blocks [lo, hi) and one cell around it: where the
+    // mesher evaluates for those blocks (a vertex may sit half a cell out of
+    // its cell), so what a formula narrowed to it decides holds there.
+    std::array<Vec3, 2> blocksAndACell(const BlockCoord& lo, const BlockCoord& hi) const {
+        return {corner(long(lo[0]) * kB - 1, long(lo[1]) * kB - 1, long(lo[2]) * kB - 1),
+                corner(long(hi[0]) * kB + 1, long(hi[1]) * kB + 1, long(hi[2]) * kB + 1)};
     }
 };
-
-using BlockCoord = std::array<int, 3>;
 
 std::uint64_t keyOf(const BlockCoord& b) {
     return (std::uint64_t(b[0]) << 42) | (std::uint64_t(b[1]) << 21) | std::uint64_t(b[2]);
@@ -381,7 +390,6 @@ class Contourer {
     // Phase 1: corner values, edge crossings and cell vertices of one block.
     void sampleBlock(Block& block, FieldSampler& sampler, Observations& seen) {
         const BlockCoord& b = block.coord;
-        const long i0 = long(b[0]) * kB, j0 = long(b[1]) * kB, k0 = long(b[2]) * kB;
         // The formula simplified for this block (tape_simplify.h): every
         // point sampled below lies in a cell of the block or, for a vertex's
         // gradient, at most kVertexRoom of a cell outside it — within a cell
@@ -389,20 +397,20 @@ class Contourer {
         std::optional<field::Narrowing> narrowed;
         if (options_.simplifyPerBlock && block.narrowed)
             narrowed.emplace(sampler, block.tape);
-        else if (options_.simplifyPerBlock)
-            narrowed.emplace(sampler, grid_.corner(i0 - 1, j0 - 1, k0 - 1),
-                             grid_.corner(i0 + kB + 1, j0 + kB + 1, k0 + kB + 1));
+        else if (options_.simplifyPerBlock) {
+            const auto box = grid_.blocksAndACell(b, {b[0] + 1, b[1] + 1, b[2] + 1});
+            narrowed.emplace(sampler, box[0], box[1]);
+        }
         block.tape.reset();
         // Which corners to evaluate: those of the octants the intervals
         // cannot rule out.
         CornerBits needed{};
         markNeededCorners(block, sampler, seen, needed);
-        // Their coordinates (the same expression as Grid::corner, per axis).
+        // Their coordinates, per axis.
         std::array<std::array<double, kC>, 3> along{};
         for (std::size_t a = 0; a < 3; ++a)
             for (int n = 0; n < kC; ++n)
-                along[a][std::size_t(n)] =
-                    grid_.origin[a] + double(long(b[a]) * kB + n) * grid_.h[a];
+                along[a][std::size_t(n)] = grid_.coordinate(a, long(b[a]) * kB + n);
         std::size_t count = 0;
         for (std::size_t w = 0; w < needed.size(); ++w)
             for (std::uint64_t bits = needed[w]; bits != 0; bits &= bits - 1) {
@@ -707,17 +715,10 @@ class Contourer {
     // else the edge is cut at the face and its crossing refined as any other.
     void resolveFaceCrossings(FieldSampler& sampler) {
         if (throughFace_.empty()) return;
-        xs_.clear();
-        ys_.clear();
-        zs_.clear();
-        for (const auto& [p, faceIsB] : throughFace_) {
-            const Vec3& face = faceIsB ? p.pb : p.pa;
-            xs_.push_back(face[0]);
-            ys_.push_back(face[1]);
-            zs_.push_back(face[2]);
-        }
-        out_.resize(throughFace_.size());
-        sampler.values(xs_.data(), ys_.data(), zs_.data(), throughFace_.size(), out_.data());
+        valuesAt(sampler, throughFace_.size(), [&](std::size_t i) {
+            const auto& [p, faceIsB] = throughFace_[i];
+            return faceIsB ? p.pb : p.pa;
+        });
         for (std::size_t n = 0; n < throughFace_.size(); ++n) {
             auto [p, aInBox] = throughFace_[n]; // (the face is b when a is in the box)
             const double ff = out_[n];
@@ -798,12 +799,19 @@ class Contourer {
     // ones for none), into out_, in one batch.
     void evaluateGuesses(FieldSampler& sampler, const std::vector<std::size_t>* which) {
         const std::size_t count = which ? which->size() : pending_.size();
+        valuesAt(sampler, count, [&](std::size_t i) {
+            const PendingCrossing& p = pending_[which ? (*which)[i] : i];
+            return pointOnEdge(p, p.t);
+        });
+    }
+    // f at `count` points (pointAt(i)), in one batch, into out_.
+    template <class PointAt>
+    void valuesAt(FieldSampler& sampler, std::size_t count, PointAt pointAt) {
         xs_.clear();
         ys_.clear();
         zs_.clear();
         for (std::size_t i = 0; i < count; ++i) {
-            const PendingCrossing& p = pending_[which ? (*which)[i] : i];
-            const Vec3 q = pointOnEdge(p, p.t);
+            const Vec3 q = pointAt(i);
             xs_.push_back(q[0]);
             ys_.push_back(q[1]);
             zs_.push_back(q[2]);
@@ -1213,11 +1221,10 @@ struct Pruner {
         // around it: its blocks sample that far (sampleBlock), so a block
         // takes its leaf's tape as it is.
         std::optional<field::Narrowing> narrowed;
-        if (simplify && !(depth == 0 && rootNarrowed))
-            narrowed.emplace(
-                sampler,
-                grid.corner(long(lo[0]) * kB - 1, long(lo[1]) * kB - 1, long(lo[2]) * kB - 1),
-                grid.corner(long(hi[0]) * kB + 1, long(hi[1]) * kB + 1, long(hi[2]) * kB + 1));
+        if (simplify && !(depth == 0 && rootNarrowed)) {
+            const auto box = grid.blocksAndACell(lo, hi);
+            narrowed.emplace(sampler, box[0], box[1]);
+        }
         const formula::Interval r = sampler.interval(boxLo, boxHi);
         const Vec3 centre{(boxLo[0] + boxHi[0]) / 2, (boxLo[1] + boxHi[1]) / 2,
                           (boxLo[2] + boxHi[2]) / 2};
