@@ -47,21 +47,15 @@ struct FieldSampler::Evaluators {
 
     // (A simplified tape is interpreted: a mesher block evaluates it a few
     // times, and compiling each of a union's many patterns cost more.)
-    formula::BatchEvaluator& batch() {
-        if (!batch_) {
-            batch_.emplace(tape, narrowed == nullptr);
-            setParameters(*batch_, field);
-        }
-        return *batch_;
-    }
+    formula::BatchEvaluator& batch() { return made(batch_, narrowed == nullptr); }
     formula::ScalarEvaluator& scalar() { return made(scalar_); }
     formula::GradientEvaluator& gradient() { return made(gradient_); }
 
   private:
-    template <class E>
-    E& made(std::optional<E>& e) {
+    template <class E, class... Options>
+    E& made(std::optional<E>& e, Options... options) {
         if (!e) {
-            e.emplace(tape);
+            e.emplace(tape, options...);
             setParameters(*e, field);
         }
         return *e;

@@ -283,15 +283,12 @@ inline double term(double da, double fprime) {
 template <Op kOp>
 FL_ROW_LOOP void binaryRows(double* __restrict dst, const double* __restrict a,
                             const double* __restrict b, std::size_t m) {
-    const double* av = a;
-    const double* bv = b;
-    double* out = dst;
     for (std::size_t k = 1; k <= 3; ++k) {
         const double* ad = a + k * kRow;
         const double* bd = b + k * kRow;
         double* od = dst + k * kRow;
         for (std::size_t j = 0; j < m; ++j) {
-            const double x = av[j], y = bv[j];
+            const double x = a[j], y = b[j];
             if constexpr (kOp == Op::Add) {
                 od[j] = term(ad[j], 1.0) + term(bd[j], 1.0);
             } else if constexpr (kOp == Op::Sub) {
@@ -306,17 +303,17 @@ FL_ROW_LOOP void binaryRows(double* __restrict dst, const double* __restrict a,
         }
     }
     for (std::size_t j = 0; j < m; ++j) {
-        const double x = av[j], y = bv[j];
+        const double x = a[j], y = b[j];
         if constexpr (kOp == Op::Add)
-            out[j] = x + y;
+            dst[j] = x + y;
         else if constexpr (kOp == Op::Sub)
-            out[j] = x - y;
+            dst[j] = x - y;
         else if constexpr (kOp == Op::Mul)
-            out[j] = x * y;
+            dst[j] = x * y;
         else if constexpr (kOp == Op::Min)
-            out[j] = minPropagating(x, y);
+            dst[j] = minPropagating(x, y);
         else
-            out[j] = maxPropagating(x, y);
+            dst[j] = maxPropagating(x, y);
     }
 }
 

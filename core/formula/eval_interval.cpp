@@ -46,10 +46,14 @@ void IntervalEvaluator::run(const Box& box) {
     walkTape<IntervalDomain>(tape_, regs_.data());
 }
 
-Interval IntervalEvaluator::evaluate(const Box& box) {
-    run(box);
+Interval IntervalEvaluator::firstOutput() const {
     return tape_.outputs.empty() ? Interval::point(0.0)
                                  : tapeOutput<IntervalDomain>(tape_, regs_.data(), 0);
+}
+
+Interval IntervalEvaluator::evaluate(const Box& box) {
+    run(box);
+    return firstOutput();
 }
 
 Interval IntervalEvaluator::evaluate(const Box& box, std::vector<Keep>& keep) {
@@ -58,8 +62,7 @@ Interval IntervalEvaluator::evaluate(const Box& box, std::vector<Keep>& keep) {
     walkTape<IntervalDomain>(tape_, regs_.data(),
                              [&keep](std::size_t i, const Instruction& ins, const Interval& a,
                                      const Interval& b) { keep[i] = decide(ins.op, a, b); });
-    return tape_.outputs.empty() ? Interval::point(0.0)
-                                 : tapeOutput<IntervalDomain>(tape_, regs_.data(), 0);
+    return firstOutput();
 }
 
 void IntervalEvaluator::evaluateAll(const Box& box, Interval* outputs) {

@@ -34,6 +34,7 @@ class IntervalEvaluator {
     std::vector<Interval> regs_;
     void load(const Box& box);
     void run(const Box& box);
+    Interval firstOutput() const; // after a walk
 };
 
 } // namespace fl::formula
