@@ -40,6 +40,7 @@ bool inside(double f) {
 // the intervals showed to be far from the surface are never evaluated: their
 // state stays unknown, and no crossing touches them.
 enum State : std::uint8_t { kOut = 0, kIn = 1, kUndefined = 2, kUnknown = 3 };
+static_assert(kOut == 0 && kIn == 1, "a defined corner's state is inside(f) as a number");
 bool crosses(std::uint8_t a, std::uint8_t b) {
     return a != b && a <= kIn && b <= kIn;
 }
@@ -429,29 +430,42 @@ class Contourer {
         known_.fill(0);
         insideBits_.fill(0);
         allInBox_ = blockInBox(block);
+        // Without branches on the values where it can (half the corners near
+        // the surface are inside: a branch on it is mispredicted), and with
+        // the running maxima in registers, not in `seen`.
+        double maxValue = seen.maxValue, maxAbs = seen.maxAbs;
+        std::size_t maxAt = count; // none
         for (std::size_t n = 0; n < count; ++n) {
-            const int c = evaluated_[n];
+            const auto c = std::size_t(evaluated_[n]);
             const double v = out_[n];
-            values_[std::size_t(c)] = v;
+            values_[c] = v;
             const std::uint64_t bit = std::uint64_t(1) << (c % 64);
-            if (!allInBox_ && !cornerInBox(block, c)) {
-                block.states[std::size_t(c)] = kOut; // margin of a closed box
-                known_[std::size_t(c / 64)] |= bit;
+            if (!allInBox_ && !cornerInBox(block, int(c))) {
+                block.states[c] = kOut; // margin of a closed box
+                known_[c / 64] |= bit;
                 continue;
             }
-            block.states[std::size_t(c)] = std::isnan(v) ? kUndefined : inside(v) ? kIn : kOut;
-            if (!std::isnan(v)) known_[std::size_t(c / 64)] |= bit;
-            if (inside(v)) insideBits_[std::size_t(c / 64)] |= bit;
-            if (std::isnan(v)) {
+            const bool defined = !std::isnan(v), in = inside(v);
+            block.states[c] = std::uint8_t(defined ? unsigned(in) : unsigned(kUndefined));
+            known_[c / 64] |= bit & (std::uint64_t(0) - std::uint64_t(defined));
+            insideBits_[c / 64] |= bit & (std::uint64_t(0) - std::uint64_t(in));
+            if (!defined) {
                 if (!seen.sawNaN) seen.nanPoint = {cornerX_[n], cornerY_[n], cornerZ_[n]};
                 seen.sawNaN = true;
-            } else {
-                if (v > seen.maxValue) {
-                    seen.maxValue = v;
-                    seen.maxPoint = {cornerX_[n], cornerY_[n], cornerZ_[n]};
-                }
-                if (std::isfinite(v)) seen.maxAbs = std::max(seen.maxAbs, std::abs(v));
+                continue;
             }
+            if (v > maxValue) {
+                maxValue = v;
+                maxAt = n;
+            }
+            const double size = std::abs(v);
+            maxAbs =
+                size < std::numeric_limits<double>::infinity() ? std::max(maxAbs, size) : maxAbs;
+        }
+        seen.maxAbs = maxAbs;
+        if (maxAt != count) {
+            seen.maxValue = maxValue;
+            seen.maxPoint = {cornerX_[maxAt], cornerY_[maxAt], cornerZ_[maxAt]};
         }
         // Only sub-blocks with corners on both sides hold sign-changing edges.
         const auto& subCorners = subBlockCorners();
@@ -631,7 +645,9 @@ class Contourer {
         auto visit = [&](int axis, int c) {
             const int cb = c + kStride[axis];
             const auto [ci, cj, ck] = cornerAt(c);
-            PendingCrossing p;
+            // Made in place: a copy read whole what was just written field by
+            // field, which the processor cannot forward from its stores.
+            PendingCrossing& p = pending_.emplace_back();
             p.slot = axis * kCorners + c;
             found_.push_back(p.slot);
             p.axis = axis;
@@ -652,10 +668,10 @@ class Contourer {
                     aInBox ? field_.box.hi[std::size_t(axis)] : field_.box.lo[std::size_t(axis)];
                 (aInBox ? p.pb : p.pa) = face;
                 throughFace_.push_back({p, aInBox});
+                pending_.pop_back();
                 return;
             }
             p.t = firstGuess(p.fa, p.fb);
-            pending_.push_back(p);
         };
         // The sign-changing edges: both ends evaluated and defined, one
         // inside — bit rows over the block's corners, the far ends' row the
@@ -860,7 +876,7 @@ class Contourer {
         const long limit[3] = {std::min<long>(kB, grid_.cells[0] - base[0]),
                                std::min<long>(kB, grid_.cells[1] - base[1]),
                                std::min<long>(kB, grid_.cells[2] - base[2])};
-        qefs_.clear();
+        qefCount_ = 0;
         cellsTouched_.clear();
         around_.assign(found_.size(), {-1, -1, -1, -1});
         normalAt_.clear();
@@ -879,9 +895,12 @@ class Contourer {
                     e[std::size_t(a)][std::size_t(q)] = std::int8_t(cubeEdge(a, q & 1, q >> 1));
             return e;
         }();
+        // First which QEF each crossing adds to, then the adding: one pass
+        // doing both waited on the chain from a cell to its piece, its entry
+        // and its sums at every step.
+        aroundSlots_.resize(found_.size());
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int slot = found_[n];
-            const Crossing& x = crossings_[std::size_t(slot)];
             const int axis = slot / kCorners, c = slot % kCorners;
             const std::array<int, 3> corner = cornerAt(c);
             const int u = kU[axis], v = kV[axis];
@@ -892,11 +911,6 @@ class Contourer {
             const bool inV[2] = {corner[std::size_t(v)] < limit[v],
                                  corner[std::size_t(v)] >= 1 && corner[std::size_t(v)] <= limit[v]};
             const int own = (corner[2] * kB + corner[1]) * kB + corner[0];
-            // Outward: along the edge from its inside corner to its outside one.
-            const bool lowerIn = block.states[std::size_t(c)] == kIn;
-            const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
-            const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
-            const Qef::Products products = Qef::productsOf(x.normal);
             for (int q = 0; q < 4; ++q) {
                 if (!inU[q & 1] || !inV[q >> 1]) continue;
                 const int cell = own - (q & 1) * kCellStride[u] - (q >> 1) * kCellStride[v];
@@ -905,11 +919,28 @@ class Contourer {
                                              kEdge[std::size_t(axis)][std::size_t(q)]);
                 if (!cellsTouched_.contains(std::size_t(index))) {
                     cellsTouched_.insert(std::size_t(index));
-                    qefSlot_[std::size_t(index)] = std::uint16_t(qefs_.size());
-                    qefs_.emplace_back();
+                    qefSlot_[std::size_t(index)] = std::uint16_t(qefCount_);
+                    if (qefCount_ == qefs_.size()) qefs_.emplace_back();
+                    qefs_[qefCount_++].reset();
                 }
-                CellQef& cq = qefs_[qefSlot_[std::size_t(index)]];
                 around_[n][std::size_t(q)] = index;
+                aroundSlots_[n][std::size_t(q)] = qefSlot_[std::size_t(index)];
+            }
+        }
+        for (std::size_t n = 0; n < found_.size(); ++n) {
+            const std::array<int, 4>& cells = around_[n];
+            if (cells[0] < 0 && cells[1] < 0 && cells[2] < 0 && cells[3] < 0) continue;
+            const int slot = found_[n];
+            const Crossing& x = crossings_[std::size_t(slot)];
+            const int axis = slot / kCorners, c = slot % kCorners;
+            // Outward: along the edge from its inside corner to its outside one.
+            const bool lowerIn = block.states[std::size_t(c)] == kIn;
+            const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
+            const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
+            const Qef::Products products = Qef::productsOf(x.normal);
+            for (std::size_t q = 0; q < 4; ++q) {
+                if (cells[q] < 0) continue;
+                CellQef& cq = qefs_[aroundSlots_[n][q]];
                 cq.qef.add(x.point, x.normal, products);
                 for (std::size_t k = 0; k < 3; ++k)
                     cq.normalSum[k] += signedNormal[k];
@@ -999,13 +1030,12 @@ class Contourer {
         block.interior.reserve(2 * interiorCrossings_.size()); // exact: the budget counts capacity
         for (std::size_t n : interiorCrossings_) {
             const int c = found_[n] % kCorners;
-            const std::array<int, 4>& cells = around_[n];
             // buildVertices' cell q lies at (-(q & 1), -(q >> 1)) in (u, v);
             // the quad goes round (-1,-1), (0,-1), (0,0), (-1,0) as connect's.
             std::array<std::uint32_t, 4> ids{};
             static constexpr int kOrder[4] = {3, 2, 0, 1};
             for (std::size_t q = 0; q < 4; ++q)
-                ids[q] = qefs_[qefSlot_[std::size_t(cells[std::size_t(kOrder[q])])]].vertex;
+                ids[q] = qefs_[aroundSlots_[n][std::size_t(kOrder[q])]].vertex;
             if (block.states[std::size_t(c)] != kIn) std::swap(ids[1], ids[3]);
             std::array<const Vec3f*, 4> pos{};
             for (std::size_t q = 0; q < 4; ++q)
@@ -1146,17 +1176,28 @@ class Contourer {
         std::uint32_t vertex = 0; // block-local, once made
         Qef qef;
         Vec3 normalSum{};
+        // As new, member by member: value-initialising the 184 bytes as a
+        // whole made a `rep stos`, whose start-up cost a few percent of
+        // meshing the watermelon.
+        void reset() {
+            vertex = 0;
+            qef.reset();
+            normalSum = {0.0, 0.0, 0.0};
+        }
     };
     // The QEFs of the block's touched cells and pieces, in the order first
     // touched, and where each (cell, piece) has its own (valid if touched):
     // kept dense, as the few hundred a block touches fit in the first-level
     // cache where one entry for each of the 2 048 (cell, piece) pairs did not.
+    // Entries past qefCount_ are left over from earlier blocks.
     std::vector<CellQef> qefs_;
+    std::size_t qefCount_ = 0;
     std::array<std::uint16_t, kCells * kPieces> qefSlot_{};
     IndexSet<kCells * kPieces> cellsTouched_;
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
     std::vector<int> touched_;                   // cellsTouched_ in increasing order
     std::vector<std::array<int, 4>> around_;     // per found_ crossing: its cells' QEF entries
+    std::vector<std::array<std::uint16_t, 4>> aroundSlots_; // and where those are in qefs_
     std::vector<std::size_t> interiorCrossings_; // those of found_ makeInteriorQuads serves
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
     std::array<const Block*, 27> neighbours_{};

@@ -43,6 +43,14 @@ class Qef {
         ++count_;
     }
     int count() const { return count_; }
+    // Empty again (as a new Qef: add() sets the origin).
+    void reset() {
+        ata_ = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        atb_ = {0.0, 0.0, 0.0};
+        pointSum_ = {0.0, 0.0, 0.0};
+        normalSum_ = {0.0, 0.0, 0.0};
+        count_ = 0;
+    }
     std::array<double, 3> massPoint() const;
     // The minimiser; eigenvalues below `relativeCutoff` times the largest are
     // treated as zero (the solution then moves only along the others).
