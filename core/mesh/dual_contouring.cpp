@@ -254,6 +254,7 @@ struct Block {
     // Quads around the edges on the block's lower faces, which need the
     // neighbouring blocks' vertices (global ids, made by the connect phase).
     std::vector<Triangle> triangles;
+    std::uint32_t edgeQuads = 0; // how many crossings are left to the connect phase (at most)
 
     // Which cells have an entry in `cells` (bit c % 64 of word c / 64), and
     // how many entries the words before hold: a cell's entry is then found
@@ -521,6 +522,7 @@ class Contourer {
     // vertex yet.
     void connectBlock(Block& block, std::vector<BlockCoord>& missing) {
         block.triangles.clear();
+        block.triangles.reserve(2 * std::size_t(block.edgeQuads));
         const BlockCoord& b = block.coord;
         // The 27 blocks around (and including) this one, looked up once: a
         // column's three (along z) lie next to each other in the sorted list.
@@ -601,6 +603,7 @@ class Contourer {
     void markNeededCorners(Block& block, FieldSampler& sampler, Observations& seen,
                            CornerBits& needed) {
         block.kept.clear();
+        block.kept.reserve(64); // at most: one allocation, not one per doubling
         for (int octant = 0; octant < 8; ++octant) {
             const int o0[3] = {(octant & 1) * 4, ((octant >> 1) & 1) * 4, ((octant >> 2) & 1) * 4};
             const int o1[3] = {o0[0] + 4, o0[1] + 4, o0[2] + 4};
@@ -917,16 +920,21 @@ class Contourer {
                 const int index =
                     cell * kPieces + pieceOf(pieces, configs_[std::size_t(cell)],
                                              kEdge[std::size_t(axis)][std::size_t(q)]);
-                if (!cellsTouched_.contains(std::size_t(index))) {
-                    cellsTouched_.insert(std::size_t(index));
-                    qefSlot_[std::size_t(index)] = std::uint16_t(qefCount_);
-                    if (qefCount_ == qefs_.size()) qefs_.emplace_back();
-                    qefs_[qefCount_++].reset();
-                }
+                // A new entry or the one it has, without a branch on which
+                // (a quarter are new, in no pattern the CPU could predict).
+                const bool isNew = !cellsTouched_.contains(std::size_t(index));
+                cellsTouched_.insert(std::size_t(index));
+                const auto entry =
+                    isNew ? std::uint16_t(qefCount_) : qefSlot_[std::size_t(index)];
+                qefSlot_[std::size_t(index)] = entry;
+                qefCount_ += std::size_t(isNew);
                 around_[n][std::size_t(q)] = index;
-                aroundSlots_[n][std::size_t(q)] = qefSlot_[std::size_t(index)];
+                aroundSlots_[n][std::size_t(q)] = entry;
             }
         }
+        if (qefs_.size() < qefCount_) qefs_.resize(qefCount_);
+        for (std::size_t k = 0; k < qefCount_; ++k)
+            qefs_[k].reset();
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const std::array<int, 4>& cells = around_[n];
             if (cells[0] < 0 && cells[1] < 0 && cells[2] < 0 && cells[3] < 0) continue;
@@ -949,6 +957,7 @@ class Contourer {
         touched_.clear();
         cellsTouched_.appendTo(touched_);
         block.positions.reserve(touched_.size()); // one vertex per entry: no growth slack
+        block.cells.reserve(touched_.size());     // at most one cell per entry
         block.normals.reserve(touched_.size());
         for (int index : touched_) {
             CellQef& cq = qefs_[qefSlot_[std::size_t(index)]];
@@ -1015,15 +1024,18 @@ class Contourer {
     void makeInteriorQuads(Block& block) {
         // Not owned by the next block, no cell of the one before around it,
         // and not at the border of the grid (left open there).
+        // Those on a lower face are counted for the connect phase.
         interiorCrossings_.clear();
+        block.edgeQuads = 0;
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int axis = found_[n] / kCorners;
             const std::array<int, 3> corner = cornerAt(found_[n] % kCorners);
             const std::array<int, 4>& cells = around_[n];
-            if (corner[0] < kB && corner[1] < kB && corner[2] < kB &&
-                corner[std::size_t((axis + 1) % 3)] > 0 &&
-                corner[std::size_t((axis + 2) % 3)] > 0 && cells[0] >= 0 && cells[1] >= 0 &&
-                cells[2] >= 0 && cells[3] >= 0)
+            if (corner[0] >= kB || corner[1] >= kB || corner[2] >= kB) continue;
+            if (corner[std::size_t((axis + 1) % 3)] == 0 ||
+                corner[std::size_t((axis + 2) % 3)] == 0)
+                ++block.edgeQuads;
+            else if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[3] >= 0)
                 interiorCrossings_.push_back(n);
         }
         block.interior.clear();
