@@ -207,7 +207,7 @@ struct Crossing {
 
 // An edge crossing being refined: the bracket [pa, pb] with f at its ends.
 struct PendingCrossing {
-    int slot = 0; // index into the crossing cache
+    int found = 0; // its index in the block's found edges (and crossings)
     int axis = 0;
     Vec3 pa{}, pb{};
     double fa = 0, fb = 0;
@@ -479,9 +479,6 @@ class Contourer {
             }
             return in == 0 || out == 0;
         });
-        // Entries of earlier blocks are stale unless in found_: no clearing pass.
-        if (crossings_.size() != std::size_t(3 * kCorners))
-            crossings_.assign(std::size_t(3 * kCorners), Crossing{});
         computeCrossings(block, sampler);
         block.cells.clear();
         block.positions.clear();
@@ -651,8 +648,8 @@ class Contourer {
             // Made in place: a copy read whole what was just written field by
             // field, which the processor cannot forward from its stores.
             PendingCrossing& p = pending_.emplace_back();
-            p.slot = axis * kCorners + c;
-            found_.push_back(p.slot);
+            p.found = int(found_.size());
+            found_.push_back(axis * kCorners + c);
             p.axis = axis;
             const BlockCoord& b = block.coord;
             p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
@@ -693,6 +690,7 @@ class Contourer {
                      bits != 0; bits &= bits - 1)
                     visit(axis, int(w * 64 + std::size_t(std::countr_zero(bits))));
         }
+        crossings_.resize(found_.size());
         resolveFaceCrossings(sampler);
         for (int step = 0; step < options_.refineSteps && !pending_.empty(); ++step) {
             evaluateGuesses(sampler, nullptr);
@@ -717,7 +715,7 @@ class Contourer {
         refineStragglers(sampler);
         for (std::size_t n = 0; n < pending_.size(); ++n) {
             const PendingCrossing& p = pending_[n];
-            Crossing& x = crossings_[std::size_t(p.slot)];
+            Crossing& x = crossings_[std::size_t(p.found)];
             x.point = crossingAt_[n];
             bool ok = false;
             x.normal = normalised(gradientOut_[n].d, ok);
@@ -742,7 +740,7 @@ class Contourer {
             auto [p, aInBox] = throughFace_[n]; // (the face is b when a is in the box)
             const double ff = out_[n];
             if (inside(ff) || std::isnan(ff)) {
-                Crossing& x = crossings_[std::size_t(p.slot)];
+                Crossing& x = crossings_[std::size_t(p.found)];
                 x.point = aInBox ? p.pb : p.pa;
                 x.normal = {0, 0, 0};
                 x.normal[std::size_t(p.axis)] = 1;
@@ -939,7 +937,7 @@ class Contourer {
             const std::array<int, 4>& cells = around_[n];
             if (cells[0] < 0 && cells[1] < 0 && cells[2] < 0 && cells[3] < 0) continue;
             const int slot = found_[n];
-            const Crossing& x = crossings_[std::size_t(slot)];
+            const Crossing& x = crossings_[n];
             const int axis = slot / kCorners, c = slot % kCorners;
             // Outward: along the edge from its inside corner to its outside one.
             const bool lowerIn = block.states[std::size_t(c)] == kIn;
@@ -1165,7 +1163,7 @@ class Contourer {
     // The corners of the block being sampled that are evaluated, and where.
     std::array<int, kCorners> evaluated_{};
     std::array<double, kCorners> cornerX_{}, cornerY_{}, cornerZ_{};
-    std::vector<Crossing> crossings_;
+    std::vector<Crossing> crossings_; // of found_'s edges, in its order
     std::vector<PendingCrossing> pending_;
     // Edges through a closed box's face, cut there, and whether b is the face.
     std::vector<std::pair<PendingCrossing, bool>> throughFace_;
