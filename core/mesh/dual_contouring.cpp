@@ -333,9 +333,10 @@ Vec3 normalised(const std::array<double, 3>& g, bool& ok) {
 // (edgeGroups' answers for every configuration, in a table of 3 KB made
 // once: the mesher asks about four times a vertex, and the call with its
 // guarded static was a twentieth of buildVertices.)
-const std::array<std::array<std::int8_t, 12>, 256>& pieceTable() {
+using PieceTable = std::array<std::array<std::int8_t, 12>, 256>;
+const PieceTable& pieceTable() {
     static const auto table = [] {
-        std::array<std::array<std::int8_t, 12>, 256> t{};
+        PieceTable t{};
         for (int config = 0; config < 256; ++config)
             for (std::size_t edge = 0; edge < 12; ++edge) {
                 const int piece = edgeGroups(config).group[edge];
@@ -346,19 +347,17 @@ const std::array<std::array<std::int8_t, 12>, 256>& pieceTable() {
     }();
     return table;
 }
-int pieceOf(const std::array<std::array<std::int8_t, 12>, 256>& table, int config, int edge) {
+int pieceOf(const PieceTable& table, int config, int edge) {
     return config < 0 ? 0 : table[std::size_t(config)][std::size_t(edge)];
-}
-int pieceOf(int config, int edge) {
-    return pieceOf(pieceTable(), config, edge);
 }
 
 // The block-local vertex of a cell's piece of surface that `edge` is on, or
 // -1 when the cell has none there.
-std::int32_t vertexOf(const Block& block, int cell, int edge) {
+// (`pieces`: pieceTable(), which the connect phase holds.)
+std::int32_t vertexOf(const PieceTable& pieces, const Block& block, int cell, int edge) {
     const SurfaceCell* c = block.surfaceCell(cell);
     if (!c) return -1;
-    const int piece = pieceOf(c->config, edge);
+    const int piece = pieceOf(pieces, c->config, edge);
     const unsigned mask = c->pieceMask;
     if (!(mask >> piece & 1u)) return -1;
     static constexpr std::uint8_t kOnes[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
@@ -922,8 +921,7 @@ class Contourer {
                 // (a quarter are new, in no pattern the CPU could predict).
                 const bool isNew = !cellsTouched_.contains(std::size_t(index));
                 cellsTouched_.insert(std::size_t(index));
-                const auto entry =
-                    isNew ? std::uint16_t(qefCount_) : qefSlot_[std::size_t(index)];
+                const auto entry = isNew ? std::uint16_t(qefCount_) : qefSlot_[std::size_t(index)];
                 qefSlot_[std::size_t(index)] = entry;
                 qefCount_ += std::size_t(isNew);
                 around_[n][std::size_t(q)] = index;
@@ -1122,7 +1120,7 @@ class Contourer {
             missing.push_back(neighbourCoords_[std::size_t(n)]);
             return {};
         }
-        return {owner, vertexOf(*owner, cellIndex(cell[0], cell[1], cell[2]), edge)};
+        return {owner, vertexOf(pieces_, *owner, cellIndex(cell[0], cell[1], cell[2]), edge)};
     }
 
     void quad(Block& block, int a, const int local[3], bool lowerInside,
@@ -1159,6 +1157,7 @@ class Contourer {
     const ImplicitField& field_;
     const MeshOptions& options_;
     const Grid& grid_;
+    const PieceTable& pieces_ = pieceTable();
     std::vector<double> xs_, ys_, zs_, out_;
     // The corners of the block being sampled that are evaluated, and where.
     std::array<int, kCorners> evaluated_{};
