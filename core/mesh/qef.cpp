@@ -34,6 +34,35 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
             along > 0 ? Eigen::Vector3d(n * (n.dot(rhs) / along)) : Eigen::Vector3d::Zero();
         return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
     }
+    // One direction dominant (a curved patch: most cells at low
+    // resolutions). The Rayleigh quotient r of the mean normal n is at most
+    // the largest eigenvalue, and the other two (never negative) sum to
+    // trace - (largest) <= trace - r: when that is under cutoff * r, only the
+    // dominant eigenvector is kept, and power iteration from n finds it, each
+    // step shrinking the error by lambda2 / lambda1 <= q = (trace - r) / r —
+    // a few multiplications where the closed form takes an atan2, a sine and
+    // a cosine.
+    const double trace = ata(0, 0) + ata(1, 1) + ata(2, 2);
+    if (const double len = nsum.norm(); len > 0) {
+        Eigen::Vector3d v = nsum / len;
+        const double r0 = v.dot(ata * v);
+        const double q = (trace - r0) / r0;
+        if (r0 > 0 && q < relativeCutoff) {
+            // q^steps below 1e-17 (the start's error is under 1), rescaled
+            // every few steps (lambda1 is at most the count of planes).
+            const int steps = q > 0 ? std::min(40, int(std::ceil(-17 / std::log10(q)))) : 1;
+            for (int step = 0; step < steps; ++step) {
+                v = ata * v;
+                if (step % 4 == 3 || step + 1 == steps) v /= v.norm();
+            }
+            const double r = v.dot(ata * v);
+            if (r > 0 && std::isfinite(r)) {
+                const Eigen::Vector3d x = v * (v.dot(rhs) / r);
+                return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1],
+                        origin_[2] + c[2] + x[2]};
+            }
+        }
+    }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
     eig.computeDirect(ata); // closed form for 3x3: several times faster than the iterative solver
     const Eigen::Vector3d values = eig.eigenvalues();

@@ -4,9 +4,11 @@
 // plane the box allows.
 #include "mesh/qef.h"
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using fl::mesh::Qef;
 using Point = std::array<double, 3>;
@@ -99,4 +101,60 @@ TEST(Qef, PlanesFarBeyondTheBoxStillGiveAFinitePointInIt) {
         EXPECT_GE(c, -1.0);
         EXPECT_LE(c, 1.0);
     }
+}
+
+// A curved patch (a cell of a sphere at a low resolution): its normals
+// disagree by a few degrees, too much for the mean normal to stand for them,
+// but one eigenvalue of A^T A dominates and the truncation keeps only its
+// direction. solve() takes it by power iteration from the mean normal; the
+// answer is the eigen-decomposition's.
+TEST(Qef, ACurvedPatchKeepsOnlyItsDominantDirectionAsTheEigenSolverDoes) {
+    const double radius = 0.8;
+    std::vector<Point> points, normals;
+    for (int i = 0; i < 6; ++i) { // up to 4 degrees from the direction (1, 1, 1)
+        const double a = 0.07 * std::cos(1.3 * i), b = 0.05 * std::sin(2.1 * i);
+        Eigen::Vector3d n = Eigen::Vector3d(1, 1, 1).normalized() +
+                            a * Eigen::Vector3d(1, -1, 0).normalized() +
+                            b * Eigen::Vector3d(1, 1, -2).normalized();
+        n.normalize();
+        points.push_back({radius * n[0], radius * n[1], radius * n[2]});
+        normals.push_back({n[0], n[1], n[2]});
+    }
+    Qef q;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        q.add(points[i], normals[i]);
+
+    // The reference, from the same sums by Eigen's iterative solver.
+    const Eigen::Vector3d origin(points[0][0], points[0][1], points[0][2]);
+    Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d atb = Eigen::Vector3d::Zero(), mass = Eigen::Vector3d::Zero(),
+                    nsum = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Eigen::Vector3d n(normals[i][0], normals[i][1], normals[i][2]);
+        const Eigen::Vector3d p =
+            Eigen::Vector3d(points[i][0], points[i][1], points[i][2]) - origin;
+        ata += n * n.transpose();
+        atb += n * n.dot(p);
+        mass += p;
+        nsum += n;
+    }
+    mass /= double(points.size());
+    const double cutoff = 0.1;
+    ASSERT_LT(nsum.norm() / double(points.size()), 0.9995) << "the mean-normal case";
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(ata);
+    const Eigen::Vector3d values = eig.eigenvalues();
+    ASSERT_LT(values[0] + values[1], cutoff * values[2]) << "one direction dominates";
+    const Eigen::Vector3d mean = nsum.normalized();
+    const double r0 = mean.dot(ata * mean);
+    ASSERT_LT(ata.trace() - r0, cutoff * r0) << "and the mean normal shows it (the fast path)";
+    const Eigen::Vector3d rhs = atb - ata * mass;
+    const Eigen::Vector3d v = eig.eigenvectors().col(2);
+    const Eigen::Vector3d expected = origin + mass + v * (v.dot(rhs) / values[2]);
+
+    const Point got = q.solve(cutoff);
+    for (int a = 0; a < 3; ++a)
+        EXPECT_NEAR(got[std::size_t(a)], expected[a], 1e-14) << "axis " << a;
+    // And it lies on the sphere to the order of the patch's curvature.
+    const double r = std::sqrt(got[0] * got[0] + got[1] * got[1] + got[2] * got[2]);
+    EXPECT_NEAR(r, radius, 1e-2);
 }
