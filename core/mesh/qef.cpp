@@ -48,9 +48,13 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
         const double r0 = v.dot(ata * v);
         const double q = (trace - r0) / r0;
         if (r0 > 0 && q < relativeCutoff) {
-            // q^steps below 1e-17 (the start's error is under 1), rescaled
-            // every few steps (lambda1 is at most the count of planes).
-            const int steps = q > 0 ? std::min(40, int(std::ceil(-17 / std::log10(q)))) : 1;
+            // q^steps below 1e-16 (the start's error is under 1; counted
+            // by multiplying: a logarithm cost as much as the steps),
+            // rescaled every few steps (lambda1 is at most the count of
+            // planes, so nothing overflows in between).
+            int steps = 1;
+            for (double error = q; error > 1e-16 && steps < 40; error *= q)
+                ++steps;
             for (int step = 0; step < steps; ++step) {
                 v = ata * v;
                 if (step % 4 == 3 || step + 1 == steps) v /= v.norm();
