@@ -929,8 +929,11 @@ class Contourer {
             }
         }
         if (qefs_.size() < qefCount_) qefs_.resize(qefCount_);
+        // Every QEF's sums about the block's first corner: a crossing's
+        // share is then the same for its four cells, made once.
+        const Vec3 origin = grid_.corner(base[0], base[1], base[2]);
         for (std::size_t k = 0; k < qefCount_; ++k)
-            qefs_[k].reset();
+            qefs_[k].reset(origin);
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const std::array<int, 4>& cells = around_[n];
             if (cells[0] < 0 && cells[1] < 0 && cells[2] < 0 && cells[3] < 0) continue;
@@ -941,11 +944,11 @@ class Contourer {
             const bool lowerIn = block.states[std::size_t(c)] == kIn;
             const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
             const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
-            const Qef::Products products = Qef::productsOf(x.normal);
+            const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
             for (std::size_t q = 0; q < 4; ++q) {
                 if (cells[q] < 0) continue;
                 CellQef& cq = qefs_[aroundSlots_[n][q]];
-                cq.qef.add(x.point, x.normal, products);
+                cq.qef.add(plane);
                 for (std::size_t k = 0; k < 3; ++k)
                     cq.normalSum[k] += signedNormal[k];
             }
@@ -1188,9 +1191,9 @@ class Contourer {
         // As new, member by member: value-initialising the 184 bytes as a
         // whole made a `rep stos`, whose start-up cost a few percent of
         // meshing the watermelon.
-        void reset() {
+        void reset(const Vec3& origin) {
             vertex = 0;
-            qef.reset();
+            qef.reset(origin);
             normalSum = {0.0, 0.0, 0.0};
         }
     };

@@ -8,25 +8,26 @@
 namespace fl::mesh {
 
 std::array<double, 3> Qef::massPoint() const {
-    if (!count_) return {0, 0, 0};
-    return {origin_[0] + pointSum_[0] / count_, origin_[1] + pointSum_[1] / count_,
-            origin_[2] + pointSum_[2] / count_};
+    if (!count()) return {0, 0, 0};
+    return {origin_[0] + sumPoints(0) / count(), origin_[1] + sumPoints(1) / count(),
+            origin_[2] + sumPoints(2) / count()};
 }
 
 std::array<double, 3> Qef::solve(double relativeCutoff) const {
-    if (!count_) return {0, 0, 0};
+    if (!count()) return {0, 0, 0};
     Eigen::Matrix3d ata;
-    ata << ata_[0], ata_[1], ata_[2], ata_[1], ata_[3], ata_[4], ata_[2], ata_[4], ata_[5];
+    ata << sumAtA(0), sumAtA(1), sumAtA(2), sumAtA(1), sumAtA(3), sumAtA(4), sumAtA(2), sumAtA(4),
+        sumAtA(5);
     // About the mass point c (relative to the origin): minimise |A (c + x) - b|,
     // i.e. A^T A x = A^T b - A^T A c.
-    const Eigen::Vector3d c(pointSum_[0] / count_, pointSum_[1] / count_, pointSum_[2] / count_);
-    const Eigen::Vector3d rhs = Eigen::Vector3d(atb_[0], atb_[1], atb_[2]) - ata * c;
+    const Eigen::Vector3d c(sumPoints(0) / count(), sumPoints(1) / count(), sumPoints(2) / count());
+    const Eigen::Vector3d rhs = Eigen::Vector3d(sumAtb(0), sumAtb(1), sumAtb(2)) - ata * c;
     // Nearly parallel unit normals (a smooth patch, most cells): A is about
     // rank one along their mean, the other eigenvalues fall under any sensible
     // cutoff, and the truncated solution moves along the mean normal only —
     // no eigen-decomposition needed.
-    const Eigen::Vector3d nsum(normalSum_[0], normalSum_[1], normalSum_[2]);
-    const double spread = nsum.norm() / count_; // 1 when all normals agree
+    const Eigen::Vector3d nsum(sumNormals(0), sumNormals(1), sumNormals(2));
+    const double spread = nsum.norm() / count(); // 1 when all normals agree
     if (relativeCutoff >= 0.05 && spread > 0.9995) {
         const Eigen::Vector3d n = nsum / nsum.norm();
         const double along = n.dot(ata * n);
@@ -85,16 +86,17 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
                                       const std::array<double, 3>& hi,
                                       double relativeCutoff) const {
     std::array<double, 3> x = solve(relativeCutoff);
-    if (!count_) return x;
+    if (!count()) return x;
     auto outside = [&](const std::array<double, 3>& p, std::size_t a) {
         return !(p[a] >= lo[a] && p[a] <= hi[a]); // NaN counts as outside
     };
     if (!outside(x, 0) && !outside(x, 1) && !outside(x, 2)) return x;
     // Relative to the origin: E(y) = y^T M y - 2 y^T r + const, M = A^T A.
     Eigen::Matrix3d m;
-    m << ata_[0], ata_[1], ata_[2], ata_[1], ata_[3], ata_[4], ata_[2], ata_[4], ata_[5];
-    const Eigen::Vector3d r(atb_[0], atb_[1], atb_[2]);
-    const Eigen::Vector3d c(pointSum_[0] / count_, pointSum_[1] / count_, pointSum_[2] / count_);
+    m << sumAtA(0), sumAtA(1), sumAtA(2), sumAtA(1), sumAtA(3), sumAtA(4), sumAtA(2), sumAtA(4),
+        sumAtA(5);
+    const Eigen::Vector3d r(sumAtb(0), sumAtb(1), sumAtb(2));
+    const Eigen::Vector3d c(sumPoints(0) / count(), sumPoints(1) / count(), sumPoints(2) / count());
     const double largest = std::max({m(0, 0), m(1, 1), m(2, 2)}); // trace-sized: a scale only
     std::array<bool, 3> held{};
     Eigen::Vector3d y(c);

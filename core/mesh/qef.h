@@ -4,8 +4,9 @@
 // a cell. Solved about the crossings' mass point with small eigenvalues
 // truncated, so flat and cylindrical cells stay near the mass point while
 // corners and creases of min/max set operations come out sharp. Accumulated
-// as sums (A^T A, A^T b, the point sum) relative to the first point, so adding
-// a plane is a few multiplications and nothing is stored per plane.
+// as sums (A^T A, A^T b, the point sum) relative to an origin near the planes
+// (the first point, or one the caller sets), so adding a plane is a few
+// multiplications and additions and nothing is stored per plane.
 #include <array>
 #include <cstddef>
 
@@ -13,43 +14,49 @@ namespace fl::mesh {
 
 class Qef {
   public:
-    // A normal's products n n^T (xx xy xz yy yz zz): the mesher adds each
-    // crossing's plane to up to four cells and makes them once.
-    using Products = std::array<double, 6>;
-    static Products productsOf(const std::array<double, 3>& n) {
-        return {n[0] * n[0], n[0] * n[1], n[0] * n[2], n[1] * n[1], n[1] * n[2], n[2] * n[2]};
-    }
-    // Inline: the mesher adds about four planes a vertex.
-    void add(const std::array<double, 3>& point, const std::array<double, 3>& normal) {
-        add(point, normal, productsOf(normal));
-    }
-    void add(const std::array<double, 3>& point, const std::array<double, 3>& normal,
-             const Products& products) {
-        if (count_ == 0) origin_ = point;
-        const double x = point[0] - origin_[0], y = point[1] - origin_[1],
-                     z = point[2] - origin_[2];
+    // What one plane (p, n) adds to the sums about an origin o, in the order
+    // they are kept: n n^T (xx xy xz yy yz zz), n (n . (p - o)), p - o, n and
+    // a count of 1. The mesher makes it once per crossing, about its block's
+    // corner, and adds it to the (up to) four cells around: sixteen
+    // additions a cell, which the compiler makes vector additions.
+    using Plane = std::array<double, 16>;
+    static Plane plane(const std::array<double, 3>& origin, const std::array<double, 3>& point,
+                       const std::array<double, 3>& normal) {
+        const double x = point[0] - origin[0], y = point[1] - origin[1], z = point[2] - origin[2];
         const double d = normal[0] * x + normal[1] * y + normal[2] * z;
-        for (std::size_t k = 0; k < 6; ++k)
-            ata_[k] += products[k];
-        atb_[0] += normal[0] * d;
-        atb_[1] += normal[1] * d;
-        atb_[2] += normal[2] * d;
-        pointSum_[0] += x;
-        pointSum_[1] += y;
-        pointSum_[2] += z;
-        normalSum_[0] += normal[0];
-        normalSum_[1] += normal[1];
-        normalSum_[2] += normal[2];
-        ++count_;
+        return {normal[0] * normal[0],
+                normal[0] * normal[1],
+                normal[0] * normal[2],
+                normal[1] * normal[1],
+                normal[1] * normal[2],
+                normal[2] * normal[2],
+                normal[0] * d,
+                normal[1] * d,
+                normal[2] * d,
+                x,
+                y,
+                z,
+                normal[0],
+                normal[1],
+                normal[2],
+                1.0};
     }
-    int count() const { return count_; }
-    // Empty again (as a new Qef: add() sets the origin).
-    void reset() {
-        ata_ = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        atb_ = {0.0, 0.0, 0.0};
-        pointSum_ = {0.0, 0.0, 0.0};
-        normalSum_ = {0.0, 0.0, 0.0};
-        count_ = 0;
+    // Sums about the first point added.
+    void add(const std::array<double, 3>& point, const std::array<double, 3>& normal) {
+        if (count() == 0) origin_ = point;
+        add(plane(origin_, point, normal));
+    }
+    // A plane made about this Qef's origin (see reset).
+    void add(const Plane& plane) {
+        for (std::size_t k = 0; k < sums_.size(); ++k)
+            sums_[k] += plane[k];
+    }
+    int count() const { return int(sums_[kCount]); }
+    // Empty again, its sums about `origin` (add(point, normal) sets the
+    // origin to its first point instead).
+    void reset(const std::array<double, 3>& origin) {
+        origin_ = origin;
+        sums_.fill(0.0);
     }
     std::array<double, 3> massPoint() const;
     // The minimiser; eigenvalues below `relativeCutoff` times the largest are
@@ -67,12 +74,14 @@ class Qef {
                                      double relativeCutoff = 0.05) const;
 
   private:
-    std::array<double, 3> origin_{}; // the first point: sums are relative to it
-    std::array<double, 6> ata_{};    // xx xy xz yy yz zz
-    std::array<double, 3> atb_{};
-    std::array<double, 3> pointSum_{}; // relative to origin_
-    std::array<double, 3> normalSum_{};
-    int count_ = 0;
+    static constexpr std::size_t kAta = 0, kAtb = 6, kPointSum = 9, kNormalSum = 12, kCount = 15;
+    double sumAtA(std::size_t k) const { return sums_[kAta + k]; } // xx xy xz yy yz zz
+    double sumAtb(std::size_t k) const { return sums_[kAtb + k]; }
+    double sumPoints(std::size_t k) const { return sums_[kPointSum + k]; } // relative to origin_
+    double sumNormals(std::size_t k) const { return sums_[kNormalSum + k]; }
+
+    std::array<double, 3> origin_{}; // the sums are relative to it
+    Plane sums_{};                   // as a Plane lays them out
 };
 
 } // namespace fl::mesh
