@@ -41,9 +41,6 @@ bool inside(double f) {
 // state stays unknown, and no crossing touches them.
 enum State : std::uint8_t { kOut = 0, kIn = 1, kUndefined = 2, kUnknown = 3 };
 static_assert(kOut == 0 && kIn == 1, "a defined corner's state is inside(f) as a number");
-bool crosses(std::uint8_t a, std::uint8_t b) {
-    return a != b && a <= kIn && b <= kIn;
-}
 
 using BlockCoord = std::array<int, 3>;
 
@@ -99,6 +96,29 @@ std::uint8_t subBlockIndex(const int s0[3]) {
 }
 std::array<int, 3> subBlockOrigin(std::uint8_t sub) {
     return {(sub % 4) * 2, (sub / 4 % 4) * 2, (sub / 16) * 2};
+}
+
+// An edge on a block's lower faces (from corner `corner` along `axis`, its
+// first corner inside or not), packed for the connect phase: sorting packed
+// values puts the edges in the order of a walk over the kept sub-blocks
+// (octant, sub-block in it, cell in that, axis) — the order in which the
+// connect phase once found them, so the mesh's triangles keep their order.
+std::uint32_t packLowerFaceEdge(int corner, int axis, bool lowerIn) {
+    const auto [i, j, k] = cornerAt(corner);
+    const int octant = int(i >= 4) | int(j >= 4) << 1 | int(k >= 4) << 2;
+    const int sub = (i >> 1 & 1) | (j >> 1 & 1) << 1 | (k >> 1 & 1) << 2;
+    const int cell = (i & 1) | (j & 1) << 1 | (k & 1) << 2;
+    const auto order = std::uint32_t(((octant * 8 + sub) * 8 + cell) * 3 + axis);
+    static_assert(kCorners <= 1024, "a corner index fits in 10 bits");
+    return order << 11 | std::uint32_t(lowerIn) << 10 | std::uint32_t(corner);
+}
+struct LowerFaceEdge {
+    std::array<int, 3> local; // its first corner in the block
+    int axis = 0;
+    bool lowerIn = false;
+};
+LowerFaceEdge lowerFaceEdge(std::uint32_t packed) {
+    return {cornerAt(int(packed & 1023u)), int((packed >> 11) % 3), (packed >> 10 & 1u) != 0};
 }
 
 // A cell holds at most four separate pieces of surface (the marching-cubes
@@ -241,11 +261,9 @@ struct Block {
     // The formula as the octree narrowed it to this block and a cell around
     // it (null: nothing to drop), until the block is sampled.
     std::shared_ptr<const field::NarrowedTape> tape;
-    bool narrowed = false;            // tape is the octree's (blocks found later narrow themselves)
-    std::vector<std::uint8_t> states; // kCorners: kIn, kOut, kUndefined
-    std::vector<SurfaceCell> cells;   // sorted by cell
-    std::vector<std::uint8_t> kept;   // the 2x2x2-cell sub-blocks that may hold surface
-    std::vector<Vec3f> positions;     // single precision, as the mesh keeps them
+    bool narrowed = false;          // tape is the octree's (blocks found later narrow themselves)
+    std::vector<SurfaceCell> cells; // sorted by cell
+    std::vector<Vec3f> positions;   // single precision, as the mesh keeps them
     std::vector<Vec3f> normals;
     std::uint32_t offset = 0; // first global vertex id
     // Quads around edges whose four cells are all in this block, made while
@@ -254,7 +272,9 @@ struct Block {
     // Quads around the edges on the block's lower faces, which need the
     // neighbouring blocks' vertices (global ids, made by the connect phase).
     std::vector<Triangle> triangles;
-    std::uint32_t edgeQuads = 0; // how many crossings are left to the connect phase (at most)
+    // Those edges, found while sampling, in the order the connect phase
+    // makes their quads (see lowerFaceEdge).
+    std::vector<std::uint32_t> lowerFaceEdges;
 
     // Which cells have an entry in `cells` (bit c % 64 of word c / 64), and
     // how many entries the words before hold: a cell's entry is then found
@@ -272,7 +292,8 @@ struct Block {
     }
     // What the block holds in memory (its share of the mesh included).
     std::size_t bytes() const {
-        return states.capacity() + kept.capacity() + cells.capacity() * sizeof(SurfaceCell) +
+        return lowerFaceEdges.capacity() * sizeof(std::uint32_t) +
+               cells.capacity() * sizeof(SurfaceCell) +
                (positions.capacity() + normals.capacity()) * sizeof(Vec3f) +
                (interior.capacity() + triangles.capacity()) * sizeof(Triangle);
     }
@@ -426,7 +447,7 @@ class Contourer {
         if (count != 0)
             sampler.values(cornerX_.data(), cornerY_.data(), cornerZ_.data(), count, out_.data());
         // (values_ is read only where a corner was evaluated: no clearing.)
-        block.states.assign(kCorners, kUnknown);
+        states_.fill(kUnknown);
         known_.fill(0);
         insideBits_.fill(0);
         allInBox_ = blockInBox(block);
@@ -441,12 +462,12 @@ class Contourer {
             values_[c] = v;
             const std::uint64_t bit = std::uint64_t(1) << (c % 64);
             if (!allInBox_ && !cornerInBox(block, int(c))) {
-                block.states[c] = kOut; // margin of a closed box
+                states_[c] = kOut; // margin of a closed box
                 known_[c / 64] |= bit;
                 continue;
             }
             const bool defined = !std::isnan(v), in = inside(v);
-            block.states[c] = std::uint8_t(defined ? unsigned(in) : unsigned(kUndefined));
+            states_[c] = std::uint8_t(defined ? unsigned(in) : unsigned(kUndefined));
             known_[c / 64] |= bit & (std::uint64_t(0) - std::uint64_t(defined));
             insideBits_[c / 64] |= bit & (std::uint64_t(0) - std::uint64_t(in));
             if (!defined) {
@@ -469,7 +490,7 @@ class Contourer {
         }
         // Only sub-blocks with corners on both sides hold sign-changing edges.
         const auto& subCorners = subBlockCorners();
-        std::erase_if(block.kept, [&](std::uint8_t sub) {
+        std::erase_if(kept_, [&](std::uint8_t sub) {
             const SubBlockCorners& m = subCorners[sub];
             std::uint64_t in = 0, out = 0;
             for (std::size_t k = 0; k < 4 && m.first + k < known_.size(); ++k) {
@@ -483,7 +504,7 @@ class Contourer {
         block.positions.clear();
         block.normals.clear();
         configs_.fill(-1); // only cells of kept sub-blocks can hold surface
-        forEachKeptCell(block, [&](int ci, int cj, int ck) {
+        forEachKeptCell([&](int ci, int cj, int ck) {
             configs_[std::size_t(cellIndex(ci, cj, ck))] = std::int16_t(cellConfig(ci, cj, ck));
         });
         buildVertices(block, sampler);
@@ -505,8 +526,8 @@ class Contourer {
 
     // The cells of the kept sub-blocks, in a fixed order.
     template <class F>
-    static void forEachKeptCell(const Block& block, F f) {
-        for (std::uint8_t sub : block.kept) {
+    void forEachKeptCell(F f) const {
+        for (std::uint8_t sub : kept_) {
             const auto [si, sj, sk] = subBlockOrigin(sub);
             for (int c = 0; c < 8; ++c)
                 f(si + (c & 1), sj + ((c >> 1) & 1), sk + ((c >> 2) & 1));
@@ -518,7 +539,7 @@ class Contourer {
     // vertex yet.
     void connectBlock(Block& block, std::vector<BlockCoord>& missing) {
         block.triangles.clear();
-        block.triangles.reserve(2 * std::size_t(block.edgeQuads));
+        block.triangles.reserve(2 * block.lowerFaceEdges.size());
         const BlockCoord& b = block.coord;
         // The 27 blocks around (and including) this one, looked up once: a
         // column's three (along z) lie next to each other in the sorted list.
@@ -538,36 +559,11 @@ class Contourer {
                  ++it)
                 neighbours_[std::size_t((it->coord[2] - b[2] + 1) * 9 + column)] = &*it;
         }
-        const long base[3] = {long(b[0]) * kB, long(b[1]) * kB, long(b[2]) * kB};
-        // Every edge this block owns with a sign change starts at the lowest
-        // corner of a cell of a kept sub-block; those with all four cells in
-        // the block were made while sampling, the rest lie on its lower faces.
-        for (std::uint8_t sub : block.kept) {
-            const auto [si, sj, sk] = subBlockOrigin(sub);
-            if (si != 0 && sj != 0 && sk != 0) continue;
-            for (int c = 0; c < 8; ++c)
-                connectCell(block, base, {si + (c & 1), sj + ((c >> 1) & 1), sk + ((c >> 2) & 1)},
-                            missing);
+        for (const std::uint32_t edge : block.lowerFaceEdges) {
+            const auto [local, axis, lowerIn] = lowerFaceEdge(edge);
+            quad(block, axis, local.data(), lowerIn, missing);
         }
-    }
-
-    // The quads around the edges from the lowest corner of one cell that need
-    // a neighbouring block (at least one of their other two coordinates is 0).
-    void connectCell(Block& block, const long base[3], std::array<int, 3> local,
-                     std::vector<BlockCoord>& missing) {
-        if (local[0] != 0 && local[1] != 0 && local[2] != 0) return;
-        const long g[3] = {base[0] + local[0], base[1] + local[1], base[2] + local[2]};
-        if (g[0] >= grid_.cells[0] || g[1] >= grid_.cells[1] || g[2] >= grid_.cells[2]) return;
-        const std::uint8_t sa =
-            block.states[std::size_t(cornerIndex(local[0], local[1], local[2]))];
-        for (int a = 0; a < 3; ++a) {
-            if (local[(a + 1) % 3] != 0 && local[(a + 2) % 3] != 0) continue; // made already
-            int far[3] = {local[0], local[1], local[2]};
-            ++far[a];
-            const std::uint8_t sb = block.states[std::size_t(cornerIndex(far[0], far[1], far[2]))];
-            if (!crosses(sa, sb)) continue;
-            quad(block, a, local.data(), sa == kIn, missing);
-        }
+        std::vector<std::uint32_t>().swap(block.lowerFaceEdges); // done with
     }
 
     // The blocks, sorted by key, shared by every thread's contourer (read
@@ -598,8 +594,7 @@ class Contourer {
     // evaluator (a gyroid's 25x as much): 14% slower on the gyroid at 512.
     void markNeededCorners(Block& block, FieldSampler& sampler, Observations& seen,
                            CornerBits& needed) {
-        block.kept.clear();
-        block.kept.reserve(64); // at most: one allocation, not one per doubling
+        kept_.clear();
         for (int octant = 0; octant < 8; ++octant) {
             const int o0[3] = {(octant & 1) * 4, ((octant >> 1) & 1) * 4, ((octant >> 2) & 1) * 4};
             const int o1[3] = {o0[0] + 4, o0[1] + 4, o0[2] + 4};
@@ -623,7 +618,7 @@ class Contourer {
                     inGrid = inGrid && long(block.coord[a]) * kB + s0[a] < grid_.cells[a];
                 if (!inGrid) continue;
                 const std::uint8_t index = subBlockIndex(s0);
-                block.kept.push_back(index);
+                kept_.push_back(index);
                 const SubBlockCorners& m = subBlockCorners()[index];
                 for (std::size_t k = 0; k < 4 && m.first + k < needed.size(); ++k)
                     needed[m.first + k] |= m.mask[k];
@@ -941,7 +936,7 @@ class Contourer {
             const Crossing& x = crossings_[n];
             const int axis = slot / kCorners, c = slot % kCorners;
             // Outward: along the edge from its inside corner to its outside one.
-            const bool lowerIn = block.states[std::size_t(c)] == kIn;
+            const bool lowerIn = states_[std::size_t(c)] == kIn;
             const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
             const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
             const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
@@ -1023,20 +1018,33 @@ class Contourer {
     void makeInteriorQuads(Block& block) {
         // Not owned by the next block, no cell of the one before around it,
         // and not at the border of the grid (left open there).
-        // Those on a lower face are counted for the connect phase.
+        // Those on a lower face go to the connect phase: the ones a walk of
+        // the kept sub-blocks' cells would find (the cell the edge starts
+        // from lies in a kept sub-block and in the grid), in its order.
+        std::uint64_t keptSubs = 0;
+        for (std::uint8_t sub : kept_)
+            keptSubs |= std::uint64_t(1) << sub;
+        const long base[3] = {long(block.coord[0]) * kB, long(block.coord[1]) * kB,
+                              long(block.coord[2]) * kB};
         interiorCrossings_.clear();
-        block.edgeQuads = 0;
+        block.lowerFaceEdges.clear();
         for (std::size_t n = 0; n < found_.size(); ++n) {
-            const int axis = found_[n] / kCorners;
-            const std::array<int, 3> corner = cornerAt(found_[n] % kCorners);
+            const int axis = found_[n] / kCorners, c = found_[n] % kCorners;
+            const std::array<int, 3> corner = cornerAt(c);
             const std::array<int, 4>& cells = around_[n];
             if (corner[0] >= kB || corner[1] >= kB || corner[2] >= kB) continue;
             if (corner[std::size_t((axis + 1) % 3)] == 0 ||
-                corner[std::size_t((axis + 2) % 3)] == 0)
-                ++block.edgeQuads;
-            else if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[3] >= 0)
+                corner[std::size_t((axis + 2) % 3)] == 0) {
+                const int s0[3] = {corner[0] & ~1, corner[1] & ~1, corner[2] & ~1};
+                if ((keptSubs >> subBlockIndex(s0) & 1u) && base[0] + corner[0] < grid_.cells[0] &&
+                    base[1] + corner[1] < grid_.cells[1] && base[2] + corner[2] < grid_.cells[2])
+                    block.lowerFaceEdges.push_back(
+                        packLowerFaceEdge(c, axis, states_[std::size_t(c)] == kIn));
+            } else if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[3] >= 0) {
                 interiorCrossings_.push_back(n);
+            }
         }
+        std::sort(block.lowerFaceEdges.begin(), block.lowerFaceEdges.end());
         block.interior.clear();
         block.interior.reserve(2 * interiorCrossings_.size()); // exact: the budget counts capacity
         for (std::size_t n : interiorCrossings_) {
@@ -1047,7 +1055,7 @@ class Contourer {
             static constexpr int kOrder[4] = {3, 2, 0, 1};
             for (std::size_t q = 0; q < 4; ++q)
                 ids[q] = qefs_[aroundSlots_[n][std::size_t(kOrder[q])]].vertex;
-            if (block.states[std::size_t(c)] != kIn) std::swap(ids[1], ids[3]);
+            if (states_[std::size_t(c)] != kIn) std::swap(ids[1], ids[3]);
             std::array<const Vec3f*, 4> pos{};
             for (std::size_t q = 0; q < 4; ++q)
                 pos[q] = &block.positions[ids[q]];
@@ -1166,6 +1174,10 @@ class Contourer {
     std::array<int, kCorners> evaluated_{};
     std::array<double, kCorners> cornerX_{}, cornerY_{}, cornerZ_{};
     std::vector<Crossing> crossings_; // of found_'s edges, in its order
+    // Of the block being sampled: its corners (kIn, kOut, kUndefined or
+    // kUnknown) and the 2x2x2-cell sub-blocks that may hold surface.
+    std::array<std::uint8_t, kCorners> states_{};
+    std::vector<std::uint8_t> kept_;
     std::vector<PendingCrossing> pending_;
     // Edges through a closed box's face, cut there, and whether b is the face.
     std::vector<std::pair<PendingCrossing, bool>> throughFace_;
