@@ -237,9 +237,10 @@ struct PendingCrossing {
 };
 
 // What a vertex costs from sampling to the finished mesh: in its block (its
-// position, normal and cell's share) and later (about two triangles in the
-// block, then its position, normal and triangles again in the mesh).
-constexpr std::size_t kBlockBytesPerVertex = 2 * sizeof(Vec3f) + 8;
+// position, normal, cell's share and its share of the lower-face edges: a
+// third of the crossings, 4 bytes each) and later (about two triangles in
+// the block, then its position, normal and triangles again in the mesh).
+constexpr std::size_t kBlockBytesPerVertex = 2 * sizeof(Vec3f) + 8 + 2;
 constexpr std::size_t kLaterBytesPerVertex = 2 * sizeof(Vec3f) + 4 * sizeof(Triangle);
 constexpr std::size_t kBytesPerVertex = kBlockBytesPerVertex + kLaterBytesPerVertex;
 
@@ -1409,7 +1410,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     // mesh included (a smooth surface through a block makes about kB^2
     // vertices): the first check, before any work. Sampling then counts what
     // the blocks really hold and stops at the budget.
-    const std::size_t bytesPerBlock = kCorners + kB * kB * kBytesPerVertex;
+    const std::size_t bytesPerBlock = kB * kB * kBytesPerVertex;
     const std::size_t blockLimit =
         std::max<std::size_t>(1, options.memoryBudgetBytes / bytesPerBlock);
 
