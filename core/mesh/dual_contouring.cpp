@@ -35,13 +35,6 @@ bool inside(double f) {
     return f > 0;
 }
 
-// A corner is in the solid, out of it, or where f is undefined (NaN). With a
-// closed boundary the margin corners outside the domain box are out. Corners
-// the intervals showed to be far from the surface are never evaluated: their
-// state stays unknown, and no crossing touches them.
-enum State : std::uint8_t { kOut = 0, kIn = 1, kUndefined = 2, kUnknown = 3 };
-static_assert(kOut == 0 && kIn == 1, "a defined corner's state is inside(f) as a number");
-
 using BlockCoord = std::array<int, 3>;
 
 struct Grid {
@@ -448,41 +441,43 @@ class Contourer {
         if (count != 0)
             sampler.values(cornerX_.data(), cornerY_.data(), cornerZ_.data(), count, out_.data());
         // (values_ is read only where a corner was evaluated: no clearing.)
-        states_.fill(kUnknown);
-        known_.fill(0);
-        insideBits_.fill(0);
         allInBox_ = blockInBox(block);
-        // Without branches on the values where it can (half the corners near
+        // Which corners are known (evaluated and defined, or margin of a
+        // closed box: out) and inside, a row of bits at a time in registers;
+        // without branches on the values where it can (half the corners near
         // the surface are inside: a branch on it is mispredicted), and with
         // the running maxima in registers, not in `seen`.
         double maxValue = seen.maxValue, maxAbs = seen.maxAbs;
         std::size_t maxAt = count; // none
-        for (std::size_t n = 0; n < count; ++n) {
-            const auto c = std::size_t(evaluated_[n]);
-            const double v = out_[n];
-            values_[c] = v;
-            const std::uint64_t bit = std::uint64_t(1) << (c % 64);
-            if (!allInBox_ && !cornerInBox(block, int(c))) {
-                states_[c] = kOut; // margin of a closed box
-                known_[c / 64] |= bit;
-                continue;
+        for (std::size_t w = 0, n = 0; w < needed.size(); ++w) {
+            std::uint64_t known = 0, insideRow = 0;
+            for (std::uint64_t bits = needed[w]; bits != 0; bits &= bits - 1, ++n) {
+                const auto c = std::size_t(evaluated_[n]);
+                const double v = out_[n];
+                values_[c] = v;
+                const std::uint64_t bit = std::uint64_t(1) << (c % 64);
+                if (!allInBox_ && !cornerInBox(block, int(c))) {
+                    known |= bit; // margin of a closed box: out
+                    continue;
+                }
+                const bool defined = !std::isnan(v), in = inside(v);
+                known |= bit & (std::uint64_t(0) - std::uint64_t(defined));
+                insideRow |= bit & (std::uint64_t(0) - std::uint64_t(in));
+                if (!defined) {
+                    if (!seen.sawNaN) seen.nanPoint = {cornerX_[n], cornerY_[n], cornerZ_[n]};
+                    seen.sawNaN = true;
+                    continue;
+                }
+                if (v > maxValue) {
+                    maxValue = v;
+                    maxAt = n;
+                }
+                const double size = std::abs(v);
+                maxAbs = size < std::numeric_limits<double>::infinity() ? std::max(maxAbs, size)
+                                                                        : maxAbs;
             }
-            const bool defined = !std::isnan(v), in = inside(v);
-            states_[c] = std::uint8_t(defined ? unsigned(in) : unsigned(kUndefined));
-            known_[c / 64] |= bit & (std::uint64_t(0) - std::uint64_t(defined));
-            insideBits_[c / 64] |= bit & (std::uint64_t(0) - std::uint64_t(in));
-            if (!defined) {
-                if (!seen.sawNaN) seen.nanPoint = {cornerX_[n], cornerY_[n], cornerZ_[n]};
-                seen.sawNaN = true;
-                continue;
-            }
-            if (v > maxValue) {
-                maxValue = v;
-                maxAt = n;
-            }
-            const double size = std::abs(v);
-            maxAbs =
-                size < std::numeric_limits<double>::infinity() ? std::max(maxAbs, size) : maxAbs;
+            known_[w] = known;
+            insideBits_[w] = insideRow;
         }
         seen.maxAbs = maxAbs;
         if (maxAt != count) {
@@ -937,7 +932,7 @@ class Contourer {
             const Crossing& x = crossings_[n];
             const int axis = slot / kCorners, c = slot % kCorners;
             // Outward: along the edge from its inside corner to its outside one.
-            const bool lowerIn = states_[std::size_t(c)] == kIn;
+            const bool lowerIn = isInside(c);
             const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
             const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
             const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
@@ -1039,8 +1034,7 @@ class Contourer {
                 const int s0[3] = {corner[0] & ~1, corner[1] & ~1, corner[2] & ~1};
                 if ((keptSubs >> subBlockIndex(s0) & 1u) && base[0] + corner[0] < grid_.cells[0] &&
                     base[1] + corner[1] < grid_.cells[1] && base[2] + corner[2] < grid_.cells[2])
-                    block.lowerFaceEdges.push_back(
-                        packLowerFaceEdge(c, axis, states_[std::size_t(c)] == kIn));
+                    block.lowerFaceEdges.push_back(packLowerFaceEdge(c, axis, isInside(c)));
             } else if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[3] >= 0) {
                 interiorCrossings_.push_back(n);
             }
@@ -1056,7 +1050,7 @@ class Contourer {
             static constexpr int kOrder[4] = {3, 2, 0, 1};
             for (std::size_t q = 0; q < 4; ++q)
                 ids[q] = qefs_[aroundSlots_[n][std::size_t(kOrder[q])]].vertex;
-            if (states_[std::size_t(c)] != kIn) std::swap(ids[1], ids[3]);
+            if (!isInside(c)) std::swap(ids[1], ids[3]);
             std::array<const Vec3f*, 4> pos{};
             for (std::size_t q = 0; q < 4; ++q)
                 pos[q] = &block.positions[ids[q]];
@@ -1175,17 +1169,21 @@ class Contourer {
     std::array<int, kCorners> evaluated_{};
     std::array<double, kCorners> cornerX_{}, cornerY_{}, cornerZ_{};
     std::vector<Crossing> crossings_; // of found_'s edges, in its order
-    // Of the block being sampled: its corners (kIn, kOut, kUndefined or
-    // kUnknown) and the 2x2x2-cell sub-blocks that may hold surface.
-    std::array<std::uint8_t, kCorners> states_{};
+    // Of the block being sampled: the 2x2x2-cell sub-blocks that may hold
+    // surface.
     std::vector<std::uint8_t> kept_;
     std::vector<PendingCrossing> pending_;
     // Edges through a closed box's face, cut there, and whether b is the face.
     std::vector<std::pair<PendingCrossing, bool>> throughFace_;
     std::array<double, kCorners> values_{}; // of the block being sampled (where evaluated)
     bool allInBox_ = true;                  // every corner of that block is in the domain box
-    CornerBits known_{};                    // the block's corners evaluated and defined (bit c)
-    CornerBits insideBits_{};               // those inside
+    // A corner of the block being sampled is in the solid, out of it, or
+    // where f is undefined (NaN); with a closed boundary the margin corners
+    // outside the domain box are out. Corners the intervals showed to be far
+    // from the surface are never evaluated, and no crossing touches them.
+    CornerBits known_{};      // evaluated and defined, or margin (bit c)
+    CornerBits insideBits_{}; // of those, inside
+    bool isInside(int c) const { return insideBits_[std::size_t(c) / 64] >> (c % 64) & 1u; }
     std::vector<int> found_; // the block's sign-changing edges, by slot, in increasing order
     std::vector<Vec3> crossingAt_, gradientAt_;
     std::vector<std::size_t> stragglers_;  // pending_ entries refined further
