@@ -10,6 +10,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <mutex>
 #include <optional>
@@ -194,24 +195,6 @@ unsigned twoBits(const CornerBits& row, int c) {
     if (s == 63 && w + 1 < row.size()) bits |= row[w + 1] << 1;
     return unsigned(bits & 3u);
 }
-
-// A set of small indices, cleared per block and read back in increasing
-// order (which replaces sorting the lists of a block's crossings and cells).
-template <std::size_t N>
-class IndexSet {
-  public:
-    void clear() { words_.fill(0); }
-    bool contains(std::size_t i) const { return words_[i / 64] >> (i % 64) & 1u; }
-    void insert(std::size_t i) { words_[i / 64] |= std::uint64_t(1) << (i % 64); }
-    void appendTo(std::vector<int>& out) const {
-        for (std::size_t w = 0; w < words_.size(); ++w)
-            for (std::uint64_t bits = words_[w]; bits != 0; bits &= bits - 1)
-                out.push_back(int(w * 64 + std::size_t(std::countr_zero(bits))));
-    }
-
-  private:
-    std::array<std::uint64_t, (N + 63) / 64> words_{};
-};
 
 struct Crossing {
     Vec3 point{};
@@ -867,8 +850,6 @@ class Contourer {
         const long limit[3] = {std::min<long>(kB, grid_.cells[0] - base[0]),
                                std::min<long>(kB, grid_.cells[1] - base[1]),
                                std::min<long>(kB, grid_.cells[2] - base[2])};
-        qefCount_ = 0;
-        cellsTouched_.clear();
         around_.assign(found_.size(), {-1, -1, -1, -1});
         normalAt_.clear();
         normalOf_.clear();
@@ -886,10 +867,11 @@ class Contourer {
                     e[std::size_t(a)][std::size_t(q)] = std::int8_t(cubeEdge(a, q & 1, q >> 1));
             return e;
         }();
-        // First which QEF each crossing adds to, then the adding: one pass
-        // doing both waited on the chain from a cell to its piece, its entry
-        // and its sums at every step.
-        aroundSlots_.resize(found_.size());
+        // First which (cell, piece) each crossing adds to, marked in a byte
+        // each (a store, no read: a bit set's read-modify-write made each
+        // step wait on the one before), then their QEFs numbered in index
+        // order, then the adding: one pass doing all waited on the chain
+        // from a cell to its piece, its entry and its sums at every step.
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int slot = found_[n];
             const int axis = slot / kCorners, c = slot % kCorners;
@@ -908,22 +890,33 @@ class Contourer {
                 const int index =
                     cell * kPieces + pieceOf(pieces, configs_[std::size_t(cell)],
                                              kEdge[std::size_t(axis)][std::size_t(q)]);
-                // A new entry or the one it has, without a branch on which
-                // (a quarter are new, in no pattern the CPU could predict).
-                const bool isNew = !cellsTouched_.contains(std::size_t(index));
-                cellsTouched_.insert(std::size_t(index));
-                const auto entry = isNew ? std::uint16_t(qefCount_) : qefSlot_[std::size_t(index)];
-                qefSlot_[std::size_t(index)] = entry;
-                qefCount_ += std::size_t(isNew);
+                touchedMark_[std::size_t(index)] = 1;
                 around_[n][std::size_t(q)] = index;
-                aroundSlots_[n][std::size_t(q)] = entry;
             }
         }
-        if (qefs_.size() < qefCount_) qefs_.resize(qefCount_);
+        // The marked entries in increasing order (eight marks a word), each
+        // QEF numbered by its rank, the marks cleared for the next block.
+        touched_.clear();
+        for (std::size_t i = 0; i < touchedMark_.size(); i += 8) {
+            std::uint64_t marks = 0;
+            std::memcpy(&marks, &touchedMark_[i], sizeof marks);
+            for (; marks != 0; marks &= marks - 1) {
+                const std::size_t index = i + std::size_t(std::countr_zero(marks)) / 8;
+                qefSlot_[index] = std::uint16_t(touched_.size());
+                touched_.push_back(int(index));
+                touchedMark_[index] = 0;
+            }
+        }
+        const std::size_t qefCount = touched_.size();
+        aroundSlots_.resize(found_.size());
+        for (std::size_t n = 0; n < found_.size(); ++n)
+            for (std::size_t q = 0; q < 4; ++q)
+                if (around_[n][q] >= 0) aroundSlots_[n][q] = qefSlot_[std::size_t(around_[n][q])];
+        if (qefs_.size() < qefCount) qefs_.resize(qefCount);
         // Every QEF's sums about the block's first corner: a crossing's
         // share is then the same for its four cells, made once.
         const Vec3 origin = grid_.corner(base[0], base[1], base[2]);
-        for (std::size_t k = 0; k < qefCount_; ++k)
+        for (std::size_t k = 0; k < qefCount; ++k)
             qefs_[k].reset(origin);
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const std::array<int, 4>& cells = around_[n];
@@ -944,13 +937,12 @@ class Contourer {
                     cq.normalSum[k] += signedNormal[k];
             }
         }
-        touched_.clear();
-        cellsTouched_.appendTo(touched_);
         block.positions.reserve(touched_.size()); // one vertex per entry: no growth slack
         block.cells.reserve(touched_.size());     // at most one cell per entry
         block.normals.reserve(touched_.size());
-        for (int index : touched_) {
-            CellQef& cq = qefs_[qefSlot_[std::size_t(index)]];
+        for (std::size_t entry = 0; entry < touched_.size(); ++entry) {
+            const int index = touched_[entry];
+            CellQef& cq = qefs_[entry];
             const int cell = index / kPieces;
             const int ci = cell % kB, cj = (cell / kB) % kB, ck = cell / (kB * kB);
             const Vec3 lo = grid_.corner(base[0] + ci, base[1] + cj, base[2] + ck);
@@ -1208,18 +1200,17 @@ class Contourer {
             normalSum = {0.0, 0.0, 0.0};
         }
     };
-    // The QEFs of the block's touched cells and pieces, in the order first
-    // touched, and where each (cell, piece) has its own (valid if touched):
-    // kept dense, as the few hundred a block touches fit in the first-level
-    // cache where one entry for each of the 2 048 (cell, piece) pairs did not.
-    // Entries past qefCount_ are left over from earlier blocks.
+    // The QEFs of the block's touched cells and pieces, in touched_'s order,
+    // and where each (cell, piece) has its own (valid if touched): kept
+    // dense, as the few hundred a block touches fit in the first-level cache
+    // where one entry for each of the 2 048 (cell, piece) pairs did not.
+    // Entries past touched_.size() are left over from earlier blocks.
     std::vector<CellQef> qefs_;
-    std::size_t qefCount_ = 0;
     std::array<std::uint16_t, kCells * kPieces> qefSlot_{};
-    IndexSet<kCells * kPieces> cellsTouched_;
+    std::array<std::uint8_t, kCells * kPieces> touchedMark_{}; // all 0 between blocks
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
-    std::vector<int> touched_;                   // cellsTouched_ in increasing order
-    std::vector<std::array<int, 4>> around_;     // per found_ crossing: its cells' QEF entries
+    std::vector<int> touched_; // the (cell, piece) entries touched, in increasing order
+    std::vector<std::array<int, 4>> around_; // per found_ crossing: its cells' QEF entries
     std::vector<std::array<std::uint16_t, 4>> aroundSlots_; // and where those are in qefs_
     std::vector<std::size_t> interiorCrossings_; // those of found_ makeInteriorQuads serves
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
