@@ -250,7 +250,7 @@ struct Block {
     // neighbouring blocks' vertices (global ids, made by the connect phase).
     std::vector<Triangle> triangles;
     // Those edges, found while sampling, in the order the connect phase
-    // makes their quads (see lowerFaceEdge).
+    // makes their quads (see packLowerFaceEdge).
     std::vector<std::uint32_t> lowerFaceEdges;
 
     // Which cells have an entry in `cells` (bit c % 64 of word c / 64), and
@@ -513,9 +513,10 @@ class Contourer {
         }
     }
 
-    // Phase 2: the quads around every sign-changing edge this block owns.
-    // Returns false (with `missing` filled) when a neighbouring cell has no
-    // vertex yet.
+    // Phase 2: the quads around every sign-changing edge this block owns
+    // that the sampling pass could not make (those on its lower faces).
+    // Fills `missing` with the blocks of neighbouring cells that were never
+    // sampled (their quads are left for the next round).
     void connectBlock(Block& block, std::vector<BlockCoord>& missing) {
         block.triangles.clear();
         block.triangles.reserve(2 * block.lowerFaceEdges.size());
@@ -542,7 +543,8 @@ class Contourer {
             const auto [local, axis, lowerIn] = lowerFaceEdge(edge);
             quad(block, axis, local.data(), lowerIn, missing);
         }
-        std::vector<std::uint32_t>().swap(block.lowerFaceEdges); // done with
+        // (The list stays: a later round, after sampling a block an interval
+        // wrongly ruled out, connects every block again.)
     }
 
     // The blocks, sorted by key, shared by every thread's contourer (read
@@ -897,6 +899,7 @@ class Contourer {
         // The marked entries in increasing order (eight marks a word), each
         // QEF numbered by its rank, the marks cleared for the next block.
         touched_.clear();
+        static_assert(std::endian::native == std::endian::little, "mark i of a word is byte i");
         for (std::size_t i = 0; i < touchedMark_.size(); i += 8) {
             std::uint64_t marks = 0;
             std::memcpy(&marks, &touchedMark_[i], sizeof marks);

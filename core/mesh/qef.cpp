@@ -48,7 +48,9 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
         Eigen::Vector3d v = nsum / len;
         const double r0 = v.dot(ata * v);
         const double q = (trace - r0) / r0;
-        if (r0 > 0 && q < relativeCutoff) {
+        // (Cutoffs of the mesher's size only: near 1 the iteration would
+        // converge too slowly to trust 40 steps.)
+        if (r0 > 0 && q < relativeCutoff && relativeCutoff <= 0.25) {
             // q^steps below 1e-16 (the start's error is under 1; counted
             // by multiplying: a logarithm cost as much as the steps),
             // rescaled every few steps (lambda1 is at most the count of
