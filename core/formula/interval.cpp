@@ -21,7 +21,14 @@ constexpr double kPi = std::numbers::pi;
 // finite numbers away from zero a step is one unit of the bit pattern —
 // libm's nextafter is a slow call, and the mesher widens millions of
 // intervals; the result is the same bit for bit.
-double step(double x, int ulps, int dir) {
+// (Inlined where the intervals are made — the mesher makes millions, and the
+// call cost as much as the step — with the rare cases out of line.)
+[[gnu::noinline]] double stepByNextafter(double x, int ulps, int dir) {
+    for (int i = 0; i < ulps; ++i)
+        x = std::nextafter(x, dir > 0 ? kInf : -kInf);
+    return x;
+}
+[[gnu::always_inline]] inline double step(double x, int ulps, int dir) {
     const auto bits = std::bit_cast<std::uint64_t>(x);
     const std::uint64_t magnitude = bits & 0x7FFF'FFFF'FFFF'FFFFull;
     if (std::isfinite(x) && magnitude > std::uint64_t(ulps)) {
@@ -30,20 +37,18 @@ double step(double x, int ulps, int dir) {
             std::bit_cast<double>(away ? bits + std::uint64_t(ulps) : bits - std::uint64_t(ulps));
         return std::isnan(r) ? (x > 0 ? kInf : -kInf) : r; // past the largest double: infinity
     }
-    for (int i = 0; i < ulps; ++i)
-        x = std::nextafter(x, dir > 0 ? kInf : -kInf);
-    return x;
+    return stepByNextafter(x, ulps, dir);
 }
-double down(double x, int ulps = 2) {
+[[gnu::always_inline]] inline double down(double x, int ulps = 2) {
     return step(x, ulps, -1);
 }
-double up(double x, int ulps = 2) {
+[[gnu::always_inline]] inline double up(double x, int ulps = 2) {
     return step(x, ulps, 1);
 }
 
 // Build a result from computed endpoints: widen outward, and if an endpoint
 // came out NaN (inf - inf, 0 * inf …) fall back to everything.
-Interval make(double lo, double hi, bool nan, int ulps = 2) {
+[[gnu::always_inline]] inline Interval make(double lo, double hi, bool nan, int ulps = 2) {
     if (std::isnan(lo) || std::isnan(hi)) return Interval::entire(true);
     return {down(lo, ulps), up(hi, ulps), nan};
 }
