@@ -277,6 +277,17 @@ struct Block {
 };
 
 // Facts gathered while sampling, for the warnings.
+// What sampling saw, for the warnings. The threads take blocks in no fixed
+// order, so each point is chosen by a rule that does not depend on which
+// thread saw what first: of equal candidates, the one first in z, then y,
+// then x (within a block that is the first in corner order). Otherwise a
+// warning could name a different point from one run to the next (the
+// maximum of f = -y^2 is every point with y = 0).
+bool zyxBefore(const Vec3& a, const Vec3& b) {
+    if (a[2] != b[2]) return a[2] < b[2];
+    if (a[1] != b[1]) return a[1] < b[1];
+    return a[0] < b[0];
+}
 struct Observations {
     bool sawNaN = false;
     Vec3 nanPoint{};
@@ -284,16 +295,23 @@ struct Observations {
     Vec3 maxPoint{};
     double maxAbs = 0;
     std::optional<Vec3> undefinedCandidate; // a sub-block f may be undefined in
+    void offerNaN(const Vec3& p) {
+        if (!sawNaN || zyxBefore(p, nanPoint)) nanPoint = p;
+        sawNaN = true;
+    }
+    void offerMax(double v, const Vec3& p) {
+        if (v > maxValue || (v == maxValue && zyxBefore(p, maxPoint))) {
+            maxValue = v;
+            maxPoint = p;
+        }
+    }
+    void offerUndefinedCandidate(const Vec3& p) {
+        if (!undefinedCandidate || zyxBefore(p, *undefinedCandidate)) undefinedCandidate = p;
+    }
     void merge(const Observations& o) {
-        if (!undefinedCandidate) undefinedCandidate = o.undefinedCandidate;
-        if (o.sawNaN && !sawNaN) {
-            sawNaN = true;
-            nanPoint = o.nanPoint;
-        }
-        if (o.maxValue > maxValue) {
-            maxValue = o.maxValue;
-            maxPoint = o.maxPoint;
-        }
+        if (o.undefinedCandidate) offerUndefinedCandidate(*o.undefinedCandidate);
+        if (o.sawNaN) offerNaN(o.nanPoint);
+        if (o.maxValue > -std::numeric_limits<double>::infinity()) offerMax(o.maxValue, o.maxPoint);
         maxAbs = std::max(maxAbs, o.maxAbs);
     }
 };
@@ -429,9 +447,10 @@ class Contourer {
         // closed box: out) and inside, a row of bits at a time in registers;
         // without branches on the values where it can (half the corners near
         // the surface are inside: a branch on it is mispredicted), and with
-        // the running maxima in registers, not in `seen`.
-        double maxValue = seen.maxValue, maxAbs = seen.maxAbs;
-        std::size_t maxAt = count; // none
+        // the running maxima in registers, not in `seen` (the block's first
+        // highest corner and first undefined one, in corner order).
+        double maxValue = -std::numeric_limits<double>::infinity(), maxAbs = seen.maxAbs;
+        std::size_t maxAt = count, nanAt = count; // none
         for (std::size_t w = 0, n = 0; w < needed.size(); ++w) {
             std::uint64_t known = 0, insideRow = 0;
             for (std::uint64_t bits = needed[w]; bits != 0; bits &= bits - 1, ++n) {
@@ -447,8 +466,7 @@ class Contourer {
                 known |= bit & (std::uint64_t(0) - std::uint64_t(defined));
                 insideRow |= bit & (std::uint64_t(0) - std::uint64_t(in));
                 if (!defined) {
-                    if (!seen.sawNaN) seen.nanPoint = {cornerX_[n], cornerY_[n], cornerZ_[n]};
-                    seen.sawNaN = true;
+                    nanAt = std::min(nanAt, n);
                     continue;
                 }
                 if (v > maxValue) {
@@ -463,10 +481,9 @@ class Contourer {
             insideBits_[w] = insideRow;
         }
         seen.maxAbs = maxAbs;
-        if (maxAt != count) {
-            seen.maxValue = maxValue;
-            seen.maxPoint = {cornerX_[maxAt], cornerY_[maxAt], cornerZ_[maxAt]};
-        }
+        if (maxAt != count)
+            seen.offerMax(maxValue, {cornerX_[maxAt], cornerY_[maxAt], cornerZ_[maxAt]});
+        if (nanAt != count) seen.offerNaN({cornerX_[nanAt], cornerY_[nanAt], cornerZ_[nanAt]});
         // Only sub-blocks with corners on both sides hold sign-changing edges.
         const auto& subCorners = subBlockCorners();
         std::erase_if(kept_, [&](std::uint8_t sub) {
@@ -584,9 +601,9 @@ class Contourer {
             const formula::Interval r = sampler.interval(lo, hi);
             if (!mayCross(r)) {
                 // Ruled out where f may be undefined: a place to look for NaN.
-                if (r.nan && !seen.undefinedCandidate)
-                    seen.undefinedCandidate =
-                        Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
+                if (r.nan)
+                    seen.offerUndefinedCandidate(
+                        Vec3{(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2});
                 continue;
             }
             // Its sub-blocks with a cell in the grid (an octant at the grid's

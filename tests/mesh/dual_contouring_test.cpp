@@ -131,6 +131,30 @@ TEST(DualContouring, SameOutputWhateverTheNumberOfThreads) {
     expectWatertight(a.mesh); // a gyroid closed by the box
 }
 
+// The warnings too: where many corners tie for the highest value (f = -y^2
+// touches zero on the whole plane y = 0) or are undefined, the point a
+// warning names must not depend on which thread sampled which block first
+// (it did: the simplified-tape test below failed once in a sanitizer run).
+TEST(DualContouring, TheWarningsNameTheSamePointWhateverTheThreads) {
+    for (const char* src : {"sin(max(x - 10, 0)) - y*y", "-(y*y)", "sqrt(x) + 0.3 - y*y - z*z"}) {
+        const ImplicitField f = field(src);
+        MeshOptions one;
+        one.resolution = 40;
+        one.threads = 1;
+        const MeshResult reference = meshImplicit(f, one);
+        ASSERT_TRUE(reference.ok()) << src;
+        ASSERT_FALSE(reference.warnings.empty()) << src;
+        for (int threads : {2, 3, 4, 7})
+            for (int run = 0; run < 5; ++run) {
+                MeshOptions many = one;
+                many.threads = threads;
+                const MeshResult r = meshImplicit(f, many);
+                ASSERT_TRUE(r.ok()) << src;
+                EXPECT_EQ(r.warnings, reference.warnings) << src << ", " << threads << " threads";
+            }
+    }
+}
+
 // Each block samples the formula simplified for it (formula/tape_simplify.h):
 // the mesh is the full formula's, bit for bit — set operations, a select, an
 // undefined region, an open box.
