@@ -276,7 +276,6 @@ struct Block {
     }
 };
 
-// Facts gathered while sampling, for the warnings.
 // What sampling saw, for the warnings. The threads take blocks in no fixed
 // order, so each point is chosen by a rule that does not depend on which
 // thread saw what first: of equal candidates, the one first in z, then y,
@@ -873,7 +872,6 @@ class Contourer {
         normalAt_.clear();
         normalOf_.clear();
         normalSums_.clear();
-        const auto& pieces = pieceTable();
         // Cell q around an edge along `axis` lies at -(q & 1) along u and
         // -(q >> 1) along v from the edge's first corner: its index from the
         // corner's, and the edge as that cell numbers it.
@@ -907,7 +905,7 @@ class Contourer {
                 if (!inU[q & 1] || !inV[q >> 1]) continue;
                 const int cell = own - (q & 1) * kCellStride[u] - (q >> 1) * kCellStride[v];
                 const int index =
-                    cell * kPieces + pieceOf(pieces, configs_[std::size_t(cell)],
+                    cell * kPieces + pieceOf(pieces_, configs_[std::size_t(cell)],
                                              kEdge[std::size_t(axis)][std::size_t(q)]);
                 touchedMark_[std::size_t(index)] = 1;
                 around_[n][std::size_t(q)] = index;
@@ -928,10 +926,9 @@ class Contourer {
             }
         }
         const std::size_t qefCount = touched_.size();
-        aroundSlots_.resize(found_.size());
-        for (std::size_t n = 0; n < found_.size(); ++n)
-            for (std::size_t q = 0; q < 4; ++q)
-                if (around_[n][q] >= 0) aroundSlots_[n][q] = qefSlot_[std::size_t(around_[n][q])];
+        for (std::array<int, 4>& cells : around_) // entries -> their QEFs' places
+            for (int& cell : cells)
+                if (cell >= 0) cell = qefSlot_[std::size_t(cell)];
         if (qefs_.size() < qefCount) qefs_.resize(qefCount);
         // Every QEF's sums about the block's first corner: a crossing's
         // share is then the same for its four cells, made once.
@@ -951,7 +948,7 @@ class Contourer {
             const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
             for (std::size_t q = 0; q < 4; ++q) {
                 if (cells[q] < 0) continue;
-                CellQef& cq = qefs_[aroundSlots_[n][q]];
+                CellQef& cq = qefs_[std::size_t(cells[q])];
                 cq.qef.add(plane);
                 for (std::size_t k = 0; k < 3; ++k)
                     cq.normalSum[k] += signedNormal[k];
@@ -1017,13 +1014,14 @@ class Contourer {
             block.before[w] = std::uint16_t(count);
             count += std::size_t(std::popcount(block.occupied[w]));
         }
-        makeInteriorQuads(block);
+        makeInteriorQuads(block, limit);
     }
 
     // The quads around the crossings this block owns whose four cells all lie
     // in it: most of them, made here from what buildVertices knows, without
     // looking anything up (the connect phase does the rest).
-    void makeInteriorQuads(Block& block) {
+    // (`limit`: the block's cells along each axis, as buildVertices has them.)
+    void makeInteriorQuads(Block& block, const long limit[3]) {
         // Not owned by the next block, no cell of the one before around it,
         // and not at the border of the grid (left open there).
         // Those on a lower face go to the connect phase: the ones a walk of
@@ -1032,8 +1030,6 @@ class Contourer {
         std::uint64_t keptSubs = 0;
         for (std::uint8_t sub : kept_)
             keptSubs |= std::uint64_t(1) << sub;
-        const long base[3] = {long(block.coord[0]) * kB, long(block.coord[1]) * kB,
-                              long(block.coord[2]) * kB};
         interiorCrossings_.clear();
         block.lowerFaceEdges.clear();
         for (std::size_t n = 0; n < found_.size(); ++n) {
@@ -1044,8 +1040,8 @@ class Contourer {
             if (corner[std::size_t((axis + 1) % 3)] == 0 ||
                 corner[std::size_t((axis + 2) % 3)] == 0) {
                 const int s0[3] = {corner[0] & ~1, corner[1] & ~1, corner[2] & ~1};
-                if ((keptSubs >> subBlockIndex(s0) & 1u) && base[0] + corner[0] < grid_.cells[0] &&
-                    base[1] + corner[1] < grid_.cells[1] && base[2] + corner[2] < grid_.cells[2])
+                if ((keptSubs >> subBlockIndex(s0) & 1u) && corner[0] < limit[0] &&
+                    corner[1] < limit[1] && corner[2] < limit[2])
                     block.lowerFaceEdges.push_back(packLowerFaceEdge(c, axis, isInside(c)));
             } else if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[3] >= 0) {
                 interiorCrossings_.push_back(n);
@@ -1061,7 +1057,7 @@ class Contourer {
             std::array<std::uint32_t, 4> ids{};
             static constexpr int kOrder[4] = {3, 2, 0, 1};
             for (std::size_t q = 0; q < 4; ++q)
-                ids[q] = qefs_[aroundSlots_[n][std::size_t(kOrder[q])]].vertex;
+                ids[q] = qefs_[std::size_t(around_[n][std::size_t(kOrder[q])])].vertex;
             if (!isInside(c)) std::swap(ids[1], ids[3]);
             std::array<const Vec3f*, 4> pos{};
             for (std::size_t q = 0; q < 4; ++q)
@@ -1230,8 +1226,10 @@ class Contourer {
     std::array<std::uint8_t, kCells * kPieces> touchedMark_{}; // all 0 between blocks
     std::array<std::int16_t, kCells> configs_{}; // of the block being sampled, -1 unknown
     std::vector<int> touched_; // the (cell, piece) entries touched, in increasing order
-    std::vector<std::array<int, 4>> around_; // per found_ crossing: its cells' QEF entries
-    std::vector<std::array<std::uint16_t, 4>> aroundSlots_; // and where those are in qefs_
+    // Per found_ crossing, its (up to) four cells: first their (cell, piece)
+    // entries, then (buildVertices) where those entries' QEFs are in qefs_;
+    // -1 where the cell is not in the block.
+    std::vector<std::array<int, 4>> around_;
     std::vector<std::size_t> interiorCrossings_; // those of found_ makeInteriorQuads serves
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
     std::array<const Block*, 27> neighbours_{};
