@@ -22,18 +22,22 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
     // i.e. A^T A x = A^T b - A^T A c.
     const Eigen::Vector3d c(sumPoints(0) / count(), sumPoints(1) / count(), sumPoints(2) / count());
     const Eigen::Vector3d rhs = Eigen::Vector3d(sumAtb(0), sumAtb(1), sumAtb(2)) - ata * c;
+    // The answer is the mass point moved by x.
+    auto movedBy = [&](const Eigen::Vector3d& x) -> std::array<double, 3> {
+        return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
+    };
     // Nearly parallel unit normals (a smooth patch, most cells): A is about
     // rank one along their mean, the other eigenvalues fall under any sensible
     // cutoff, and the truncated solution moves along the mean normal only —
     // no eigen-decomposition needed.
     const Eigen::Vector3d nsum(sumNormals(0), sumNormals(1), sumNormals(2));
-    const double spread = nsum.norm() / count(); // 1 when all normals agree
+    const double nsumLength = nsum.norm();
+    const double spread = nsumLength / count(); // 1 when all normals agree
     if (relativeCutoff >= 0.05 && spread > 0.9995) {
-        const Eigen::Vector3d n = nsum / nsum.norm();
+        const Eigen::Vector3d n = nsum / nsumLength;
         const double along = n.dot(ata * n);
-        const Eigen::Vector3d x =
-            along > 0 ? Eigen::Vector3d(n * (n.dot(rhs) / along)) : Eigen::Vector3d::Zero();
-        return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
+        return movedBy(along > 0 ? Eigen::Vector3d(n * (n.dot(rhs) / along))
+                                 : Eigen::Vector3d::Zero());
     }
     // One direction dominant (a curved patch: most cells at low
     // resolutions). The Rayleigh quotient r of the mean normal n is at most
@@ -44,8 +48,8 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
     // a few multiplications where the closed form takes an atan2, a sine and
     // a cosine.
     const double trace = ata(0, 0) + ata(1, 1) + ata(2, 2);
-    if (const double len = nsum.norm(); len > 0) {
-        Eigen::Vector3d v = nsum / len;
+    if (nsumLength > 0) {
+        Eigen::Vector3d v = nsum / nsumLength;
         const double r0 = v.dot(ata * v);
         const double q = (trace - r0) / r0;
         // (Cutoffs of the mesher's size only: near 1 the iteration would
@@ -63,11 +67,7 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
                 if (step % 4 == 3 || step + 1 == steps) v /= v.norm();
             }
             const double r = v.dot(ata * v);
-            if (r > 0 && std::isfinite(r)) {
-                const Eigen::Vector3d x = v * (v.dot(rhs) / r);
-                return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1],
-                        origin_[2] + c[2] + x[2]};
-            }
+            if (r > 0 && std::isfinite(r)) return movedBy(v * (v.dot(rhs) / r));
         }
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
@@ -81,7 +81,7 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
             const Eigen::Vector3d v = eig.eigenvectors().col(k);
             x += v * (v.dot(rhs) / values[k]);
         }
-    return {origin_[0] + c[0] + x[0], origin_[1] + c[1] + x[1], origin_[2] + c[2] + x[2]};
+    return movedBy(x);
 }
 
 std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
