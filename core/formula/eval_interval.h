@@ -29,12 +29,24 @@ class IntervalEvaluator {
     void evaluateAll(const Box& box, Interval* outputs);
 
   private:
+    // An instruction with its operands as registers: constants are loaded
+    // once, into registers past the tape's own, so the loop never builds
+    // an interval from a number (the tape's instructions, one for one).
+    struct Step {
+        Op op;
+        std::int32_t out, a, b, c;
+        double imm0, imm1;
+    };
+
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
+    std::vector<Step> steps_;
+    std::vector<std::int32_t> outputs_; // the register each output is in
     std::vector<Interval> regs_;
     void load(const Box& box);
-    void run(const Box& box);
-    Interval firstOutput() const; // after a walk
+    template <bool kRecord>
+    void run(std::vector<Keep>* keep);
+    Interval output(std::size_t i) const { return regs_[std::size_t(outputs_[i])]; }
 };
 
 } // namespace fl::formula

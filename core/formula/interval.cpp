@@ -1,5 +1,7 @@
 #include "interval.h"
 
+#include "interval_ops.h"
+
 #include "noise.h"
 #include "rfunctions.h"
 #include "scalar_ops.h"
@@ -14,49 +16,14 @@ namespace fl::formula {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using iv::down;
+using iv::exact;
+using iv::hasInf;
+using iv::kInf;
+using iv::make;
+using iv::nonNegative;
+using iv::up;
 constexpr double kPi = std::numbers::pi;
-
-// `ulps` steps of std::nextafter towards +inf (dir 1) or -inf (dir -1). For
-// finite numbers away from zero a step is one unit of the bit pattern —
-// libm's nextafter is a slow call, and the mesher widens millions of
-// intervals; the result is the same bit for bit.
-// (Inlined where the intervals are made — the mesher makes millions, and the
-// call cost as much as the step — with the rare cases out of line.)
-[[gnu::noinline]] double stepByNextafter(double x, int ulps, int dir) {
-    for (int i = 0; i < ulps; ++i)
-        x = std::nextafter(x, dir > 0 ? kInf : -kInf);
-    return x;
-}
-[[gnu::always_inline]] inline double step(double x, int ulps, int dir) {
-    const auto bits = std::bit_cast<std::uint64_t>(x);
-    const std::uint64_t magnitude = bits & 0x7FFF'FFFF'FFFF'FFFFull;
-    if (std::isfinite(x) && magnitude > std::uint64_t(ulps)) {
-        const bool away = (x > 0) == (dir > 0); // moving away from zero grows the magnitude
-        const double r =
-            std::bit_cast<double>(away ? bits + std::uint64_t(ulps) : bits - std::uint64_t(ulps));
-        return std::isnan(r) ? (x > 0 ? kInf : -kInf) : r; // past the largest double: infinity
-    }
-    return stepByNextafter(x, ulps, dir);
-}
-[[gnu::always_inline]] inline double down(double x, int ulps = 2) {
-    return step(x, ulps, -1);
-}
-[[gnu::always_inline]] inline double up(double x, int ulps = 2) {
-    return step(x, ulps, 1);
-}
-
-// Build a result from computed endpoints: widen outward, and if an endpoint
-// came out NaN (inf - inf, 0 * inf …) fall back to everything.
-[[gnu::always_inline]] inline Interval make(double lo, double hi, bool nan, int ulps = 2) {
-    if (std::isnan(lo) || std::isnan(hi)) return Interval::entire(true);
-    return {down(lo, ulps), up(hi, ulps), nan};
-}
-// Endpoints that are exact (min, max, floor, negation): no widening.
-Interval exact(double lo, double hi, bool nan) {
-    if (std::isnan(lo) || std::isnan(hi)) return Interval::entire(true);
-    return {lo, hi, nan};
-}
 
 // Endpoints come from the same maths routines the point evaluators use.
 double V(vmath::Unary f, double x) {
@@ -78,42 +45,6 @@ Interval fromTruth(int t) {
     if (t == 1) return {1.0, 1.0, false};
     if (t == 0) return {0.0, 0.0, false};
     return {0.0, 1.0, false};
-}
-
-// For results that are never negative (squares, even powers, norms) the
-// outward widening must not push the lower end below 0.
-Interval nonNegative(Interval r) {
-    if (!r.empty()) r.lo = std::max(r.lo, 0.0);
-    return r;
-}
-
-// A sum or difference that rounds to exactly 0 was exact (results below the
-// smallest subnormal cannot round to 0), so a 0 endpoint needs no widening.
-Interval makeSum(double lo, double hi, bool nan) {
-    Interval r = make(lo, hi, nan);
-    if (lo == 0.0) r.lo = 0.0;
-    if (hi == 0.0) r.hi = 0.0;
-    return r;
-}
-
-Interval square(const Interval& a) {
-    double l2 = a.lo * a.lo, h2 = a.hi * a.hi;
-    if (a.containsZero()) return nonNegative(make(0.0, std::max(l2, h2), a.nan));
-    return nonNegative(make(std::min(l2, h2), std::max(l2, h2), a.nan));
-}
-
-bool hasInf(const Interval& a) {
-    return std::isinf(a.lo) || std::isinf(a.hi);
-}
-
-Interval mul(const Interval& a, const Interval& b) {
-    double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    for (double v : p)
-        if (std::isnan(v)) return Interval::entire(true);
-    // 0 * inf inside the boxes is NaN even when no corner product is
-    bool zeroTimesInf = (a.containsZero() && hasInf(b)) || (b.containsZero() && hasInf(a));
-    return make(*std::min_element(p, p + 4), *std::max_element(p, p + 4),
-                a.nan || b.nan || zeroTimesInf);
 }
 
 Interval div(const Interval& a, const Interval& b) {
@@ -293,7 +224,7 @@ Interval rfunction(Op op, const Interval& a, const Interval& b, double m, double
     h.lo = std::max(h.lo, 0.0);
     Interval factor = make(std::pow(h.lo, m), std::pow(h.hi, m), false, 4);
     factor.lo = std::max(factor.lo, 0.0);
-    Interval r = mul(base, factor);
+    Interval r = iv::mulValues(base, factor);
     // the scalar form returns exactly 0 whenever the R0 part is 0
     if (base.containsZero()) {
         r.lo = std::min(r.lo, 0.0);
@@ -330,6 +261,12 @@ Interval hull(const Interval& a, const Interval& b) {
 
 namespace iv {
 
+[[gnu::noinline]] double stepByNextafter(double x, int ulps, int dir) {
+    for (int i = 0; i < ulps; ++i)
+        x = std::nextafter(x, dir > 0 ? kInf : -kInf);
+    return x;
+}
+
 Interval unary(Op op, const Interval& in, double imm0) {
     if (in.empty()) {
         if (op == Op::Not) return {1.0, 1.0, false};                 // NaN is false, so !NaN is 1
@@ -339,11 +276,11 @@ Interval unary(Op op, const Interval& in, double imm0) {
     Interval a = in;
     switch (op) {
     case Op::Neg:
-        return exact(-a.hi, -a.lo, a.nan);
+        return neg(a);
     case Op::Abs:
         return absRange(a);
     case Op::Square:
-        return square(a);
+        return iv::square(a);
     case Op::Sqrt:
         if (!clipDomain(a, 0.0, kInf)) return Interval::undefined();
         {
@@ -459,21 +396,19 @@ Interval binary(Op op, const Interval& a, const Interval& b, double imm0, double
     switch (op) {
     // inf - inf inside the boxes is NaN even when the endpoint sums are not
     case Op::Add:
-        return makeSum(a.lo + b.lo, a.hi + b.hi,
-                       nan || (a.hi == kInf && b.lo == -kInf) || (a.lo == -kInf && b.hi == kInf));
+        return add(a, b);
     case Op::Sub:
-        return makeSum(a.lo - b.hi, a.hi - b.lo,
-                       nan || (a.hi == kInf && b.hi == kInf) || (a.lo == -kInf && b.lo == -kInf));
+        return sub(a, b);
     case Op::Mul:
-        return mul(a, b);
+        return mulValues(a, b);
     case Op::Div:
         return div(a, b);
     case Op::Pow:
         return powGeneral(a, b);
     case Op::Min:
-        return exact(std::min(a.lo, b.lo), std::min(a.hi, b.hi), nan);
+        return iv::min(a, b);
     case Op::Max:
-        return exact(std::max(a.lo, b.lo), std::max(a.hi, b.hi), nan);
+        return iv::max(a, b);
     case Op::Atan2:
         return atan2Range(a, b);
     case Op::Hypot: {
