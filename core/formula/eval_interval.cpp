@@ -57,7 +57,9 @@ void IntervalEvaluator::run(std::vector<Keep>* keep) {
         const Step& s = steps_[i];
         const Interval& a = r[s.a];
         const Interval& b = r[s.b];
-        if constexpr (kRecord) (*keep)[i] = decide(s.op, a, b);
+        if constexpr (kRecord) // (decide keeps all of every other operation)
+            if (s.op == Op::Min || s.op == Op::Max || s.op == Op::Select)
+                (*keep)[i] = decide(s.op, a, b);
         Interval v;
         switch (s.op) {
         case Op::Add:
