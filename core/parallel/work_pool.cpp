@@ -26,14 +26,34 @@ WorkPool& WorkPool::shared() {
     return pool;
 }
 
+template <class Ready>
+bool WorkPool::spinUntil(Ready ready) {
+    const auto until = std::chrono::steady_clock::now() + kSpin;
+    for (unsigned i = 1;; ++i) {
+        if (ready()) return true;
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause(); // the core's other thread runs meanwhile
+#endif
+        if (i % 64 == 0 && std::chrono::steady_clock::now() > until) return false;
+    }
+}
+
 void WorkPool::work() {
     std::unique_lock lock(mutex_);
     for (;;) {
+        if (queue_.empty() && !stopping_) {
+            lock.unlock();
+            spinUntil([this] { return queued_.load() != 0 || stopping_.load(); });
+            lock.lock();
+        }
         wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
         if (stopping_) return;
         Job* job = queue_.front();
         const int w = 1 + job->claimed++;
-        if (job->claimed == job->helpers) queue_.pop_front();
+        if (job->claimed == job->helpers) {
+            queue_.pop_front();
+            --queued_;
+        }
         lock.unlock();
         std::exception_ptr error;
         try {
@@ -44,6 +64,7 @@ void WorkPool::work() {
         lock.lock();
         if (error && !job->error) job->error = error;
         ++job->finished;
+        job->finishedNow.store(job->finished);
         done_.notify_all();
     }
 }
@@ -56,6 +77,7 @@ void WorkPool::run(int workers, const std::function<void(int)>& task) {
         {
             std::lock_guard lock(mutex_);
             queue_.push_back(&job);
+            ++queued_;
         }
         if (job.helpers == 1)
             wake_.notify_one();
@@ -72,8 +94,14 @@ void WorkPool::run(int workers, const std::function<void(int)>& task) {
         std::unique_lock lock(mutex_);
         // Helpers no thread has taken yet are not waited for: the work is done.
         if (job.claimed < job.helpers) {
-            std::erase(queue_, &job);
+            queued_ -= int(std::erase(queue_, &job));
             job.helpers = job.claimed;
+        }
+        if (job.finished != job.helpers) {
+            lock.unlock();
+            const int helpers = job.helpers;
+            spinUntil([&] { return job.finishedNow.load() == helpers; });
+            lock.lock();
         }
         done_.wait(lock, [&] { return job.finished == job.helpers; });
         if (!error) error = job.error;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <numeric>
 #include <stdexcept>
 #include <thread>
@@ -76,6 +77,31 @@ TEST(WorkPool, ManyCallersShareThePool) {
     for (std::thread& t : callers)
         t.join();
     EXPECT_EQ(total.load(), 6 * 20 * 300);
+}
+
+// Helpers spin a while before they sleep (work_pool.h): runs that follow
+// one another find them spinning, runs after a pause find them asleep, and
+// a pool is destroyed at once either way.
+TEST(WorkPool, RunsFindHelpersSpinningOrAsleepAndLoseNothing) {
+    for (int pause_us : {0, 50, 1000}) {
+        WorkPool pool(3);
+        int total = 0;
+        for (int round = 0; round < 200; ++round) {
+            std::vector<int> done(64, 0);
+            countItems(pool, 4, done);
+            total += std::accumulate(done.begin(), done.end(), 0);
+            if (pause_us > 0 && round % 20 == 0)
+                std::this_thread::sleep_for(std::chrono::microseconds(pause_us));
+        }
+        EXPECT_EQ(total, 200 * 64) << "pause " << pause_us << " us";
+    }
+    // Destroyed while its helpers spin after a run.
+    for (int i = 0; i < 20; ++i) {
+        WorkPool pool(2);
+        std::vector<int> done(8, 0);
+        countItems(pool, 3, done);
+        EXPECT_EQ(std::accumulate(done.begin(), done.end(), 0), 8);
+    }
 }
 
 TEST(WorkPool, AnExceptionInATaskReachesTheCaller) {
