@@ -1,5 +1,7 @@
 #include "dual_contouring.h"
 
+#include "block_arena.h"
+
 #include "parallel/work_pool.h"
 
 #include "formula/nonfinite_report.h"
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory_resource>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -238,20 +241,25 @@ struct Block {
     // The formula as the octree narrowed it to this block and a cell around
     // it (null: nothing to drop), until the block is sampled.
     std::shared_ptr<const field::NarrowedTape> tape;
-    bool narrowed = false;          // tape is the octree's (blocks found later narrow themselves)
-    std::vector<SurfaceCell> cells; // sorted by cell
-    std::vector<Vec3f> positions;   // single precision, as the mesh keeps them
-    std::vector<Vec3f> normals;
+    bool narrowed = false; // tape is the octree's (blocks found later narrow themselves)
+    // The arrays live in the mesh call's BlockArena (block_arena.h).
+    std::pmr::vector<SurfaceCell> cells; // sorted by cell
+    std::pmr::vector<Vec3f> positions;   // single precision, as the mesh keeps them
+    std::pmr::vector<Vec3f> normals;
     std::uint32_t offset = 0; // first global vertex id
     // Quads around edges whose four cells are all in this block, made while
     // sampling (block-local vertex ids: the offset is known only later).
-    std::vector<Triangle> interior;
+    std::pmr::vector<Triangle> interior;
     // Quads around the edges on the block's lower faces, which need the
     // neighbouring blocks' vertices (global ids, made by the connect phase).
-    std::vector<Triangle> triangles;
+    std::pmr::vector<Triangle> triangles;
     // Those edges, found while sampling, in the order the connect phase
     // makes their quads (see packLowerFaceEdge).
-    std::vector<std::uint32_t> lowerFaceEdges;
+    std::pmr::vector<std::uint32_t> lowerFaceEdges;
+
+    explicit Block(std::pmr::memory_resource* memory = std::pmr::get_default_resource())
+        : cells(memory), positions(memory), normals(memory), interior(memory), triangles(memory),
+          lowerFaceEdges(memory) {}
 
     // Which cells have an entry in `cells` (bit c % 64 of word c / 64), and
     // how many entries the words before hold: a cell's entry is then found
@@ -381,7 +389,7 @@ std::int32_t vertexOf(const PieceTable& pieces, const Block& block, int cell, in
 
 // Two triangles for the quad q0 q1 q2 q3 (in order around its edge, facing
 // out), split along the shorter diagonal.
-void appendQuad(std::vector<Triangle>& out, const std::array<std::uint32_t, 4>& id,
+void appendQuad(std::pmr::vector<Triangle>& out, const std::array<std::uint32_t, 4>& id,
                 const std::array<const Vec3f*, 4>& pos) {
     auto dist2 = [](const Vec3f& x, const Vec3f& y) {
         double d = 0;
@@ -1460,11 +1468,14 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         result.stats.evaluations = counts;
         return result;
     }
-    std::vector<Block> blocks(pruned.active.size());
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-        blocks[i].coord = pruned.active[i];
-        blocks[i].tape = std::move(pruned.tapes[i]);
-        blocks[i].narrowed = true;
+    BlockArena arena(threads); // before the blocks: it outlives their arrays
+    std::vector<Block> blocks;
+    blocks.reserve(pruned.active.size());
+    for (std::size_t i = 0; i < pruned.active.size(); ++i) {
+        Block& b = blocks.emplace_back(&arena);
+        b.coord = pruned.active[i];
+        b.tape = std::move(pruned.tapes[i]);
+        b.narrowed = true;
     }
     std::sort(blocks.begin(), blocks.end(),
               [](const Block& a, const Block& b) { return keyOf(a.coord) < keyOf(b.coord); });
@@ -1498,6 +1509,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                             stopped = true;
                             return;
                         }
+                        const BlockArena::Slot slot(arena, w);
                         Block& b = list[i];
                         contourers[std::size_t(w)].sampleBlock(b, s, seen[std::size_t(w)]);
                         // (the interior quads, counted among the later bytes, exist already)
@@ -1534,6 +1546,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                             stopped = true;
                             return;
                         }
+                        const BlockArena::Slot slot(arena, w);
                         contourers[std::size_t(w)].connectBlock(blocks[i], missing[std::size_t(w)]);
                         if (round == 0) report();
                     });
@@ -1544,9 +1557,10 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
                   [](const BlockCoord& a, const BlockCoord& b) { return keyOf(a) < keyOf(b); });
         extra.erase(std::unique(extra.begin(), extra.end()), extra.end());
         if (extra.empty() || round == kRounds - 1) break;
-        std::vector<Block> added(extra.size());
-        for (std::size_t i = 0; i < extra.size(); ++i)
-            added[i].coord = extra[i];
+        std::vector<Block> added;
+        added.reserve(extra.size());
+        for (const BlockCoord& coord : extra)
+            added.emplace_back(&arena).coord = coord;
         sample(added);
         for (Block& b : added)
             blocks.push_back(std::move(b));
@@ -1566,8 +1580,8 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
 
     // Each block's share is copied to its place in the mesh (its vertices
     // from its offset on, its triangles after the blocks before it), the
-    // blocks on the threads, and freed at once; the budget counts both, as
-    // the allocator may keep freed pieces.
+    // blocks on the threads; the budget counts both, as the blocks' arena
+    // gives their memory back only when the mesh is done.
     Mesh& mesh = result.mesh;
     std::vector<std::size_t> firstTriangle(blocks.size() + 1, 0);
     for (std::size_t i = 0; i < blocks.size(); ++i) {
