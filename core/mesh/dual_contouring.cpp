@@ -825,14 +825,16 @@ class Contourer {
     // f at `count` points (pointAt(i)), in one batch, into out_.
     template <class PointAt>
     void valuesAt(FieldSampler& sampler, std::size_t count, PointAt pointAt) {
-        xs_.clear();
-        ys_.clear();
-        zs_.clear();
+        if (xs_.size() < count) { // grown only, written in place (no check per point)
+            xs_.resize(count);
+            ys_.resize(count);
+            zs_.resize(count);
+        }
         for (std::size_t i = 0; i < count; ++i) {
             const Vec3 q = pointAt(i);
-            xs_.push_back(q[0]);
-            ys_.push_back(q[1]);
-            zs_.push_back(q[2]);
+            xs_[i] = q[0];
+            ys_[i] = q[1];
+            zs_[i] = q[2];
         }
         out_.resize(count);
         sampler.values(xs_.data(), ys_.data(), zs_.data(), count, out_.data());
