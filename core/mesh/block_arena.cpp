@@ -36,8 +36,9 @@ BlockArena::~BlockArena() = default;
 
 BlockArena::Slot::Slot(BlockArena& arena, int w)
     : previousArena_(currentArena), previousChunks_(currentChunks) {
+    Chunks& chunks = arena.slots_.at(std::size_t(w)); // (may throw: nothing set yet)
     currentArena = &arena;
-    currentChunks = &arena.slots_.at(std::size_t(w));
+    currentChunks = &chunks;
 }
 
 BlockArena::Slot::~Slot() {

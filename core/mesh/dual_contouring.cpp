@@ -191,7 +191,7 @@ const std::array<SubBlockCorners, 64>& subBlockCorners() {
     return table;
 }
 
-// Bits c and c + 1 of a corner row, as bits 0 and 1.
+// Bits c, c + 1 and c + 2 of a corner row, as bits 0, 1 and 2.
 unsigned threeBits(const CornerBits& row, int c) {
     const std::size_t w = std::size_t(c) / 64, s = std::size_t(c) % 64;
     std::uint64_t bits = row[w] >> s;
@@ -1043,7 +1043,7 @@ class Contourer {
         for (std::uint8_t sub : kept_)
             keptSubs |= std::uint64_t(1) << sub;
         interiorCrossings_.clear();
-        block.lowerFaceEdges.clear();
+        lowerFaceEdges_.clear();
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const int axis = found_[n] / kCorners, c = found_[n] % kCorners;
             const std::array<int, 3> corner = cornerAt(c);
@@ -1054,12 +1054,15 @@ class Contourer {
                 const int s0[3] = {corner[0] & ~1, corner[1] & ~1, corner[2] & ~1};
                 if ((keptSubs >> subBlockIndex(s0) & 1u) && corner[0] < limit[0] &&
                     corner[1] < limit[1] && corner[2] < limit[2])
-                    block.lowerFaceEdges.push_back(packLowerFaceEdge(c, axis, isInside(c)));
+                    lowerFaceEdges_.push_back(packLowerFaceEdge(c, axis, isInside(c)));
             } else if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[3] >= 0) {
                 interiorCrossings_.push_back(n);
             }
         }
-        std::sort(block.lowerFaceEdges.begin(), block.lowerFaceEdges.end());
+        // Gathered here, kept at their exact size (the block's arena never
+        // takes back what growing would leave behind).
+        std::sort(lowerFaceEdges_.begin(), lowerFaceEdges_.end());
+        block.lowerFaceEdges.assign(lowerFaceEdges_.begin(), lowerFaceEdges_.end());
         block.interior.clear();
         block.interior.reserve(2 * interiorCrossings_.size()); // exact: the budget counts capacity
         for (std::size_t n : interiorCrossings_) {
@@ -1243,6 +1246,7 @@ class Contourer {
     // -1 where the cell is not in the block.
     std::vector<std::array<int, 4>> around_;
     std::vector<std::size_t> interiorCrossings_; // those of found_ makeInteriorQuads serves
+    std::vector<std::uint32_t> lowerFaceEdges_;  // the block's, gathered
     const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
     std::array<const Block*, 27> neighbours_{};
     std::array<BlockCoord, 27> neighbourCoords_{};
@@ -1602,7 +1606,7 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
         for (const Triangle& t : b.interior)
             *out++ = {t[0] + b.offset, t[1] + b.offset, t[2] + b.offset};
         std::copy(b.triangles.begin(), b.triangles.end(), out);
-        b = Block{};
+        b = Block{}; // its arrays to the arena (freed now only under ASan: block_arena.h)
     });
 
     // Warnings: undefined regions, and a function that touches zero without

@@ -120,7 +120,10 @@ TEST(BlockArena, ASlotOfOneArenaDoesNotServeAnother) {
     EXPECT_EQ(more.front(), 4.0);
 }
 
-TEST(BlockArena, AnOutOfRangeSlotIsRefused) {
+TEST(BlockArena, AnOutOfRangeSlotIsRefusedAndChangesNothing) {
     BlockArena arena(2);
     EXPECT_THROW(BlockArena::Slot(arena, 2), std::out_of_range);
+    // The thread has no slot afterwards: it takes from the shared one.
+    std::pmr::vector<int> v(100, 5, &arena);
+    EXPECT_EQ(v.back(), 5);
 }
