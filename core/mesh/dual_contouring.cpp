@@ -557,13 +557,14 @@ class Contourer {
                 neighbours_[n] = nullptr;
             }
             if (x < 0 || y < 0) continue;
-            auto it = std::lower_bound(
-                blocks_->begin(), blocks_->end(), keyOf({x, y, std::max(b[2] - 1, 0)}),
-                [](const Block& other, std::uint64_t k) { return keyOf(other.coord) < k; });
-            for (; it != blocks_->end() && it->coord[0] == x && it->coord[1] == y &&
-                   it->coord[2] <= b[2] + 1;
-                 ++it)
-                neighbours_[std::size_t((it->coord[2] - b[2] + 1) * 9 + column)] = &*it;
+            const std::uint64_t first = keyOf({x, y, std::max(b[2] - 1, 0)}),
+                                last = keyOf({x, y, b[2] + 1});
+            const std::vector<std::uint64_t>& keys = *keys_;
+            for (auto it = std::lower_bound(keys.begin(), keys.end(), first);
+                 it != keys.end() && *it <= last; ++it) {
+                const Block& other = (*blocks_)[std::size_t(it - keys.begin())];
+                neighbours_[std::size_t((other.coord[2] - b[2] + 1) * 9 + column)] = &other;
+            }
         }
         for (const std::uint32_t edge : block.lowerFaceEdges) {
             const auto [local, axis, lowerIn] = lowerFaceEdge(edge);
@@ -573,9 +574,14 @@ class Contourer {
         // wrongly ruled out, connects every block again.)
     }
 
-    // The blocks, sorted by key, shared by every thread's contourer (read
-    // only while connecting): a binary search finds a neighbour.
-    void index(const std::vector<Block>& blocks) { blocks_ = &blocks; }
+    // The blocks, sorted by key, and their keys, shared by every thread's
+    // contourer (read only while connecting): a binary search of the keys
+    // finds a neighbour (8 bytes a block, where probing the blocks touched
+    // a cache line of each).
+    void index(const std::vector<Block>& blocks, const std::vector<std::uint64_t>& keys) {
+        blocks_ = &blocks;
+        keys_ = &keys;
+    }
 
   private:
     // The box of cells [c0, c1) of this block (clamped to the grid), or false
@@ -1245,9 +1251,10 @@ class Contourer {
     // entries, then (buildVertices) where those entries' QEFs are in qefs_;
     // -1 where the cell is not in the block.
     std::vector<std::array<int, 4>> around_;
-    std::vector<std::size_t> interiorCrossings_; // those of found_ makeInteriorQuads serves
-    std::vector<std::uint32_t> lowerFaceEdges_;  // the block's, gathered
-    const std::vector<Block>* blocks_ = nullptr; // sorted by keyOf(coord)
+    std::vector<std::size_t> interiorCrossings_;       // those of found_ makeInteriorQuads serves
+    std::vector<std::uint32_t> lowerFaceEdges_;        // the block's, gathered
+    const std::vector<Block>* blocks_ = nullptr;       // sorted by keyOf(coord)
+    const std::vector<std::uint64_t>* keys_ = nullptr; // theirs, in that order
     std::array<const Block*, 27> neighbours_{};
     std::array<BlockCoord, 27> neighbourCoords_{};
 };
@@ -1543,8 +1550,11 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
             b.offset = offset;
             offset += std::uint32_t(b.positions.size());
         }
+        std::vector<std::uint64_t> keys(blocks.size());
+        for (std::size_t i = 0; i < blocks.size(); ++i)
+            keys[i] = keyOf(blocks[i].coord);
         for (Contourer& c : contourers)
-            c.index(blocks);
+            c.index(blocks, keys);
         std::vector<std::vector<BlockCoord>> missing(static_cast<std::size_t>(threads));
         parallelFor(blocks.size(), threads, field, perThread,
                     [&](std::size_t i, FieldSampler&, int w) {
