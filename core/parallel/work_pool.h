@@ -17,8 +17,8 @@
 //
 // Waiting spins briefly before it sleeps (kSpin): a mesher's phases come one
 // after another, and a sleeping thread takes tens of microseconds to wake
-// on a virtual machine — measured, a re-mesh's four phases lost more to
-// waking helpers than the last phase took on one thread.
+// on a virtual machine (the watermelon's re-mesh at 128 on two threads,
+// four phases: p50 10.7 -> 10.4 ms with the spin, alternated runs).
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
