@@ -32,7 +32,10 @@ constexpr bool kEachPieceItsOwn = false;
 
 BlockArena::BlockArena(int slots) : slots_(std::size_t(std::max(slots, 1))) {}
 
-BlockArena::~BlockArena() = default;
+BlockArena::~BlockArena() {
+    for (const auto& [p, shape] : pieces_)
+        ::operator delete(p, shape.first, std::align_val_t(shape.second));
+}
 
 BlockArena::Slot::Slot(BlockArena& arena, int w)
     : previousArena_(currentArena), previousChunks_(currentChunks) {
@@ -68,7 +71,12 @@ void* BlockArena::take(Chunks& c, std::size_t bytes, std::size_t alignment) {
 }
 
 void* BlockArena::do_allocate(std::size_t bytes, std::size_t alignment) {
-    if constexpr (kEachPieceItsOwn) return ::operator new(bytes, std::align_val_t(alignment));
+    if constexpr (kEachPieceItsOwn) {
+        void* p = ::operator new(bytes, std::align_val_t(alignment));
+        std::lock_guard lock(sharedMutex_);
+        pieces_.emplace(p, std::pair{bytes, alignment});
+        return p;
+    }
     if (currentArena == this) return take(*static_cast<Chunks*>(currentChunks), bytes, alignment);
     std::lock_guard lock(sharedMutex_);
     return take(shared_, bytes, alignment);
@@ -76,7 +84,13 @@ void* BlockArena::do_allocate(std::size_t bytes, std::size_t alignment) {
 
 void BlockArena::do_deallocate(void* p, std::size_t bytes, std::size_t alignment) {
     // Given back with the arena; only the sanitizer's pieces go one by one.
-    if constexpr (kEachPieceItsOwn) ::operator delete(p, bytes, std::align_val_t(alignment));
+    if constexpr (kEachPieceItsOwn) {
+        {
+            std::lock_guard lock(sharedMutex_);
+            pieces_.erase(p);
+        }
+        ::operator delete(p, bytes, std::align_val_t(alignment));
+    }
     (void)p;
     (void)bytes;
     (void)alignment;

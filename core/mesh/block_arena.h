@@ -15,11 +15,14 @@
 // without one takes from a shared slot under a lock.
 //
 // Built with AddressSanitizer, every piece is its own operator new and
-// delete, so the sanitizer still sees each array's bounds.
+// delete, so the sanitizer still sees each array's bounds (the arena still
+// deletes, when it goes, the pieces nobody gave back).
 #include <cstddef>
 #include <memory>
 #include <memory_resource>
 #include <mutex>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace fl::mesh {
@@ -63,7 +66,10 @@ class BlockArena final : public std::pmr::memory_resource {
 
     std::vector<Chunks> slots_;
     Chunks shared_;
-    mutable std::mutex sharedMutex_;
+    std::mutex sharedMutex_; // shared_, and the sanitizer's pieces
+    // Built with AddressSanitizer: each piece not yet given back, with its
+    // size and alignment.
+    std::unordered_map<void*, std::pair<std::size_t, std::size_t>> pieces_;
 };
 
 } // namespace fl::mesh
