@@ -7,20 +7,28 @@
 
 namespace fl::mesh {
 
+namespace {
+// (A symmetric matrix reads the same by rows or by columns.)
+Eigen::Matrix3d matrixOf(const std::array<double, 9>& m) {
+    return Eigen::Map<const Eigen::Matrix3d>(m.data());
+}
+Eigen::Vector3d vectorOf(const std::array<double, 3>& v) {
+    return {v[0], v[1], v[2]};
+}
+} // namespace
+
 std::array<double, 3> Qef::massPoint() const {
     if (!count()) return {0, 0, 0};
-    return {origin_[0] + sumPoints(0) / count(), origin_[1] + sumPoints(1) / count(),
-            origin_[2] + sumPoints(2) / count()};
+    const std::array<double, 3> c = meanOffset();
+    return {origin_[0] + c[0], origin_[1] + c[1], origin_[2] + c[2]};
 }
 
 std::array<double, 3> Qef::solve(double relativeCutoff) const {
     if (!count()) return {0, 0, 0};
-    Eigen::Matrix3d ata;
-    ata << sumAtA(0), sumAtA(1), sumAtA(2), sumAtA(1), sumAtA(3), sumAtA(4), sumAtA(2), sumAtA(4),
-        sumAtA(5);
+    const Eigen::Matrix3d ata = matrixOf(normalMatrix());
     // About the mass point c (relative to the origin): minimise |A (c + x) - b|,
     // i.e. A^T A x = A^T b - A^T A c.
-    const Eigen::Vector3d c(sumPoints(0) / count(), sumPoints(1) / count(), sumPoints(2) / count());
+    const Eigen::Vector3d c = vectorOf(meanOffset());
     const Eigen::Vector3d rhs = Eigen::Vector3d(sumAtb(0), sumAtb(1), sumAtb(2)) - ata * c;
     // The answer is the mass point moved by x.
     auto movedBy = [&](const Eigen::Vector3d& x) -> std::array<double, 3> {
@@ -94,11 +102,9 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
     };
     if (!outside(x, 0) && !outside(x, 1) && !outside(x, 2)) return x;
     // Relative to the origin: E(y) = y^T M y - 2 y^T r + const, M = A^T A.
-    Eigen::Matrix3d m;
-    m << sumAtA(0), sumAtA(1), sumAtA(2), sumAtA(1), sumAtA(3), sumAtA(4), sumAtA(2), sumAtA(4),
-        sumAtA(5);
+    const Eigen::Matrix3d m = matrixOf(normalMatrix());
     const Eigen::Vector3d r(sumAtb(0), sumAtb(1), sumAtb(2));
-    const Eigen::Vector3d c(sumPoints(0) / count(), sumPoints(1) / count(), sumPoints(2) / count());
+    const Eigen::Vector3d c = vectorOf(meanOffset());
     const double largest = std::max({m(0, 0), m(1, 1), m(2, 2)}); // trace-sized: a scale only
     std::array<bool, 3> held{};
     Eigen::Vector3d y(c);

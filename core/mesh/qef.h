@@ -79,6 +79,16 @@ class Qef {
     double sumAtb(std::size_t k) const { return sums_[kAtb + k]; }
     double sumPoints(std::size_t k) const { return sums_[kPointSum + k]; } // relative to origin_
     double sumNormals(std::size_t k) const { return sums_[kNormalSum + k]; }
+    // What the solvers and massPoint start from: A^T A as a symmetric 3x3
+    // matrix (row by row), and the points' mean relative to origin_ (with
+    // at least one plane).
+    std::array<double, 9> normalMatrix() const {
+        return {sumAtA(0), sumAtA(1), sumAtA(2), sumAtA(1), sumAtA(3),
+                sumAtA(4), sumAtA(2), sumAtA(4), sumAtA(5)};
+    }
+    std::array<double, 3> meanOffset() const {
+        return {sumPoints(0) / count(), sumPoints(1) / count(), sumPoints(2) / count()};
+    }
 
     std::array<double, 3> origin_{}; // the sums are relative to it
     Plane sums_{};                   // as a Plane lays them out
