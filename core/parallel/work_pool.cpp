@@ -64,7 +64,6 @@ void WorkPool::work() {
         lock.lock();
         if (error && !job->error) job->error = error;
         ++job->finished;
-        job->finishedNow.store(job->finished);
         done_.notify_all();
     }
 }
@@ -100,7 +99,7 @@ void WorkPool::run(int workers, const std::function<void(int)>& task) {
         if (job.finished != job.helpers) {
             lock.unlock();
             const int helpers = job.helpers;
-            spinUntil([&] { return job.finishedNow.load() == helpers; });
+            spinUntil([&] { return job.finished.load() == helpers; });
             lock.lock();
         }
         done_.wait(lock, [&] { return job.finished == job.helpers; });

@@ -49,10 +49,11 @@ class WorkPool {
   private:
     struct Job {
         const std::function<void(int)>* task = nullptr;
-        int helpers = 0;                 // pool calls wanted
-        int claimed = 0;                 // of those, taken by a pool thread
-        int finished = 0;                // of those, returned
-        std::atomic<int> finishedNow{0}; // `finished`, for spinning without the lock
+        int helpers = 0; // pool calls wanted
+        int claimed = 0; // of those, taken by a pool thread
+        // Of those, returned: changed under the lock, read without it too
+        // (a caller spinning on it).
+        std::atomic<int> finished{0};
         std::exception_ptr error;
     };
     void work();
