@@ -103,14 +103,14 @@ void IntervalEvaluator::run(std::vector<Keep>* keep) {
 Interval IntervalEvaluator::evaluate(const Box& box) {
     load(box);
     run<false>(nullptr);
-    return outputs_.empty() ? Interval::point(0.0) : output(0);
+    return firstOutput();
 }
 
 Interval IntervalEvaluator::evaluate(const Box& box, std::vector<Keep>& keep) {
     load(box);
     keep.assign(steps_.size(), Keep::All);
     run<true>(&keep);
-    return outputs_.empty() ? Interval::point(0.0) : output(0);
+    return firstOutput();
 }
 
 void IntervalEvaluator::evaluateAll(const Box& box, Interval* outputs) {

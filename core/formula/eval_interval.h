@@ -47,6 +47,7 @@ class IntervalEvaluator {
     template <bool kRecord>
     void run(std::vector<Keep>* keep);
     Interval output(std::size_t i) const { return regs_[std::size_t(outputs_[i])]; }
+    Interval firstOutput() const { return outputs_.empty() ? Interval::point(0.0) : output(0); }
 };
 
 } // namespace fl::formula

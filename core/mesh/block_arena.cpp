@@ -82,7 +82,8 @@ void* BlockArena::do_allocate(std::size_t bytes, std::size_t alignment) {
     return take(shared_, bytes, alignment);
 }
 
-void BlockArena::do_deallocate(void* p, std::size_t bytes, std::size_t alignment) {
+void BlockArena::do_deallocate([[maybe_unused]] void* p, [[maybe_unused]] std::size_t bytes,
+                               [[maybe_unused]] std::size_t alignment) {
     // Given back with the arena; only the sanitizer's pieces go one by one.
     if constexpr (kEachPieceItsOwn) {
         {
@@ -91,9 +92,6 @@ void BlockArena::do_deallocate(void* p, std::size_t bytes, std::size_t alignment
         }
         ::operator delete(p, bytes, std::align_val_t(alignment));
     }
-    (void)p;
-    (void)bytes;
-    (void)alignment;
 }
 
 } // namespace fl::mesh

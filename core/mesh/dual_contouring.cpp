@@ -1609,14 +1609,13 @@ MeshResult meshImplicit(const ImplicitField& field, const MeshOptions& options) 
     mesh.normals.resize(result.stats.surfaceCells);
     mesh.triangles.resize(firstTriangle.back());
     parallelFor(blocks.size(), threads, field, perThread, [&](std::size_t i, FieldSampler&, int) {
-        Block& b = blocks[i];
+        const Block& b = blocks[i];
         std::copy(b.positions.begin(), b.positions.end(), mesh.positions.begin() + b.offset);
         std::copy(b.normals.begin(), b.normals.end(), mesh.normals.begin() + b.offset);
         auto out = mesh.triangles.begin() + std::ptrdiff_t(firstTriangle[i]);
         for (const Triangle& t : b.interior)
             *out++ = {t[0] + b.offset, t[1] + b.offset, t[2] + b.offset};
         std::copy(b.triangles.begin(), b.triangles.end(), out);
-        b = Block{}; // its arrays to the arena (freed now only under ASan: block_arena.h)
     });
 
     // Warnings: undefined regions, and a function that touches zero without
