@@ -36,6 +36,8 @@ const char* methodName(Method method) {
         return "pde fit";
     case Method::Vtk:
         return "vtk";
+    case Method::Libfive:
+        return "libfive";
     }
     return "adaptive";
 }

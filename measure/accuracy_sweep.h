@@ -21,8 +21,10 @@ enum class Method : unsigned char {
     PdeMesh,  // a PDE model meshed at a resolution (the Accuracy panel's drawing curve)
     PdeFit,   // a PDE model fitted with a number of patches (Import Mesh as PDE)
     Vtk,      // bench mesh --peer vtk: sampled into a grid, vtkFlyingEdges3D (a peer)
+    Libfive,  // bench mesh --peer libfive: libfive's dual contouring (a peer)
 };
-const char* methodName(Method method); // "adaptive", "dense", "function", "polygons", "vtk" ...
+const char*
+methodName(Method method); // "adaptive", "dense", "function", "polygons", "vtk", "libfive" ...
 
 struct AccuracyRow {
     Method method = Method::Adaptive;

@@ -3,6 +3,7 @@
 #include "cli/arguments.h"
 #include "cli/bench_field.h"
 #include "cli/commands.h"
+#include "cli/libfive_peer.h"
 #include "cli/vtk_peer.h"
 #include "platform/exit_codes.h"
 
@@ -19,9 +20,11 @@ namespace fl::cli {
 const CommandSpec& benchMeshSpec() {
     static const CommandSpec spec{
         .name = "bench mesh",
-        .summary = "the meshers against a peer (VTK's Flying Edges) at equal max error",
-        .synopsis = {"bench mesh FILE --peer vtk [--resolutions N,N,...] [--threads N] [--json]",
-                     "bench mesh --formula \"SRC\" --box X0,Y0,Z0,X1,Y1,Z1 --peer vtk [options]"},
+        .summary = "the meshers against a peer (VTK's Flying Edges, libfive) at equal max error",
+        .synopsis = {"bench mesh FILE [--peer vtk|libfive] [--resolutions N,N,...] [--threads N] "
+                     "[--json]",
+                     "bench mesh --formula \"SRC\" --box X0,Y0,Z0,X1,Y1,Z1 [--peer vtk|libfive] "
+                     "[options]"},
         .description =
             "Meshes one shape — the first implicit or explicit FShape of the scene FILE, or\n"
             "a formula over a box — at each resolution with the adaptive mesher, dense\n"
@@ -35,14 +38,25 @@ const CommandSpec& benchMeshSpec() {
             "The peer also runs at twice the finest resolution, so that its rows bracket\n"
             "the adaptive mesher's finest error. After the table, each resolution's\n"
             "adaptive time against the peer's time at the same max error (read off the\n"
-            "peer's log-log line between the rows that bracket it).\n",
+            "peer's log-log line between the rows that bracket it).\n"
+            "The peer `libfive` is libfive's dual contouring (github.com/libfive/libfive,\n"
+            "not in Debian: built from a source tree given to CMake as\n"
+            "FUNCTIONLAB_LIBFIVE_SOURCE, into the program functionlab-libfive-peer next to\n"
+            "functionlab), the formula rebuilt in libfive's operations, its defaults but for\n"
+            "the threads and the cell size: libfive's octree halves the box, so it meshes at\n"
+            "the least power of two at or above each resolution. Its time is the least of\n"
+            "three renders. After the table, each resolution's adaptive time against\n"
+            "libfive's at that resolution and, where its rows bracket it, at the same max\n"
+            "error. A scene FILE's shape is given to libfive as its definition's text.\n",
         .positionals = {benchShapePositional()},
         .options = benchShapeOptions(
             {{.name = "peer",
-              .kind = OptionKind::Text,
+              .kind = OptionKind::Choice,
               .valueName = "NAME",
-              .help = "the peer: vtk (python3-vtk9's vtkFlyingEdges3D)",
-              .defaultValue = "vtk"},
+              .help = "the peer: vtk (python3-vtk9's vtkFlyingEdges3D) or libfive (built from "
+                      "source)",
+              .defaultValue = "vtk",
+              .choices = {"vtk", "libfive"}},
              {.name = "resolutions",
               .kind = OptionKind::NumberList,
               .valueName = "N,N,...",
@@ -65,42 +79,107 @@ const CommandSpec& benchMeshSpec() {
     return spec;
 }
 
+namespace {
+
+MeshPeer peerNamed(const std::string& name) {
+    return name == "libfive" ? MeshPeer::Libfive : MeshPeer::Vtk;
+}
+
+measure::Method peerMethod(MeshPeer peer) {
+    switch (peer) {
+    case MeshPeer::Vtk:
+        return measure::Method::Vtk;
+    case MeshPeer::Libfive:
+        return measure::Method::Libfive;
+    }
+    return measure::Method::Vtk;
+}
+
+// The peer's resolutions: VTK's error at a resolution is dense marching
+// cubes', so it runs one step finer too, for its rows to bracket the adaptive
+// mesher's finest error; libfive's is the adaptive mesher's kind, so the same.
+std::vector<double> peerResolutions(MeshPeer peer, std::vector<double> resolutions) {
+    const double finest = *std::max_element(resolutions.begin(), resolutions.end());
+    if (peer == MeshPeer::Vtk && finest * 2 <= 1024) resolutions.push_back(finest * 2);
+    return resolutions;
+}
+
+std::optional<MeshPeerRow> runPeer(MeshPeer peer, const BenchShape& shape, double resolution,
+                                   int threads, std::string& why) {
+    switch (peer) {
+    case MeshPeer::Vtk:
+        return runVtkPeer(shape.field, resolution, threads, why);
+    case MeshPeer::Libfive:
+        return runLibfivePeer(shape.field, shape.source, resolution, threads, why);
+    }
+    return std::nullopt;
+}
+
+void printPeerDetails(MeshPeer peer, const std::vector<MeshPeerRow>& rows) {
+    for (const MeshPeerRow& p : rows) {
+        if (peer == MeshPeer::Vtk)
+            std::printf("vtk at %g: sampling %.1f ms + vtkFlyingEdges3D %.1f ms (%s)\n",
+                        p.row.resolution, p.samplingMs, p.contourMs, p.backend.c_str());
+    }
+}
+
+// Each adaptive row against the peer: at the same resolution (libfive, whose
+// mesher is of the same kind; its power of two at or above) and at the same
+// max error (both peers).
+void printComparison(MeshPeer peer, const std::vector<measure::AccuracyRow>& rows) {
+    const measure::Method method = peerMethod(peer);
+    const char* name = measure::methodName(method);
+    for (const measure::AccuracyRow& r : rows) {
+        if (r.method != measure::Method::Adaptive) continue;
+        std::printf("at %g (max error %.2e): adaptive %.1f ms", r.resolution, r.maxError,
+                    r.milliseconds);
+        if (peer == MeshPeer::Libfive) {
+            // libfive's row for this resolution: the least power of two at or above it
+            const measure::AccuracyRow* same = nullptr;
+            for (const measure::AccuracyRow& p : rows)
+                if (p.method == method && p.resolution >= r.resolution &&
+                    (!same || p.resolution < same->resolution))
+                    same = &p;
+            if (same)
+                std::printf("; %s at %g %.1f ms, %zu triangles against %zu, max error %.2e: "
+                            "adaptive %.2fx as fast",
+                            name, same->resolution, same->milliseconds, same->triangles,
+                            r.triangles, same->maxError, same->milliseconds / r.milliseconds);
+        }
+        if (const auto t = measure::timeAtError(rows, method, r.maxError))
+            std::printf("; %s %.1f ms at that error: adaptive %.2fx as fast\n", name, *t,
+                        *t / r.milliseconds);
+        else
+            std::printf("; %s reaches no such error in these resolutions\n", name);
+    }
+}
+
+} // namespace
+
 int benchMeshCommand(const Args& args) {
     int exit = 0;
     const auto a = parseOrExplain(benchMeshSpec(), args, exit, std::cout, std::cerr);
     if (!a) return exit;
-    auto usage = [](const std::string& problem) {
-        return usageError(benchMeshSpec(), problem, std::cerr);
-    };
-    if (a->text("peer", "vtk") != "vtk")
-        return usage("the only peer here is vtk (libfive would need building from source, "
-                     "which this project's machines cannot fetch)");
+    const MeshPeer peer = peerNamed(a->text("peer", "vtk"));
     const auto shape = benchShapeFromArgs(benchMeshSpec(), *a, exit);
     if (!shape) return exit;
-    const field::ImplicitField& field = shape->field;
-    const std::string& name = shape->name;
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{64, 128, 256});
     measure::SweepOptions sweep;
     sweep.threads = int(a->integer("threads", 0));
     std::vector<std::string> skipped;
     std::vector<measure::AccuracyRow> rows =
-        measure::runAccuracySweep(field, resolutions, sweep, &skipped);
-    // One step finer for the peer, so that its rows bracket the adaptive
-    // mesher's finest error (the peer's error at a resolution is dense's).
-    std::vector<double> peerResolutions = resolutions;
-    const double finest = *std::max_element(resolutions.begin(), resolutions.end());
-    if (finest * 2 <= 1024) peerResolutions.push_back(finest * 2);
-    std::vector<VtkPeerRow> peer;
-    for (double r : peerResolutions) {
+        measure::runAccuracySweep(shape->field, resolutions, sweep, &skipped);
+    std::vector<MeshPeerRow> peerRows;
+    for (double r : peerResolutions(peer, resolutions)) {
         std::string why;
-        auto row = runVtkPeer(field, r, sweep.threads, why);
+        auto row = runPeer(peer, *shape, r, sweep.threads, why);
         if (!row) {
             std::cerr << "functionlab bench mesh: " << why << "\n";
             return kExitDiagnostic;
         }
         rows.push_back(row->row);
-        peer.push_back(*row);
+        peerRows.push_back(*row);
     }
     for (const std::string& s : skipped)
         std::cerr << "note: no row for " << s << "\n";
@@ -110,27 +189,14 @@ int benchMeshCommand(const Args& args) {
     }
     std::vector<measure::AccuracyRow> ours;
     for (const measure::AccuracyRow& r : rows)
-        if (r.method != measure::Method::Vtk) ours.push_back(r);
-    std::cout << "shape: " << name << "\n" << measure::accuracyTableText(ours);
-    for (const VtkPeerRow& p : peer)
-        std::printf("%-9s %10.4g %10zu %12zu %9.1f %11.3e %11.3e\n", "vtk", p.row.resolution,
-                    p.row.triangles, p.row.evaluations, p.row.milliseconds, p.row.maxError,
-                    p.row.meanError);
-    for (const VtkPeerRow& p : peer)
-        std::printf("vtk at %g: sampling %.1f ms + vtkFlyingEdges3D %.1f ms (%s)\n",
-                    p.row.resolution, p.samplingMs, p.contourMs, p.backend.c_str());
-    for (const measure::AccuracyRow& r : rows) {
-        if (r.method != measure::Method::Adaptive) continue;
-        const auto vtk = measure::timeAtError(rows, measure::Method::Vtk, r.maxError);
-        if (vtk)
-            std::printf("at %g (max error %.2e): adaptive %.1f ms, vtk %.1f ms at that error: "
-                        "adaptive %.2fx as fast\n",
-                        r.resolution, r.maxError, r.milliseconds, *vtk, *vtk / r.milliseconds);
-        else
-            std::printf("at %g (max error %.2e): adaptive %.1f ms; vtk reaches no such error in "
-                        "these resolutions\n",
-                        r.resolution, r.maxError, r.milliseconds);
-    }
+        if (r.method != peerMethod(peer)) ours.push_back(r);
+    std::cout << "shape: " << shape->name << "\n" << measure::accuracyTableText(ours);
+    for (const MeshPeerRow& p : peerRows)
+        std::printf("%-9s %10.4g %10zu %12zu %9.1f %11.3e %11.3e\n",
+                    measure::methodName(p.row.method), p.row.resolution, p.row.triangles,
+                    p.row.evaluations, p.row.milliseconds, p.row.maxError, p.row.meanError);
+    printPeerDetails(peer, peerRows);
+    printComparison(peer, rows);
     return kExitOk;
 }
 

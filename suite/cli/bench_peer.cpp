@@ -9,17 +9,12 @@
 #include <vector>
 
 namespace fl::cli {
-namespace {
-
-// The directory of the running executable.
 std::filesystem::path selfDirectory() {
     char self[4096];
     const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0) return {};
     return std::filesystem::path(std::string(self, std::size_t(n))).parent_path();
 }
-
-} // namespace
 
 int runBenchPeer(std::string_view benchmark, const Args& args) {
     const std::filesystem::path peer = selfDirectory() / "functionlab-bench";

@@ -23,13 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string shellQuoted(const std::string& s) {
-    std::string out = "'";
-    for (const char c : s)
-        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 std::string python() {
     if (const char* p = std::getenv("FUNCTIONLAB_PYTHON"); p && *p) return p;
     // Debian's interpreter: python3-vtk9 is installed for it (a python3 of
@@ -38,50 +31,10 @@ std::string python() {
     return fs::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
 }
 
-// The value of "key": NUMBER in one line of JSON.
-std::optional<double> jsonNumber(const std::string& line, const std::string& key) {
-    const std::regex re("\"" + key + "\":\\s*([-+0-9.eE]+)");
-    std::smatch m;
-    if (!std::regex_search(line, m, re)) return std::nullopt;
-    return std::strtod(m[1].str().c_str(), nullptr);
-}
-
-// The peer's triangles, as VTK writes binary STL (each with its own three
-// corners: the error measure does not need them welded).
-std::optional<mesh::Mesh> readBinaryStl(const fs::path& path, std::string& problem) {
-    std::ifstream in(path, std::ios::binary);
-    char header[80];
-    std::uint32_t count = 0;
-    if (!in.read(header, sizeof header) ||
-        !in.read(reinterpret_cast<char*>(&count), sizeof count)) {
-        problem = path.string() + " is not binary STL";
-        return std::nullopt;
-    }
-    std::error_code ec;
-    if (fs::file_size(path, ec) != 84 + std::uintmax_t(count) * 50) {
-        problem = path.string() + " does not hold the " + std::to_string(count) +
-                  " triangles it announces";
-        return std::nullopt;
-    }
-    mesh::Mesh m;
-    m.positions.reserve(std::size_t(count) * 3);
-    m.triangles.reserve(count);
-    char record[50];
-    for (std::uint32_t t = 0; t < count && in.read(record, sizeof record); ++t) {
-        for (int v = 0; v < 3; ++v) {
-            mesh::Vec3f p;
-            std::memcpy(p.data(), record + 12 + 12 * v, 12);
-            m.positions.push_back(p);
-        }
-        m.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
-    }
-    return m;
-}
-
 } // namespace
 
-std::optional<VtkPeerRow> runVtkPeer(const field::ImplicitField& field, double resolution,
-                                     int threads, std::string& why) {
+std::optional<MeshPeerRow> runVtkPeer(const field::ImplicitField& field, double resolution,
+                                      int threads, std::string& why) {
     if (threads <= 0) threads = std::max(1, int(std::thread::hardware_concurrency()));
     // Dense marching cubes' grid: cells of the same size along every axis.
     const double longest = std::max({field.box.size(0), field.box.size(1), field.box.size(2)});
@@ -121,9 +74,7 @@ std::optional<VtkPeerRow> runVtkPeer(const field::ImplicitField& field, double r
     }
 
     std::error_code ec;
-    const fs::path dir =
-        fs::temp_directory_path(ec) / ("functionlab-vtk-" + std::to_string(::getpid()));
-    fs::create_directories(dir, ec);
+    const fs::path dir = peerScratchDirectory("vtk");
     const fs::path rawPath = dir / "grid.raw", stlPath = dir / "mesh.stl";
     {
         std::ofstream raw(rawPath, std::ios::binary);
@@ -139,18 +90,10 @@ std::optional<VtkPeerRow> runVtkPeer(const field::ImplicitField& field, double r
     std::snprintf(numbers, sizeof numbers, "%d %d %d %.17g %.17g %.17g %.17g %.17g %.17g %d 3",
                   n[0] + 1, n[1] + 1, n[2] + 1, field.box.lo[0], field.box.lo[1], field.box.lo[2],
                   h[0], h[1], h[2], threads);
-    const std::string command = shellQuoted(python()) + " " +
-                                shellQuoted(FUNCTIONLAB_VTK_PEER_SCRIPT) + " " +
-                                shellQuoted(rawPath.string()) + " " + numbers + " " +
-                                shellQuoted(stlPath.string()) + " 2>&1";
-    std::string output;
-    if (FILE* p = ::popen(command.c_str(), "r")) {
-        char buf[4096];
-        while (std::fgets(buf, sizeof buf, p))
-            output += buf;
-        const int status = ::pclose(p);
-        if (status != 0) output += "\n(exit status " + std::to_string(status) + ")";
-    }
+    const std::string command =
+        shellQuoted(python()) + " " + shellQuoted(FUNCTIONLAB_VTK_PEER_SCRIPT) + " " +
+        shellQuoted(rawPath.string()) + " " + numbers + " " + shellQuoted(stlPath.string());
+    const std::string output = runCapturing(command);
     const auto ms = jsonNumber(output, "ms");
     std::string problem;
     const auto read = ms ? readBinaryStl(stlPath, problem) : std::nullopt;
@@ -164,7 +107,7 @@ std::optional<VtkPeerRow> runVtkPeer(const field::ImplicitField& field, double r
         why = "the VTK peer's triangles cannot be read back: " + problem;
         return std::nullopt;
     }
-    VtkPeerRow r;
+    MeshPeerRow r;
     r.samplingMs = samplingMs;
     r.contourMs = *ms;
     std::smatch m;

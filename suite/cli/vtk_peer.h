@@ -7,23 +7,16 @@
 // (bench/peers/vtk_flying_edges.py, a separate process: nothing of VTK is
 // linked into functionlab). Same box, same cells as dense marching cubes;
 // its triangles are read back and measured by the same error code.
+#include "cli/mesh_peer.h"
 #include "field/field_sampler.h"
-#include "measure/accuracy_sweep.h"
 
 #include <optional>
 #include <string>
 
 namespace fl::cli {
 
-struct VtkPeerRow {
-    measure::AccuracyRow row; // method Vtk; milliseconds = sampling + contouring
-    double samplingMs = 0;    // least of three
-    double contourMs = 0;     // least of three, as the script times Update()
-    std::string backend;      // VTK's SMP backend ("TBB")
-};
-
 // None with `why` (what to install) when the peer cannot run.
-std::optional<VtkPeerRow> runVtkPeer(const field::ImplicitField& field, double resolution,
-                                     int threads, std::string& why);
+std::optional<MeshPeerRow> runVtkPeer(const field::ImplicitField& field, double resolution,
+                                      int threads, std::string& why);
 
 } // namespace fl::cli

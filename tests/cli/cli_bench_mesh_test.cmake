@@ -7,8 +7,42 @@
 # Invoked by CTest: cmake -DFUNCTIONLAB=path -P cli_bench_mesh_test.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
 
-run(2 bench mesh --formula "1 - x*x - y*y - z*z" --box -1.2,-1.2,-1.2,1.2,1.2,1.2 --peer libfive)
-expect_match("${ERR}" "the only peer here is vtk")
+run(2 bench mesh --formula "1 - x*x - y*y - z*z" --box -1.2,-1.2,-1.2,1.2,1.2,1.2 --peer curv)
+expect_match("${ERR}" "vtk, libfive|vtk or libfive|libfive")
+
+# The libfive peer: built only from a libfive source tree given to CMake
+# (FUNCTIONLAB_LIBFIVE_SOURCE); without it, the command says how to build it.
+get_filename_component(bin_dir "${FUNCTIONLAB}" DIRECTORY)
+if(NOT EXISTS "${bin_dir}/functionlab-libfive-peer")
+  run(1 bench mesh --formula "0.8^2 - x*x - y*y - z*z" --box -1,-1,-1,1,1,1 --resolutions 16
+      --peer libfive)
+  expect_match("${ERR}" "FUNCTIONLAB_LIBFIVE_SOURCE")
+else()
+  # libfive at the same resolutions (powers of two: its octree halves the box);
+  # both meshers are dual contouring, so their errors are of a size.
+  run(0 bench mesh --formula "0.8^2 - x*x - y*y - z*z" --box -1,-1,-1,1,1,1
+      --resolutions 16,32 --threads 1 --peer libfive --json)
+  string(JSON n LENGTH "${OUT}")
+  if(NOT n EQUAL 6)
+    message(FATAL_ERROR "expected 6 rows (adaptive, dense, libfive at 16 and 32): ${OUT}")
+  endif()
+  foreach(i 4 5)
+    string(JSON method GET "${OUT}" ${i} method)
+    string(JSON triangles GET "${OUT}" ${i} triangles)
+    string(JSON error GET "${OUT}" ${i} max_error)
+    if(NOT method STREQUAL "libfive" OR triangles LESS 500 OR error GREATER 0.01)
+      message(FATAL_ERROR "libfive row ${i}: ${method}, ${triangles} triangles, error ${error}")
+    endif()
+  endforeach()
+  run(0 bench mesh --formula "(1 - x^2 - y^2 - z^2) & (-((z - x) & y & z))"
+      --box -1.1,-1.1,-1.1,1.1,1.1,1.1 --resolutions 24 --threads 2 --peer libfive)
+  expect_match("${OUT}" "libfive +32 ")
+  expect_match("${OUT}" "libfive at 32 .*as fast")
+  # What libfive cannot express is refused by name.
+  run(1 bench mesh --formula "0.5 - abs(x) - floor(y)" --box -1,-1,-1,1,1,1 --resolutions 8
+      --peer libfive)
+  expect_match("${ERR}" "libfive has no floor")
+endif()
 run(2 bench mesh --resolutions 16)
 expect_match("${ERR}" "give a scene FILE or --formula")
 

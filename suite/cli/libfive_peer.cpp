@@ -1,0 +1,63 @@
+#include "cli/libfive_peer.h"
+
+#include "cli/bench_peer.h"
+#include "mesh/mesh_error.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <thread>
+#include <unistd.h>
+
+namespace fl::cli {
+
+namespace fs = std::filesystem;
+
+std::optional<MeshPeerRow> runLibfivePeer(const field::ImplicitField& field,
+                                          const std::string& formula, double resolution,
+                                          int threads, std::string& why) {
+    if (threads <= 0) threads = std::max(1, int(std::thread::hardware_concurrency()));
+    const fs::path program = selfDirectory() / "functionlab-libfive-peer";
+    if (::access(program.c_str(), X_OK) != 0) {
+        why = "the libfive peer " + program.string() +
+              " is not built: clone https://github.com/libfive/libfive, install Debian's "
+              "libboost-dev and libpng-dev, configure with -DFUNCTIONLAB_LIBFIVE_SOURCE=<the "
+              "clone> and build the target functionlab-libfive-peer";
+        return std::nullopt;
+    }
+    std::error_code ec;
+    const fs::path dir = peerScratchDirectory("libfive");
+    const fs::path stlPath = dir / "mesh.stl";
+    char numbers[512];
+    std::snprintf(numbers, sizeof numbers, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %d 3",
+                  field.box.lo[0], field.box.lo[1], field.box.lo[2], field.box.hi[0],
+                  field.box.hi[1], field.box.hi[2], resolution, threads);
+    const std::string output =
+        runCapturing(shellQuoted(program.string()) + " " + shellQuoted(formula) + " " + numbers +
+                     " " + shellQuoted(stlPath.string()));
+    const auto ms = jsonNumber(output, "ms");
+    const auto used = jsonNumber(output, "resolution");
+    std::string problem;
+    const auto read = ms ? readBinaryStl(stlPath, problem) : std::nullopt;
+    fs::remove_all(dir, ec);
+    if (!ms || !used) {
+        why = "the libfive peer failed: " +
+              (output.size() > 400 ? output.substr(output.size() - 400) : output);
+        return std::nullopt;
+    }
+    if (!read) {
+        why = "the libfive peer's triangles cannot be read back: " + problem;
+        return std::nullopt;
+    }
+    MeshPeerRow r;
+    r.contourMs = *ms;
+    r.row.method = measure::Method::Libfive;
+    r.row.resolution = *used;
+    r.row.triangles = read->triangleCount();
+    r.row.milliseconds = *ms;
+    const mesh::SurfaceError e = mesh::measureSurfaceError(field, *read);
+    r.row.maxError = e.max;
+    r.row.meanError = e.mean;
+    return r;
+}
+
+} // namespace fl::cli
