@@ -67,6 +67,45 @@ TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
     }
 }
 
+// sin, cos and tan go as whole vectors where every lane lies well inside one
+// of SLEEF's argument reductions (|x| < 12, or 16 to 1e12) and lane by lane
+// otherwise. Vectors made to sit in each range, on and across its edges,
+// beside huge, infinite and NaN lanes, must all give the scalar twin's bits.
+TEST(VectorMath, TrigonometryInEveryReductionRangeEqualsItsScalarTwin) {
+    std::mt19937_64 rng(10);
+    const double edges[] = {0,    1e-3, 11.9, 12,   12.1,    14.9, 15,   15.1,    15.9, 16,
+                            16.1, 100,  1e6,  1e12, 1.01e12, 1e13, 1e14, 1.01e14, 1e17, 1e300};
+    std::uniform_int_distribution<int> pick(0, int(std::size(edges)) - 1);
+    std::uniform_real_distribution<double> jitter(0.999, 1.001), logMagnitude(-3, 20);
+    const std::size_t n = 40000;
+    std::vector<double> a(n), out(n);
+    for (std::size_t i = 0; i < n; i += 4) {
+        // a run of four (one AVX2 vector, two SSE2 ones): same range, or mixed
+        const int kind = int(i / 4 % 4);
+        for (std::size_t k = 0; k < 4; ++k) {
+            double v = kind == 0   ? edges[pick(rng)] * jitter(rng)
+                       : kind == 1 ? std::pow(10.0, logMagnitude(rng))
+                       : kind == 2 ? 16.0 + 1e3 * jitter(rng) * double(k)
+                                   : edges[std::size_t(i / 4 + k) % std::size(edges)];
+            if (rng() % 2) v = -v;
+            if (rng() % 97 == 0) v = rng() % 2 ? NAN : INFINITY;
+            a[i + k] = v;
+        }
+    }
+    for (const Implementation* impl : variants()) {
+        for (const Unary f : {Unary::Sin, Unary::Cos, Unary::Tan}) {
+            impl->unaryArray[static_cast<int>(f)](a.data(), out.data(), n);
+            for (std::size_t i = 0; i < n; ++i) {
+                const double s = impl->unary[static_cast<int>(f)](a[i]);
+                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
+                                std::bit_cast<std::uint64_t>(out[i]) ||
+                            (std::isnan(s) && std::isnan(out[i])))
+                    << impl->name << " unary " << int(f) << " at " << a[i] << " (lane " << i << ")";
+            }
+        }
+    }
+}
+
 TEST(VectorMath, WithinTwoUlpsOfTheCLibrary) {
     std::mt19937_64 rng(9);
     std::uniform_real_distribution<double> unit(-1, 1), wide(-20, 20), pos(1e-3, 50);
