@@ -21,7 +21,7 @@ namespace fl::formula {
 namespace {
 
 std::atomic<bool> allowed{true};
-std::atomic<bool> allowCalls{false}; // tests turn it on to check the calls' code
+std::atomic<bool> allowCalls{true}; // tests turn it off to see a tape left interpreted
 
 // vcmppd predicates (quiet: no exception is ever unmasked here).
 constexpr std::uint8_t kEqOQ = 0x00, kUnordQ = 0x03, kNeqUQ = 0x04, kEqUQ = 0x08, kNeqOQ = 0x0C,
@@ -67,12 +67,11 @@ std::optional<vmath::Unary> vmathUnary(Op op) {
 bool compiles(const BatchStep& s) {
     if (s.out < kInputCount) return false; // never write an input's array
     if (s.fused != Fused::None) return true;
-    // SLEEF's functions are called on 4 lanes at a time here, and every live
-    // value goes to memory around each call: on the watermelon's colour
-    // (two sines and an atan2) that was 1.4x slower than the interpreter's
-    // one call per 256 points, so such tapes stay interpreted (measured with
-    // `functionlab bench eval`; the code for the calls is kept and tested,
-    // see allowCalls).
+    // SLEEF's functions: one call over the block's rows between the loops
+    // (isCall). Called per 4 points from inside the loop, with every live
+    // value stored around each call, they made the watermelon's colour 1.4x
+    // slower than the interpreter; once per block they are the
+    // interpreter's calls and the arithmetic between them runs in registers.
     if (vmathUnary(s.op) || s.op == Op::Pow || s.op == Op::Atan2) return allowCalls.load();
     switch (s.op) {
     case Op::Neg:
@@ -103,6 +102,11 @@ bool compiles(const BatchStep& s) {
     default: // round, hypot, mod, the R-functions, noise
         return false;
     }
+}
+
+// Whether the step calls one of SLEEF's array functions (once per block).
+bool isCall(const BatchStep& s) {
+    return s.fused == Fused::None && (vmathUnary(s.op) || s.op == Op::Pow || s.op == Op::Atan2);
 }
 
 // The registers a step reads, in the order it reads them.
@@ -255,14 +259,6 @@ class Emitter : public CodeGenerator {
         slots_[std::size_t(slot)] = {reg, true, false};
         vmovapd(Ymm(slot), R);
     }
-    // Every value still needed in its row (a call clobbers every YMM).
-    void flush() {
-        for (int i = 0; i < kSlots; ++i) {
-            const Slot& s = slots_[std::size_t(i)];
-            if (s.reg >= 0 && s.dirty && needed(s.reg, step_)) store(i);
-            release(i);
-        }
-    }
     void broadcast(const Ymm& y, double v) {
         std::uint64_t bits;
         std::memcpy(&bits, &v, sizeof bits);
@@ -307,27 +303,30 @@ class Emitter : public CodeGenerator {
         vxorpd(dst, x, S2);
     }
 
+    // rows of `reg`: its first lane in the block.
+    void rowOf(const Reg64& out, std::int32_t reg) { mov(out, ptr[r12 + reg * 8]); }
+    // A SLEEF array function over the rows of the whole block's points that
+    // the loops do (r13 of them): one call per block, as the interpreter
+    // makes it, so the same function gives the same bits.
     void callUnary(vmath::ArrayUnary f, const BatchStep& s) {
-        flush();
-        addressOf(rdi, s.a);
-        addressOf(rsi, s.out);
-        mov(edx, 4);
+        rowOf(rdi, s.a);
+        rowOf(rsi, s.out);
+        mov(rdx, r13);
         mov(rax, reinterpret_cast<std::uint64_t>(f));
         vzeroupper();
         call(rax);
     }
     void callBinary(vmath::ArrayBinary f, const BatchStep& s) {
-        flush();
-        auto pointerOrNull = [&](const Reg64& out, bool isConst, std::int32_t reg) {
+        auto rowOrNull = [&](const Reg64& out, bool isConst, std::int32_t reg) {
             if (isConst)
                 xor_(out, out);
             else
-                addressOf(out, reg);
+                rowOf(out, reg);
         };
-        pointerOrNull(rdi, s.constA, s.a);
-        pointerOrNull(rsi, s.constB, s.b);
-        addressOf(rdx, s.out);
-        mov(ecx, 4);
+        rowOrNull(rdi, s.constA, s.a);
+        rowOrNull(rsi, s.constB, s.b);
+        rowOf(rdx, s.out);
+        mov(rcx, r13);
         std::uint64_t bits;
         std::memcpy(&bits, &s.ca, sizeof bits);
         mov(rax, bits);
@@ -339,16 +338,25 @@ class Emitter : public CodeGenerator {
         vzeroupper();
         call(rax);
     }
+    void emitCall(const BatchStep& s) {
+        const vmath::Implementation& vm = vmath::implementation();
+        if (const auto f = vmathUnary(s.op))
+            callUnary(vm.unaryArray[int(*f)], s);
+        else
+            callBinary(
+                vm.binaryArray[int(s.op == Op::Pow ? vmath::Binary::Pow : vmath::Binary::Atan2)],
+                s);
+    }
 
-    // One step; false when its value was written to memory by a call.
-    bool step(const BatchStep& s) {
+    // One step (not a call), its value left in R.
+    void step(const BatchStep& s) {
         switch (s.fused) {
         case Fused::SquareOfDiff: {
             const Ymm a = in(s.a);
             broadcast(S1, s.ca);
             vsubpd(R, a, S1);
             vmulpd(R, R, R);
-            return true;
+            return;
         }
         case Fused::SquareTerms: {
             if (s.constA)
@@ -377,7 +385,7 @@ class Emitter : public CodeGenerator {
                     vaddpd(R, R, CA);
                 }
             }
-            return true;
+            return;
         }
         case Fused::NegatedOperand: {
             const Ymm a = operandA(s), b = operandB(s);
@@ -388,7 +396,7 @@ class Emitter : public CodeGenerator {
                 negate(CB, b);
                 minMax(s.op == Op::Min, R, a, CB);
             }
-            return true;
+            return;
         }
         case Fused::MinMaxChain: {
             const bool isMin = s.op == Op::Min;
@@ -412,44 +420,33 @@ class Emitter : public CodeGenerator {
                 signed_(CB, t);
                 minMax(isMin, R, CA, CB);
             }
-            return true;
+            return;
         }
         case Fused::None:
             break;
         }
-        const vmath::Implementation& vm = vmath::implementation();
-        if (const auto f = vmathUnary(s.op)) {
-            callUnary(vm.unaryArray[int(*f)], s);
-            return false;
-        }
         switch (s.op) {
-        case Op::Pow:
-            callBinary(vm.binaryArray[int(vmath::Binary::Pow)], s);
-            return false;
-        case Op::Atan2:
-            callBinary(vm.binaryArray[int(vmath::Binary::Atan2)], s);
-            return false;
         case Op::Neg:
             negate(R, in(s.a));
-            return true;
+            return;
         case Op::Abs:
             broadcast(S2, -0.0);
             vandnpd(R, S2, in(s.a));
-            return true;
+            return;
         case Op::Square: {
             const Ymm a = in(s.a);
             vmulpd(R, a, a);
-            return true;
+            return;
         }
         case Op::Sqrt:
             vsqrtpd(R, in(s.a));
-            return true;
+            return;
         case Op::Floor:
             vroundpd(R, in(s.a), 0x09);
-            return true;
+            return;
         case Op::Ceil:
             vroundpd(R, in(s.a), 0x0A);
-            return true;
+            return;
         case Op::Sign: { // a > 0 ? 1 : a < 0 ? -1 : a == 0 ? 0 : a (NaN)
             const Ymm a = in(s.a);
             vxorpd(S2, S2, S2);
@@ -462,14 +459,14 @@ class Emitter : public CodeGenerator {
             vorpd(S1, S1, CB);
             vcmppd(CB, a, a, kUnordQ);
             vblendvpd(R, S1, a, CB);
-            return true;
+            return;
         }
         case Op::Not: { // truth(a) ? 0 : 1
             const Ymm a = in(s.a);
             vxorpd(S2, S2, S2);
             vcmppd(S1, a, S2, kEqUQ);
             oneWhere(S1);
-            return true;
+            return;
         }
         case Op::PowI: {
             const Ymm a = in(s.a);
@@ -501,7 +498,7 @@ class Emitter : public CodeGenerator {
                     vdivpd(R, S1, R);
                 }
             }
-            return true;
+            return;
         }
         case Op::Select: {
             if (s.constA) { // a uniform condition: one operand or the other
@@ -512,7 +509,7 @@ class Emitter : public CodeGenerator {
                     broadcast(R, s.cc);
                 else
                     vmovapd(R, in(s.c));
-                return true;
+                return;
             }
             const Ymm a = in(s.a);
             truth(S1, a);
@@ -523,7 +520,7 @@ class Emitter : public CodeGenerator {
             else
                 c = in(s.c);
             vblendvpd(R, c, b, S1);
-            return true;
+            return;
         }
         default:
             break;
@@ -576,7 +573,36 @@ class Emitter : public CodeGenerator {
         default:
             break; // compiles() let nothing else through
         }
-        return true;
+        return;
+    }
+
+    // The loop over the points for steps [first, end), none of them a call.
+    void emitLoop(std::size_t first, std::size_t end) {
+        xor_(ebx, ebx);
+        Label loop, done;
+        L(loop);
+        cmp(rbx, r13);
+        jae(done, T_NEAR);
+        // Two groups of 4 points an iteration, each all steps: independent
+        // chains of work the processor overlaps.
+        for (lane_ = 0; lane_ < 8; lane_ += 4) {
+            for (step_ = first; step_ < end; ++step_) {
+                const BatchStep& s = steps_[step_];
+                step(s);
+                for (Slot& slot : slots_)
+                    slot.pinned = false;
+                define(s.out);
+            }
+            step_ = end;
+            for (int i = 0; i < kSlots; ++i) {
+                const Slot& slot = slots_[std::size_t(i)];
+                if (slot.reg >= 0 && slot.dirty && needed(slot.reg, end)) store(i);
+                release(i);
+            }
+        }
+        add(rbx, 8);
+        jmp(loop, T_NEAR);
+        L(done);
     }
 
     void emit() {
@@ -592,35 +618,21 @@ class Emitter : public CodeGenerator {
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
         and_(r13, ~7u); // sign-extended: whole groups of 8 points
-        xor_(ebx, ebx);
-        Label loop, done;
-        L(loop);
-        cmp(rbx, r13);
-        jae(done, T_NEAR);
-        // Two groups of 4 points an iteration, each all steps: independent
-        // chains of work the processor overlaps.
-        for (lane_ = 0; lane_ < 8; lane_ += 4) {
-            for (step_ = 0; step_ < steps_.size(); ++step_) {
-                const BatchStep& s = steps_[step_];
-                const bool inRegister = step(s);
-                for (Slot& slot : slots_)
-                    slot.pinned = false;
-                if (inRegister) {
-                    define(s.out);
-                } else if (where_[std::size_t(s.out)] >= 0) {
-                    release(where_[std::size_t(s.out)]); // the call wrote its row
-                }
+        // Runs of steps between calls are each one loop over the points; a
+        // call runs once over all of them. What a run leaves for a later one
+        // (or the caller) goes to its row at the run's end.
+        for (std::size_t first = 0; first < steps_.size();) {
+            if (isCall(steps_[first])) {
+                emitCall(steps_[first++]);
+                continue;
             }
-            step_ = steps_.size();
-            for (int i = 0; i < kSlots; ++i) {
-                const Slot& slot = slots_[std::size_t(i)];
-                if (slot.reg >= 0 && slot.dirty && liveOut_[std::size_t(slot.reg)]) store(i);
-                release(i);
-            }
+            std::size_t end = first;
+            while (end < steps_.size() && !isCall(steps_[end]))
+                ++end;
+            emitLoop(first, end);
+            first = end;
         }
-        add(rbx, 8);
-        jmp(loop, T_NEAR);
-        L(done);
+        mov(rbx, r13);
         mov(rax, rbx);
         vzeroupper();
         add(rsp, 8);

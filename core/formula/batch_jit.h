@@ -1,20 +1,22 @@
 #pragma once
 // The batch evaluator's steps compiled to AVX2 machine code at load time
-// (issue 31 §1, a first part): one loop over the block, 8 points an
-// iteration (two groups of 4, independent work the processor overlaps),
-// every step's value kept in a YMM register while it is live
-// (spilled to its workspace row only under register pressure), so a formula
-// runs as the loop a person would write by hand — no pass over memory per
-// instruction. Each operation is the interpreter's, bit for bit: the same
-// IEEE operations in the same order (no FMA contraction), min and max with
-// its NaN rule, comparisons giving exactly 0 or 1 — so JIT and interpreter
-// agree exactly (tests/formula/batch_jit_test.cpp).
+// (issue 31 §1): loops over the block, 8 points an iteration (two groups
+// of 4, independent work the processor overlaps), every step's value kept
+// in a YMM register while it is live (spilled to its workspace row only
+// under register pressure), so a formula runs as the loop a person would
+// write by hand — no pass over memory per instruction. Each operation is
+// the interpreter's, bit for bit: the same IEEE operations in the same
+// order (no FMA contraction), min and max with its NaN rule, comparisons
+// giving exactly 0 or 1 — so JIT and interpreter agree exactly
+// (tests/formula/batch_jit_test.cpp).
 //
-// Steps it does not compile (hypot, mod, round, the R-functions, noise, and
-// by default SLEEF's sin, exp, pow ...: see setCallsAllowed) leave the tape
-// to the interpreter; so do a CPU without AVX2, a system that refuses
-// executable memory, and FUNCTIONLAB_NO_JIT=1. Made with xbyak
-// (header-only, Debian's libxbyak-dev): docs/design-notes.md says why.
+// SLEEF's functions (sin, exp, pow ...) are called once over the block's
+// rows, between the loops of the arithmetic around them, exactly as the
+// interpreter calls them. Steps it does not compile (hypot, mod, round,
+// the R-functions, noise) leave the tape to the interpreter; so do a CPU
+// without AVX2, a system that refuses executable memory, and
+// FUNCTIONLAB_NO_JIT=1. Made with xbyak (header-only, Debian's
+// libxbyak-dev): docs/design-notes.md says why.
 #include "batch_step.h"
 #include "tape.h"
 
@@ -47,9 +49,8 @@ class BatchJit {
     // both ways in one process).
     static bool available();
     static void setAllowed(bool allowed);
-    // Tapes that call SLEEF's functions (sin, exp, pow ...) are left to the
-    // interpreter, which calls them once per block, not per 4 points (faster);
-    // tests turn this on to check the code that calls them.
+    // Whether tapes that call SLEEF's functions are compiled (by default);
+    // tests turn it off to see such a tape left to the interpreter.
     static void setCallsAllowed(bool allowed);
 
   private:

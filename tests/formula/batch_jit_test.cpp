@@ -106,9 +106,9 @@ class BatchJitTest : public ::testing::Test {
   protected:
     void SetUp() override {
         if (!BatchJit::available()) GTEST_SKIP() << "no AVX2 here (or FUNCTIONLAB_NO_JIT)";
-        BatchJit::setCallsAllowed(true); // the code that calls SLEEF is checked too
+        BatchJit::setCallsAllowed(true); // the default: the code that calls SLEEF too
     }
-    void TearDown() override { BatchJit::setCallsAllowed(false); }
+    void TearDown() override { BatchJit::setCallsAllowed(true); }
 };
 
 TEST_F(BatchJitTest, EveryOperationItCompilesGivesTheInterpretersBits) {
@@ -175,7 +175,7 @@ TEST_F(BatchJitTest, EveryOperationItCompilesGivesTheInterpretersBits) {
 }
 
 TEST_F(BatchJitTest, AnOperationItLeavesAloneRunsInterpreted) {
-    BatchJit::setCallsAllowed(false); // by default, SLEEF's functions are the interpreter's
+    BatchJit::setCallsAllowed(false); // turned off, SLEEF's functions are the interpreter's
     EXPECT_FALSE(agreeOnSpecials("sin(x) + y"));
     EXPECT_FALSE(agreeOnSpecials("pow(x, y)"));
     EXPECT_TRUE(agreeOnSpecials("sqrt(x) + y"));
