@@ -13,7 +13,6 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
-#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -27,52 +26,10 @@ std::atomic<bool> allowCalls{true}; // tests turn it off to see a tape left inte
 constexpr std::uint8_t kEqOQ = 0x00, kUnordQ = 0x03, kNeqUQ = 0x04, kEqUQ = 0x08, kNeqOQ = 0x0C,
                        kLtOQ = 0x11, kLeOQ = 0x12, kGeOQ = 0x1D, kGtOQ = 0x1E;
 
-std::optional<vmath::Unary> vmathUnary(Op op) {
-    switch (op) {
-    case Op::Sin:
-        return vmath::Unary::Sin;
-    case Op::Cos:
-        return vmath::Unary::Cos;
-    case Op::Tan:
-        return vmath::Unary::Tan;
-    case Op::Asin:
-        return vmath::Unary::Asin;
-    case Op::Acos:
-        return vmath::Unary::Acos;
-    case Op::Atan:
-        return vmath::Unary::Atan;
-    case Op::Exp:
-        return vmath::Unary::Exp;
-    case Op::Log:
-        return vmath::Unary::Log;
-    case Op::Log2:
-        return vmath::Unary::Log2;
-    case Op::Log10:
-        return vmath::Unary::Log10;
-    case Op::Sinh:
-        return vmath::Unary::Sinh;
-    case Op::Cosh:
-        return vmath::Unary::Cosh;
-    case Op::Tanh:
-        return vmath::Unary::Tanh;
-    case Op::Cbrt:
-        return vmath::Unary::Cbrt;
-    default:
-        return std::nullopt;
-    }
-}
-
-// Whether the JIT makes code for this step (else the whole tape stays with
-// the interpreter).
-bool compiles(const BatchStep& s) {
-    if (s.out < kInputCount) return false; // never write an input's array
+// Whether the emitter writes this step's code itself (else it calls the
+// interpreter's code for it, runBatchStep, once over the block).
+bool inline_(const BatchStep& s) {
     if (s.fused != Fused::None) return true;
-    // SLEEF's functions: one call over the block's rows between the loops
-    // (isCall). Called per 4 points from inside the loop, with every live
-    // value stored around each call, they made the watermelon's colour 1.4x
-    // slower than the interpreter; once per block they are the
-    // interpreter's calls and the arithmetic between them runs in registers.
-    if (vmathUnary(s.op) || s.op == Op::Pow || s.op == Op::Atan2) return allowCalls.load();
     switch (s.op) {
     case Op::Neg:
     case Op::Abs:
@@ -99,14 +56,21 @@ bool compiles(const BatchStep& s) {
     case Op::Or:
     case Op::Select:
         return true;
-    default: // round, hypot, mod, the R-functions, noise
+    default: // SLEEF's functions, round, hypot, mod, the R-functions, noise
         return false;
     }
 }
 
-// Whether the step calls one of SLEEF's array functions (once per block).
-bool isCall(const BatchStep& s) {
-    return s.fused == Fused::None && (vmathUnary(s.op) || s.op == Op::Pow || s.op == Op::Atan2);
+// Whether the JIT makes code for this step (else the whole tape stays with
+// the interpreter). Steps it does not write itself run through the
+// interpreter's code once per block: called per 4 points from inside the
+// loop, with every live value stored around each call, SLEEF's functions
+// made the watermelon's colour 1.4x slower than the interpreter; once per
+// block they cost what the interpreter's do, and the arithmetic between
+// them runs in registers.
+bool compiles(const BatchStep& s) {
+    if (s.out < kInputCount) return false; // never write an input's array
+    return inline_(s) || allowCalls.load();
 }
 
 // The registers a step reads, in the order it reads them.
@@ -303,49 +267,16 @@ class Emitter : public CodeGenerator {
         vxorpd(dst, x, S2);
     }
 
-    // rows of `reg`: its first lane in the block.
-    void rowOf(const Reg64& out, std::int32_t reg) { mov(out, ptr[r12 + reg * 8]); }
-    // A SLEEF array function over the rows of the whole block's points that
-    // the loops do (r13 of them): one call per block, as the interpreter
-    // makes it, so the same function gives the same bits.
-    void callUnary(vmath::ArrayUnary f, const BatchStep& s) {
-        rowOf(rdi, s.a);
-        rowOf(rsi, s.out);
-        mov(rdx, r13);
-        mov(rax, reinterpret_cast<std::uint64_t>(f));
-        vzeroupper();
-        call(rax);
-    }
-    void callBinary(vmath::ArrayBinary f, const BatchStep& s) {
-        auto rowOrNull = [&](const Reg64& out, bool isConst, std::int32_t reg) {
-            if (isConst)
-                xor_(out, out);
-            else
-                rowOf(out, reg);
-        };
-        rowOrNull(rdi, s.constA, s.a);
-        rowOrNull(rsi, s.constB, s.b);
-        rowOf(rdx, s.out);
-        mov(rcx, r13);
-        std::uint64_t bits;
-        std::memcpy(&bits, &s.ca, sizeof bits);
-        mov(rax, bits);
-        vmovq(xmm0, rax);
-        std::memcpy(&bits, &s.cb, sizeof bits);
-        mov(rax, bits);
-        vmovq(xmm1, rax);
-        mov(rax, reinterpret_cast<std::uint64_t>(f));
-        vzeroupper();
-        call(rax);
-    }
+    // The interpreter's code for step `s` over the points the loops do (r13
+    // of them): one call a block. `s` is the code's own copy of the step.
     void emitCall(const BatchStep& s) {
-        const vmath::Implementation& vm = vmath::implementation();
-        if (const auto f = vmathUnary(s.op))
-            callUnary(vm.unaryArray[int(*f)], s);
-        else
-            callBinary(
-                vm.binaryArray[int(s.op == Op::Pow ? vmath::Binary::Pow : vmath::Binary::Atan2)],
-                s);
+        mov(rdi, reinterpret_cast<std::uint64_t>(&s));
+        mov(rsi, r12);
+        mov(rdx, r13);
+        mov(rcx, r15);
+        mov(rax, reinterpret_cast<std::uint64_t>(&runBatchStep));
+        vzeroupper();
+        call(rax);
     }
 
     // One step (not a call), its value left in R.
@@ -606,7 +537,8 @@ class Emitter : public CodeGenerator {
     }
 
     void emit() {
-        // double* const* base (rdi), size_t n (rsi); rbx: the point index.
+        // double* const* base (rdi), size_t n (rsi), double* const* scratch
+        // (rdx); rbx: the point index.
         push(rbx);
         push(rbp);
         push(r12);
@@ -615,6 +547,7 @@ class Emitter : public CodeGenerator {
         push(r15);
         sub(rsp, 8); // 16-byte aligned for calls
         mov(r12, rdi);
+        mov(r15, rdx); // the interpreter's scratch rows, for runBatchStep
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
         and_(r13, ~7u); // sign-extended: whole groups of 8 points
@@ -622,12 +555,12 @@ class Emitter : public CodeGenerator {
         // call runs once over all of them. What a run leaves for a later one
         // (or the caller) goes to its row at the run's end.
         for (std::size_t first = 0; first < steps_.size();) {
-            if (isCall(steps_[first])) {
+            if (!inline_(steps_[first])) {
                 emitCall(steps_[first++]);
                 continue;
             }
             std::size_t end = first;
-            while (end < steps_.size() && !isCall(steps_[end]))
+            while (end < steps_.size() && inline_(steps_[end]))
                 ++end;
             emitLoop(first, end);
             first = end;
@@ -650,7 +583,8 @@ class Emitter : public CodeGenerator {
 
 struct BatchJit::Code {
     std::unique_ptr<Emitter> emitter;
-    std::size_t (*run)(double* const*, std::size_t) = nullptr;
+    std::vector<BatchStep> steps; // what the code calls runBatchStep with: never moves
+    std::size_t (*run)(double* const*, std::size_t, double* const*) = nullptr;
 };
 
 BatchJit::BatchJit(std::unique_ptr<Code> code) : code_(std::move(code)) {}
@@ -734,9 +668,11 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
     std::shared_ptr<const BatchJit> made;
     try {
         auto code = std::make_unique<Code>();
-        code->emitter = std::make_unique<Emitter>(steps, liveOut, registerCount, size);
+        code->steps = steps;
+        code->emitter = std::make_unique<Emitter>(code->steps, liveOut, registerCount, size);
         code->emitter->ready();
-        code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
+        code->run =
+            code->emitter->getCode<std::size_t (*)(double* const*, std::size_t, double* const*)>();
         made = std::shared_ptr<const BatchJit>(new BatchJit(std::move(code)));
     } catch (const std::exception&) { // no executable memory, code too large: interpret
         return nullptr;
@@ -753,8 +689,8 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
     return it->second;
 }
 
-std::size_t BatchJit::run(double* const* base, std::size_t n) const {
-    return code_->run(base, n);
+std::size_t BatchJit::run(double* const* base, std::size_t n, double* const* scratch) const {
+    return code_->run(base, n, scratch);
 }
 
 std::size_t BatchJit::codeBytes() const {

@@ -10,13 +10,13 @@
 // giving exactly 0 or 1 — so JIT and interpreter agree exactly
 // (tests/formula/batch_jit_test.cpp).
 //
-// SLEEF's functions (sin, exp, pow ...) are called once over the block's
-// rows, between the loops of the arithmetic around them, exactly as the
-// interpreter calls them. Steps it does not compile (hypot, mod, round,
-// the R-functions, noise) leave the tape to the interpreter; so do a CPU
-// without AVX2, a system that refuses executable memory, and
-// FUNCTIONLAB_NO_JIT=1. Made with xbyak (header-only, Debian's
-// libxbyak-dev): docs/design-notes.md says why.
+// The steps it does not emit inline — SLEEF's functions (sin, exp, pow
+// ...), hypot, mod, round, the R-functions, noise — run through the
+// interpreter's own code for them (runBatchStep), once over the block's
+// rows, between the loops of the arithmetic around them: the same code, so
+// the same bits. A CPU without AVX2, a system that refuses executable
+// memory and FUNCTIONLAB_NO_JIT=1 leave every tape to the interpreter. Made with xbyak
+// (header-only, Debian's libxbyak-dev): docs/design-notes.md says why.
 #include "batch_step.h"
 #include "tape.h"
 
@@ -39,8 +39,9 @@ class BatchJit {
     ~BatchJit();
 
     // Runs the steps over the first (n & ~7) points of the block (base as the
-    // interpreter's runBlock takes it); returns how many points it did.
-    std::size_t run(double* const* base, std::size_t n) const;
+    // interpreter's runBlock takes it; scratch: its three spare rows, for the
+    // steps run through runBatchStep); returns how many points it did.
+    std::size_t run(double* const* base, std::size_t n, double* const* scratch) const;
 
     std::size_t codeBytes() const;
 
@@ -49,8 +50,8 @@ class BatchJit {
     // both ways in one process).
     static bool available();
     static void setAllowed(bool allowed);
-    // Whether tapes that call SLEEF's functions are compiled (by default);
-    // tests turn it off to see such a tape left to the interpreter.
+    // Whether tapes with steps it does not emit inline are compiled (by
+    // default); tests turn it off to see such a tape left to the interpreter.
     static void setCallsAllowed(bool allowed);
 
   private:

@@ -262,10 +262,10 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
 // Compiled twice — baseline and AVX2 — and picked at load time by the CPU, so
 // the arithmetic loops run 4 lanes wide where they can. Without FMA contraction
 // (-ffp-contract=off) both clones round exactly like the scalar evaluator.
-__attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(double* const* base,
-                                                                                std::size_t n) {
+__attribute__((target_clones("avx2", "default"))) void
+runBatchStep(const BatchStep& s, double* const* base, std::size_t n, double* const* scratch) {
     const vmath::Implementation& vm = vmath::implementation();
-    for (const Step& s : steps_) {
+    {
         double* __restrict o = base[s.out];
         switch (s.fused) {
         case Fused::None:
@@ -276,20 +276,20 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
                 double d = a - c;
                 return d * d;
             });
-            continue;
+            return;
         }
         case Fused::SquareTerms:
             if (s.constA)
                 squareTermsDispatch<true>(s, base, o, n);
             else
                 squareTermsDispatch<false>(s, base, o, n);
-            continue;
+            return;
         case Fused::MinMaxChain:
             if (s.op == Op::Min)
                 chainDispatch<true>(s, base, o, n);
             else
                 chainDispatch<false>(s, base, o, n);
-            continue;
+            return;
         case Fused::NegatedOperand: {
             auto mn = [](double a, double b) { return ops::min(a, b); };
             auto mx = [](double a, double b) { return ops::max(a, b); };
@@ -299,7 +299,7 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
             else
                 s.negA ? negatedLoop<true>(s, base, o, n, mx)
                        : negatedLoop<false>(s, base, o, n, mx);
-            continue;
+            return;
         }
         }
         switch (s.op) {
@@ -478,8 +478,8 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
             const std::int32_t reg[3] = {s.a, s.b, s.c};
             for (int k = 0; k < 3; ++k) {
                 if (isConst[k]) {
-                    std::fill(scratch_[k], scratch_[k] + n, cval[k]);
-                    p[k] = scratch_[k];
+                    std::fill(scratch[k], scratch[k] + n, cval[k]);
+                    p[k] = scratch[k];
                 } else {
                     p[k] = base[reg[k]];
                 }
@@ -495,6 +495,11 @@ __attribute__((target_clones("avx2", "default"))) void BatchEvaluator::runBlock(
         }
         }
     }
+}
+
+void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
+    for (const Step& s : steps_)
+        runBatchStep(s, base, n, scratch_.data());
 }
 
 void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* const* outputs) {
@@ -515,7 +520,7 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
         const std::size_t outReg = direct ? std::size_t(tape_.outputs[0].value.reg) : 0;
         if (direct) base[outReg] = outputs[0] + start;
         // The JIT does whole groups of 4 points, the interpreter the rest.
-        const std::size_t done = jit_ ? jit_->run(base.data(), count) : 0;
+        const std::size_t done = jit_ ? jit_->run(base.data(), count, scratch_.data()) : 0;
         if (done == 0) {
             runBlock(base.data(), count);
         } else if (done < count) {

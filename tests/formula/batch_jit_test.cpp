@@ -76,8 +76,9 @@ Outcome evaluate(const Tape& tape, bool allowJit, const std::vector<double>& xs,
 }
 
 // Both ways over every pair of special values (and z a mix); true when the JIT ran.
-bool agreeOnSpecials(const std::string& src, bool uniformY = false) {
-    CompileResult r = compile(src);
+bool agreeOnSpecials(const std::string& src, bool uniformY = false,
+                     const CompileOptions& options = {}) {
+    CompileResult r = compile(src, options);
     EXPECT_TRUE(r.ok()) << src;
     if (!r.ok()) return false;
     std::vector<double> xs, ys, zs;
@@ -112,59 +113,21 @@ class BatchJitTest : public ::testing::Test {
 };
 
 TEST_F(BatchJitTest, EveryOperationItCompilesGivesTheInterpretersBits) {
-    const char* compiled[] = {"x + y",
-                              "x - y",
-                              "x * y",
-                              "x / y",
-                              "min(x, y)",
-                              "max(x, y)",
-                              "-x + y",
-                              "abs(x) + y",
-                              "sqrt(x) + y",
-                              "floor(x) + y",
-                              "ceil(x) + y",
-                              "sign(x) + y",
-                              "x^2 + y",
-                              "x^3 + y",
-                              "x^4 + y",
-                              "x^5 + y",
-                              "x^-1 + y",
-                              "x^-2 + y",
-                              "x^-3 + y",
-                              "x^0 + y",
-                              "(x < y) + z",
-                              "(x <= y) + z",
-                              "(x > y) + z",
-                              "(x >= y) + z",
-                              "(x == y) + z",
-                              "(x != y) + z",
-                              "(x && y) + z",
-                              "(x || y) + z",
-                              "!x + y",
-                              "x ? y : z",
-                              "x ? 2 : z",
-                              "x ? y : 3",
-                              "sin(x) + y",
-                              "cos(x) * y",
-                              "exp(x) - y",
-                              "log(x) + y",
-                              "tan(x) + y",
-                              "atan(x) + y",
-                              "pow(x, y)",
-                              "atan2(x, y)",
-                              "pow(x, 2.5) + y",
-                              "atan2(1.5, y) + x",
-                              "cbrt(x) + y",
-                              "tanh(x) + sinh(y)",
-                              "x & y",
-                              "x | y",
-                              "x \\ y",
-                              "min(x, min(y, min(z, x * y)))",
-                              "max(max(x, -y), max(-z, y))",
-                              "1 - x^2 - y^2 - z^2",
-                              "(x - 1)^2 + (y + 2)^2 - z",
-                              "x*x + y*y + z*z - 0.5",
-                              "2 - (x - y)^2"};
+    const char* compiled[] = {
+        "x + y", "x - y", "x * y", "x / y", "min(x, y)", "max(x, y)", "-x + y", "abs(x) + y",
+        "sqrt(x) + y", "floor(x) + y", "ceil(x) + y", "sign(x) + y", "x^2 + y", "x^3 + y",
+        "x^4 + y", "x^5 + y", "x^-1 + y", "x^-2 + y", "x^-3 + y", "x^0 + y", "(x < y) + z",
+        "(x <= y) + z", "(x > y) + z", "(x >= y) + z", "(x == y) + z", "(x != y) + z",
+        "(x && y) + z", "(x || y) + z", "!x + y", "x ? y : z", "x ? 2 : z", "x ? y : 3",
+        "sin(x) + y", "cos(x) * y", "exp(x) - y", "log(x) + y", "tan(x) + y", "atan(x) + y",
+        "pow(x, y)", "atan2(x, y)", "pow(x, 2.5) + y", "atan2(1.5, y) + x", "cbrt(x) + y",
+        "tanh(x) + sinh(y)", "x & y", "x | y", "x \\ y", "min(x, min(y, min(z, x * y)))",
+        "max(max(x, -y), max(-z, y))", "1 - x^2 - y^2 - z^2", "(x - 1)^2 + (y + 2)^2 - z",
+        "x*x + y*y + z*z - 0.5", "2 - (x - y)^2",
+        // run through the interpreter's code, between compiled loops
+        "hypot(x, y) - z", "x - mod(y, 3) * z", "round(x * 3) + y", "noise(x, y, z) * 2 + x",
+        "noise(x, 0.5, z) + y", "x * y + sin(x * y) * (x - y) + cos(x + y) * x * y",
+        "atan2(x, z) * hypot(x, y) - sin(x) * mod(z, 1.5)"};
     int ran = 0;
     for (const char* src : compiled) {
         ran += agreeOnSpecials(src) ? 1 : 0;
@@ -174,16 +137,27 @@ TEST_F(BatchJitTest, EveryOperationItCompilesGivesTheInterpretersBits) {
     EXPECT_EQ(ran, int(std::size(compiled)));
 }
 
-TEST_F(BatchJitTest, AnOperationItLeavesAloneRunsInterpreted) {
-    BatchJit::setCallsAllowed(false); // turned off, SLEEF's functions are the interpreter's
-    EXPECT_FALSE(agreeOnSpecials("sin(x) + y"));
-    EXPECT_FALSE(agreeOnSpecials("pow(x, y)"));
+TEST_F(BatchJitTest, RFunctionsRunCompiledWithTheInterpretersBits) {
+    for (const double m : {0.0, 1.0, 2.0})
+        for (const double alpha : {0.0, 0.4, 1.0}) {
+            CompileOptions o;
+            o.setOperations = {SetOperationMode::Kind::RFunction, m, alpha};
+            EXPECT_TRUE(agreeOnSpecials("(x & y) | (z \\ (x - y))", false, o))
+                << "m " << m << " alpha " << alpha;
+            agreeOnSpecials("(x & y) | z", true, o);
+        }
+}
+
+TEST_F(BatchJitTest, StepsRunThroughTheInterpretersCodeCanBeTurnedOff) {
+    // Steps the emitter does not write itself run through the interpreter's
+    // code (runBatchStep) once a block; turned off, their tapes stay
+    // interpreted whole.
+    BatchJit::setCallsAllowed(false);
+    for (const char* src : {"sin(x) + y", "pow(x, y)", "hypot(x, y)", "x - mod(y, 3)",
+                            "noise(x, y, z)", "round(x) + y"})
+        EXPECT_FALSE(agreeOnSpecials(src)) << src;
     EXPECT_TRUE(agreeOnSpecials("sqrt(x) + y"));
     BatchJit::setCallsAllowed(true);
-    EXPECT_FALSE(agreeOnSpecials("hypot(x, y)"));
-    EXPECT_FALSE(agreeOnSpecials("x - mod(y, 3)"));
-    EXPECT_FALSE(agreeOnSpecials("noise(x, y, z)"));
-    EXPECT_TRUE(agreeOnSpecials("x + y"));
     BatchJit::setAllowed(false);
     EXPECT_FALSE(BatchJit::available());
     BatchJit::setAllowed(true);
