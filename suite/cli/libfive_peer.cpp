@@ -40,8 +40,7 @@ std::optional<MeshPeerRow> runLibfivePeer(const field::ImplicitField& field,
     const auto read = ms ? readBinaryStl(stlPath, problem) : std::nullopt;
     fs::remove_all(dir, ec);
     if (!ms || !used) {
-        why = "the libfive peer failed: " +
-              (output.size() > 400 ? output.substr(output.size() - 400) : output);
+        why = "the libfive peer failed: " + outputTail(output);
         return std::nullopt;
     }
     if (!read) {

@@ -40,6 +40,10 @@ std::string runCapturing(const std::string& command) {
     return output;
 }
 
+std::string outputTail(const std::string& output, std::size_t most) {
+    return output.size() > most ? output.substr(output.size() - most) : output;
+}
+
 std::optional<double> jsonNumber(const std::string& text, const std::string& key) {
     const std::regex re("\"" + key + "\":\\s*([-+0-9.eE]+)");
     std::smatch m;

@@ -33,6 +33,9 @@ std::string shellQuoted(const std::string& s);
 // printed, with "(exit status N)" appended when that is not 0.
 std::string runCapturing(const std::string& command);
 
+// The last `most` characters of a peer's output (what to show of its failure).
+std::string outputTail(const std::string& output, std::size_t most = 400);
+
 // The value of "key": NUMBER in a line of JSON.
 std::optional<double> jsonNumber(const std::string& text, const std::string& key);
 

@@ -100,7 +100,7 @@ std::optional<MeshPeerRow> runVtkPeer(const field::ImplicitField& field, double 
     fs::remove_all(dir, ec);
     if (!ms) {
         why = "the VTK peer needs Debian's python3-vtk9 (apt-get install python3-vtk9): " +
-              (output.size() > 400 ? output.substr(output.size() - 400) : output);
+              outputTail(output);
         return std::nullopt;
     }
     if (!read) {
