@@ -1,5 +1,7 @@
 #include "batch_jit.h"
 
+#include "batch_step_run.h"
+
 #include "vector_math.h"
 
 #include <xbyak/xbyak.h>
@@ -537,8 +539,7 @@ class Emitter : public CodeGenerator {
     }
 
     void emit() {
-        // double* const* base (rdi), size_t n (rsi), double* const* scratch
-        // (rdx); rbx: the point index.
+        // double* const* base (rdi), size_t n (rsi); rbx: the point index.
         push(rbx);
         push(rbp);
         push(r12);
@@ -547,7 +548,8 @@ class Emitter : public CodeGenerator {
         push(r15);
         sub(rsp, 8); // 16-byte aligned for calls
         mov(r12, rdi);
-        mov(r15, rdx); // the interpreter's scratch rows, for runBatchStep
+        // the interpreter's three scratch rows follow the registers' (runBatchStep)
+        lea(r15, ptr[r12 + int(where_.size() * sizeof(double*))]);
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
         and_(r13, ~7u); // sign-extended: whole groups of 8 points
@@ -584,7 +586,7 @@ class Emitter : public CodeGenerator {
 struct BatchJit::Code {
     std::unique_ptr<Emitter> emitter;
     std::vector<BatchStep> steps; // what the code calls runBatchStep with: never moves
-    std::size_t (*run)(double* const*, std::size_t, double* const*) = nullptr;
+    std::size_t (*run)(double* const*, std::size_t) = nullptr;
 };
 
 BatchJit::BatchJit(std::unique_ptr<Code> code) : code_(std::move(code)) {}
@@ -671,8 +673,7 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
         code->steps = steps;
         code->emitter = std::make_unique<Emitter>(code->steps, liveOut, registerCount, size);
         code->emitter->ready();
-        code->run =
-            code->emitter->getCode<std::size_t (*)(double* const*, std::size_t, double* const*)>();
+        code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
         made = std::shared_ptr<const BatchJit>(new BatchJit(std::move(code)));
     } catch (const std::exception&) { // no executable memory, code too large: interpret
         return nullptr;
@@ -689,8 +690,8 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
     return it->second;
 }
 
-std::size_t BatchJit::run(double* const* base, std::size_t n, double* const* scratch) const {
-    return code_->run(base, n, scratch);
+std::size_t BatchJit::run(double* const* base, std::size_t n) const {
+    return code_->run(base, n);
 }
 
 std::size_t BatchJit::codeBytes() const {

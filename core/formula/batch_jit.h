@@ -1,22 +1,20 @@
 #pragma once
 // The batch evaluator's steps compiled to AVX2 machine code at load time
 // (issue 31 §1): loops over the block, 8 points an iteration (two groups
-// of 4, independent work the processor overlaps), every step's value kept
-// in a YMM register while it is live (spilled to its workspace row only
-// under register pressure), so a formula runs as the loop a person would
-// write by hand — no pass over memory per instruction. Each operation is
-// the interpreter's, bit for bit: the same IEEE operations in the same
-// order (no FMA contraction), min and max with its NaN rule, comparisons
-// giving exactly 0 or 1 — so JIT and interpreter agree exactly
-// (tests/formula/batch_jit_test.cpp).
+// of 4, independent work the processor overlaps), every step's value in a
+// YMM register while it is live (spilled to its workspace row only under
+// register pressure), so a formula runs as the loop a person would write
+// by hand. Each operation is the interpreter's, bit for bit: the same IEEE
+// operations in the same order (no FMA contraction), min and max with its
+// NaN rule, comparisons giving exactly 0 or 1 (batch_jit_test.cpp).
 //
-// The steps it does not emit inline — SLEEF's functions (sin, exp, pow
-// ...), hypot, mod, round, the R-functions, noise — run through the
-// interpreter's own code for them (runBatchStep), once over the block's
-// rows, between the loops of the arithmetic around them: the same code, so
-// the same bits. A CPU without AVX2, a system that refuses executable
-// memory and FUNCTIONLAB_NO_JIT=1 leave every tape to the interpreter. Made with xbyak
-// (header-only, Debian's libxbyak-dev): docs/design-notes.md says why.
+// Steps it does not write itself (SLEEF's sin, exp, pow ..., hypot, mod,
+// round, the R-functions, noise) run through the interpreter's own code
+// for them (runBatchStep), once over the block between the loops: the
+// same code, the same bits. A CPU without AVX2, a system that refuses
+// executable memory and FUNCTIONLAB_NO_JIT=1 leave tapes to the
+// interpreter. Made with xbyak (header-only, Debian's libxbyak-dev):
+// docs/design-notes.md says why.
 #include "batch_step.h"
 #include "tape.h"
 
@@ -38,10 +36,9 @@ class BatchJit {
                                                    std::int32_t registerCount);
     ~BatchJit();
 
-    // Runs the steps over the first (n & ~7) points of the block (base as the
-    // interpreter's runBlock takes it; scratch: its three spare rows, for the
-    // steps run through runBatchStep); returns how many points it did.
-    std::size_t run(double* const* base, std::size_t n, double* const* scratch) const;
+    // Runs the steps over the first (n & ~7) points (base as runBlock takes
+    // it, followed by its three scratch rows); returns how many it did.
+    std::size_t run(double* const* base, std::size_t n) const;
 
     std::size_t codeBytes() const;
 
@@ -50,8 +47,9 @@ class BatchJit {
     // both ways in one process).
     static bool available();
     static void setAllowed(bool allowed);
-    // Whether tapes with steps it does not emit inline are compiled (by
-    // default); tests turn it off to see such a tape left to the interpreter.
+    // Whether tapes with steps it does not write itself are compiled (the
+    // default) or left to the interpreter whole (tests turn it off to see
+    // such a tape interpreted).
     static void setCallsAllowed(bool allowed);
 
   private:

@@ -4,7 +4,6 @@
 // fused into one pass (batch_fusion.h). Private to the batch evaluator.
 #include "opcodes.h"
 
-#include <cstddef>
 #include <cstdint>
 
 namespace fl::formula {
@@ -36,11 +35,5 @@ struct BatchStep {
     std::int32_t chainReg[4] = {0, 0, 0, 0};
     double chainSign[4] = {1.0, 1.0, 1.0, 1.0}; // -1: the operand is negated first
 };
-
-// The interpreter's code for one step over the rows of n points (base:
-// each register's row; scratch: three spare rows, for constant operands of
-// ternary steps). BatchEvaluator runs every step through it; the JIT calls
-// it for the steps it does not emit inline, so both give the same bits.
-void runBatchStep(const BatchStep& s, double* const* base, std::size_t n, double* const* scratch);
 
 } // namespace fl::formula

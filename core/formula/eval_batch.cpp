@@ -1,5 +1,7 @@
 #include "eval_batch.h"
 
+#include "batch_step_run.h"
+
 #include "batch_fusion.h"
 #include "scalar_ops.h"
 #include "vector_math.h"
@@ -505,9 +507,12 @@ void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
 void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* const* outputs) {
     specialise(in);
     const std::size_t regs = static_cast<std::size_t>(tape_.registerCount);
-    std::vector<double*> base(regs);
+    // The registers' rows, then the three scratch rows (the JIT passes them on
+    // to runBatchStep).
+    std::vector<double*> base(regs + scratch_.size());
     for (std::size_t r = 0; r < regs; ++r)
         base[r] = workspace_ + r * kStride;
+    std::copy(scratch_.begin(), scratch_.end(), base.begin() + std::ptrdiff_t(regs));
     for (std::size_t start = 0; start < n; start += kBlock) {
         const std::size_t count = std::min(kBlock, n - start);
         for (int i = 0; i < kInputCount; ++i)
@@ -520,7 +525,7 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
         const std::size_t outReg = direct ? std::size_t(tape_.outputs[0].value.reg) : 0;
         if (direct) base[outReg] = outputs[0] + start;
         // The JIT does whole groups of 4 points, the interpreter the rest.
-        const std::size_t done = jit_ ? jit_->run(base.data(), count, scratch_.data()) : 0;
+        const std::size_t done = jit_ ? jit_->run(base.data(), count) : 0;
         if (done == 0) {
             runBlock(base.data(), count);
         } else if (done < count) {
