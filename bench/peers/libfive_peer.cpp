@@ -4,13 +4,17 @@
 // measures the triangles it writes with the same error code as its own.
 //
 // usage: functionlab-libfive-peer FORMULA X0 Y0 Z0 X1 Y1 Z1 RESOLUTION THREADS REPEATS OUT.stl
+//                                 [M ALPHA]
+// (M ALPHA: & | \ are the R-functions of continuity M and parameter ALPHA,
+// as a scene's setOperations="rfunction" makes them; else min and max.)
 //
 // The formula is compiled by FunctionLab's compiler and its tape rebuilt as a
 // libfive tree, operation by operation (libfive has no select, comparison,
 // rounding or noise: such a formula is refused, naming the operation).
-// libfive's octree halves its box, so the cells are the box over a power of
-// two along each axis: the least power of two at or above RESOLUTION along
-// the box's shortest side (the resolution used is printed). Timed: the least
+// libfive's octree halves its box along every axis at once, so its cells
+// are the box over a power of two along each axis: the least power of two
+// at or above RESOLUTION (cells along the longest side, as FunctionLab
+// counts them; the cells are cubes only in a cube box), printed. Timed: the least
 // of REPEATS calls of Mesh::render with evaluators made beforehand (as
 // functionlab's meshers are timed from a compiled tape). Prints one line of
 // JSON; exit 0 meshed, 1 the formula cannot be meshed here, 2 usage error.
@@ -48,6 +52,7 @@ struct Args {
     unsigned threads;
     int repeats;
     std::string out;
+    std::optional<fl::formula::SetOperationMode> rfunctions;
 };
 
 std::optional<double> number(const char* s) {
@@ -58,7 +63,7 @@ std::optional<double> number(const char* s) {
 }
 
 std::optional<Args> parse(int argc, char** argv) {
-    if (argc != 12) return std::nullopt;
+    if (argc != 12 && argc != 14) return std::nullopt;
     Args a;
     a.formula = argv[1];
     double v[9];
@@ -72,12 +77,21 @@ std::optional<Args> parse(int argc, char** argv) {
         a.hi[k] = v[3 + k];
         if (!(a.hi[k] > a.lo[k])) return std::nullopt;
     }
-    if (!(v[6] >= 1 && v[6] <= 4096) || !(v[7] >= 1 && v[7] <= 256) || !(v[8] >= 1 && v[8] <= 100))
+    const auto whole = [](double x, double lo, double hi) {
+        return x == std::floor(x) && x >= lo && x <= hi;
+    };
+    if (!(v[6] >= 1 && v[6] <= 4096) || !whole(v[7], 1, 1024) || !whole(v[8], 1, 100))
         return std::nullopt;
     a.resolution = v[6];
     a.threads = unsigned(v[7]);
     a.repeats = int(v[8]);
     a.out = argv[11];
+    if (argc == 14) {
+        const auto m = number(argv[12]), alpha = number(argv[13]);
+        if (!m || !alpha || *m < 0 || !(*alpha > -1 && *alpha <= 1)) return std::nullopt;
+        a.rfunctions = fl::formula::SetOperationMode{fl::formula::SetOperationMode::Kind::RFunction,
+                                                     *m, *alpha};
+    }
     return a;
 }
 
@@ -88,11 +102,15 @@ std::optional<int> integerValue(double v) {
 
 // The R-functions in their textbook form (formula/rfunctions.h keeps ours
 // exact at extremes; a benchmark shape does not reach them):
-// (a + b - sqrt(a² + b² - 2αab)) / (1 + α) · (a² + b²)^(m/2).
+// (a + b - sqrt(a² + b² - 2αab)) / (1 + α) · (a² + b²)^(m/2), the radicand
+// held at 0 or above (rounding takes it below where a ≈ b and α = 1); α = 1
+// is min, as ours is.
 std::optional<Tree> rIntersect(const Tree& a, const Tree& b, double m, double alpha) {
     const auto mi = integerValue(m);
     if (!mi || *mi < 0) return std::nullopt;
-    Tree r = (a + b - sqrt(square(a) + square(b) - 2.0 * alpha * a * b)) / (1.0 + alpha);
+    Tree r = alpha >= 1 ? min(a, b)
+                        : (a + b - sqrt(max(square(a) + square(b) - 2.0 * alpha * a * b, 0.0))) /
+                              (1.0 + alpha);
     if (*mi > 0) r = r * pow(sqrt(square(a) + square(b)), Tree(double(*mi)));
     return r;
 }
@@ -195,8 +213,11 @@ std::optional<Tree> treeOf(const fl::formula::Tape& tape, std::string& why) {
                 r = pow(*a, *b);
             else if (in.b.isConst() && in.b.value == 0.5)
                 r = sqrt(*a);
-            else if (in.b.isConst() && in.b.value != 0 && integerValue(1.0 / in.b.value))
-                r = nth_root(*a, Tree(1.0 / in.b.value));
+            else if (const auto n = in.b.isConst() && in.b.value > 0
+                                        ? integerValue(1.0 / in.b.value)
+                                        : std::nullopt;
+                     n && *n > 0 && *n % 2 == 0)
+                r = nth_root(*a, Tree(double(*n))); // even roots: NaN below 0 on both sides
             break;
         case Op::Min:
             r = min(*a, *b);
@@ -210,8 +231,8 @@ std::optional<Tree> treeOf(const fl::formula::Tape& tape, std::string& why) {
         case Op::Hypot:
             r = sqrt(square(*a) + square(*b));
             break;
-        case Op::Mod:
-            r = mod(*a, *b);
+        case Op::Mod: // libfive's loops forever for b < 0; its intervals assume b > 0
+            if (in.b.isConst() && in.b.value > 0) r = mod(*a, *b);
             break;
         case Op::RIntersect:
             r = rIntersect(*a, *b, in.imm0, in.imm1);
@@ -239,9 +260,10 @@ std::optional<Tree> treeOf(const fl::formula::Tape& tape, std::string& why) {
         if (!r) {
             const bool power = in.op == Op::Pow || in.op == Op::PowI;
             const bool rfunction = in.op == Op::RIntersect || in.op == Op::RUnion;
-            why = power       ? "libfive raises to whole constant powers (or their roots) only"
+            why = power       ? "libfive raises to whole constant powers (or their even roots) only"
                   : rfunction ? "libfive has no R-function of non-whole continuity"
-                              : std::string("libfive has no ") + fl::formula::opName(in.op);
+                  : in.op == Op::Mod ? "libfive's mod takes a positive constant divisor only"
+                                     : std::string("libfive has no ") + fl::formula::opName(in.op);
             return std::nullopt;
         }
         if (in.out < 0 || std::size_t(in.out) >= regs.size()) {
@@ -286,11 +308,12 @@ int main(int argc, char** argv) {
     const auto args = parse(argc, argv);
     if (!args) {
         std::cerr << "usage: functionlab-libfive-peer FORMULA X0 Y0 Z0 X1 Y1 Z1 RESOLUTION "
-                     "THREADS REPEATS OUT.stl\n";
+                     "THREADS REPEATS OUT.stl [M ALPHA]\n";
         return 2;
     }
     fl::formula::CompileOptions options;
     options.kind = fl::formula::DefinitionKind::Implicit;
+    if (args->rfunctions) options.setOperations = *args->rfunctions;
     const fl::formula::CompileResult compiled = fl::formula::compile(args->formula, options);
     for (const fl::formula::Diagnostic& d : compiled.diagnostics)
         std::cerr << fl::formula::formatDiagnostic(d, args->formula, "formula");
@@ -302,18 +325,14 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    double sides[3], longest = 0, shortest = 1e300;
-    for (int k = 0; k < 3; ++k) {
-        sides[k] = args->hi[k] - args->lo[k];
-        longest = std::max(longest, sides[k]);
-        shortest = std::min(shortest, sides[k]);
-    }
-    const int level =
-        std::max(0, int(std::ceil(std::log2(args->resolution * shortest / longest) - 1e-9)));
+    double shortest = 1e300;
+    for (int k = 0; k < 3; ++k)
+        shortest = std::min(shortest, args->hi[k] - args->lo[k]);
+    const int level = std::max(0, int(std::ceil(std::log2(args->resolution) - 1e-9)));
     libfive::BRepSettings settings;
     settings.workers = args->threads;
-    // libfive takes the level as ceil(log2(shortest / min_feature)) in single
-    // precision: a hair above the cell keeps that at `level` exactly.
+    // libfive takes the depth as ceil(log2(shortest side / min_feature)): a
+    // hair above the cell along the shortest side lands on `level` exactly.
     settings.min_feature = shortest / std::ldexp(1.0, level) * (1 + 1e-3);
     const libfive::Region<3> region({args->lo[0], args->lo[1], args->lo[2]},
                                     {args->hi[0], args->hi[1], args->hi[2]});
@@ -342,6 +361,6 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::printf("{\"ms\": %.6g, \"triangles\": %zu, \"resolution\": %.6g, \"threads\": %u}\n", best,
-                mesh->branes.size(), std::ldexp(1.0, level) * longest / shortest, settings.workers);
+                mesh->branes.size(), std::ldexp(1.0, level), settings.workers);
     return 0;
 }

@@ -134,8 +134,8 @@ class Emitter : public CodeGenerator {
     };
 
     const std::vector<BatchStep>& steps_;
-    const std::vector<char>& liveOut_;
-    std::vector<int> where_; // register -> slot, or -1 (in its row)
+    const std::vector<char> liveOut_; // a copy: the emitter outlives compile()'s arguments
+    std::vector<int> where_;          // register -> slot, or -1 (in its row)
     std::vector<std::vector<Event>> events_;
     std::array<Slot, kSlots> slots_{};
     std::size_t step_ = 0;

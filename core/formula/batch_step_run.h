@@ -11,6 +11,8 @@ namespace fl::formula {
 
 // Step `s` over the rows of n points (base: each register's row; scratch:
 // three spare rows, for the constant operands of ternary steps).
-void runBatchStep(const BatchStep& s, double* const* base, std::size_t n, double* const* scratch);
+// noexcept: the JIT's frames cannot be unwound through.
+void runBatchStep(const BatchStep& s, double* const* base, std::size_t n,
+                  double* const* scratch) noexcept;
 
 } // namespace fl::formula

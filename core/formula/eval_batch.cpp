@@ -265,7 +265,8 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
 // the arithmetic loops run 4 lanes wide where they can. Without FMA contraction
 // (-ffp-contract=off) both clones round exactly like the scalar evaluator.
 __attribute__((target_clones("avx2", "default"))) void
-runBatchStep(const BatchStep& s, double* const* base, std::size_t n, double* const* scratch) {
+runBatchStep(const BatchStep& s, double* const* base, std::size_t n,
+             double* const* scratch) noexcept {
     const vmath::Implementation& vm = vmath::implementation();
     {
         double* __restrict o = base[s.out];
@@ -524,8 +525,10 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
                             !isUniform_[std::size_t(tape_.outputs[0].value.reg)];
         const std::size_t outReg = direct ? std::size_t(tape_.outputs[0].value.reg) : 0;
         if (direct) base[outReg] = outputs[0] + start;
-        // The JIT does whole groups of 4 points, the interpreter the rest.
-        const std::size_t done = jit_ ? jit_->run(base.data(), count) : 0;
+        // The JIT does whole groups of 8 points (`base` with the scratch rows
+        // after the registers': it hands them to runBatchStep), the
+        // interpreter the rest.
+        const std::size_t done = jit_ && count >= 8 ? jit_->run(base.data(), count) : 0;
         if (done == 0) {
             runBlock(base.data(), count);
         } else if (done < count) {

@@ -7,6 +7,7 @@
 #include "mesh/scene_meshing.h"
 #include "scene/field_access.h"
 #include "scene/scene_reader.h"
+#include "scene/source_map.h"
 
 #include <iostream>
 
@@ -28,7 +29,12 @@ std::optional<BenchShape> fromScene(std::string_view command, const std::string&
         shape.emplace();
         shape->field.tape = *tape;
         shape->field.box = mesh::domainOf(n);
-        shape->source = scene::stringField(n, "definition");
+        if (const scene::Field* definition = n.field("definition"))
+            shape->source = scene::formulaText(*definition);
+        if (scene::stringField(n, "setOperations") == "rfunction")
+            shape->setOperations = {formula::SetOperationMode::Kind::RFunction,
+                                    scene::numberField(n, "rfunctionM"),
+                                    scene::numberField(n, "rfunctionAlpha")};
         shape->name = file + ":" + std::to_string(n.where.line);
     });
     if (!shape)

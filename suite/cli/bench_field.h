@@ -3,6 +3,7 @@
 // remesh): the first implicit or explicit FGeometry of the scene FILE, or
 // --formula over --box — its arguments, and reading them.
 #include "field/field_sampler.h"
+#include "formula/compiler.h"
 #include "platform/option_table.h"
 
 #include <optional>
@@ -12,9 +13,10 @@
 namespace fl::cli {
 
 struct BenchShape {
-    field::ImplicitField field; // a scene's as the scene compiles it
-    std::string source;         // the definition's text
-    std::string name;           // "FILE:LINE", or the formula
+    field::ImplicitField field;              // a scene's as the scene compiles it
+    std::string source;                      // the definition's text, as the scene compiles it
+    formula::SetOperationMode setOperations; // how the scene combines with & | \ (min/max or R)
+    std::string name;                        // "FILE:LINE", or the formula
 };
 
 // The optional FILE positional.

@@ -12,6 +12,7 @@
 #include "text/json_text.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -81,6 +82,7 @@ const CommandSpec& benchMeshSpec() {
 
 namespace {
 
+// The option's value is one of its choices (checked by the option table).
 MeshPeer peerNamed(const std::string& name) {
     return name == "libfive" ? MeshPeer::Libfive : MeshPeer::Vtk;
 }
@@ -97,10 +99,17 @@ measure::Method peerMethod(MeshPeer peer) {
 
 // The peer's resolutions: VTK's error at a resolution is dense marching
 // cubes', so it runs one step finer too, for its rows to bracket the adaptive
-// mesher's finest error; libfive's is the adaptive mesher's kind, so the same.
+// mesher's finest error; libfive's is the adaptive mesher's kind, so the
+// same ones, each raised to a power of two (its octree halves the box), once.
 std::vector<double> peerResolutions(MeshPeer peer, std::vector<double> resolutions) {
     const double finest = *std::max_element(resolutions.begin(), resolutions.end());
     if (peer == MeshPeer::Vtk && finest * 2 <= 1024) resolutions.push_back(finest * 2);
+    if (peer == MeshPeer::Libfive) {
+        for (double& r : resolutions)
+            r = std::ldexp(1.0, int(std::ceil(std::log2(r) - 1e-9)));
+        std::sort(resolutions.begin(), resolutions.end());
+        resolutions.erase(std::unique(resolutions.begin(), resolutions.end()), resolutions.end());
+    }
     return resolutions;
 }
 
@@ -110,7 +119,8 @@ std::optional<MeshPeerRow> runPeer(MeshPeer peer, const BenchShape& shape, doubl
     case MeshPeer::Vtk:
         return runVtkPeer(shape.field, resolution, threads, why);
     case MeshPeer::Libfive:
-        return runLibfivePeer(shape.field, shape.source, resolution, threads, why);
+        return runLibfivePeer(shape.field, shape.source, shape.setOperations, resolution, threads,
+                              why);
     }
     return std::nullopt;
 }
@@ -163,6 +173,10 @@ int benchMeshCommand(const Args& args) {
     const MeshPeer peer = peerNamed(a->text("peer", "vtk"));
     const auto shape = benchShapeFromArgs(benchMeshSpec(), *a, exit);
     if (!shape) return exit;
+    if (std::string why; peer == MeshPeer::Libfive && !libfivePeerBuilt(why)) {
+        std::cerr << "functionlab bench mesh: " << why << "\n"; // before the sweep, not after
+        return kExitDiagnostic;
+    }
     const std::vector<double> resolutions =
         a->numbers("resolutions").value_or(std::vector<double>{64, 128, 256});
     measure::SweepOptions sweep;

@@ -110,6 +110,7 @@ int benchRemeshCommand(const Args& args) {
         const auto started = Clock::now();
         formula::CompileOptions co;
         co.kind = formula::DefinitionKind::Implicit;
+        co.setOperations = shape->setOperations;
         formula::CompileResult compiled = formula::compile(edited, co);
         const double compiling = msSince(started);
         if (!compiled.tape) {

@@ -8,16 +8,22 @@
 // are read back and measured by the same error code.
 #include "cli/mesh_peer.h"
 #include "field/field_sampler.h"
+#include "formula/compiler.h"
 
 #include <optional>
 #include <string>
 
 namespace fl::cli {
 
+// Whether the peer program is built (else `why` says how to build it).
+bool libfivePeerBuilt(std::string& why);
+
 // `formula` is the shape's source (f >= 0 inside), compiled by the peer on its
-// own. None with `why` (how to build the peer, or what libfive lacks).
+// own with `setOperations`. `resolution` a power of two (libfive's octree
+// halves its box). None with `why` (how to build the peer, what libfive lacks).
 std::optional<MeshPeerRow> runLibfivePeer(const field::ImplicitField& field,
-                                          const std::string& formula, double resolution,
-                                          int threads, std::string& why);
+                                          const std::string& formula,
+                                          const formula::SetOperationMode& setOperations,
+                                          double resolution, int threads, std::string& why);
 
 } // namespace fl::cli

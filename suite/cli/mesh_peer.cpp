@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include <regex>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace fl::cli {
@@ -33,7 +34,10 @@ std::string runCapturing(const std::string& command) {
         while (std::fgets(buf, sizeof buf, p))
             output += buf;
         const int status = ::pclose(p);
-        if (status != 0) output += "\n(exit status " + std::to_string(status) + ")";
+        if (status != 0)
+            output += WIFEXITED(status)
+                          ? "\n(exit status " + std::to_string(WEXITSTATUS(status)) + ")"
+                          : "\n(ended by signal " + std::to_string(WTERMSIG(status)) + ")";
     } else {
         output = "cannot start /bin/sh";
     }

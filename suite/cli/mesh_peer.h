@@ -30,7 +30,8 @@ std::filesystem::path peerScratchDirectory(const std::string& peer);
 std::string shellQuoted(const std::string& s);
 
 // Runs `command` under /bin/sh with stderr joined to stdout; returns all it
-// printed, with "(exit status N)" appended when that is not 0.
+// printed, with "(exit status N)" (or the signal that ended it) appended when
+// it did not exit with 0.
 std::string runCapturing(const std::string& command);
 
 // The last `most` characters of a peer's output (what to show of its failure).

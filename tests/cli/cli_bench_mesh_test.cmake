@@ -8,7 +8,7 @@
 include(${CMAKE_CURRENT_LIST_DIR}/cli_test_helpers.cmake)
 
 run(2 bench mesh --formula "1 - x*x - y*y - z*z" --box -1.2,-1.2,-1.2,1.2,1.2,1.2 --peer curv)
-expect_match("${ERR}" "vtk, libfive|vtk or libfive|libfive")
+expect_match("${ERR}" "--peer needs one of vtk, libfive")
 
 # The libfive peer: built only from a libfive source tree given to CMake
 # (FUNCTIONLAB_LIBFIVE_SOURCE); without it, the command says how to build it.
@@ -38,10 +38,29 @@ else()
       --box -1.1,-1.1,-1.1,1.1,1.1,1.1 --resolutions 24 --threads 2 --peer libfive)
   expect_match("${OUT}" "libfive +32 ")
   expect_match("${OUT}" "libfive at 32 .*as fast")
+  # A box twice as long as it is wide: libfive's octree halves every side, so
+  # its 16 cells along x (the resolution, as FunctionLab counts it) are half
+  # as long along y and z; the row says the resolution it meshed at.
+  run(0 bench mesh --formula "0.5 - (x/2)^2 - y^2 - z^2" --box -2,-1,-1,2,1,1
+      --resolutions 12 --threads 1 --peer libfive --json)
+  string(JSON method GET "${OUT}" 2 method)
+  string(JSON resolution GET "${OUT}" 2 resolution)
+  string(JSON error GET "${OUT}" 2 max_error)
+  if(NOT method STREQUAL "libfive" OR NOT resolution EQUAL 16 OR error GREATER 0.02)
+    message(FATAL_ERROR "libfive on a long box: ${OUT}")
+  endif()
+  # The same shape with R-function set operations, as a scene's
+  # setOperations="rfunction" makes them, reaches the peer as such.
+  run(0 bench mesh ${EXAMPLES_DIR}/implicit_gallery.x3d --resolutions 16 --threads 1
+      --peer libfive)
+  expect_match("${OUT}" "libfive +16 ")
   # What libfive cannot express is refused by name.
   run(1 bench mesh --formula "0.5 - abs(x) - floor(y)" --box -1,-1,-1,1,1,1 --resolutions 8
       --peer libfive)
   expect_match("${ERR}" "libfive has no floor")
+  run(1 bench mesh --formula "0.5 - abs(x) - mod(y, -1)" --box -1,-1,-1,1,1,1 --resolutions 8
+      --peer libfive)
+  expect_match("${ERR}" "positive constant divisor")
 endif()
 run(2 bench mesh --resolutions 16)
 expect_match("${ERR}" "give a scene FILE or --formula")
