@@ -1,5 +1,6 @@
 #include "cli/mesh_peer.h"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,17 +28,30 @@ std::string shellQuoted(const std::string& s) {
     return out + "'";
 }
 
-std::string runCapturing(const std::string& command) {
+std::string runCapturing(const std::string& command, int seconds) {
+    constexpr std::size_t kKept = 64 * 1024;
     std::string output;
-    if (FILE* p = ::popen((command + " 2>&1").c_str(), "r")) {
+    const std::string line = "timeout -k 10 " + std::to_string(seconds) + " " + command + " 2>&1";
+    const auto started = std::chrono::steady_clock::now();
+    if (FILE* p = ::popen(line.c_str(), "r")) {
         char buf[4096];
-        while (std::fgets(buf, sizeof buf, p))
+        while (std::fgets(buf, sizeof buf, p)) {
             output += buf;
+            if (output.size() > 2 * kKept) output.erase(0, output.size() - kKept);
+        }
         const int status = ::pclose(p);
-        if (status != 0)
-            output += WIFEXITED(status)
-                          ? "\n(exit status " + std::to_string(WEXITSTATUS(status)) + ")"
-                          : "\n(ended by signal " + std::to_string(WTERMSIG(status)) + ")";
+        if (output.size() > kKept) output.erase(0, output.size() - kKept);
+        if (status != 0) {
+            // timeout says 124 when it stopped the command, 137 when it had
+            // to kill it; a command ended by a signal reads as 128 + signal.
+            const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+            const bool late =
+                std::chrono::steady_clock::now() - started >= std::chrono::seconds(seconds);
+            output += code == 124 || (code == 137 && late)
+                          ? "\n(no answer within " + std::to_string(seconds) + " s: stopped)"
+                      : code > 128 ? "\n(ended by signal " + std::to_string(code - 128) + ")"
+                                   : "\n(exit status " + std::to_string(code) + ")";
+        }
     } else {
         output = "cannot start /bin/sh";
     }

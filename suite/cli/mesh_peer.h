@@ -29,10 +29,12 @@ std::filesystem::path peerScratchDirectory(const std::string& peer);
 // `s` as one word for /bin/sh.
 std::string shellQuoted(const std::string& s);
 
-// Runs `command` under /bin/sh with stderr joined to stdout; returns all it
-// printed, with "(exit status N)" (or the signal that ended it) appended when
-// it did not exit with 0.
-std::string runCapturing(const std::string& command);
+// Runs `command` (a program and its arguments, for /bin/sh) with stderr
+// joined to stdout, stopped after `seconds` (coreutils' timeout: a peer that
+// hangs does not hang the benchmark); returns what it printed (its last
+// 64 KiB), with "(exit status N)", the signal that ended it or the timeout
+// appended when it did not exit with 0.
+std::string runCapturing(const std::string& command, int seconds = 900);
 
 // The last `most` characters of a peer's output (what to show of its failure).
 std::string outputTail(const std::string& output, std::size_t most = 400);
