@@ -63,12 +63,16 @@ std::array<double, 3> Qef::solve(double relativeCutoff) const {
         // (Cutoffs of the mesher's size only: near 1 the iteration would
         // converge too slowly to trust 40 steps.)
         if (r0 > 0 && q < relativeCutoff && relativeCutoff <= 0.25) {
-            // q^steps below 1e-16 (the start's error is under 1; counted
-            // by multiplying: a logarithm cost as much as the steps),
-            // rescaled every few steps (lambda1 is at most the count of
-            // planes, so nothing overflows in between).
+            // q^steps below 1e-10 (the start's error is under 1; counted
+            // by multiplying: a logarithm cost as much as the steps): the
+            // vertex moves by at most a cell, and is kept in single
+            // precision (6e-8 of its coordinates), so an eigenvector off by
+            // 1e-10 never shows (1e-16 took twice the steps for the same
+            // meshes, but for coordinates within 1e-33 of 0); rescaled every
+            // few steps (lambda1 is at most the count of planes, so nothing
+            // overflows in between).
             int steps = 1;
-            for (double error = q; error > 1e-16 && steps < 40; error *= q)
+            for (double error = q; error > 1e-10 && steps < 40; error *= q)
                 ++steps;
             for (int step = 0; step < steps; ++step) {
                 v = ata * v;
