@@ -567,8 +567,7 @@ class Emitter : public CodeGenerator {
             emitLoop(first, end);
             first = end;
         }
-        mov(rbx, r13);
-        mov(rax, rbx);
+        mov(rax, r13); // the points done
         vzeroupper();
         add(rsp, 8);
         pop(r15);
@@ -655,11 +654,11 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
                                                   const std::vector<char>& liveOut,
                                                   std::int32_t registerCount) {
     if (!available() || steps.empty()) return nullptr;
-    const bool calls = allowCalls.load();
     for (const BatchStep& s : steps)
         if (!compiles(s)) return nullptr;
+    // (Whether calls are allowed is not in the key: a tape it would have to
+    // call for is refused above, and the others' code does not depend on it.)
     std::string key = keyOf(steps, liveOut, registerCount);
-    key.push_back(calls ? 'c' : '-');
     Cache& c = cache();
     {
         std::lock_guard lock(c.mutex);

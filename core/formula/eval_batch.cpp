@@ -268,235 +268,229 @@ __attribute__((target_clones("avx2", "default"))) void
 runBatchStep(const BatchStep& s, double* const* base, std::size_t n,
              double* const* scratch) noexcept {
     const vmath::Implementation& vm = vmath::implementation();
-    {
-        double* __restrict o = base[s.out];
-        switch (s.fused) {
-        case Fused::None:
-            break;
-        case Fused::SquareOfDiff: {
-            const double c = s.ca;
-            unaryLoop(o, base[s.a], n, [c](double a) {
-                double d = a - c;
-                return d * d;
+    double* __restrict o = base[s.out];
+    switch (s.fused) {
+    case Fused::None:
+        break;
+    case Fused::SquareOfDiff: {
+        const double c = s.ca;
+        unaryLoop(o, base[s.a], n, [c](double a) {
+            double d = a - c;
+            return d * d;
+        });
+        return;
+    }
+    case Fused::SquareTerms:
+        if (s.constA)
+            squareTermsDispatch<true>(s, base, o, n);
+        else
+            squareTermsDispatch<false>(s, base, o, n);
+        return;
+    case Fused::MinMaxChain:
+        if (s.op == Op::Min)
+            chainDispatch<true>(s, base, o, n);
+        else
+            chainDispatch<false>(s, base, o, n);
+        return;
+    case Fused::NegatedOperand: {
+        auto mn = [](double a, double b) { return ops::min(a, b); };
+        auto mx = [](double a, double b) { return ops::max(a, b); };
+        if (s.op == Op::Min)
+            s.negA ? negatedLoop<true>(s, base, o, n, mn) : negatedLoop<false>(s, base, o, n, mn);
+        else
+            s.negA ? negatedLoop<true>(s, base, o, n, mx) : negatedLoop<false>(s, base, o, n, mx);
+        return;
+    }
+    }
+    switch (s.op) {
+    // ---- unary (the operand always varies: uniform ones were folded)
+    case Op::Neg:
+        unaryLoop(o, base[s.a], n, [](double a) { return -a; });
+        break;
+    case Op::Abs:
+        unaryLoop(o, base[s.a], n, [](double a) { return std::fabs(a); });
+        break;
+    case Op::Square:
+        unaryLoop(o, base[s.a], n, [](double a) { return a * a; });
+        break;
+    case Op::Sqrt:
+        unaryLoop(o, base[s.a], n, [](double a) { return std::sqrt(a); });
+        break;
+    case Op::Cbrt:
+        vm.unaryArray[int(vmath::Unary::Cbrt)](base[s.a], o, n);
+        break;
+    case Op::Exp:
+        vm.unaryArray[int(vmath::Unary::Exp)](base[s.a], o, n);
+        break;
+    case Op::Log:
+        vm.unaryArray[int(vmath::Unary::Log)](base[s.a], o, n);
+        break;
+    case Op::Log2:
+        vm.unaryArray[int(vmath::Unary::Log2)](base[s.a], o, n);
+        break;
+    case Op::Log10:
+        vm.unaryArray[int(vmath::Unary::Log10)](base[s.a], o, n);
+        break;
+    case Op::Sin:
+        vm.unaryArray[int(vmath::Unary::Sin)](base[s.a], o, n);
+        break;
+    case Op::Cos:
+        vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n);
+        break;
+    case Op::Tan:
+        vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n);
+        break;
+    case Op::Asin:
+        vm.unaryArray[int(vmath::Unary::Asin)](base[s.a], o, n);
+        break;
+    case Op::Acos:
+        vm.unaryArray[int(vmath::Unary::Acos)](base[s.a], o, n);
+        break;
+    case Op::Atan:
+        vm.unaryArray[int(vmath::Unary::Atan)](base[s.a], o, n);
+        break;
+    case Op::Sinh:
+        vm.unaryArray[int(vmath::Unary::Sinh)](base[s.a], o, n);
+        break;
+    case Op::Cosh:
+        vm.unaryArray[int(vmath::Unary::Cosh)](base[s.a], o, n);
+        break;
+    case Op::Tanh:
+        vm.unaryArray[int(vmath::Unary::Tanh)](base[s.a], o, n);
+        break;
+    case Op::Floor:
+        unaryLoop(o, base[s.a], n, [](double a) { return std::floor(a); });
+        break;
+    case Op::Ceil:
+        unaryLoop(o, base[s.a], n, [](double a) { return std::ceil(a); });
+        break;
+    case Op::Round:
+        unaryLoop(o, base[s.a], n, [](double a) { return std::round(a); });
+        break;
+    case Op::Sign:
+        unaryLoop(o, base[s.a], n, [](double a) { return ops::sign(a); });
+        break;
+    case Op::Not:
+        unaryLoop(o, base[s.a], n, [](double a) { return ops::truth(a) ? 0.0 : 1.0; });
+        break;
+    case Op::PowI: {
+        const int k = static_cast<int>(s.imm0);
+        if (k == 3)
+            unaryLoop(o, base[s.a], n, [](double a) { return a * a * a; });
+        else if (k == 4)
+            unaryLoop(o, base[s.a], n, [](double a) {
+                double q = a * a;
+                return q * q;
             });
-            return;
-        }
-        case Fused::SquareTerms:
-            if (s.constA)
-                squareTermsDispatch<true>(s, base, o, n);
-            else
-                squareTermsDispatch<false>(s, base, o, n);
-            return;
-        case Fused::MinMaxChain:
-            if (s.op == Op::Min)
-                chainDispatch<true>(s, base, o, n);
-            else
-                chainDispatch<false>(s, base, o, n);
-            return;
-        case Fused::NegatedOperand: {
-            auto mn = [](double a, double b) { return ops::min(a, b); };
-            auto mx = [](double a, double b) { return ops::max(a, b); };
-            if (s.op == Op::Min)
-                s.negA ? negatedLoop<true>(s, base, o, n, mn)
-                       : negatedLoop<false>(s, base, o, n, mn);
-            else
-                s.negA ? negatedLoop<true>(s, base, o, n, mx)
-                       : negatedLoop<false>(s, base, o, n, mx);
-            return;
-        }
-        }
-        switch (s.op) {
-        // ---- unary (the operand always varies: uniform ones were folded)
-        case Op::Neg:
-            unaryLoop(o, base[s.a], n, [](double a) { return -a; });
-            break;
-        case Op::Abs:
-            unaryLoop(o, base[s.a], n, [](double a) { return std::fabs(a); });
-            break;
-        case Op::Square:
-            unaryLoop(o, base[s.a], n, [](double a) { return a * a; });
-            break;
-        case Op::Sqrt:
-            unaryLoop(o, base[s.a], n, [](double a) { return std::sqrt(a); });
-            break;
-        case Op::Cbrt:
-            vm.unaryArray[int(vmath::Unary::Cbrt)](base[s.a], o, n);
-            break;
-        case Op::Exp:
-            vm.unaryArray[int(vmath::Unary::Exp)](base[s.a], o, n);
-            break;
-        case Op::Log:
-            vm.unaryArray[int(vmath::Unary::Log)](base[s.a], o, n);
-            break;
-        case Op::Log2:
-            vm.unaryArray[int(vmath::Unary::Log2)](base[s.a], o, n);
-            break;
-        case Op::Log10:
-            vm.unaryArray[int(vmath::Unary::Log10)](base[s.a], o, n);
-            break;
-        case Op::Sin:
-            vm.unaryArray[int(vmath::Unary::Sin)](base[s.a], o, n);
-            break;
-        case Op::Cos:
-            vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n);
-            break;
-        case Op::Tan:
-            vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n);
-            break;
-        case Op::Asin:
-            vm.unaryArray[int(vmath::Unary::Asin)](base[s.a], o, n);
-            break;
-        case Op::Acos:
-            vm.unaryArray[int(vmath::Unary::Acos)](base[s.a], o, n);
-            break;
-        case Op::Atan:
-            vm.unaryArray[int(vmath::Unary::Atan)](base[s.a], o, n);
-            break;
-        case Op::Sinh:
-            vm.unaryArray[int(vmath::Unary::Sinh)](base[s.a], o, n);
-            break;
-        case Op::Cosh:
-            vm.unaryArray[int(vmath::Unary::Cosh)](base[s.a], o, n);
-            break;
-        case Op::Tanh:
-            vm.unaryArray[int(vmath::Unary::Tanh)](base[s.a], o, n);
-            break;
-        case Op::Floor:
-            unaryLoop(o, base[s.a], n, [](double a) { return std::floor(a); });
-            break;
-        case Op::Ceil:
-            unaryLoop(o, base[s.a], n, [](double a) { return std::ceil(a); });
-            break;
-        case Op::Round:
-            unaryLoop(o, base[s.a], n, [](double a) { return std::round(a); });
-            break;
-        case Op::Sign:
-            unaryLoop(o, base[s.a], n, [](double a) { return ops::sign(a); });
-            break;
-        case Op::Not:
-            unaryLoop(o, base[s.a], n, [](double a) { return ops::truth(a) ? 0.0 : 1.0; });
-            break;
-        case Op::PowI: {
-            const int k = static_cast<int>(s.imm0);
-            if (k == 3)
-                unaryLoop(o, base[s.a], n, [](double a) { return a * a * a; });
-            else if (k == 4)
-                unaryLoop(o, base[s.a], n, [](double a) {
-                    double q = a * a;
-                    return q * q;
-                });
-            else if (k == -1)
-                unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / a; });
-            else if (k == -2)
-                unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / (a * a); });
-            else
-                unaryLoop(o, base[s.a], n, [k](double a) { return ops::powi(a, k); });
-            break;
-        }
-        // ---- binary
-        case Op::Add:
-            binaryLoop(s, base, o, n, [](double a, double b) { return a + b; });
-            break;
-        case Op::Sub:
-            binaryLoop(s, base, o, n, [](double a, double b) { return a - b; });
-            break;
-        case Op::Mul:
-            binaryLoop(s, base, o, n, [](double a, double b) { return a * b; });
-            break;
-        case Op::Div:
-            binaryLoop(s, base, o, n, [](double a, double b) { return a / b; });
-            break;
-        case Op::Pow:
-            vm.binaryArray[int(vmath::Binary::Pow)](s.constA ? nullptr : base[s.a], s.ca,
-                                                    s.constB ? nullptr : base[s.b], s.cb, o, n);
-            break;
-        case Op::Min:
-            binaryLoop(s, base, o, n, [](double a, double b) { return ops::min(a, b); });
-            break;
-        case Op::Max:
-            binaryLoop(s, base, o, n, [](double a, double b) { return ops::max(a, b); });
-            break;
-        case Op::Atan2:
-            vm.binaryArray[int(vmath::Binary::Atan2)](s.constA ? nullptr : base[s.a], s.ca,
-                                                      s.constB ? nullptr : base[s.b], s.cb, o, n);
-            break;
-        case Op::Hypot:
-            binaryLoop(s, base, o, n, [](double a, double b) { return std::hypot(a, b); });
-            break;
-        case Op::Mod:
-            binaryLoop(s, base, o, n, [](double a, double b) { return ops::mod(a, b); });
-            break;
-        case Op::Less:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a < b); });
-            break;
-        case Op::LessEq:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a <= b); });
-            break;
-        case Op::Greater:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a > b); });
-            break;
-        case Op::GreaterEq:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a >= b); });
-            break;
-        case Op::Equal:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a == b); });
-            break;
-        case Op::NotEqual:
-            binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a != b); });
-            break;
-        case Op::And:
-            binaryLoop(s, base, o, n, [](double a, double b) {
-                return cmpResult(ops::truth(a) && ops::truth(b));
-            });
-            break;
-        case Op::Or:
-            binaryLoop(s, base, o, n, [](double a, double b) {
-                return cmpResult(ops::truth(a) || ops::truth(b));
-            });
-            break;
-        case Op::RIntersect: {
-            const double m = s.imm0, alpha = s.imm1;
-            if (m == 0.0 && alpha == 0.0)
-                binaryLoop(s, base, o, n, [](double a, double b) { return rIntersect0(a, b); });
-            else
-                binaryLoop(s, base, o, n,
-                           [m, alpha](double a, double b) { return rIntersect(a, b, m, alpha); });
-            break;
-        }
-        case Op::RUnion: {
-            const double m = s.imm0, alpha = s.imm1;
-            if (m == 0.0 && alpha == 0.0)
-                binaryLoop(s, base, o, n, [](double a, double b) { return rUnion0(a, b); });
-            else
-                binaryLoop(s, base, o, n,
-                           [m, alpha](double a, double b) { return rUnion(a, b, m, alpha); });
-            break;
-        }
-        // ---- ternary: uniform operands are broadcast into scratch buffers
-        case Op::Select:
-        case Op::Noise: {
-            const double* p[3];
-            const bool isConst[3] = {s.constA, s.constB, s.constC};
-            const double cval[3] = {s.ca, s.cb, s.cc};
-            const std::int32_t reg[3] = {s.a, s.b, s.c};
-            for (int k = 0; k < 3; ++k) {
-                if (isConst[k]) {
-                    std::fill(scratch[k], scratch[k] + n, cval[k]);
-                    p[k] = scratch[k];
-                } else {
-                    p[k] = base[reg[k]];
-                }
-            }
-            if (s.op == Op::Select) {
-                for (std::size_t i = 0; i < n; ++i)
-                    o[i] = ops::truth(p[0][i]) ? p[1][i] : p[2][i];
+        else if (k == -1)
+            unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / a; });
+        else if (k == -2)
+            unaryLoop(o, base[s.a], n, [](double a) { return 1.0 / (a * a); });
+        else
+            unaryLoop(o, base[s.a], n, [k](double a) { return ops::powi(a, k); });
+        break;
+    }
+    // ---- binary
+    case Op::Add:
+        binaryLoop(s, base, o, n, [](double a, double b) { return a + b; });
+        break;
+    case Op::Sub:
+        binaryLoop(s, base, o, n, [](double a, double b) { return a - b; });
+        break;
+    case Op::Mul:
+        binaryLoop(s, base, o, n, [](double a, double b) { return a * b; });
+        break;
+    case Op::Div:
+        binaryLoop(s, base, o, n, [](double a, double b) { return a / b; });
+        break;
+    case Op::Pow:
+        vm.binaryArray[int(vmath::Binary::Pow)](s.constA ? nullptr : base[s.a], s.ca,
+                                                s.constB ? nullptr : base[s.b], s.cb, o, n);
+        break;
+    case Op::Min:
+        binaryLoop(s, base, o, n, [](double a, double b) { return ops::min(a, b); });
+        break;
+    case Op::Max:
+        binaryLoop(s, base, o, n, [](double a, double b) { return ops::max(a, b); });
+        break;
+    case Op::Atan2:
+        vm.binaryArray[int(vmath::Binary::Atan2)](s.constA ? nullptr : base[s.a], s.ca,
+                                                  s.constB ? nullptr : base[s.b], s.cb, o, n);
+        break;
+    case Op::Hypot:
+        binaryLoop(s, base, o, n, [](double a, double b) { return std::hypot(a, b); });
+        break;
+    case Op::Mod:
+        binaryLoop(s, base, o, n, [](double a, double b) { return ops::mod(a, b); });
+        break;
+    case Op::Less:
+        binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a < b); });
+        break;
+    case Op::LessEq:
+        binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a <= b); });
+        break;
+    case Op::Greater:
+        binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a > b); });
+        break;
+    case Op::GreaterEq:
+        binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a >= b); });
+        break;
+    case Op::Equal:
+        binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a == b); });
+        break;
+    case Op::NotEqual:
+        binaryLoop(s, base, o, n, [](double a, double b) { return cmpResult(a != b); });
+        break;
+    case Op::And:
+        binaryLoop(s, base, o, n,
+                   [](double a, double b) { return cmpResult(ops::truth(a) && ops::truth(b)); });
+        break;
+    case Op::Or:
+        binaryLoop(s, base, o, n,
+                   [](double a, double b) { return cmpResult(ops::truth(a) || ops::truth(b)); });
+        break;
+    case Op::RIntersect: {
+        const double m = s.imm0, alpha = s.imm1;
+        if (m == 0.0 && alpha == 0.0)
+            binaryLoop(s, base, o, n, [](double a, double b) { return rIntersect0(a, b); });
+        else
+            binaryLoop(s, base, o, n,
+                       [m, alpha](double a, double b) { return rIntersect(a, b, m, alpha); });
+        break;
+    }
+    case Op::RUnion: {
+        const double m = s.imm0, alpha = s.imm1;
+        if (m == 0.0 && alpha == 0.0)
+            binaryLoop(s, base, o, n, [](double a, double b) { return rUnion0(a, b); });
+        else
+            binaryLoop(s, base, o, n,
+                       [m, alpha](double a, double b) { return rUnion(a, b, m, alpha); });
+        break;
+    }
+    // ---- ternary: uniform operands are broadcast into scratch buffers
+    case Op::Select:
+    case Op::Noise: {
+        const double* p[3];
+        const bool isConst[3] = {s.constA, s.constB, s.constC};
+        const double cval[3] = {s.ca, s.cb, s.cc};
+        const std::int32_t reg[3] = {s.a, s.b, s.c};
+        for (int k = 0; k < 3; ++k) {
+            if (isConst[k]) {
+                std::fill(scratch[k], scratch[k] + n, cval[k]);
+                p[k] = scratch[k];
             } else {
-                for (std::size_t i = 0; i < n; ++i)
-                    o[i] = noise3(p[0][i], p[1][i], p[2][i]);
+                p[k] = base[reg[k]];
             }
-            break;
         }
+        if (s.op == Op::Select) {
+            for (std::size_t i = 0; i < n; ++i)
+                o[i] = ops::truth(p[0][i]) ? p[1][i] : p[2][i];
+        } else {
+            for (std::size_t i = 0; i < n; ++i)
+                o[i] = noise3(p[0][i], p[1][i], p[2][i]);
         }
+        break;
+    }
     }
 }
 
