@@ -1,7 +1,6 @@
 #include "cli/libfive_peer.h"
 
 #include "cli/bench_peer.h"
-#include "mesh/mesh_error.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -66,13 +65,8 @@ std::optional<MeshPeerRow> runLibfivePeer(const field::ImplicitField& field,
     }
     MeshPeerRow r;
     r.contourMs = *ms;
-    r.row.method = measure::Method::Libfive;
-    r.row.resolution = *used;
-    r.row.triangles = read->triangleCount();
+    r.row = measuredPeerRow(measure::Method::Libfive, *used, field, *read);
     r.row.milliseconds = *ms;
-    const mesh::SurfaceError e = mesh::measureSurfaceError(field, *read);
-    r.row.maxError = e.max;
-    r.row.meanError = e.mean;
     return r;
 }
 

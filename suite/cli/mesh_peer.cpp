@@ -1,5 +1,7 @@
 #include "cli/mesh_peer.h"
 
+#include "mesh/mesh_error.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -67,6 +69,19 @@ std::optional<double> jsonNumber(const std::string& text, const std::string& key
     std::smatch m;
     if (!std::regex_search(text, m, re)) return std::nullopt;
     return std::strtod(m[1].str().c_str(), nullptr);
+}
+
+measure::AccuracyRow measuredPeerRow(measure::Method method, double resolution,
+                                     const field::ImplicitField& field,
+                                     const mesh::Mesh& triangles) {
+    measure::AccuracyRow row;
+    row.method = method;
+    row.resolution = resolution;
+    row.triangles = triangles.triangleCount();
+    const mesh::SurfaceError e = mesh::measureSurfaceError(field, triangles);
+    row.maxError = e.max;
+    row.meanError = e.mean;
+    return row;
 }
 
 std::optional<mesh::Mesh> readBinaryStl(const fs::path& path, std::string& problem) {

@@ -4,6 +4,7 @@
 // contouring built from source) that meshes the same shape in the same box
 // and writes its triangles as binary STL, with one line of JSON on stdout
 // saying what it took. Nothing of a peer is linked into functionlab.
+#include "field/field_sampler.h"
 #include "measure/accuracy_sweep.h"
 #include "mesh/mesh.h"
 
@@ -41,6 +42,13 @@ std::string outputTail(const std::string& output, std::size_t most = 400);
 
 // The value of "key": NUMBER in a line of JSON.
 std::optional<double> jsonNumber(const std::string& text, const std::string& key);
+
+// A peer's row of `method` at `resolution`: its triangles counted and their
+// error measured against `field` by the same code as every other mesh's
+// (evaluations and time are the caller's to fill).
+measure::AccuracyRow measuredPeerRow(measure::Method method, double resolution,
+                                     const field::ImplicitField& field,
+                                     const mesh::Mesh& triangles);
 
 // A binary STL file's triangles, each with its own three corners (the error
 // measure needs them unwelded only); none with `problem` when the file is

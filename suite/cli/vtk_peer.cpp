@@ -1,6 +1,5 @@
 #include "cli/vtk_peer.h"
 
-#include "mesh/mesh_error.h"
 #include "parallel/work_pool.h"
 
 #include <algorithm>
@@ -113,14 +112,9 @@ std::optional<MeshPeerRow> runVtkPeer(const field::ImplicitField& field, double 
     std::smatch m;
     if (std::regex_search(output, m, std::regex("\"backend\":\\s*\"([A-Za-z]+)\"")))
         r.backend = m[1].str();
-    r.row.method = measure::Method::Vtk;
-    r.row.resolution = resolution;
-    r.row.triangles = read->triangleCount();
+    r.row = measuredPeerRow(measure::Method::Vtk, resolution, field, *read);
     r.row.evaluations = points;
     r.row.milliseconds = samplingMs + *ms;
-    const mesh::SurfaceError e = mesh::measureSurfaceError(field, *read);
-    r.row.maxError = e.max;
-    r.row.meanError = e.mean;
     return r;
 }
 
