@@ -20,6 +20,7 @@
 // JSON; exit 0 meshed, 1 the formula cannot be meshed here, 2 usage error.
 #include "formula/compiler.h"
 #include "formula/diagnostic.h"
+#include "mesh/mesh_export.h"
 
 #include <libfive/eval/evaluator.hpp>
 #include <libfive/render/brep/mesh.hpp>
@@ -33,7 +34,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <optional>
@@ -284,22 +284,16 @@ std::optional<Tree> treeOf(const fl::formula::Tape& tape, std::string& why) {
     return -*f; // FunctionLab's inside is f >= 0, libfive's f < 0
 }
 
-bool writeBinaryStl(const libfive::Mesh& m, const std::string& path) {
-    std::ofstream out(path, std::ios::binary);
-    char header[80] = "functionlab-libfive-peer";
-    const std::uint32_t count = std::uint32_t(m.branes.size());
-    out.write(header, sizeof header);
-    out.write(reinterpret_cast<const char*>(&count), sizeof count);
-    for (const auto& t : m.branes) {
-        float record[12] = {};
-        for (int v = 0; v < 3; ++v)
-            for (int k = 0; k < 3; ++k)
-                record[3 + 3 * v + k] = m.verts[t[v]][k];
-        out.write(reinterpret_cast<const char*>(record), sizeof record);
-        const std::uint16_t attributes = 0;
-        out.write(reinterpret_cast<const char*>(&attributes), sizeof attributes);
-    }
-    return bool(out);
+// libfive's triangles as FunctionLab's mesh, for its STL writer.
+fl::mesh::Mesh meshOf(const libfive::Mesh& m) {
+    fl::mesh::Mesh out;
+    out.positions.reserve(m.verts.size());
+    for (const auto& v : m.verts)
+        out.positions.push_back({v[0], v[1], v[2]});
+    out.triangles.reserve(m.branes.size());
+    for (const auto& t : m.branes)
+        out.triangles.push_back({t[0], t[1], t[2]});
+    return out;
 }
 
 } // namespace
@@ -356,8 +350,8 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    if (!writeBinaryStl(*mesh, args->out)) {
-        std::cerr << "functionlab-libfive-peer: cannot write " << args->out << "\n";
+    if (std::string error; !fl::mesh::writeMesh(meshOf(*mesh), args->out, error)) {
+        std::cerr << "functionlab-libfive-peer: " << error << "\n";
         return 1;
     }
     std::printf("{\"ms\": %.6g, \"triangles\": %zu, \"resolution\": %.6g, \"threads\": %u}\n", best,
