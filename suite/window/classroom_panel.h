@@ -76,6 +76,7 @@ class ClassroomPanel : public Panel {
     void replay(qint64 version);
     void leaveReplay();
     bool replaying() const { return replaying_; }
+    bool holdsTheView() const override { return replaying_; }
     // The function description of the version shown in the replay (else the
     // newest) as X3D XML; empty with `why` when there is nothing to export.
     QString exportX3d(QString* why = nullptr) const;

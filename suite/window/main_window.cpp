@@ -73,7 +73,14 @@ MainWindow::MainWindow(QWidget* parent)
         setWindowModified(isModified());
     });
     connect(parser_, &editor::LiveParser::parsed, this, &MainWindow::parsed);
-    connect(parser_, &editor::LiveParser::sceneChanged, this, &MainWindow::sceneChanged);
+    // An edit arriving while a panel replays the past (a class member's, or
+    // one's own) must not take the view from under the replay.
+    connect(parser_, &editor::LiveParser::sceneChanged, this,
+            [this](std::shared_ptr<const scene::Scene> scene) {
+                for (const Panel* panel : panels_)
+                    if (panel->holdsTheView()) return;
+                sceneChanged(std::move(scene));
+            });
     connect(player_, &viewer::ScenePlayer::meshesReady, this, &MainWindow::meshesReady);
     connect(player_, &viewer::ScenePlayer::timeChanged, timeline_, &TimelineBar::showTime);
 

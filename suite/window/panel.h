@@ -34,6 +34,10 @@ class Panel : public QDockWidget {
     virtual void attach(PanelContext& context);
     // Working on something the window should wait for (tests ask).
     virtual bool busy() const { return false; }
+    // Showing a scene of its own in the view (the class's past, replayed):
+    // the editor's scenes do not replace it until the panel lets go, and the
+    // panel then shows the editor's newest good scene itself.
+    virtual bool holdsTheView() const { return false; }
 
   public Q_SLOTS:
     // The scene the window now shows (a new one after every good edit). Most
