@@ -5,6 +5,9 @@
 
 #include <emmintrin.h>
 
+#include <cstdlib>
+#include <cstring>
+
 namespace fl::formula::vmath {
 
 namespace {
@@ -19,7 +22,8 @@ namespace {
 #include "vector_math_variant.inc"
 } // namespace
 
-const Implementation* makeAvx2Implementation(); // vector_math_avx2.cpp
+const Implementation* makeAvx2Implementation();   // vector_math_avx2.cpp
+const Implementation* makeAvx512Implementation(); // vector_math_avx512.cpp
 
 const Implementation& sse2Implementation() {
     static const Implementation impl = makeVariant();
@@ -33,9 +37,28 @@ const Implementation* avx2Implementation() {
     return impl;
 }
 
+const Implementation* avx512Implementation() {
+    static const Implementation* impl = (avx2Implementation() && __builtin_cpu_supports("avx512f"))
+                                            ? makeAvx512Implementation()
+                                            : nullptr;
+    return impl;
+}
+
+namespace {
+// FUNCTIONLAB_NO_AVX512=1 keeps the AVX2 arrays on a CPU with AVX-512 (the
+// same bits either way: for comparing their speed in one build, or for a CPU
+// that lowers its clock under 512-bit work).
+bool avx512Refused() {
+    const char* off = std::getenv("FUNCTIONLAB_NO_AVX512");
+    return off && *off && std::strcmp(off, "0") != 0;
+}
+} // namespace
+
 const Implementation& implementation() {
-    static const Implementation& impl =
-        avx2Implementation() ? *avx2Implementation() : sse2Implementation();
+    static const Implementation& impl = (avx512Implementation() && !avx512Refused())
+                                            ? *avx512Implementation()
+                                        : avx2Implementation() ? *avx2Implementation()
+                                                               : sse2Implementation();
     return impl;
 }
 

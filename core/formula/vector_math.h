@@ -1,7 +1,8 @@
 #pragma once
 // Transcendental functions for every evaluator, from SLEEF (bounded 1-ulp
-// error, vectorised). The batch evaluator calls the array forms (4 lanes with
-// AVX2+FMA, 2 with SSE2, chosen once at start-up from the CPU); everything
+// error, vectorised). The batch evaluator calls the array forms (8 lanes with
+// AVX-512F, 4 with AVX2+FMA, 2 with SSE2, chosen once at start-up from the
+// CPU); everything
 // else — the scalar evaluator, the constant folder, the interval endpoints —
 // calls the scalar form of the *same* SLEEF variant, so all evaluators agree
 // bit for bit on every machine (checked by the batch-versus-scalar tests).
@@ -60,8 +61,10 @@ inline double eval(Binary f, double a, double b) {
     return implementation().binary[static_cast<int>(f)](a, b);
 }
 
-// The two variants, for the dispatcher and for tests.
+// The variants, for the dispatcher and for tests. AVX-512F shares the AVX2
+// variant's scalar routines, so both give the same bits.
 const Implementation& sse2Implementation();
-const Implementation* avx2Implementation(); // nullptr when this CPU lacks AVX2 and FMA
+const Implementation* avx2Implementation();   // nullptr when this CPU lacks AVX2 and FMA
+const Implementation* avx512Implementation(); // nullptr without AVX2, FMA and AVX-512F
 
 } // namespace fl::formula::vmath

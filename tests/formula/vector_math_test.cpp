@@ -23,7 +23,13 @@ double ulpDistance(double a, double b) {
 std::vector<const Implementation*> variants() {
     std::vector<const Implementation*> v{&sse2Implementation()};
     if (avx2Implementation()) v.push_back(avx2Implementation());
+    if (avx512Implementation()) v.push_back(avx512Implementation());
     return v;
+}
+
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
 }
 
 TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
@@ -41,27 +47,19 @@ TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
             impl->unaryArray[f](a.data(), out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 double s = impl->unary[f](a[i]);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
-                                std::bit_cast<std::uint64_t>(out[i]) ||
-                            (std::isnan(s) && std::isnan(out[i])))
-                    << impl->name << " unary " << f << " at " << a[i];
+                ASSERT_TRUE(sameBits(s, out[i])) << impl->name << " unary " << f << " at " << a[i];
             }
         }
         for (int f = 0; f < static_cast<int>(Binary::Count); ++f) {
             impl->binaryArray[f](a.data(), 0, nullptr, 2.5, out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 double s = impl->binary[f](a[i], 2.5);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
-                                std::bit_cast<std::uint64_t>(out[i]) ||
-                            (std::isnan(s) && std::isnan(out[i])))
-                    << impl->name << " binary " << f;
+                ASSERT_TRUE(sameBits(s, out[i])) << impl->name << " binary " << f;
             }
             impl->binaryArray[f](nullptr, 1.5, b.data(), 0, out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 double s = impl->binary[f](1.5, b[i]);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
-                                std::bit_cast<std::uint64_t>(out[i]) ||
-                            (std::isnan(s) && std::isnan(out[i])));
+                ASSERT_TRUE(sameBits(s, out[i]));
             }
         }
     }
@@ -79,16 +77,20 @@ TEST(VectorMath, TrigonometryInEveryReductionRangeEqualsItsScalarTwin) {
     std::uniform_real_distribution<double> jitter(0.999, 1.001), logMagnitude(-3, 20);
     const std::size_t n = 40000;
     std::vector<double> a(n), out(n);
-    for (std::size_t i = 0; i < n; i += 4) {
-        // a run of four (one AVX2 vector, two SSE2 ones): same range, or mixed
-        const int kind = int(i / 4 % 4);
-        for (std::size_t k = 0; k < 4; ++k) {
+    std::uniform_real_distribution<double> fast(-11.99, 11.99), logMedium(std::log10(16.0), 12);
+    for (std::size_t i = 0; i < n; i += 8) {
+        // a run of eight (one AVX-512 vector, two AVX2 ones, four SSE2 ones):
+        // every lane in the fast range, every lane in the medium one, or mixed
+        const int kind = int(i / 8 % 6);
+        for (std::size_t k = 0; k < 8; ++k) {
             double v = kind == 0   ? edges[pick(rng)] * jitter(rng)
                        : kind == 1 ? std::pow(10.0, logMagnitude(rng))
                        : kind == 2 ? 16.0 + 1e3 * jitter(rng) * double(k)
-                                   : edges[std::size_t(i / 4 + k) % std::size(edges)];
+                       : kind == 3 ? fast(rng)
+                       : kind == 4 ? std::pow(10.0, logMedium(rng))
+                                   : edges[std::size_t(i / 8 + k) % std::size(edges)];
             if (rng() % 2) v = -v;
-            if (rng() % 97 == 0) v = rng() % 2 ? NAN : INFINITY;
+            if (kind != 3 && kind != 4 && rng() % 97 == 0) v = rng() % 2 ? NAN : INFINITY;
             a[i + k] = v;
         }
     }
@@ -97,12 +99,41 @@ TEST(VectorMath, TrigonometryInEveryReductionRangeEqualsItsScalarTwin) {
             impl->unaryArray[static_cast<int>(f)](a.data(), out.data(), n);
             for (std::size_t i = 0; i < n; ++i) {
                 const double s = impl->unary[static_cast<int>(f)](a[i]);
-                ASSERT_TRUE(std::bit_cast<std::uint64_t>(s) ==
-                                std::bit_cast<std::uint64_t>(out[i]) ||
-                            (std::isnan(s) && std::isnan(out[i])))
+                ASSERT_TRUE(sameBits(s, out[i]))
                     << impl->name << " unary " << int(f) << " at " << a[i] << " (lane " << i << ")";
             }
         }
+    }
+}
+
+// A CPU with AVX-512 must give the bits a CPU with only AVX2 gives: the
+// 512-bit arrays keep the AVX2 variant's scalar routines as their twin.
+TEST(VectorMath, Avx512GivesTheAvx2VariantsBits) {
+    if (!avx512Implementation()) GTEST_SKIP() << "this CPU has no AVX-512F";
+    const Implementation& wide = *avx512Implementation();
+    const Implementation& avx2 = *avx2Implementation();
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> logMagnitude(-8, 14);
+    const std::size_t n = 4099;
+    std::vector<double> a(n), b(n), outWide(n), outAvx2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        a[i] = std::pow(10.0, logMagnitude(rng)) * (rng() % 2 ? 1 : -1);
+        b[i] = std::pow(10.0, logMagnitude(rng) / 4) * (rng() % 2 ? 1 : -1);
+    }
+    for (int f = 0; f < static_cast<int>(Unary::Count); ++f) {
+        wide.unaryArray[f](a.data(), outWide.data(), n);
+        avx2.unaryArray[f](a.data(), outAvx2.data(), n);
+        for (std::size_t i = 0; i < n; ++i) {
+            ASSERT_TRUE(sameBits(outWide[i], outAvx2[i])) << "unary " << f << " at " << a[i];
+            ASSERT_TRUE(sameBits(wide.unary[f](a[i]), avx2.unary[f](a[i])));
+        }
+    }
+    for (int f = 0; f < static_cast<int>(Binary::Count); ++f) {
+        wide.binaryArray[f](a.data(), 0, b.data(), 0, outWide.data(), n);
+        avx2.binaryArray[f](a.data(), 0, b.data(), 0, outAvx2.data(), n);
+        for (std::size_t i = 0; i < n; ++i)
+            ASSERT_TRUE(sameBits(outWide[i], outAvx2[i]))
+                << "binary " << f << " at " << a[i] << ", " << b[i];
     }
 }
 
