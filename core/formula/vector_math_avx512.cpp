@@ -21,6 +21,14 @@ namespace {
 #define FL_VECTOR(f) Sleef_##f##d8_u10avx512f
 #define FL_SCALAR(f) Sleef_##f##d1_u10purecfma // the AVX2 variant's twin too
 #define FL_VARIANT_NAME "SLEEF AVX-512F"
+bool inOneTrigRange(const double* p) {
+    const __m512d v = _mm512_abs_pd(_mm512_loadu_pd(p));
+    const __mmask8 fast = _mm512_cmp_pd_mask(v, _mm512_set1_pd(12.0), _CMP_LT_OQ);
+    const __mmask8 medium = _mm512_cmp_pd_mask(v, _mm512_set1_pd(16.0), _CMP_GE_OQ) &
+                            _mm512_cmp_pd_mask(v, _mm512_set1_pd(1e12), _CMP_LE_OQ);
+    return fast == 0xFF || medium == 0xFF;
+}
+#define FL_IN_ONE_TRIG_RANGE(p) inOneTrigRange(p)
 #include "vector_math_variant.inc"
 } // namespace
 
