@@ -21,9 +21,9 @@ namespace {
 #define FL_VARIANT_NAME "SLEEF SSE2"
 bool inOneTrigRange(const double* p) {
     const __m128d v = _mm_andnot_pd(_mm_set1_pd(-0.0), _mm_loadu_pd(p)); // |lanes|
-    const int fast = _mm_movemask_pd(_mm_cmplt_pd(v, _mm_set1_pd(12.0)));
+    const int fast = _mm_movemask_pd(_mm_cmplt_pd(v, _mm_set1_pd(15.0)));
     const int medium = _mm_movemask_pd(
-        _mm_and_pd(_mm_cmpge_pd(v, _mm_set1_pd(16.0)), _mm_cmple_pd(v, _mm_set1_pd(1e12))));
+        _mm_and_pd(_mm_cmpge_pd(v, _mm_set1_pd(15.0)), _mm_cmplt_pd(v, _mm_set1_pd(1e14))));
     return fast == 0x3 || medium == 0x3;
 }
 #define FL_IN_ONE_TRIG_RANGE(p) inOneTrigRange(p)

@@ -20,10 +20,10 @@ namespace {
 #define FL_VARIANT_NAME "SLEEF AVX2+FMA"
 bool inOneTrigRange(const double* p) {
     const __m256d v = _mm256_andnot_pd(_mm256_set1_pd(-0.0), _mm256_loadu_pd(p)); // |lanes|
-    const int fast = _mm256_movemask_pd(_mm256_cmp_pd(v, _mm256_set1_pd(12.0), _CMP_LT_OQ));
+    const int fast = _mm256_movemask_pd(_mm256_cmp_pd(v, _mm256_set1_pd(15.0), _CMP_LT_OQ));
     const int medium =
-        _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(v, _mm256_set1_pd(16.0), _CMP_GE_OQ),
-                                         _mm256_cmp_pd(v, _mm256_set1_pd(1e12), _CMP_LE_OQ)));
+        _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(v, _mm256_set1_pd(15.0), _CMP_GE_OQ),
+                                         _mm256_cmp_pd(v, _mm256_set1_pd(1e14), _CMP_LT_OQ)));
     return fast == 0xF || medium == 0xF;
 }
 #define FL_IN_ONE_TRIG_RANGE(p) inOneTrigRange(p)

@@ -23,9 +23,9 @@ namespace {
 #define FL_VARIANT_NAME "SLEEF AVX-512F"
 bool inOneTrigRange(const double* p) {
     const __m512d v = _mm512_abs_pd(_mm512_loadu_pd(p));
-    const __mmask8 fast = _mm512_cmp_pd_mask(v, _mm512_set1_pd(12.0), _CMP_LT_OQ);
-    const __mmask8 medium = _mm512_cmp_pd_mask(v, _mm512_set1_pd(16.0), _CMP_GE_OQ) &
-                            _mm512_cmp_pd_mask(v, _mm512_set1_pd(1e12), _CMP_LE_OQ);
+    const __mmask8 fast = _mm512_cmp_pd_mask(v, _mm512_set1_pd(15.0), _CMP_LT_OQ);
+    const __mmask8 medium = _mm512_cmp_pd_mask(v, _mm512_set1_pd(15.0), _CMP_GE_OQ) &
+                            _mm512_cmp_pd_mask(v, _mm512_set1_pd(1e14), _CMP_LT_OQ);
     return fast == 0xFF || medium == 0xFF;
 }
 #define FL_IN_ONE_TRIG_RANGE(p) inOneTrigRange(p)

@@ -65,30 +65,38 @@ TEST(VectorMath, ArraysEqualTheirScalarTwinsBitForBit) {
     }
 }
 
-// sin, cos and tan go as whole vectors where every lane lies well inside one
-// of SLEEF's argument reductions (|x| < 12, or 16 to 1e12) and lane by lane
-// otherwise. Vectors made to sit in each range, on and across its edges,
-// beside huge, infinite and NaN lanes, must all give the scalar twin's bits.
+// sin, cos and tan go as whole vectors where every lane lies inside one of
+// SLEEF's argument reductions (|x| < 15, or 15 to 1e14); a vector that mixes
+// them has its lanes sorted by range into vectors of their own. Vectors made
+// to sit in each range, on and across its edges, beside huge, infinite and
+// NaN lanes, must all give the scalar twin's bits, in place too.
 TEST(VectorMath, TrigonometryInEveryReductionRangeEqualsItsScalarTwin) {
     std::mt19937_64 rng(10);
-    const double edges[] = {0,    1e-3, 11.9, 12,   12.1,    14.9, 15,   15.1,    15.9, 16,
-                            16.1, 100,  1e6,  1e12, 1.01e12, 1e13, 1e14, 1.01e14, 1e17, 1e300};
+    const double below15 = std::nextafter(15.0, 0.0), below1e14 = std::nextafter(1e14, 0.0);
+    const double edges[] = {0,    1e-3,      11.9, 12,      12.1, 14.9, below15, 15,
+                            15.1, 15.9,      16,   16.1,    100,  1e6,  1e12,    1.01e12,
+                            1e13, below1e14, 1e14, 1.01e14, 1e17, 1e300};
     std::uniform_int_distribution<int> pick(0, int(std::size(edges)) - 1);
     std::uniform_real_distribution<double> jitter(0.999, 1.001), logMagnitude(-3, 20);
     const std::size_t n = 40000;
     std::vector<double> a(n), out(n);
-    std::uniform_real_distribution<double> fast(-11.99, 11.99), logMedium(std::log10(16.0), 12);
+    std::uniform_real_distribution<double> fast(-11.99, 11.99), logMedium(std::log10(16.0), 12),
+        pastFast(15.0, 16.5);
     for (std::size_t i = 0; i < n; i += 8) {
         // a run of eight (one AVX-512 vector, two AVX2 ones, four SSE2 ones):
         // every lane in the fast range, every lane in the medium one, or mixed
-        const int kind = int(i / 8 % 6);
+        const int kind = int(i / 8 % 7);
         for (std::size_t k = 0; k < 8; ++k) {
             double v = kind == 0   ? edges[pick(rng)] * jitter(rng)
                        : kind == 1 ? std::pow(10.0, logMagnitude(rng))
                        : kind == 2 ? 16.0 + 1e3 * jitter(rng) * double(k)
                        : kind == 3 ? fast(rng)
                        : kind == 4 ? std::pow(10.0, logMedium(rng))
-                                   : edges[std::size_t(i / 8 + k) % std::size(edges)];
+                       : kind == 5 ? edges[std::size_t(i / 8 + k) % std::size(edges)]
+                       // lanes of every range in one vector, most near the fast one's edge
+                       : rng() % 2 ? fast(rng) * 15.0 / 11.99
+                       : rng() % 2 ? pastFast(rng)
+                                   : std::pow(10.0, logMagnitude(rng));
             if (rng() % 2) v = -v;
             if (kind != 3 && kind != 4 && rng() % 97 == 0) v = rng() % 2 ? NAN : INFINITY;
             a[i + k] = v;
@@ -102,6 +110,11 @@ TEST(VectorMath, TrigonometryInEveryReductionRangeEqualsItsScalarTwin) {
                 ASSERT_TRUE(sameBits(s, out[i]))
                     << impl->name << " unary " << int(f) << " at " << a[i] << " (lane " << i << ")";
             }
+            // in place (the batch evaluator may write a step over its operand)
+            std::vector<double> inPlace = a;
+            impl->unaryArray[static_cast<int>(f)](inPlace.data(), inPlace.data(), n);
+            for (std::size_t i = 0; i < n; ++i)
+                ASSERT_TRUE(sameBits(inPlace[i], out[i])) << impl->name << " in place, lane " << i;
         }
     }
 }
