@@ -1,6 +1,7 @@
 #include "batch_jit.h"
 
 #include "batch_step_run.h"
+#include "eval_batch.h"
 
 #include "vector_math.h"
 
@@ -108,7 +109,8 @@ class Emitter : public CodeGenerator {
     Emitter(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
             std::int32_t registerCount, std::size_t maxSize)
         : CodeGenerator(maxSize), steps_(steps), liveOut_(liveOut),
-          where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)) {
+          where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)),
+          rowGpr_(std::size_t(registerCount), -1) {
         // At most a few constants a step: the pool never moves once r14 holds it.
         pool_.reserve(16 * steps_.size() + 16);
         for (std::size_t k = 0; k < steps_.size(); ++k) {
@@ -118,6 +120,12 @@ class Emitter : public CodeGenerator {
         }
         emit();
     }
+
+    // Whether the code touches no row but its inputs' and outputs' (no
+    // spill, no call to the interpreter's code, which works in the block's
+    // rows): it may then run over any number of points in one call, where
+    // the inputs and outputs are whole arrays, not a block's rows.
+    bool streams() const { return streams_; }
 
   private:
     static constexpr int kSlots = 11; // ymm0..ymm10 hold values; ymm11..ymm15 are scratch
@@ -139,7 +147,9 @@ class Emitter : public CodeGenerator {
     std::vector<std::vector<Event>> events_;
     std::array<Slot, kSlots> slots_{};
     std::size_t step_ = 0;
-    int lane_ = 0; // the first point of the group being emitted (0 or 4)
+    int lane_ = 0;            // the first point of the group being emitted (0 or 4)
+    std::vector<int> rowGpr_; // register -> the general register holding its row, or -1
+    bool streams_ = true;     // no call, no spill: see streams()
     // The constants, read with one load each (vbroadcastsd from memory: no
     // shuffle port, unlike a move from a general register).
     std::vector<double> pool_;
@@ -163,15 +173,38 @@ class Emitter : public CodeGenerator {
         return nextRead(reg, from, &atEnd) != std::numeric_limits<std::size_t>::max() || atEnd;
     }
 
-    // rax := the address of register `reg`'s lanes in this iteration.
-    void addressOf(const Reg64& out, std::int32_t reg) {
-        mov(out, ptr[r12 + reg * 8]);
-        lea(out, ptr[out + rbx * 8 + lane_ * 8]);
-    }
-    // The lanes of register `reg` in this iteration (rax holds its row).
+    // The lanes of register `reg` in this iteration: through the general
+    // register that holds its row during the loop (loadRows), else through
+    // rax, loaded from the row table. Reading or writing the row of a value
+    // that is neither an input nor an output (a spill) ties the code to the
+    // block's rows.
     Address lanes(std::int32_t reg) {
+        if (reg >= kInputCount && !liveOut_[std::size_t(reg)]) streams_ = false;
+        if (const int g = rowGpr_[std::size_t(reg)]; g >= 0)
+            return ptr[Reg64(g) + rbx * 8 + lane_ * 8];
         mov(rax, ptr[r12 + reg * 8]);
         return ptr[rax + rbx * 8 + lane_ * 8];
+    }
+    // Before the loop over steps [first, end): the rows it reads inputs from
+    // and writes outputs to, each in a general register of its own while
+    // registers last (a calls clobbers them, so each loop loads its own).
+    // An iteration then makes no load but its values' and constants'.
+    void loadRows(std::size_t first, std::size_t end) {
+        static constexpr int kFree[] = {
+            Xbyak::Operand::RCX, Xbyak::Operand::RDX, Xbyak::Operand::RSI,
+            Xbyak::Operand::RDI, Xbyak::Operand::R8,  Xbyak::Operand::R9,
+            Xbyak::Operand::R10, Xbyak::Operand::R11, Xbyak::Operand::RBP};
+        std::size_t used = 0;
+        auto hold = [&](std::int32_t reg) {
+            if (rowGpr_[std::size_t(reg)] >= 0 || used == std::size(kFree)) return;
+            rowGpr_[std::size_t(reg)] = kFree[used++];
+            mov(Reg64(rowGpr_[std::size_t(reg)]), ptr[r12 + reg * 8]);
+        };
+        for (std::size_t k = first; k < end; ++k) {
+            for (std::int32_t r : readsOf(steps_[k]))
+                if (r < kInputCount) hold(r);
+            if (liveOut_[std::size_t(steps_[k].out)]) hold(steps_[k].out);
+        }
     }
     void store(int slot) {
         vmovupd(lanes(slots_[std::size_t(slot)].reg), Ymm(slot));
@@ -272,6 +305,7 @@ class Emitter : public CodeGenerator {
     // The interpreter's code for step `s` over the points the loops do (r13
     // of them): one call a block. `s` is the code's own copy of the step.
     void emitCall(const BatchStep& s) {
+        streams_ = false;
         mov(rdi, reinterpret_cast<std::uint64_t>(&s));
         mov(rsi, r12);
         mov(rdx, r13);
@@ -511,6 +545,7 @@ class Emitter : public CodeGenerator {
 
     // The loop over the points for steps [first, end), none of them a call.
     void emitLoop(std::size_t first, std::size_t end) {
+        loadRows(first, end);
         xor_(ebx, ebx);
         Label loop, done;
         L(loop);
@@ -536,6 +571,7 @@ class Emitter : public CodeGenerator {
         add(rbx, 8);
         jmp(loop, T_NEAR);
         L(done);
+        std::fill(rowGpr_.begin(), rowGpr_.end(), -1);
     }
 
     void emit() {
@@ -586,6 +622,7 @@ struct BatchJit::Code {
     std::unique_ptr<Emitter> emitter;
     std::vector<BatchStep> steps; // what the code calls runBatchStep with: never moves
     std::size_t (*run)(double* const*, std::size_t) = nullptr;
+    bool streams = false; // Emitter::streams()
 };
 
 BatchJit::BatchJit(std::unique_ptr<Code> code) : code_(std::move(code)) {}
@@ -673,6 +710,7 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
         code->emitter = std::make_unique<Emitter>(code->steps, liveOut, registerCount, size);
         code->emitter->ready();
         code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
+        code->streams = code->emitter->streams();
         made = std::shared_ptr<const BatchJit>(new BatchJit(std::move(code)));
     } catch (const std::exception&) { // no executable memory, code too large: interpret
         return nullptr;
@@ -689,8 +727,11 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
     return it->second;
 }
 
+// Code that spills or calls works in the block's rows: one block at most.
+// Code that streams takes every whole group of 8 it is given (the caller
+// gives more than a block only where its rows are whole arrays).
 std::size_t BatchJit::run(double* const* base, std::size_t n) const {
-    return code_->run(base, n);
+    return code_->run(base, code_->streams ? n : std::min(n, BatchEvaluator::kBlock));
 }
 
 std::size_t BatchJit::codeBytes() const {

@@ -36,8 +36,8 @@ class BatchJit {
                                                    std::int32_t registerCount);
     ~BatchJit();
 
-    // Runs the steps over the first (n & ~7) points (base as runBlock takes
-    // it, followed by its three scratch rows); returns how many it did.
+    // Runs whole groups of 8 of the n points (base as runBlock takes it, then
+    // its scratch rows): all, or a block's where it spills or calls; says how many.
     std::size_t run(double* const* base, std::size_t n) const;
 
     std::size_t codeBytes() const;

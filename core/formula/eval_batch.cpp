@@ -508,21 +508,25 @@ void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* cons
     for (std::size_t r = 0; r < regs; ++r)
         base[r] = workspace_ + r * kStride;
     std::copy(scratch_.begin(), scratch_.end(), base.begin() + std::ptrdiff_t(regs));
-    for (std::size_t start = 0; start < n; start += kBlock) {
-        const std::size_t count = std::min(kBlock, n - start);
+    // A single output computed in a register of its own is written straight
+    // into the caller's array: no copy afterwards.
+    const bool direct = tape_.outputs.size() == 1 && !tape_.outputs[0].value.isConst() &&
+                        tape_.outputs[0].value.reg >= kInputCount &&
+                        !isUniform_[std::size_t(tape_.outputs[0].value.reg)];
+    const std::size_t outReg = direct ? std::size_t(tape_.outputs[0].value.reg) : 0;
+    for (std::size_t start = 0, count = 0; start < n; start += count) {
         for (int i = 0; i < kInputCount; ++i)
             if (in.arrays[i]) base[i] = const_cast<double*>(in.arrays[i] + start); // read only
-        // A single output computed in a register of its own is written
-        // straight into the caller's array: no copy afterwards.
-        const bool direct = tape_.outputs.size() == 1 && !tape_.outputs[0].value.isConst() &&
-                            tape_.outputs[0].value.reg >= kInputCount &&
-                            !isUniform_[std::size_t(tape_.outputs[0].value.reg)];
-        const std::size_t outReg = direct ? std::size_t(tape_.outputs[0].value.reg) : 0;
         if (direct) base[outReg] = outputs[0] + start;
         // The JIT does whole groups of 8 points (`base` with the scratch rows
         // after the registers': it hands them to runBatchStep), the
-        // interpreter the rest.
-        const std::size_t done = jit_ && count >= 8 ? jit_->run(base.data(), count) : 0;
+        // interpreter the rest. With its one output in the caller's array,
+        // code that keeps every value in registers runs over all the points
+        // left in one call (BatchJit::run: a block at most otherwise).
+        const std::size_t left = n - start;
+        const std::size_t done =
+            jit_ && left >= 8 ? jit_->run(base.data(), direct ? left : std::min(kBlock, left)) : 0;
+        count = done >= kBlock ? done : std::min(kBlock, left);
         if (done == 0) {
             runBlock(base.data(), count);
         } else if (done < count) {

@@ -248,6 +248,41 @@ TEST_F(BatchJitTest, RandomFormulasOfItsOperationsGiveTheInterpretersBits) {
     EXPECT_GE(varying, 200);
 }
 
+// Code that keeps every value in registers runs over a whole call's arrays
+// at once, code that spills (more values live than YMM registers) or calls
+// the interpreter's code a block at a time: both over three blocks and a
+// tail, each giving the interpreter's bits.
+TEST_F(BatchJitTest, LongArraysGiveTheInterpretersBitsWhetherTheCodeSpillsOrNot) {
+    std::string spilling;
+    for (int i = 1; i <= 16; ++i)
+        spilling +=
+            "a" + std::to_string(i) + " = x * " + std::to_string(1 + i / 16.0) + " + y * z; ";
+    spilling += "return a1";
+    for (int i = 2; i <= 16; ++i)
+        spilling += (i % 2 ? " + a" : " * a") + std::to_string(18 - i);
+    spilling += ";";
+    for (const std::string& src :
+         {std::string("1 - x^2 - y^2 - z^2"), std::string("min(x, y) - max(z, 0.5) * x"), spilling,
+          std::string("sin(x) * y - z")}) {
+        CompileResult r = compile(src);
+        ASSERT_TRUE(r.ok()) << src;
+        const std::size_t n = 3 * 256 + 45;
+        std::vector<double> xs(n), ys(n), zs(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            xs[k] = std::sin(double(k)) * 2;
+            ys[k] = k % 29 == 0 ? std::numeric_limits<double>::quiet_NaN() : std::cos(double(k));
+            zs[k] = double(k % 7) - 3;
+        }
+        const Outcome jit = evaluate(*r.tape, true, xs, ys, zs, 0.5, false);
+        const Outcome interpreted = evaluate(*r.tape, false, xs, ys, zs, 0.5, false);
+        EXPECT_TRUE(jit.jit) << src;
+        for (std::size_t k = 0; k < n; ++k)
+            ASSERT_TRUE(sameBits(jit.out[k], interpreted.out[k]))
+                << src << " at " << k << ": JIT " << jit.out[k] << ", interpreter "
+                << interpreted.out[k];
+    }
+}
+
 TEST_F(BatchJitTest, ParametersAndATimeThatChangesRecompile) {
     CompileResult r = compile("param k = 2 in [0, 5]; k*x^2 + y - t");
     ASSERT_TRUE(r.ok());
