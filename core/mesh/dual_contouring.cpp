@@ -18,6 +18,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <utility>
 
 namespace fl::mesh {
 namespace {
@@ -28,6 +29,14 @@ constexpr int kCorners = kC * kC * kC;
 constexpr int kCells = kB * kB * kB;
 // How far outside its cell (in cells) a vertex may be placed (buildVertices).
 constexpr double kVertexRoom = 0.5;
+// Smooth patches' vertices (balancedOnSurface): lifted this many times the
+// crossings' mean curvature term above the surface, not moved where that
+// term is over kMaxCurvatureTerm cells, moved at most kMaxShift cells. A cell
+// whose crossings' normals disagree (smoothAround) counts as a curved patch
+// when they spread by under kMaxSpread (1 - |mean normal|) and the normal at
+// its vertex is kCreaseTest times closer to their mean than they are.
+constexpr double kSurfaceLift = 0.25, kMaxCurvatureTerm = 0.25, kMaxShift = 0.1, kMaxSpread = 0.05,
+                 kCreaseTest = 0.1;
 // Where a crossing's gradient is taken: this fraction of its edge inside it
 // when the crossing lies at a corner (computeCrossings says why).
 constexpr double kIntoTheEdge = 1e-4;
@@ -407,9 +416,12 @@ void appendQuad(std::pmr::vector<Triangle>& out, const std::array<std::uint32_t,
 }
 
 class Contourer {
+    struct CellQef; // a cell's QEF and sums (below)
+
   public:
     Contourer(const ImplicitField& field, const MeshOptions& options, const Grid& grid)
-        : field_(field), options_(options), grid_(grid) {}
+        : field_(field), options_(options), grid_(grid),
+          minCell_(std::min({grid.h[0], grid.h[1], grid.h[2]})) {}
 
     // Phase 1: corner values, edge crossings and cell vertices of one block.
     void sampleBlock(Block& block, FieldSampler& sampler, Observations& seen) {
@@ -889,7 +901,7 @@ class Contourer {
         around_.assign(found_.size(), {-1, -1, -1, -1});
         normalAt_.clear();
         normalOf_.clear();
-        normalSums_.clear();
+        normalEntry_.clear();
         // Cell q around an edge along `axis` lies at -(q & 1) along u and
         // -(q >> 1) along v from the edge's first corner: its index from the
         // corner's, and the edge as that cell numbers it.
@@ -964,12 +976,16 @@ class Contourer {
             const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
             const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
             const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
+            double offset = 0;
+            for (std::size_t k = 0; k < 3; ++k)
+                offset += signedNormal[k] * (x.point[k] - origin[k]);
             for (std::size_t q = 0; q < 4; ++q) {
                 if (cells[q] < 0) continue;
                 CellQef& cq = qefs_[std::size_t(cells[q])];
                 cq.qef.add(plane);
                 for (std::size_t k = 0; k < 3; ++k)
                     cq.normalSum[k] += signedNormal[k];
+                cq.offsetSum += offset;
             }
         }
         block.positions.reserve(touched_.size()); // one vertex per entry: no growth slack
@@ -979,8 +995,6 @@ class Contourer {
             const int index = touched_[entry];
             CellQef& cq = qefs_[entry];
             const int cell = index / kPieces;
-            const int ci = cell % kB, cj = (cell / kB) % kB, ck = cell / (kB * kB);
-            const Vec3 lo = grid_.corner(base[0] + ci, base[1] + cj, base[2] + ck);
             // The vertex may sit up to half a cell outside its cell: where a
             // crease passes just beside the cell, both of its surfaces cross
             // the cell but their meeting line does not, and a vertex held in
@@ -988,11 +1002,7 @@ class Contourer {
             // error 1.2e-3 of the diagonal with the old fallback to the mass
             // point, 6.9e-4 held in the cell, under 2e-4 with half a cell of
             // room, and fewer folded triangles at its creases, not more).
-            Vec3 cellLo{}, cellHi{};
-            for (std::size_t k = 0; k < 3; ++k) {
-                cellLo[k] = lo[k] - kVertexRoom * grid_.h[k];
-                cellHi[k] = lo[k] + (1 + kVertexRoom) * grid_.h[k];
-            }
+            const auto [cellLo, cellHi] = vertexRoom(base, cell);
             Vec3 p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
             // Where the crossings' analytic normals agree (a smooth patch: most
             // cells), their mean is the vertex normal; where they do not (a
@@ -1003,10 +1013,11 @@ class Contourer {
             Vec3 n{};
             if (length > 0.9995 * cq.qef.count()) {
                 n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
+                p = balancedOnSurface(cq, p, origin, cellLo, cellHi);
             } else { // all of the block's such vertices at once, below
                 normalAt_.push_back(p);
                 normalOf_.push_back(std::uint32_t(block.positions.size()));
-                normalSums_.push_back(cq.normalSum);
+                normalEntry_.push_back(std::uint32_t(entry));
             }
             // touched_ is sorted, so a cell's pieces come in order, one after another.
             if (block.cells.empty() || block.cells.back().cell != cell)
@@ -1021,8 +1032,18 @@ class Contourer {
             normalGradients_.resize(normalAt_.size());
             sampler.gradients(normalAt_.data(), normalAt_.size(), normalGradients_.data());
             for (std::size_t k = 0; k < normalAt_.size(); ++k) {
-                const Vec3 n = vertexNormal(normalGradients_[k], normalAt_[k], normalSums_[k]);
+                const CellQef& cq = qefs_[normalEntry_[k]];
+                const Vec3 n = vertexNormal(normalGradients_[k], normalAt_[k], cq.normalSum);
                 block.normals[normalOf_[k]] = {float(n[0]), float(n[1]), float(n[2])};
+                // The crossings' normals disagree: a curved patch, or a crease
+                // (where the gradient at the vertex is one side's and far from
+                // their mean, and the vertex stays where the QEF put it).
+                if (smoothAround(n, cq)) {
+                    const auto [cellLo, cellHi] =
+                        vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
+                    const Vec3 p = balancedOnSurface(cq, normalAt_[k], origin, cellLo, cellHi);
+                    block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
+                }
             }
         }
         block.occupied.fill(0);
@@ -1110,6 +1131,76 @@ class Contourer {
     // nearer to a face than to the shape's surface (closed boundary), else
     // -grad f; where the gradient vanishes, the crossings' normals.
     // (d: f and its gradient at p, from one batch for the block's vertices.)
+    // The box a cell's vertex may take: the cell widened by kVertexRoom.
+    std::pair<Vec3, Vec3> vertexRoom(const long base[3], int cell) const {
+        const int ci = cell % kB, cj = (cell / kB) % kB, ck = cell / (kB * kB);
+        const Vec3 lo = grid_.corner(base[0] + ci, base[1] + cj, base[2] + ck);
+        Vec3 cellLo{}, cellHi{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            cellLo[k] = lo[k] - kVertexRoom * grid_.h[k];
+            cellHi[k] = lo[k] + (1 + kVertexRoom) * grid_.h[k];
+        }
+        return {cellLo, cellHi};
+    }
+
+    // Whether a cell whose crossings' normals disagree is a curved patch
+    // rather than a crease, by the unit normal n at its vertex: on a smooth
+    // surface the crossings' mean normal is the normal at their centre to
+    // second order, so n lies far closer to it than the crossings' normals
+    // do; across a crease n is one side's, as far from the mean as they
+    // are (unless nearly all crossings lie on that side, where the crease
+    // barely moves the vertex anyway).
+    static bool smoothAround(const Vec3& n, const CellQef& cq) {
+        const double length =
+            std::sqrt(cq.normalSum[0] * cq.normalSum[0] + cq.normalSum[1] * cq.normalSum[1] +
+                      cq.normalSum[2] * cq.normalSum[2]);
+        if (!(length > 0)) return false;
+        const double along =
+            (n[0] * cq.normalSum[0] + n[1] * cq.normalSum[1] + n[2] * cq.normalSum[2]) / length;
+        const double spread = 1 - length / cq.qef.count(); // 0 when all normals agree
+        return spread < kMaxSpread && 1 - along < kCreaseTest * spread;
+    }
+
+    // A smooth patch's vertex moved along the crossings' mean normal n to
+    // where a mesh deviates least from a curved surface. The QEF's vertex
+    // lies on the crossings' tangent planes on average, which a convex
+    // patch keeps outside it (by kappa d^2 / 2 at a lateral distance d):
+    // the vertex sat up to 1.3 % of a cell off the sphere, and those
+    // vertices were the mesh's largest deviation. Each crossing i (point p_i,
+    // outward normal n_i) gives the height of v above the surface to second
+    // order as n_i.(v - p_i) + (n - n_i).(v - p_i) / 2, the second term half
+    // its curvature term kappa d^2. Averaged: the height H = D + c / 2, with
+    // D the mean distance above the planes and c the mean curvature term
+    // (from the cell's sums, nothing stored per crossing). A flat triangle
+    // between vertices on a convex surface lies inside it by up to about
+    // c / 2 (the sagitta across its circumcircle), so the least largest
+    // deviation puts the vertices kSurfaceLift * c above the surface (a
+    // concave patch, c < 0, the other way). Bounded: c of a few cells means
+    // the second-order picture is wrong; the move stays small, in the room.
+    Vec3 balancedOnSurface(const CellQef& cq, const Vec3& p, const Vec3& origin, const Vec3& lo,
+                           const Vec3& hi) const {
+        const Vec3& sum = cq.normalSum;
+        const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+        if (!(length > 0)) return p;
+        const double perPlane = 1.0 / cq.qef.count(), perLength = 1.0 / length;
+        const std::array<double, 3> points = cq.qef.pointSum(); // about origin
+        double planes = -cq.offsetSum, aboveMean = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+            const double v = p[a] - origin[a];
+            planes += sum[a] * v;
+            aboveMean += sum[a] * (v - points[a] * perPlane);
+        }
+        const double d = planes * perPlane, c = aboveMean * perLength - d;
+        const double cell = minCell_;
+        if (!(std::abs(c) < kMaxCurvatureTerm * cell)) return p;
+        const double shift =
+            std::clamp(kSurfaceLift * c - (d + c / 2), -kMaxShift * cell, kMaxShift * cell) *
+            perLength;
+        return {std::clamp(p[0] + shift * sum[0], lo[0], hi[0]),
+                std::clamp(p[1] + shift * sum[1], lo[1], hi[1]),
+                std::clamp(p[2] + shift * sum[2], lo[2], hi[2])};
+    }
+
     Vec3 vertexNormal(const formula::Dual& d, const Vec3& p, const Vec3& crossingNormals) const {
         bool ok = false;
         Vec3 n = normalised({-d.d[0], -d.d[1], -d.d[2]}, ok);
@@ -1192,6 +1283,7 @@ class Contourer {
     const ImplicitField& field_;
     const MeshOptions& options_;
     const Grid& grid_;
+    double minCell_; // the shortest side of a cell
     const PieceTable& pieces_ = pieceTable();
     std::vector<double> xs_, ys_, zs_, out_;
     // The corners of the block being sampled that are evaluated, and where.
@@ -1222,12 +1314,13 @@ class Contourer {
     // vertex, their crossings' normals summed, and the gradients.
     std::vector<Vec3> normalAt_;
     std::vector<std::uint32_t> normalOf_;
-    std::vector<Vec3> normalSums_;
+    std::vector<std::uint32_t> normalEntry_; // their QEFs' places
     std::vector<formula::Dual> normalGradients_;
     struct CellQef {
         std::uint32_t vertex = 0; // block-local, once made
         Qef qef;
         Vec3 normalSum{};
+        double offsetSum = 0; // of n_i . (p_i - origin), n_i outward: see balancedOnSurface
         // As new, member by member: value-initialising the 184 bytes as a
         // whole made a `rep stos`, whose start-up cost a few percent of
         // meshing the watermelon.
@@ -1235,6 +1328,7 @@ class Contourer {
             vertex = 0;
             qef.reset(origin);
             normalSum = {0.0, 0.0, 0.0};
+            offsetSum = 0;
         }
     };
     // The QEFs of the block's touched cells and pieces, in touched_'s order,
