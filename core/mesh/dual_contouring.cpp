@@ -1031,7 +1031,7 @@ class Contourer {
             Vec3 n{};
             if (length > 0.9995 * cq.qef.count()) {
                 n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
-                p = balancedOnSurface(cq, p, origin, cellLo, cellHi);
+                p = balancedOnSurface(cq, length, p, origin, cellLo, cellHi);
             } else { // all of the block's such vertices at once, below
                 normalAt_.push_back(p);
                 normalOf_.push_back(std::uint32_t(block.positions.size()));
@@ -1059,7 +1059,11 @@ class Contourer {
                 if (smoothAround(n, cq)) {
                     const auto [cellLo, cellHi] =
                         vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
-                    const Vec3 p = balancedOnSurface(cq, normalAt_[k], origin, cellLo, cellHi);
+                    const double length = std::sqrt(cq.normalSum[0] * cq.normalSum[0] +
+                                                    cq.normalSum[1] * cq.normalSum[1] +
+                                                    cq.normalSum[2] * cq.normalSum[2]);
+                    const Vec3 p =
+                        balancedOnSurface(cq, length, normalAt_[k], origin, cellLo, cellHi);
                     block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
                 }
             }
@@ -1197,10 +1201,10 @@ class Contourer {
     // deviation puts the vertices kSurfaceLift * c above the surface (a
     // concave patch, c < 0, the other way). Bounded: c of a few cells means
     // the second-order picture is wrong; the move stays small, in the room.
-    Vec3 balancedOnSurface(const CellQef& cq, const Vec3& p, const Vec3& origin, const Vec3& lo,
-                           const Vec3& hi) const {
+    // (`length`: that of the normals' sum, which the caller has.)
+    Vec3 balancedOnSurface(const CellQef& cq, double length, const Vec3& p, const Vec3& origin,
+                           const Vec3& lo, const Vec3& hi) const {
         const Vec3& sum = cq.normalSum;
-        const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
         if (!(length > 0)) return p;
         const double perPlane = 1.0 / cq.qef.count(), perLength = 1.0 / length;
         const std::array<double, 3> points = cq.qef.pointSum(); // about origin
