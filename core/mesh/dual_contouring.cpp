@@ -35,6 +35,9 @@ constexpr double kVertexRoom = 0.5;
 // whose crossings' normals disagree (smoothAround) counts as a curved patch
 // when they spread by under kMaxSpread (1 - |mean normal|) and the normal at
 // its vertex is kCreaseTest times closer to their mean than they are.
+// A quad whose diagonals' ends' normals turn by more than acos(kCreaseTurn)
+// (37 degrees) holds a crease (appendQuad).
+constexpr double kCreaseTurn = 0.8;
 constexpr double kSurfaceLift = 0.25, kMaxCurvatureTerm = 0.25, kMaxShift = 0.1, kMaxSpread = 0.05,
                  kCreaseTest = 0.1;
 // Where a crossing's gradient is taken: this fraction of its edge inside it
@@ -402,9 +405,12 @@ std::int32_t vertexOf(const PieceTable& pieces, const Block& block, int cell, in
 // at its middle (n the vertex normals; kappa L^2 / 8 for a curvature kappa
 // along it). On a saddle (the gyroid is nearly one everywhere) the two
 // diagonals bend opposite ways by different amounts, and the flatter one
-// is the smaller error; where they are about as close (within a thousandth
-// of the diagonal: flat patches, a sphere), the shorter diagonal, for
-// better-shaped triangles.
+// is the smaller error. Where the two bow about as much (their (n_a -
+// n_b).(b - a) within a thousandth of the shorter diagonal: flat patches, a
+// sphere) the shorter diagonal, for better-shaped triangles; and where a
+// crease crosses the quad (a diagonal's ends' normals over kCreaseTurn
+// apart) too: there the normals tell the crease, not a curvature, and the
+// flatter diagonal can fold a triangle over it.
 void appendQuad(std::pmr::vector<Triangle>& out, const std::array<std::uint32_t, 4>& id,
                 const std::array<const Vec3f*, 4>& pos, const std::array<const Vec3f*, 4>& normal) {
     auto dist2 = [](const Vec3f& x, const Vec3f& y) {
@@ -422,8 +428,16 @@ void appendQuad(std::pmr::vector<Triangle>& out, const std::array<std::uint32_t,
     };
     const double d02 = dist2(*pos[0], *pos[2]), d13 = dist2(*pos[1], *pos[3]);
     const double b02 = bow(0, 2), b13 = bow(1, 3);
-    const bool alongFirst =
-        std::abs(b02 - b13) > 1e-3 * std::sqrt(std::min(d02, d13)) ? b02 < b13 : d02 <= d13;
+    auto along = [&](std::size_t a, std::size_t b) {
+        double d = 0;
+        for (std::size_t k = 0; k < 3; ++k)
+            d += double((*normal[a])[k]) * (*normal[b])[k];
+        return d;
+    };
+    const bool smooth = along(0, 2) > kCreaseTurn && along(1, 3) > kCreaseTurn;
+    const bool alongFirst = smooth && std::abs(b02 - b13) > 1e-3 * std::sqrt(std::min(d02, d13))
+                                ? b02 < b13
+                                : d02 <= d13;
     if (alongFirst) {
         out.push_back({id[0], id[1], id[2]});
         out.push_back({id[0], id[2], id[3]});

@@ -3,6 +3,7 @@
 #include "courseware/catalogue.h"
 #include "courseware/hand_in.h"
 #include "editor/code_editor.h"
+#include "editor/live_parser.h"
 #include "offline_text_browser.h"
 #include "plain_text.h"
 #include "working_copy.h"
@@ -218,7 +219,7 @@ bool AssignmentPanel::readyToHandIn() {
         c.problem(tr("Save the scene first: a submission is a scene file and what it uses."));
         return false;
     }
-    if (!c.scene() || !c.textParses()) {
+    if (!c.parser->lastGoodScene() || !c.textParses()) {
         c.problem(tr("The scene has errors: fix them (see Issues) before handing in."));
         return false;
     }
@@ -230,7 +231,8 @@ bool AssignmentPanel::handIn(const QString& folder) {
     if (!readyToHandIn()) return false;
     const courseware::Assignment* a = assignment();
     const QString path = c.path();
-    const auto scene = c.scene();
+    // The editor's scene, not the one shown (a class's past, replayed).
+    const auto scene = c.parser->lastGoodScene();
     // The last check, on this very text, before it leaves.
     const grading::CheckReport report = grading::checkScene(*scene, a->requirements);
     const courseware::HandIn done = courseware::packSubmission(

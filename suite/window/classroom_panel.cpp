@@ -217,7 +217,11 @@ ClassroomPanel::ClassroomPanel(QWidget* parent)
     connect(brk, &QPushButton::clicked, client_.get(), &ClassroomClient::breakLock);
 
     ClassroomClient* c = client_.get();
-    connect(c, &ClassroomClient::stateChanged, this, [this] { refreshState(); });
+    connect(c, &ClassroomClient::stateChanged, this, [this] {
+        // Out of the class (left, refused, cut off): its history with it.
+        if (client_->state() == ClassroomClient::State::Disconnected) leaveReplay();
+        refreshState();
+    });
     connect(c, &ClassroomClient::joined, this, [this](bool resumed) {
         say(resumed ? tr("back in the class (your seat and lock were kept)")
                     : tr("joined the class as %1").arg(client_->shownName()));
@@ -293,6 +297,7 @@ void ClassroomPanel::join(const QString& url, const QString& classCode, const QS
                           classroom::Role role, const QString& key) {
     // The class's scene will take the editor: unsaved work is saved or kept first.
     if (context_ && !context_->keepChanges()) return;
+    leaveReplay();
     lastSharedScene_.clear();
     show();
     raise();

@@ -57,8 +57,9 @@ class PanelContext : public QObject {
     // editor's text nobody's file (Save then asks where).
     std::function<QString()> path;
     std::function<void()> forgetPath;
-    // The scene as last read without errors, and whether the editor's text
-    // as last parsed had none.
+    // The scene shown: the editor's as last read without errors (or a class's
+    // past version while a panel replays it: parser->lastGoodScene() is the
+    // editor's always), and whether the editor's text as last parsed had none.
     std::function<std::shared_ptr<const scene::Scene>()> scene;
     std::function<bool()> textParses;
     // Shows this scene in the view and every panel (a class's past version).

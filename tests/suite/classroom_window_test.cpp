@@ -169,7 +169,17 @@ class ClassroomWindowTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(chatHas(benPanel, QStringLiteral("/remove")), 10000);
         QVERIFY(!chatHas(adaPanel, QStringLiteral("/help")));
         save(ben, QStringLiteral("classroom-ben-tool"));
+        // Leaving the class during a replay ends it: the view shows the
+        // editor's scene again, and later edits reach the view.
+        QSignalSpy shownAgain(adaPanel, &suite::ClassroomPanel::historyShown);
+        adaPanel->replay(1);
+        QTRY_COMPARE_WITH_TIMEOUT(shownAgain.count(), 1, 10000);
+        QVERIFY(adaPanel->holdsTheView());
         adaPanel->leave();
+        QTRY_VERIFY_WITH_TIMEOUT(!adaPanel->replaying(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(ada.view()->meshes()->source->files[0].text ==
+                                     ada.editor()->toPlainText().toStdString(),
+                                 20000);
         benPanel->leave();
     }
 
