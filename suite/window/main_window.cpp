@@ -77,9 +77,7 @@ MainWindow::MainWindow(QWidget* parent)
     // one's own) must not take the view from under the replay.
     connect(parser_, &editor::LiveParser::sceneChanged, this,
             [this](std::shared_ptr<const scene::Scene> scene) {
-                for (const Panel* panel : panels_)
-                    if (panel->holdsTheView()) return;
-                sceneChanged(std::move(scene));
+                if (!aPanelHoldsTheView()) sceneChanged(std::move(scene));
             });
     connect(player_, &viewer::ScenePlayer::meshesReady, this, &MainWindow::meshesReady);
     connect(player_, &viewer::ScenePlayer::timeChanged, timeline_, &TimelineBar::showTime);
@@ -339,10 +337,17 @@ void MainWindow::problem(const QString& text) {
 void MainWindow::parsed(const editor::ParseOutcome& outcome) {
     editor_->setDiagnostics(outcome.inThisFile);
     textParses_ = outcome.scene != nullptr;
+    if (aPanelHoldsTheView()) return; // its own message stays ("replaying the class ...")
     if (!outcome.scene)
         statusBar()->showMessage(tr("The text has errors: the view shows the last good scene"));
     else
         statusBar()->clearMessage();
+}
+
+bool MainWindow::aPanelHoldsTheView() const {
+    for (const Panel* panel : panels_)
+        if (panel->holdsTheView()) return true;
+    return false;
 }
 
 void MainWindow::sceneChanged(std::shared_ptr<const scene::Scene> scene) {

@@ -140,6 +140,8 @@ class MainWindow : public QMainWindow {
     viewer::ScenePlayer* player_;
     TimelineBar* timeline_;
     std::vector<Panel*> panels_;
+    // A panel shows a scene of its own in the view (Panel::holdsTheView).
+    bool aPanelHoldsTheView() const;
     IssuesDock* issues_ = nullptr;
     SceneTreeDock* tree_ = nullptr;
     ExamplesDock* examples_ = nullptr;

@@ -23,6 +23,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -154,6 +155,8 @@ class ClassroomWindowTest : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(parsedAgain.count(), 1, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!ada.busy(), 20000);
         QVERIFY(ada.view()->meshes()->source->files[0].text == past.toStdString());
+        QVERIFY2(ada.statusBar()->currentMessage().contains(QStringLiteral("replaying")),
+                 qPrintable(ada.statusBar()->currentMessage()));
         QString why;
         const QString x3d = adaPanel->exportX3d(&why);
         QVERIFY2(x3d.contains(QStringLiteral("<X3D")) && !x3d.contains(QStringLiteral("Ada was")),
