@@ -1035,18 +1035,21 @@ class Contourer {
             // point, 6.9e-4 held in the cell, under 2e-4 with half a cell of
             // room, and fewer folded triangles at its creases, not more).
             const auto [cellLo, cellHi] = vertexRoom(base, cell);
-            Vec3 p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
             // Where the crossings' analytic normals agree (a smooth patch: most
             // cells), their mean is the vertex normal; where they do not (a
             // crease, a corner, a box face) the gradient at the vertex decides.
             const double length =
                 std::sqrt(cq.normalSum[0] * cq.normalSum[0] + cq.normalSum[1] * cq.normalSum[1] +
                           cq.normalSum[2] * cq.normalSum[2]);
-            Vec3 n{};
+            Vec3 n{}, p{};
             if (length > 0.9995 * cq.qef.count()) {
                 n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
-                p = balancedOnSurface(cq, length, p, origin, cellLo, cellHi);
+                if (const auto balanced = balancedFromMassPoint(cq, length, origin, cellLo, cellHi))
+                    p = *balanced;
+                else
+                    p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
             } else { // all of the block's such vertices at once, below
+                p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
                 normalAt_.push_back(p);
                 normalOf_.push_back(std::uint32_t(block.positions.size()));
                 normalEntry_.push_back(std::uint32_t(entry));
@@ -1237,6 +1240,38 @@ class Contourer {
         return {std::clamp(p[0] + shift * sum[0], lo[0], hi[0]),
                 std::clamp(p[1] + shift * sum[1], lo[1], hi[1]),
                 std::clamp(p[2] + shift * sum[2], lo[2], hi[2])};
+    }
+
+    // balancedOnSurface for a cell whose crossings' normals agree, straight
+    // from the crossings' mass point c: the QEF's answer there lies on the
+    // line through c along their mean normal n (its other eigenvalues are
+    // below any cutoff), and so does the balanced vertex, so the QEF need
+    // not be solved. Along that line v = c + s n the mean distance above the
+    // planes is D_c + s L (L = |sum of normals| / count, about 1) and the
+    // curvature term s (1 - L) - D_c, both linear in s: the height
+    // D + c / 2 equals kSurfaceLift * c at
+    //   s = -D_c (1/2 + kSurfaceLift) / (L + (1/2 - kSurfaceLift) (1 - L)).
+    // Nothing when the curvature term is out of bounds (the caller solves
+    // the QEF then, and keeps its vertex).
+    std::optional<Vec3> balancedFromMassPoint(const CellQef& cq, double length, const Vec3& origin,
+                                              const Vec3& lo, const Vec3& hi) const {
+        const double perPlane = 1.0 / cq.qef.count(), share = length * perPlane;
+        const std::array<double, 3> points = cq.qef.pointSum(); // about origin
+        double planes = -cq.offsetSum;
+        for (std::size_t a = 0; a < 3; ++a)
+            planes += cq.normalSum[a] * points[a] * perPlane;
+        const double atMass = planes * perPlane;
+        const double s =
+            -atMass * (0.5 + kSurfaceLift) / (share + (0.5 - kSurfaceLift) * (1 - share));
+        const double curvature = s * (1 - share) - atMass;
+        if (!(std::abs(curvature) < kMaxCurvatureTerm * minCell_) || !(length > 0))
+            return std::nullopt;
+        const double along = s / length;
+        Vec3 v{};
+        for (std::size_t a = 0; a < 3; ++a)
+            v[a] = std::clamp(origin[a] + points[a] * perPlane + along * cq.normalSum[a], lo[a],
+                              hi[a]);
+        return v;
     }
 
     Vec3 vertexNormal(const formula::Dual& d, const Vec3& p, const Vec3& crossingNormals) const {
