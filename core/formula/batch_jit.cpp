@@ -187,7 +187,7 @@ class Emitter : public CodeGenerator {
     }
     // Before the loop over steps [first, end): the rows it reads inputs from
     // and writes outputs to, each in a general register of its own while
-    // registers last (a calls clobbers them, so each loop loads its own).
+    // registers last (a call clobbers them, so each loop loads its own).
     // An iteration then makes no load but its values' and constants'.
     void loadRows(std::size_t first, std::size_t end) {
         static constexpr int kFree[] = {

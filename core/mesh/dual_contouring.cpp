@@ -29,15 +29,15 @@ constexpr int kCorners = kC * kC * kC;
 constexpr int kCells = kB * kB * kB;
 // How far outside its cell (in cells) a vertex may be placed (buildVertices).
 constexpr double kVertexRoom = 0.5;
+// A quad whose diagonals' ends' normals turn by more than acos(kCreaseTurn)
+// (37 degrees) holds a crease (appendQuad).
+constexpr double kCreaseTurn = 0.8;
 // Smooth patches' vertices (balancedOnSurface): lifted this many times the
 // crossings' mean curvature term above the surface, not moved where that
 // term is over kMaxCurvatureTerm cells, moved at most kMaxShift cells. A cell
 // whose crossings' normals disagree (smoothAround) counts as a curved patch
 // when they spread by under kMaxSpread (1 - |mean normal|) and the normal at
 // its vertex is kCreaseTest times closer to their mean than they are.
-// A quad whose diagonals' ends' normals turn by more than acos(kCreaseTurn)
-// (37 degrees) holds a crease (appendQuad).
-constexpr double kCreaseTurn = 0.8;
 constexpr double kSurfaceLift = 0.25, kMaxCurvatureTerm = 0.25, kMaxShift = 0.1, kMaxSpread = 0.05,
                  kCreaseTest = 0.1;
 // Where a crossing's gradient is taken: this fraction of its edge inside it
@@ -426,18 +426,18 @@ void appendQuad(std::pmr::vector<Triangle>& out, const std::array<std::uint32_t,
                 (double((*normal[a])[k]) - (*normal[b])[k]) * (double((*pos[b])[k]) - (*pos[a])[k]);
         return std::abs(e);
     };
-    const double d02 = dist2(*pos[0], *pos[2]), d13 = dist2(*pos[1], *pos[3]);
-    const double b02 = bow(0, 2), b13 = bow(1, 3);
     auto along = [&](std::size_t a, std::size_t b) {
         double d = 0;
         for (std::size_t k = 0; k < 3; ++k)
             d += double((*normal[a])[k]) * (*normal[b])[k];
         return d;
     };
-    const bool smooth = along(0, 2) > kCreaseTurn && along(1, 3) > kCreaseTurn;
-    const bool alongFirst = smooth && std::abs(b02 - b13) > 1e-3 * std::sqrt(std::min(d02, d13))
-                                ? b02 < b13
-                                : d02 <= d13;
+    const double d02 = dist2(*pos[0], *pos[2]), d13 = dist2(*pos[1], *pos[3]);
+    bool alongFirst = d02 <= d13;
+    if (along(0, 2) > kCreaseTurn && along(1, 3) > kCreaseTurn) { // no crease in the quad
+        const double b02 = bow(0, 2), b13 = bow(1, 3);
+        if (std::abs(b02 - b13) > 1e-3 * std::sqrt(std::min(d02, d13))) alongFirst = b02 < b13;
+    }
     if (alongFirst) {
         out.push_back({id[0], id[1], id[2]});
         out.push_back({id[0], id[2], id[3]});
@@ -1038,9 +1038,7 @@ class Contourer {
             // Where the crossings' analytic normals agree (a smooth patch: most
             // cells), their mean is the vertex normal; where they do not (a
             // crease, a corner, a box face) the gradient at the vertex decides.
-            const double length =
-                std::sqrt(cq.normalSum[0] * cq.normalSum[0] + cq.normalSum[1] * cq.normalSum[1] +
-                          cq.normalSum[2] * cq.normalSum[2]);
+            const double length = cq.normalLength();
             Vec3 n{}, p{};
             if (length > 0.9995 * cq.qef.count()) {
                 n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
@@ -1073,12 +1071,10 @@ class Contourer {
                 // The crossings' normals disagree: a curved patch, or a crease
                 // (where the gradient at the vertex is one side's and far from
                 // their mean, and the vertex stays where the QEF put it).
-                if (smoothAround(n, cq)) {
+                const double length = cq.normalLength();
+                if (smoothAround(n, cq, length)) {
                     const auto [cellLo, cellHi] =
                         vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
-                    const double length = std::sqrt(cq.normalSum[0] * cq.normalSum[0] +
-                                                    cq.normalSum[1] * cq.normalSum[1] +
-                                                    cq.normalSum[2] * cq.normalSum[2]);
                     const Vec3 p =
                         balancedOnSurface(cq, length, normalAt_[k], origin, cellLo, cellHi);
                     block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
@@ -1168,10 +1164,6 @@ class Contourer {
                      long(block.coord[2]) * kB + ck);
     }
 
-    // Outward unit normal at a vertex: the box face's where the vertex is
-    // nearer to a face than to the shape's surface (closed boundary), else
-    // -grad f; where the gradient vanishes, the crossings' normals.
-    // (d: f and its gradient at p, from one batch for the block's vertices.)
     // The box a cell's vertex may take: the cell widened by kVertexRoom.
     std::pair<Vec3, Vec3> vertexRoom(const long base[3], int cell) const {
         const int ci = cell % kB, cj = (cell / kB) % kB, ck = cell / (kB * kB);
@@ -1191,10 +1183,8 @@ class Contourer {
     // do; across a crease n is one side's, as far from the mean as they
     // are (unless nearly all crossings lie on that side, where the crease
     // barely moves the vertex anyway).
-    static bool smoothAround(const Vec3& n, const CellQef& cq) {
-        const double length =
-            std::sqrt(cq.normalSum[0] * cq.normalSum[0] + cq.normalSum[1] * cq.normalSum[1] +
-                      cq.normalSum[2] * cq.normalSum[2]);
+    // (`length`: cq.normalLength(), which the caller has.)
+    static bool smoothAround(const Vec3& n, const CellQef& cq, double length) {
         if (!(length > 0)) return false;
         const double along =
             (n[0] * cq.normalSum[0] + n[1] * cq.normalSum[1] + n[2] * cq.normalSum[2]) / length;
@@ -1274,6 +1264,10 @@ class Contourer {
         return v;
     }
 
+    // Outward unit normal at a vertex: the box face's where the vertex is
+    // nearer to a face than to the shape's surface (closed boundary), else
+    // -grad f; where the gradient vanishes, the crossings' normals.
+    // (d: f and its gradient at p, from one batch for the block's vertices.)
     Vec3 vertexNormal(const formula::Dual& d, const Vec3& p, const Vec3& crossingNormals) const {
         bool ok = false;
         Vec3 n = normalised({-d.d[0], -d.d[1], -d.d[2]}, ok);
@@ -1395,7 +1389,11 @@ class Contourer {
         Qef qef;
         Vec3 normalSum{};
         double offsetSum = 0; // of n_i . (p_i - origin), n_i outward: see balancedOnSurface
-        // As new, member by member: value-initialising the 184 bytes as a
+        double normalLength() const {
+            return std::sqrt(normalSum[0] * normalSum[0] + normalSum[1] * normalSum[1] +
+                             normalSum[2] * normalSum[2]);
+        }
+        // As new, member by member: value-initialising the 192 bytes as a
         // whole made a `rep stos`, whose start-up cost a few percent of
         // meshing the watermelon.
         void reset(const Vec3& origin) {
