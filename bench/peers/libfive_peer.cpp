@@ -167,9 +167,11 @@ std::optional<Tree> treeOf(const fl::formula::Tape& tape, std::string& why) {
             r = log(*a) * (1.0 / std::numbers::ln10);
             break;
         case Op::Sin:
+        case Op::SinOfPair:
             r = sin(*a);
             break;
         case Op::Cos:
+        case Op::CosOfPair:
             r = cos(*a);
             break;
         case Op::Tan:

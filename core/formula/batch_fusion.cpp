@@ -27,6 +27,7 @@ class Fuser {
         for (std::size_t i = 0; i < steps_.size(); ++i)
             if (!dead_[i]) kept.push_back(steps_[i]);
         steps_.swap(kept);
+        sinCosPairs(steps_);
     }
 
   private:
@@ -230,6 +231,35 @@ class Fuser {
             s.chainSign[k] = signs[k];
         }
         dead_[j] = 1;
+    }
+
+    // A paired sin and cos of one register, next to each other (the tape
+    // builder emits them so): one step writing both. Last, on the kept steps:
+    // the other fusions only ever see single results.
+    static void sinCosPairs(std::vector<BatchStep>& steps) {
+        std::vector<BatchStep> kept;
+        kept.reserve(steps.size());
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            BatchStep s = steps[i];
+            if (i + 1 < steps.size() && s.fused == Fused::None) {
+                const BatchStep& t = steps[i + 1];
+                const bool pair = (s.op == Op::SinOfPair && t.op == Op::CosOfPair) ||
+                                  (s.op == Op::CosOfPair && t.op == Op::SinOfPair);
+                // the first result must not be the second step's operand,
+                // and sincos writes two distinct arrays, neither its input
+                if (pair && t.fused == Fused::None && !s.constA && !t.constA && s.a == t.a &&
+                    s.out != s.a && t.out != s.a && s.out != t.out) {
+                    const bool sinFirst = s.op == Op::SinOfPair;
+                    s.op = Op::SinOfPair;
+                    s.fused = Fused::SinCos;
+                    s.out = sinFirst ? steps[i].out : t.out;
+                    s.out2 = sinFirst ? t.out : steps[i].out;
+                    ++i;
+                }
+            }
+            kept.push_back(s);
+        }
+        steps.swap(kept);
     }
 
     void negatedOperand(std::size_t i) {

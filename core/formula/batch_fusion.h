@@ -8,9 +8,11 @@
 //   A - (b - c)^2 - (d - e)^2 ...      ->  one pass, up to 3 terms   (SquareTerms)
 //   n = -b; min(a, n)                  ->  min(a, -b)                (NegatedOperand)
 //   min(min(min(a, b), c), d)          ->  one pass, 3 or 4 operands (MinMaxChain)
+//   s = sin(a); c = cos(a) (paired)    ->  one sincos call            (SinCos)
 //
 // A step is fused away only when its result has exactly one reader and the
-// registers it read are not rewritten before the fused step runs.
+// registers it read are not rewritten before the fused step runs. (SinCos
+// keeps both results: the tape builder puts a pair's two steps side by side.)
 #include "batch_step.h"
 #include "tape.h"
 

@@ -32,6 +32,7 @@ constexpr std::uint8_t kEqOQ = 0x00, kUnordQ = 0x03, kNeqUQ = 0x04, kEqUQ = 0x08
 // Whether the emitter writes this step's code itself (else it calls the
 // interpreter's code for it, runBatchStep, once over the block).
 bool inline_(const BatchStep& s) {
+    if (s.fused == Fused::SinCos) return false; // SLEEF's sincos
     if (s.fused != Fused::None) return true;
     switch (s.op) {
     case Op::Neg:
@@ -73,6 +74,7 @@ bool inline_(const BatchStep& s) {
 // them runs in registers.
 bool compiles(const BatchStep& s) {
     if (s.out < kInputCount) return false; // never write an input's array
+    if (s.fused == Fused::SinCos && s.out2 < kInputCount) return false;
     return inline_(s) || allowCalls.load();
 }
 
@@ -91,6 +93,8 @@ std::vector<std::int32_t> readsOf(const BatchStep& s) {
         for (int t = 0; t < s.chainCount; ++t)
             r.push_back(s.chainReg[t]);
         return r;
+    case Fused::SinCos:
+        return {s.a};
     case Fused::NegatedOperand:
     case Fused::None:
         break;
@@ -117,6 +121,8 @@ class Emitter : public CodeGenerator {
             for (std::int32_t r : readsOf(steps_[k]))
                 events_[std::size_t(r)].push_back({k, false});
             events_[std::size_t(steps_[k].out)].push_back({k, true});
+            if (steps_[k].fused == Fused::SinCos)
+                events_[std::size_t(steps_[k].out2)].push_back({k, true});
         }
         emit();
     }
@@ -389,6 +395,7 @@ class Emitter : public CodeGenerator {
             }
             return;
         }
+        case Fused::SinCos: // called, never inline
         case Fused::None:
             break;
         }
@@ -660,7 +667,7 @@ std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& 
     key.append(liveOut.begin(), liveOut.end());
     for (const BatchStep& s : steps) {
         put(s.op), put(s.fused), put(s.constA), put(s.constB), put(s.constC);
-        put(s.out), put(s.a), put(s.b), put(s.c), put(s.ca), put(s.cb), put(s.cc);
+        put(s.out), put(s.out2), put(s.a), put(s.b), put(s.c), put(s.ca), put(s.cb), put(s.cc);
         put(s.imm0), put(s.imm1), put(s.terms), put(s.negA), put(s.negB), put(s.chainCount);
         for (int t = 0; t < 3; ++t)
             put(s.termReg[t]), put(s.termOffset[t]), put(s.termSign[t]);

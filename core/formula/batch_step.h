@@ -14,6 +14,7 @@ enum class Fused : std::uint8_t {
     SquareTerms,    // out = A + sign[0]*(r[0] - off[0])^2 + ... (1 to 3 terms, in order)
     NegatedOperand, // op (min or max) with operand a (negA) or b (negB) negated first
     MinMaxChain,    // op(op(op(r0, r1), r2), r3): 3 or 4 registers, each maybe negated
+    SinCos,         // out = sincos.sin(a), out2 = sincos.cos(a): a paired sin and cos
 };
 
 struct BatchStep {
@@ -21,6 +22,7 @@ struct BatchStep {
     Fused fused = Fused::None;
     bool constA = false, constB = false, constC = false;
     std::int32_t out = 0, a = 0, b = 0, c = 0;
+    std::int32_t out2 = 0; // SinCos: the cosines' register
     double ca = 0.0, cb = 0.0, cc = 0.0;
     double imm0 = 0.0, imm1 = 0.0;
     // SquareTerms (A is operand a)

@@ -653,7 +653,8 @@ class Compiler {
             const SourceRange& where = tape.origins[static_cast<std::size_t>(ins.origin)];
             if (!reported.insert(where.begin.offset).second) continue;
             warning(where,
-                    std::string("'") + opName(ins.op) + "' is undefined (NaN) here for every point",
+                    std::string("'") + opSourceName(ins.op) +
+                        "' is undefined (NaN) here for every point",
                     "check the arguments: e.g. log and sqrt need non-negative values");
         }
     }

@@ -292,6 +292,9 @@ runBatchStep(const BatchStep& s, double* const* base, std::size_t n,
         else
             chainDispatch<false>(s, base, o, n);
         return;
+    case Fused::SinCos:
+        vm.sinCosArray(base[s.a], o, base[s.out2], n);
+        return;
     case Fused::NegatedOperand: {
         auto mn = [](double a, double b) { return ops::min(a, b); };
         auto mx = [](double a, double b) { return ops::max(a, b); };
@@ -337,6 +340,16 @@ runBatchStep(const BatchStep& s, double* const* base, std::size_t n,
     case Op::Cos:
         vm.unaryArray[int(vmath::Unary::Cos)](base[s.a], o, n);
         break;
+    case Op::SinOfPair: { // alone (its partner simplified away or uniform): half a sincos
+        double* unused = scratch[0];
+        vm.sinCosArray(base[s.a], o, unused, n);
+        break;
+    }
+    case Op::CosOfPair: {
+        double* unused = scratch[0];
+        vm.sinCosArray(base[s.a], unused, o, n);
+        break;
+    }
     case Op::Tan:
         vm.unaryArray[int(vmath::Unary::Tan)](base[s.a], o, n);
         break;

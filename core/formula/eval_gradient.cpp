@@ -110,6 +110,10 @@ Dual unary(Op op, const Dual& a, double imm0) {
         return chain(v, vmath::eval(vmath::Unary::Cos, x), a);
     case Op::Cos:
         return chain(v, -vmath::eval(vmath::Unary::Sin, x), a);
+    case Op::SinOfPair:
+        return chain(v, vmath::sinCos(x).cos, a);
+    case Op::CosOfPair:
+        return chain(v, -vmath::sinCos(x).sin, a);
     case Op::Tan:
         return chain(v, 1.0 + v * v, a);
     case Op::Asin:
@@ -348,11 +352,16 @@ FL_ROW_LOOP void unaryRows(double* __restrict dst, const double* __restrict a, s
 // with AVX2): a dual number needs both, and the gyroid-like formulas that
 // use them spend most of a gradient there. The arrays give the scalar bits
 // (vector_math_variant.inc), so this matches ad::unary exactly.
-void trigRows(bool sine, double* dst, const double* a, std::size_t m) {
+// A paired opcode's value and derivative come from one sincos.
+void trigRows(bool sine, bool paired, double* dst, const double* a, std::size_t m) {
     double s[kRow], c[kRow];
     const auto& vm = vmath::implementation();
-    vm.unaryArray[int(vmath::Unary::Sin)](a, s, m);
-    vm.unaryArray[int(vmath::Unary::Cos)](a, c, m);
+    if (paired) {
+        vm.sinCosArray(a, s, c, m);
+    } else {
+        vm.unaryArray[int(vmath::Unary::Sin)](a, s, m);
+        vm.unaryArray[int(vmath::Unary::Cos)](a, c, m);
+    }
     for (std::size_t k = 1; k <= 3; ++k)
         for (std::size_t j = 0; j < m; ++j)
             dst[k * kRow + j] = term(a[k * kRow + j], sine ? c[j] : -s[j]);
@@ -459,7 +468,10 @@ void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* o
                 continue;
             case Op::Sin:
             case Op::Cos:
-                trigRows(ins.op == Op::Sin, dst, a, m);
+            case Op::SinOfPair:
+            case Op::CosOfPair:
+                trigRows(ins.op == Op::Sin || ins.op == Op::SinOfPair,
+                         ins.op == Op::SinOfPair || ins.op == Op::CosOfPair, dst, a, m);
                 continue;
             default:
                 break;

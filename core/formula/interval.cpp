@@ -68,13 +68,21 @@ Interval powi(const Interval& a, int n) {
     return nonNegative(make(std::min(l, h), std::max(l, h), a.nan, ulps));
 }
 
-// Range of sin over [lo, hi]: endpoints plus any interior extremum.
-Interval sinRange(const Interval& a, bool cosine) {
+// Range of sin over [lo, hi]: endpoints plus any interior extremum. A
+// paired opcode's endpoints come from sincos, as its point values do.
+Interval sinRange(const Interval& a, bool cosine, bool paired = false) {
     if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= 2.0 * kPi ||
         std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15)
         return {-1.0, 1.0, a.nan || std::isinf(a.lo) || std::isinf(a.hi)};
-    double fl = V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, a.lo);
-    double fh = V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, a.hi);
+    auto f = [&](double x) {
+        if (paired) {
+            const vmath::SinCos sc = vmath::sinCos(x);
+            return cosine ? sc.cos : sc.sin;
+        }
+        return V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, x);
+    };
+    double fl = f(a.lo);
+    double fh = f(a.hi);
     double lo = std::min(fl, fh), hi = std::max(fl, fh);
     // maxima at phase 0 (cos) / pi/2 (sin), minima half a turn later; a small
     // slack admits an extremum that rounding might place just outside.
@@ -308,6 +316,10 @@ Interval unary(Op op, const Interval& in, double imm0) {
         return sinRange(a, false);
     case Op::Cos:
         return sinRange(a, true);
+    case Op::SinOfPair:
+        return sinRange(a, false, true);
+    case Op::CosOfPair:
+        return sinRange(a, true, true);
     case Op::Tan:
         return tanRange(a);
     case Op::Asin:

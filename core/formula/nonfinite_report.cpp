@@ -102,7 +102,7 @@ std::optional<Diagnostic> explainNonFinite(const Tape& tape, const std::vector<d
         if (ins.origin >= 0 && ins.origin < static_cast<std::int32_t>(tape.origins.size()))
             d.range = tape.origins[static_cast<std::size_t>(ins.origin)];
         os << (std::isnan(v) ? "undefined value (NaN)" : "infinite value") << " from '"
-           << opName(ins.op) << "'";
+           << opSourceName(ins.op) << "'";
         d.suggestion = std::isnan(v) ? "keep arguments inside the function's domain (log and sqrt "
                                        "need non-negative input, asin and acos [-1, 1]; 0/0 is "
                                        "undefined)"

@@ -20,6 +20,8 @@ namespace fl::formula {
     X(Log10, 1, "log10")                                                                           \
     X(Sin, 1, "sin")                                                                               \
     X(Cos, 1, "cos")                                                                               \
+    X(SinOfPair, 1, "sincos.sin") /* sin where the tape also takes cos of the same value */        \
+    X(CosOfPair, 1, "sincos.cos") /* ... computed together: vmath::sinCos, not sin and cos */      \
     X(Tan, 1, "tan")                                                                               \
     X(Asin, 1, "asin")                                                                             \
     X(Acos, 1, "acos")                                                                             \
@@ -90,6 +92,18 @@ constexpr const char* opName(Op op) {
 #undef FL_OP_NAME
     }
     return "?";
+}
+
+// The name the student wrote, for messages about the source.
+constexpr const char* opSourceName(Op op) {
+    switch (op) {
+    case Op::SinOfPair:
+        return "sin";
+    case Op::CosOfPair:
+        return "cos";
+    default:
+        return opName(op);
+    }
 }
 
 // Operations whose operands the compiler may swap (to share a*b with b*a):

@@ -74,6 +74,10 @@ inline double unary(Op op, double a, double imm0) {
         return vmath::eval(vmath::Unary::Sin, a);
     case Op::Cos:
         return vmath::eval(vmath::Unary::Cos, a);
+    case Op::SinOfPair:
+        return vmath::sinCos(a).sin;
+    case Op::CosOfPair:
+        return vmath::sinCos(a).cos;
     case Op::Tan:
         return vmath::eval(vmath::Unary::Tan, a);
     case Op::Asin:

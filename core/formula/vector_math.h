@@ -43,6 +43,15 @@ using ArrayUnary = void (*)(const double* a, double* out, std::size_t n);
 // Binary arrays: either operand may be a broadcast constant (aConst / bConst).
 using ArrayBinary = void (*)(const double* a, double ca, const double* b, double cb, double* out,
                              std::size_t n);
+// sin and cos of one argument from one reduction (SLEEF's sincos). Its bits
+// are not sin's and cos's (about 4 % of arguments differ by an ulp): the
+// tape's paired opcodes (SinOfPair, CosOfPair) are defined by it, so every
+// evaluator gives them the same bits.
+struct SinCos {
+    double sin, cos;
+};
+using ScalarSinCos = SinCos (*)(double);
+using ArraySinCos = void (*)(const double* a, double* sinOut, double* cosOut, std::size_t n);
 
 struct Implementation {
     const char* name;
@@ -50,6 +59,8 @@ struct Implementation {
     ScalarBinary binary[static_cast<int>(Binary::Count)];
     ArrayUnary unaryArray[static_cast<int>(Unary::Count)];
     ArrayBinary binaryArray[static_cast<int>(Binary::Count)];
+    ScalarSinCos sinCos;
+    ArraySinCos sinCosArray;
 };
 
 const Implementation& implementation();
@@ -59,6 +70,9 @@ inline double eval(Unary f, double a) {
 }
 inline double eval(Binary f, double a, double b) {
     return implementation().binary[static_cast<int>(f)](a, b);
+}
+inline SinCos sinCos(double a) {
+    return implementation().sinCos(a);
 }
 
 // The variants, for the dispatcher and for tests. AVX-512F shares the AVX2

@@ -3,6 +3,7 @@
 #include "formula/eval_batch.h"
 #include "formula/eval_gradient.h"
 #include "formula/eval_interval.h"
+#include "formula/vector_math.h"
 
 #include <gtest/gtest.h>
 
@@ -55,6 +56,37 @@ TEST(Compiler, NoInstructionWritesARegisterItReads) {
         EXPECT_NE(ins.out, ins.a.reg);
         EXPECT_NE(ins.out, ins.b.reg);
     }
+}
+
+// sin(a) and cos(a) become one sincos: paired opcodes, side by side (the
+// batch evaluator makes one call of them), whose value is sincos's in every
+// evaluator; a sine or cosine without its partner stays as it was.
+TEST(Compiler, ASineAndACosineOfOneValueBecomeAPairSideBySide) {
+    CompileResult r = compile("sin(4*x)*cos(4*y) + sin(4*y)*cos(4*z) + sin(4*z)*cos(4*x) + cos(t)");
+    ASSERT_TRUE(r.ok());
+    const std::vector<Instruction>& code = r.tape->code;
+    int pairs = 0, cosines = 0;
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        EXPECT_NE(code[i].op, Op::Sin) << r.tape->disassemble();
+        if (code[i].op == Op::Cos) ++cosines;
+        if (code[i].op != Op::SinOfPair && code[i].op != Op::CosOfPair) continue;
+        ASSERT_LT(i + 1, code.size());
+        const Op other = code[i].op == Op::SinOfPair ? Op::CosOfPair : Op::SinOfPair;
+        EXPECT_EQ(code[i + 1].op, other) << r.tape->disassemble();
+        EXPECT_EQ(code[i + 1].a.reg, code[i].a.reg);
+        ++pairs;
+        ++i;
+    }
+    EXPECT_EQ(pairs, 3) << r.tape->disassemble();
+    EXPECT_EQ(cosines, 1); // cos(t) has no sine beside it
+    // the values are sincos's, in the scalar evaluator as in every other
+    for (double x : {0.3, -2.0, 17.5, 1e15}) {
+        const vmath::SinCos s = vmath::sinCos(x);
+        EXPECT_EQ(testing::eval("sin(x) * 3 + cos(x)", x), s.sin * 3 + s.cos) << x;
+        EXPECT_EQ(testing::eval("sin(x)", x), vmath::eval(vmath::Unary::Sin, x)) << x;
+    }
+    // both branches of a choice are computed: they pair too
+    EXPECT_EQ(testing::eval("x > 0 ? sin(x) : cos(x)", 0.7), vmath::sinCos(0.7).sin);
 }
 
 TEST(Compiler, UnrollsLoopsAndInlinesFunctions) {

@@ -34,7 +34,13 @@ std::string randomFormula(std::mt19937_64& rng, int depth) {
     if (k == 0) return leaf(rng);
     if (k <= 2) {
         const char* f = unary[std::uniform_int_distribution<std::size_t>(0, unary.size() - 1)(rng)];
-        return std::string(f) + "(" + sub() + ")";
+        const std::string fn = f;
+        // a sine and a cosine of one value: the tape pairs them (one sincos)
+        if ((fn == "sin" || fn == "cos") && kind(rng) < 4) {
+            const std::string e = sub();
+            return "(sin(" + e + ") " + (kind(rng) < 5 ? "*" : "-") + " cos(" + e + "))";
+        }
+        return fn + "(" + sub() + ")";
     }
     if (k <= 5) {
         const char* op =

@@ -116,6 +116,23 @@ TEST(VectorMath, TrigonometryInEveryReductionRangeEqualsItsScalarTwin) {
             for (std::size_t i = 0; i < n; ++i)
                 ASSERT_TRUE(sameBits(inPlace[i], out[i])) << impl->name << " in place, lane " << i;
         }
+        // sincos: the same reductions, two results
+        std::vector<double> sines(n), cosines(n);
+        impl->sinCosArray(a.data(), sines.data(), cosines.data(), n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const SinCos s = impl->sinCos(a[i]);
+            ASSERT_TRUE(sameBits(s.sin, sines[i]) && sameBits(s.cos, cosines[i]))
+                << impl->name << " sincos at " << a[i] << " (lane " << i << ")";
+        }
+        for (const bool sineInPlace : {true, false}) {
+            std::vector<double> inPlace = a, other(n);
+            impl->sinCosArray(inPlace.data(), sineInPlace ? inPlace.data() : other.data(),
+                              sineInPlace ? other.data() : inPlace.data(), n);
+            for (std::size_t i = 0; i < n; ++i)
+                ASSERT_TRUE(sameBits(inPlace[i], sineInPlace ? sines[i] : cosines[i]) &&
+                            sameBits(other[i], sineInPlace ? cosines[i] : sines[i]))
+                    << impl->name << " sincos in place, lane " << i;
+        }
     }
 }
 
@@ -152,6 +169,12 @@ TEST(VectorMath, Avx512GivesTheAvx2VariantsBits) {
             ASSERT_TRUE(sameBits(wide.unary[f](a[i]), avx2.unary[f](a[i])));
         }
     }
+    std::vector<double> cosWide(n), cosAvx2(n);
+    wide.sinCosArray(a.data(), outWide.data(), cosWide.data(), n);
+    avx2.sinCosArray(a.data(), outAvx2.data(), cosAvx2.data(), n);
+    for (std::size_t i = 0; i < n; ++i)
+        ASSERT_TRUE(sameBits(outWide[i], outAvx2[i]) && sameBits(cosWide[i], cosAvx2[i]))
+            << "sincos at " << a[i];
     for (int f = 0; f < static_cast<int>(Binary::Count); ++f) {
         wide.binaryArray[f](a.data(), 0, b.data(), 0, outWide.data(), n);
         avx2.binaryArray[f](a.data(), 0, b.data(), 0, outAvx2.data(), n);
@@ -179,6 +202,12 @@ TEST(VectorMath, WithinTwoUlpsOfTheCLibrary) {
             }
         }
         for (int k = 0; k < 2000; ++k) {
+            const double x = wide(rng);
+            const SinCos s = impl->sinCos(x);
+            ASSERT_LE(ulpDistance(s.sin, std::sin(x)), 2.0) << impl->name << " sincos " << x;
+            ASSERT_LE(ulpDistance(s.cos, std::cos(x)), 2.0) << impl->name << " sincos " << x;
+        }
+        for (int k = 0; k < 2000; ++k) {
             double y = wide(rng), x = wide(rng), p = pos(rng);
             ASSERT_LE(ulpDistance(impl->binary[int(Binary::Atan2)](y, x), std::atan2(y, x)), 2.0);
             ASSERT_LE(ulpDistance(impl->binary[int(Binary::Pow)](p, y), std::pow(p, y)), 2.0);
@@ -193,6 +222,10 @@ TEST(VectorMath, SpecialValuesFollowC99) {
     EXPECT_TRUE(std::isnan(U(Unary::Log, -1.0)));
     EXPECT_TRUE(std::isnan(U(Unary::Sin, INFINITY)));
     EXPECT_TRUE(std::signbit(U(Unary::Sin, -0.0)));
+    EXPECT_TRUE(std::signbit(m.sinCos(-0.0).sin));
+    EXPECT_EQ(m.sinCos(-0.0).cos, 1.0);
+    EXPECT_TRUE(std::isnan(m.sinCos(INFINITY).sin) && std::isnan(m.sinCos(-INFINITY).cos));
+    EXPECT_TRUE(std::isnan(m.sinCos(NAN).sin) && std::isnan(m.sinCos(NAN).cos));
     EXPECT_EQ(U(Unary::Exp, 1000.0), INFINITY);
     EXPECT_EQ(U(Unary::Exp, -1000.0), 0.0);
     EXPECT_EQ(U(Unary::Cbrt, -8.0), -2.0);
