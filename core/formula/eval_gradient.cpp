@@ -84,6 +84,10 @@ Dual rfunction(Op op, const Dual& a, const Dual& b, double m, double alpha) {
 
 Dual unary(Op op, const Dual& a, double imm0) {
     const double x = a.v;
+    if (op == Op::SinOfPair || op == Op::CosOfPair) { // value and slope from one sincos
+        const vmath::SinCos sc = vmath::sinCos(x);
+        return op == Op::SinOfPair ? chain(sc.sin, sc.cos, a) : chain(sc.cos, -sc.sin, a);
+    }
     const double v = ops::unary(op, x, imm0);
     switch (op) {
     case Op::Neg:
@@ -110,10 +114,6 @@ Dual unary(Op op, const Dual& a, double imm0) {
         return chain(v, vmath::eval(vmath::Unary::Cos, x), a);
     case Op::Cos:
         return chain(v, -vmath::eval(vmath::Unary::Sin, x), a);
-    case Op::SinOfPair:
-        return chain(v, vmath::sinCos(x).cos, a);
-    case Op::CosOfPair:
-        return chain(v, -vmath::sinCos(x).sin, a);
     case Op::Tan:
         return chain(v, 1.0 + v * v, a);
     case Op::Asin:

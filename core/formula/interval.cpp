@@ -74,15 +74,29 @@ Interval sinRange(const Interval& a, bool cosine, bool paired = false) {
     if (!std::isfinite(a.lo) || !std::isfinite(a.hi) || a.hi - a.lo >= 2.0 * kPi ||
         std::abs(a.lo) > 1e15 || std::abs(a.hi) > 1e15)
         return {-1.0, 1.0, a.nan || std::isinf(a.lo) || std::isinf(a.hi)};
-    auto f = [&](double x) {
-        if (paired) {
-            const vmath::SinCos sc = vmath::sinCos(x);
-            return cosine ? sc.cos : sc.sin;
+    double fl, fh;
+    if (paired) {
+        // A pair's two halves come one after the other on the same interval:
+        // the second takes the first's endpoints (compared by their bits:
+        // sin(-0) is -0).
+        thread_local struct {
+            std::uint64_t lo = 0, hi = 0;
+            bool valid = false;
+            vmath::SinCos atLo{}, atHi{};
+        } ends;
+        const std::uint64_t lo = std::bit_cast<std::uint64_t>(a.lo),
+                            hi = std::bit_cast<std::uint64_t>(a.hi);
+        if (!ends.valid || ends.lo != lo || ends.hi != hi) {
+            ends.lo = lo, ends.hi = hi, ends.valid = true;
+            ends.atLo = vmath::sinCos(a.lo);
+            ends.atHi = vmath::sinCos(a.hi);
         }
-        return V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, x);
-    };
-    double fl = f(a.lo);
-    double fh = f(a.hi);
+        fl = cosine ? ends.atLo.cos : ends.atLo.sin;
+        fh = cosine ? ends.atHi.cos : ends.atHi.sin;
+    } else {
+        fl = V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, a.lo);
+        fh = V(cosine ? vmath::Unary::Cos : vmath::Unary::Sin, a.hi);
+    }
     double lo = std::min(fl, fh), hi = std::max(fl, fh);
     // maxima at phase 0 (cos) / pi/2 (sin), minima half a turn later; a small
     // slack admits an extremum that rounding might place just outside.
