@@ -696,33 +696,35 @@ class Contourer {
         auto visit = [&](int axis, int c) {
             const int cb = c + kStride[axis];
             const auto [ci, cj, ck] = cornerAt(c);
-            // Made in place: a copy read whole what was just written field by
-            // field, which the processor cannot forward from its stores.
-            PendingCrossing& p = pending_.emplace_back();
-            p.found = int(found_.size());
-            found_.push_back(axis * kCorners + c);
-            p.axis = axis;
             const BlockCoord& b = block.coord;
-            p.pa = grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
-            p.pb = p.pa;
-            p.pb[std::size_t(axis)] += grid_.h[std::size_t(axis)];
-            p.fa = values_[std::size_t(c)];
-            p.fb = values_[std::size_t(cb)];
+            const Vec3 pa =
+                grid_.corner(long(b[0]) * kB + ci, long(b[1]) * kB + cj, long(b[2]) * kB + ck);
+            const double h = grid_.h[std::size_t(axis)];
+            const Vec3 pb = {axis == 0 ? pa[0] + h : pa[0], axis == 1 ? pa[1] + h : pa[1],
+                             axis == 2 ? pa[2] + h : pa[2]};
+            const double fa = values_[std::size_t(c)], fb = values_[std::size_t(cb)];
+            const int found = int(found_.size());
+            found_.push_back(axis * kCorners + c);
             const bool aInBox = allInBox_ || cornerInBox(block, c),
                        bInBox = allInBox_ || cornerInBox(block, cb);
-            if (!aInBox || !bInBox) {
-                // Through a face of the closed box: the solid ends at the
-                // face, or before it where f turns negative first (f at the
-                // block's face points in one batch, below).
-                Vec3 face = aInBox ? p.pa : p.pb;
-                face[std::size_t(axis)] =
-                    aInBox ? field_.box.hi[std::size_t(axis)] : field_.box.lo[std::size_t(axis)];
-                (aInBox ? p.pb : p.pa) = face;
-                throughFace_.push_back({p, aInBox});
-                pending_.pop_back();
+            if (aInBox && bInBox) {
+                // Made in place, every field from its value: a copy read
+                // whole what was just written field by field (which the
+                // processor cannot forward from its stores), and a default
+                // one was zeroed first by a `rep stos` (a tenth of this loop).
+                pending_.emplace_back(found, axis, pa, pb, fa, fb, 0.0, 1.0, firstGuess(fa, fb),
+                                      false, 0);
                 return;
             }
-            p.t = firstGuess(p.fa, p.fb);
+            // Through a face of the closed box: the solid ends at the face,
+            // or before it where f turns negative first (f at the block's
+            // face points in one batch, below).
+            PendingCrossing p{found, axis, pa, pb, fa, fb};
+            Vec3 face = aInBox ? p.pa : p.pb;
+            face[std::size_t(axis)] =
+                aInBox ? field_.box.hi[std::size_t(axis)] : field_.box.lo[std::size_t(axis)];
+            (aInBox ? p.pb : p.pa) = face;
+            throughFace_.push_back({p, aInBox});
         };
         // The sign-changing edges: both ends evaluated and defined, one
         // inside — bit rows over the block's corners, the far ends' row the
@@ -850,11 +852,13 @@ class Contourer {
         const double t = fa / (fa - fb);
         return t >= 0 && t <= 1 ? t : 0.5;
     }
+    // (Each coordinate chosen, not the axis's written into a copy of pa: a
+    // store at a variable index, then the point read whole, waited for the
+    // store to drain — a tenth of the sphere's crossings.)
     static Vec3 pointOnEdge(const PendingCrossing& p, double t) {
-        Vec3 q = p.pa;
         const std::size_t a = std::size_t(p.axis);
-        q[a] = p.pa[a] + t * (p.pb[a] - p.pa[a]);
-        return q;
+        const double along = p.pa[a] + t * (p.pb[a] - p.pa[a]);
+        return {a == 0 ? along : p.pa[0], a == 1 ? along : p.pa[1], a == 2 ? along : p.pa[2]};
     }
     // The crossing's point at its current guess, and where its gradient is
     // taken (kIntoTheEdge inside the edge when the guess is at a corner).
