@@ -352,8 +352,10 @@ FL_ROW_LOOP void unaryRows(double* __restrict dst, const double* __restrict a, s
 // with AVX2): a dual number needs both, and the gyroid-like formulas that
 // use them spend most of a gradient there. The arrays give the scalar bits
 // (vector_math_variant.inc), so this matches ad::unary exactly.
-// A paired opcode's value and derivative come from one sincos.
-void trigRows(bool sine, bool paired, double* dst, const double* a, std::size_t m) {
+// A paired opcode's value and derivative come from one sincos, and a pair
+// side by side (as the tape builder puts them) fills both halves' rows from
+// it: `sinDst` and `cosDst` (either may be nullptr; neither is a's rows).
+void trigRows(bool paired, double* sinDst, double* cosDst, const double* a, std::size_t m) {
     double s[kRow], c[kRow];
     const auto& vm = vmath::implementation();
     if (paired) {
@@ -363,10 +365,14 @@ void trigRows(bool sine, bool paired, double* dst, const double* a, std::size_t 
         vm.unaryArray[int(vmath::Unary::Cos)](a, c, m);
     }
     for (std::size_t k = 1; k <= 3; ++k)
-        for (std::size_t j = 0; j < m; ++j)
-            dst[k * kRow + j] = term(a[k * kRow + j], sine ? c[j] : -s[j]);
-    for (std::size_t j = 0; j < m; ++j)
-        dst[j] = sine ? s[j] : c[j];
+        for (std::size_t j = 0; j < m; ++j) {
+            if (sinDst) sinDst[k * kRow + j] = term(a[k * kRow + j], c[j]);
+            if (cosDst) cosDst[k * kRow + j] = term(a[k * kRow + j], -s[j]);
+        }
+    for (std::size_t j = 0; j < m; ++j) {
+        if (sinDst) sinDst[j] = s[j];
+        if (cosDst) cosDst[j] = c[j];
+    }
 }
 
 Dual dualAt(const double* rows, std::size_t j) {
@@ -467,12 +473,27 @@ void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* o
                 unaryRows<Op::Sqrt>(dst, a, m);
                 continue;
             case Op::Sin:
-            case Op::Cos:
-            case Op::SinOfPair:
-            case Op::CosOfPair:
-                trigRows(ins.op == Op::Sin || ins.op == Op::SinOfPair,
-                         ins.op == Op::SinOfPair || ins.op == Op::CosOfPair, dst, a, m);
+                trigRows(false, dst, nullptr, a, m);
                 continue;
+            case Op::Cos:
+                trigRows(false, nullptr, dst, a, m);
+                continue;
+            case Op::SinOfPair:
+            case Op::CosOfPair: {
+                const bool sine = ins.op == Op::SinOfPair;
+                double* other = nullptr;
+                if (i + 1 < tape_.code.size()) {
+                    const Instruction& next = tape_.code[i + 1];
+                    if (next.op == (sine ? Op::CosOfPair : Op::SinOfPair) && !ins.a.isConst() &&
+                        !next.a.isConst() && next.a.reg == ins.a.reg && ins.out != ins.a.reg &&
+                        next.out != ins.a.reg && next.out != ins.out) {
+                        other = rows(next.out);
+                        ++i; // done here
+                    }
+                }
+                trigRows(true, sine ? dst : other, sine ? other : dst, a, m);
+                continue;
+            }
             default:
                 break;
             }
