@@ -33,8 +33,10 @@ constexpr bool kEachPieceItsOwn = false;
 BlockArena::BlockArena(int slots) : slots_(std::size_t(std::max(slots, 1))) {}
 
 BlockArena::~BlockArena() {
+    // Unsized deletes: clang (14) declares the sized aligned one only with
+    // -fsized-deallocation, which the fuzz build does not pass.
     for (const auto& [p, shape] : pieces_)
-        ::operator delete(p, shape.first, std::align_val_t(shape.second));
+        ::operator delete(p, std::align_val_t(shape.second));
 }
 
 BlockArena::Slot::Slot(BlockArena& arena, int w)
@@ -90,7 +92,7 @@ void BlockArena::do_deallocate([[maybe_unused]] void* p, [[maybe_unused]] std::s
             std::lock_guard lock(sharedMutex_);
             pieces_.erase(p);
         }
-        ::operator delete(p, bytes, std::align_val_t(alignment));
+        ::operator delete(p, std::align_val_t(alignment));
     }
 }
 

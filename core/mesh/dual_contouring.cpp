@@ -218,6 +218,11 @@ struct Crossing {
 
 // An edge crossing being refined: the bracket [pa, pb] with f at its ends.
 struct PendingCrossing {
+    PendingCrossing() = default;
+    // Every field from its value, none zeroed first (see computeCrossings).
+    PendingCrossing(int found, int axis, const Vec3& pa, const Vec3& pb, double fa, double fb,
+                    double t = 0.5)
+        : found(found), axis(axis), pa(pa), pb(pb), fa(fa), fb(fb), t(t) {}
     int found = 0; // its index in the block's found edges (and crossings)
     int axis = 0;
     Vec3 pa{}, pb{};
@@ -712,8 +717,7 @@ class Contourer {
                 // whole what was just written field by field (which the
                 // processor cannot forward from its stores), and a default
                 // one was zeroed first by a `rep stos` (a tenth of this loop).
-                pending_.emplace_back(found, axis, pa, pb, fa, fb, 0.0, 1.0, firstGuess(fa, fb),
-                                      false, 0);
+                pending_.emplace_back(found, axis, pa, pb, fa, fb, firstGuess(fa, fb));
                 return;
             }
             // Through a face of the closed box: the solid ends at the face,
