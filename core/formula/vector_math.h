@@ -51,6 +51,7 @@ struct SinCos {
     double sin, cos;
 };
 using ScalarSinCos = SinCos (*)(double);
+// Both outputs are written (neither may be nullptr; either may be a).
 using ArraySinCos = void (*)(const double* a, double* sinOut, double* cosOut, std::size_t n);
 
 struct Implementation {
