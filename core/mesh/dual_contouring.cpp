@@ -1000,11 +1000,17 @@ class Contourer {
             for (int& cell : cells)
                 if (cell >= 0) cell = qefSlot_[std::size_t(cell)];
         if (qefs_.size() < qefCount) qefs_.resize(qefCount);
-        // Every QEF's sums about the block's first corner: a crossing's
-        // share is then the same for its four cells, made once.
+        // Every cell's sums about the block's first corner: a crossing's
+        // share is then the same for its four cells, made once. First the
+        // few a smooth cell's vertex needs (balancedFromMassPoint: points,
+        // outward normals, offsets, count); the QEF's (16 sums a crossing
+        // and cell, most of the adding) only for the cells that turn out to
+        // need it — a crease, or a curvature out of bounds — in a second
+        // pass over the crossings in the same order, so its sums and
+        // solution are what adding everything once gave.
         const Vec3 origin = grid_.corner(base[0], base[1], base[2]);
         for (std::size_t k = 0; k < qefCount; ++k)
-            qefs_[k].reset(origin);
+            qefs_[k].reset();
         for (std::size_t n = 0; n < found_.size(); ++n) {
             const std::array<int, 4>& cells = around_[n];
             if (cells[0] < 0 && cells[1] < 0 && cells[2] < 0 && cells[3] < 0) continue;
@@ -1015,18 +1021,51 @@ class Contourer {
             const bool lowerIn = isInside(c);
             const double sign = (x.normal[std::size_t(axis)] >= 0) == lowerIn ? 1.0 : -1.0;
             const Vec3 signedNormal{sign * x.normal[0], sign * x.normal[1], sign * x.normal[2]};
-            const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
+            const Vec3 at{x.point[0] - origin[0], x.point[1] - origin[1], x.point[2] - origin[2]};
             double offset = 0;
             for (std::size_t k = 0; k < 3; ++k)
                 offset += signedNormal[k] * (x.point[k] - origin[k]);
             for (std::size_t q = 0; q < 4; ++q) {
                 if (cells[q] < 0) continue;
                 CellQef& cq = qefs_[std::size_t(cells[q])];
-                cq.qef.add(plane);
-                for (std::size_t k = 0; k < 3; ++k)
+                for (std::size_t k = 0; k < 3; ++k) {
+                    cq.pointSum[k] += at[k];
                     cq.normalSum[k] += signedNormal[k];
+                }
                 cq.offsetSum += offset;
+                cq.count += 1.0;
             }
+        }
+        // Where the crossings' analytic normals agree (a smooth patch: most
+        // cells), their mean is the vertex normal and the balanced vertex
+        // has a closed form; where they do not (a crease, a corner, a box
+        // face) the QEF places the vertex and the gradient there decides.
+        bool anyQef = false;
+        for (std::size_t entry = 0; entry < qefCount; ++entry) {
+            CellQef& cq = qefs_[entry];
+            cq.length = cq.normalLength();
+            cq.smooth = cq.length > 0.9995 * cq.count;
+            if (cq.smooth) {
+                const auto [cellLo, cellHi] = vertexRoom(base, touched_[entry] / kPieces);
+                if (const auto v = balancedFromMassPoint(cq, cq.length, origin, cellLo, cellHi)) {
+                    cq.balanced = *v;
+                    continue;
+                }
+            }
+            cq.needsQef = anyQef = true;
+            cq.qef.reset(origin);
+        }
+        for (std::size_t n = 0; anyQef && n < found_.size(); ++n) {
+            const std::array<int, 4>& cells = around_[n];
+            bool wanted = false;
+            for (std::size_t q = 0; q < 4; ++q)
+                wanted = wanted || (cells[q] >= 0 && qefs_[std::size_t(cells[q])].needsQef);
+            if (!wanted) continue;
+            const Crossing& x = crossings_[n];
+            const Qef::Plane plane = Qef::plane(origin, x.point, x.normal);
+            for (std::size_t q = 0; q < 4; ++q)
+                if (cells[q] >= 0 && qefs_[std::size_t(cells[q])].needsQef)
+                    qefs_[std::size_t(cells[q])].qef.add(plane);
         }
         block.positions.reserve(touched_.size()); // one vertex per entry: no growth slack
         block.cells.reserve(touched_.size());     // at most one cell per entry
@@ -1035,30 +1074,28 @@ class Contourer {
             const int index = touched_[entry];
             CellQef& cq = qefs_[entry];
             const int cell = index / kPieces;
-            // The vertex may sit up to half a cell outside its cell: where a
-            // crease passes just beside the cell, both of its surfaces cross
-            // the cell but their meeting line does not, and a vertex held in
-            // the cell lies off both (measured on the watermelon at 256: max
-            // error 1.2e-3 of the diagonal with the old fallback to the mass
-            // point, 6.9e-4 held in the cell, under 2e-4 with half a cell of
-            // room, and fewer folded triangles at its creases, not more).
-            const auto [cellLo, cellHi] = vertexRoom(base, cell);
-            // Where the crossings' analytic normals agree (a smooth patch: most
-            // cells), their mean is the vertex normal; where they do not (a
-            // crease, a corner, a box face) the gradient at the vertex decides.
-            const double length = cq.normalLength();
+            const double length = cq.length;
             Vec3 n{}, p{};
-            if (length > 0.9995 * cq.qef.count()) {
+            if (cq.smooth)
                 n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
-                if (const auto balanced = balancedFromMassPoint(cq, length, origin, cellLo, cellHi))
-                    p = *balanced;
-                else
-                    p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
-            } else { // all of the block's such vertices at once, below
+            if (!cq.needsQef) {
+                p = cq.balanced;
+            } else {
+                // The vertex may sit up to half a cell outside its cell:
+                // where a crease passes just beside the cell, both of its
+                // surfaces cross the cell but their meeting line does not,
+                // and a vertex held in the cell lies off both (measured on
+                // the watermelon at 256: max error 1.2e-3 of the diagonal
+                // with the old fallback to the mass point, 6.9e-4 held in
+                // the cell, under 2e-4 with half a cell of room, and fewer
+                // folded triangles at its creases, not more).
+                const auto [cellLo, cellHi] = vertexRoom(base, cell);
                 p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
-                normalAt_.push_back(p);
-                normalOf_.push_back(std::uint32_t(block.positions.size()));
-                normalEntry_.push_back(std::uint32_t(entry));
+                if (!cq.smooth) { // all of the block's such vertices at once, below
+                    normalAt_.push_back(p);
+                    normalOf_.push_back(std::uint32_t(block.positions.size()));
+                    normalEntry_.push_back(std::uint32_t(entry));
+                }
             }
             // touched_ is sorted, so a cell's pieces come in order, one after another.
             if (block.cells.empty() || block.cells.back().cell != cell)
@@ -1196,7 +1233,7 @@ class Contourer {
         if (!(length > 0)) return false;
         const double along =
             (n[0] * cq.normalSum[0] + n[1] * cq.normalSum[1] + n[2] * cq.normalSum[2]) / length;
-        const double spread = 1 - length / cq.qef.count(); // 0 when all normals agree
+        const double spread = 1 - length / cq.count; // 0 when all normals agree
         return spread < kMaxSpread && 1 - along < kCreaseTest * spread;
     }
 
@@ -1221,8 +1258,8 @@ class Contourer {
                            const Vec3& lo, const Vec3& hi) const {
         const Vec3& sum = cq.normalSum;
         if (!(length > 0)) return p;
-        const double perPlane = 1.0 / cq.qef.count(), perLength = 1.0 / length;
-        const std::array<double, 3> points = cq.qef.pointSum(); // about origin
+        const double perPlane = 1.0 / cq.count, perLength = 1.0 / length;
+        const Vec3& points = cq.pointSum; // about origin
         double planes = -cq.offsetSum, aboveMean = 0;
         for (std::size_t a = 0; a < 3; ++a) {
             const double v = p[a] - origin[a];
@@ -1253,8 +1290,8 @@ class Contourer {
     // the QEF then, and keeps its vertex).
     std::optional<Vec3> balancedFromMassPoint(const CellQef& cq, double length, const Vec3& origin,
                                               const Vec3& lo, const Vec3& hi) const {
-        const double perPlane = 1.0 / cq.qef.count(), share = length * perPlane;
-        const std::array<double, 3> points = cq.qef.pointSum(); // about origin
+        const double perPlane = 1.0 / cq.count, share = length * perPlane;
+        const Vec3& points = cq.pointSum; // about origin
         double planes = -cq.offsetSum;
         for (std::size_t a = 0; a < 3; ++a)
             planes += cq.normalSum[a] * points[a] * perPlane;
@@ -1394,19 +1431,27 @@ class Contourer {
     std::vector<formula::Dual> normalGradients_;
     struct CellQef {
         std::uint32_t vertex = 0; // block-local, once made
-        Qef qef;
-        Vec3 normalSum{};
-        double offsetSum = 0; // of n_i . (p_i - origin), n_i outward: see balancedOnSurface
+        bool smooth = false;      // the crossings' normals agree (see buildVertices)
+        bool needsQef = false;    // the vertex comes from qef, which holds every plane
+        double count = 0;         // crossings
+        Vec3 pointSum{};          // of p_i - origin
+        Vec3 normalSum{};         // of the outward n_i
+        double offsetSum = 0;     // of n_i . (p_i - origin): see balancedOnSurface
+        double length = 0;        // |normalSum|, once every crossing is in
+        Vec3 balanced{};          // balancedFromMassPoint's vertex, unless needsQef
+        Qef qef;                  // filled only where needsQef
         double normalLength() const {
             return std::sqrt(normalSum[0] * normalSum[0] + normalSum[1] * normalSum[1] +
                              normalSum[2] * normalSum[2]);
         }
-        // As new, member by member: value-initialising the 192 bytes as a
-        // whole made a `rep stos`, whose start-up cost a few percent of
-        // meshing the watermelon.
-        void reset(const Vec3& origin) {
+        // As new, member by member: value-initialising the whole entry
+        // made a `rep stos`, whose start-up cost a few percent of meshing
+        // the watermelon. (The QEF is reset where it is needed.)
+        void reset() {
             vertex = 0;
-            qef.reset(origin);
+            smooth = needsQef = false;
+            count = 0;
+            pointSum = {0.0, 0.0, 0.0};
             normalSum = {0.0, 0.0, 0.0};
             offsetSum = 0;
         }
