@@ -1116,7 +1116,7 @@ class Contourer {
                 // The crossings' normals disagree: a curved patch, or a crease
                 // (where the gradient at the vertex is one side's and far from
                 // their mean, and the vertex stays where the QEF put it).
-                const double length = cq.normalLength();
+                const double length = cq.length;
                 if (smoothAround(n, cq, length)) {
                     const auto [cellLo, cellHi] =
                         vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
@@ -1228,7 +1228,7 @@ class Contourer {
     // do; across a crease n is one side's, as far from the mean as they
     // are (unless nearly all crossings lie on that side, where the crease
     // barely moves the vertex anyway).
-    // (`length`: cq.normalLength(), which the caller has.)
+    // (`length`: cq.length.)
     static bool smoothAround(const Vec3& n, const CellQef& cq, double length) {
         if (!(length > 0)) return false;
         const double along =

@@ -59,10 +59,6 @@ class Qef {
         sums_.fill(0.0);
     }
     std::array<double, 3> massPoint() const;
-    // The points' sum relative to the origin (see reset).
-    std::array<double, 3> pointSum() const {
-        return {sums_[kPointSum], sums_[kPointSum + 1], sums_[kPointSum + 2]};
-    }
     // The minimiser; eigenvalues below `relativeCutoff` times the largest are
     // treated as zero (the solution then moves only along the others).
     std::array<double, 3> solve(double relativeCutoff = 0.05) const;
