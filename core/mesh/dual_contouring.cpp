@@ -1024,7 +1024,7 @@ class Contourer {
             const Vec3 at{x.point[0] - origin[0], x.point[1] - origin[1], x.point[2] - origin[2]};
             double offset = 0;
             for (std::size_t k = 0; k < 3; ++k)
-                offset += signedNormal[k] * (x.point[k] - origin[k]);
+                offset += signedNormal[k] * at[k];
             for (std::size_t q = 0; q < 4; ++q) {
                 if (cells[q] < 0) continue;
                 CellQef& cq = qefs_[std::size_t(cells[q])];
@@ -1047,7 +1047,7 @@ class Contourer {
             cq.smooth = cq.length > 0.9995 * cq.count;
             if (cq.smooth) {
                 const auto [cellLo, cellHi] = vertexRoom(base, touched_[entry] / kPieces);
-                if (const auto v = balancedFromMassPoint(cq, cq.length, origin, cellLo, cellHi)) {
+                if (const auto v = balancedFromMassPoint(cq, origin, cellLo, cellHi)) {
                     cq.balanced = *v;
                     continue;
                 }
@@ -1074,10 +1074,10 @@ class Contourer {
             const int index = touched_[entry];
             CellQef& cq = qefs_[entry];
             const int cell = index / kPieces;
-            const double length = cq.length;
             Vec3 n{}, p{};
             if (cq.smooth)
-                n = {cq.normalSum[0] / length, cq.normalSum[1] / length, cq.normalSum[2] / length};
+                n = {cq.normalSum[0] / cq.length, cq.normalSum[1] / cq.length,
+                     cq.normalSum[2] / cq.length};
             if (!cq.needsQef) {
                 p = cq.balanced;
             } else {
@@ -1116,12 +1116,10 @@ class Contourer {
                 // The crossings' normals disagree: a curved patch, or a crease
                 // (where the gradient at the vertex is one side's and far from
                 // their mean, and the vertex stays where the QEF put it).
-                const double length = cq.length;
-                if (smoothAround(n, cq, length)) {
+                if (smoothAround(n, cq)) {
                     const auto [cellLo, cellHi] =
                         vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
-                    const Vec3 p =
-                        balancedOnSurface(cq, length, normalAt_[k], origin, cellLo, cellHi);
+                    const Vec3 p = balancedOnSurface(cq, normalAt_[k], origin, cellLo, cellHi);
                     block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
                 }
             }
@@ -1228,8 +1226,8 @@ class Contourer {
     // do; across a crease n is one side's, as far from the mean as they
     // are (unless nearly all crossings lie on that side, where the crease
     // barely moves the vertex anyway).
-    // (`length`: cq.length.)
-    static bool smoothAround(const Vec3& n, const CellQef& cq, double length) {
+    static bool smoothAround(const Vec3& n, const CellQef& cq) {
+        const double length = cq.length;
         if (!(length > 0)) return false;
         const double along =
             (n[0] * cq.normalSum[0] + n[1] * cq.normalSum[1] + n[2] * cq.normalSum[2]) / length;
@@ -1253,10 +1251,10 @@ class Contourer {
     // deviation puts the vertices kSurfaceLift * c above the surface (a
     // concave patch, c < 0, the other way). Bounded: c of a few cells means
     // the second-order picture is wrong; the move stays small, in the room.
-    // (`length`: that of the normals' sum, which the caller has.)
-    Vec3 balancedOnSurface(const CellQef& cq, double length, const Vec3& p, const Vec3& origin,
-                           const Vec3& lo, const Vec3& hi) const {
+    Vec3 balancedOnSurface(const CellQef& cq, const Vec3& p, const Vec3& origin, const Vec3& lo,
+                           const Vec3& hi) const {
         const Vec3& sum = cq.normalSum;
+        const double length = cq.length;
         if (!(length > 0)) return p;
         const double perPlane = 1.0 / cq.count, perLength = 1.0 / length;
         const Vec3& points = cq.pointSum; // about origin
@@ -1288,8 +1286,9 @@ class Contourer {
     //   s = -D_c (1/2 + kSurfaceLift) / (L + (1/2 - kSurfaceLift) (1 - L)).
     // Nothing when the curvature term is out of bounds (the caller solves
     // the QEF then, and keeps its vertex).
-    std::optional<Vec3> balancedFromMassPoint(const CellQef& cq, double length, const Vec3& origin,
-                                              const Vec3& lo, const Vec3& hi) const {
+    std::optional<Vec3> balancedFromMassPoint(const CellQef& cq, const Vec3& origin, const Vec3& lo,
+                                              const Vec3& hi) const {
+        const double length = cq.length;
         const double perPlane = 1.0 / cq.count, share = length * perPlane;
         const Vec3& points = cq.pointSum; // about origin
         double planes = -cq.offsetSum;
