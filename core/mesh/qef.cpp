@@ -15,6 +15,44 @@ Eigen::Matrix3d matrixOf(const std::array<double, 9>& m) {
 Eigen::Vector3d vectorOf(const std::array<double, 3>& v) {
     return {v[0], v[1], v[2]};
 }
+// Relative to a QEF's origin, E(y) = y^T M y - 2 y^T r + const (M = A^T A):
+// the free coordinates of y minimise E with the held ones fixed, about the
+// mass point c, eigenvalues under `cutoff` times a scale truncated — the
+// free block's largest eigenvalue, or M's largest diagonal entry.
+void minimiseFree(const std::array<bool, 3>& held, Eigen::Vector3d& y, const Eigen::Matrix3d& m,
+                  const Eigen::Vector3d& r, const Eigen::Vector3d& c, double cutoff,
+                  bool relativeToFree) {
+    // M_ff y_f = r_f - M_fh y_h.
+    int free[3], nf = 0;
+    for (int a = 0; a < 3; ++a)
+        if (!held[std::size_t(a)]) free[nf++] = a;
+    if (nf == 0) return;
+    // At most 3 x 3: fixed-capacity storage, no allocation per cell.
+    using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+    using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+    Small mff(nf, nf);
+    SmallVector rhs(nf);
+    for (int i = 0; i < nf; ++i) {
+        double v = r[free[i]];
+        for (int a = 0; a < 3; ++a)
+            v -= m(free[i], a) * (held[std::size_t(a)] ? y[a] : c[a]);
+        rhs[i] = v;
+        for (int j = 0; j < nf; ++j)
+            mff(i, j) = m(free[i], free[j]);
+    }
+    Eigen::SelfAdjointEigenSolver<Small> eig(mff);
+    const double scale = relativeToFree ? eig.eigenvalues().cwiseAbs().maxCoeff()
+                                        : std::max({m(0, 0), m(1, 1), m(2, 2)});
+    SmallVector delta = SmallVector::Zero(nf);
+    for (int k = 0; k < nf; ++k) {
+        const double value = eig.eigenvalues()[k];
+        if (!(std::abs(value) >= cutoff * scale) || value == 0) continue;
+        const SmallVector v = eig.eigenvectors().col(k);
+        delta += v * (v.dot(rhs) / value);
+    }
+    for (int i = 0; i < nf; ++i)
+        y[free[i]] = c[free[i]] + delta[i];
+}
 } // namespace
 
 std::array<double, 3> Qef::massPoint() const {
@@ -105,16 +143,41 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
         return !(p[a] >= lo[a] && p[a] <= hi[a]); // NaN counts as outside
     };
     if (!outside(x, 0) && !outside(x, 1) && !outside(x, 2)) return x;
-    // Relative to the origin: E(y) = y^T M y - 2 y^T r + const, M = A^T A.
-    const Eigen::Matrix3d m = matrixOf(normalMatrix());
-    const Eigen::Vector3d r(sumAtb(0), sumAtb(1), sumAtb(2));
     const Eigen::Vector3d c = vectorOf(meanOffset());
-    const double largest = std::max({m(0, 0), m(1, 1), m(2, 2)}); // trace-sized: a scale only
-    std::array<bool, 3> held{};
     Eigen::Vector3d y(c);
     for (std::size_t a = 0; a < 3; ++a)
         y[Eigen::Index(a)] =
             (std::isfinite(x[a]) ? x[a] : origin_[a] + c[Eigen::Index(a)]) - origin_[a];
+    return heldInBox({}, {y[0], y[1], y[2]}, lo, hi, relativeCutoff);
+}
+
+std::array<double, 3> Qef::solveOnPlanes(const std::array<bool, 3>& held,
+                                         const std::array<double, 3>& at,
+                                         const std::array<double, 3>& lo,
+                                         const std::array<double, 3>& hi,
+                                         double relativeCutoff) const {
+    if (!count()) return solve(relativeCutoff);
+    const Eigen::Matrix3d m = matrixOf(normalMatrix());
+    const Eigen::Vector3d r(sumAtb(0), sumAtb(1), sumAtb(2));
+    const Eigen::Vector3d c = vectorOf(meanOffset());
+    Eigen::Vector3d y(c);
+    for (std::size_t a = 0; a < 3; ++a)
+        if (held[a]) y[Eigen::Index(a)] = at[a] - origin_[a];
+    // The free coordinates on the plane (or line): their own eigenvalues
+    // decide what is kept, the held axes' planes (which the caller's face
+    // crossings are, all of their weight on a held axis) set no scale.
+    minimiseFree(held, y, m, r, c, relativeCutoff, true);
+    return heldInBox(held, {y[0], y[1], y[2]}, lo, hi, relativeCutoff);
+}
+
+std::array<double, 3> Qef::heldInBox(std::array<bool, 3> held, const std::array<double, 3>& from,
+                                     const std::array<double, 3>& lo,
+                                     const std::array<double, 3>& hi, double relativeCutoff) const {
+    Eigen::Vector3d y = vectorOf(from);
+    // Relative to the origin: E(y) = y^T M y - 2 y^T r + const, M = A^T A.
+    const Eigen::Matrix3d m = matrixOf(normalMatrix());
+    const Eigen::Vector3d r(sumAtb(0), sumAtb(1), sumAtb(2));
+    const Eigen::Vector3d c = vectorOf(meanOffset());
     for (int round = 0; round < 3; ++round) {
         // Hold every coordinate outside the box on the face it crossed.
         bool any = false;
@@ -126,40 +189,12 @@ std::array<double, 3> Qef::solveInBox(const std::array<double, 3>& lo,
             y[Eigen::Index(a)] = (p < lo[a] ? lo[a] : hi[a]) - origin_[a];
         }
         if (!any) break;
-        // The free coordinates minimise E with the held ones fixed:
-        // M_ff y_f = r_f - M_fh y_h, solved about the mass point with small
-        // eigenvalues truncated as solve() does, but with a cutoff a hundred
-        // times lower: the box bounds the answer now, and a crease that runs
-        // obliquely to the held face needs the small eigenvalue (a cutoff
-        // of solve()'s size kept the vertex off the crease by a third of a
-        // cell on the watermelon's cut).
-        int free[3], nf = 0;
-        for (int a = 0; a < 3; ++a)
-            if (!held[std::size_t(a)]) free[nf++] = a;
-        if (nf == 0) break;
-        // At most 3 x 3: fixed-capacity storage, no allocation per cell.
-        using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
-        using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
-        Small mff(nf, nf);
-        SmallVector rhs(nf);
-        for (int i = 0; i < nf; ++i) {
-            double v = r[free[i]];
-            for (int a = 0; a < 3; ++a)
-                v -= m(free[i], a) * (held[std::size_t(a)] ? y[a] : c[a]);
-            rhs[i] = v;
-            for (int j = 0; j < nf; ++j)
-                mff(i, j) = m(free[i], free[j]);
-        }
-        Eigen::SelfAdjointEigenSolver<Small> eig(mff);
-        SmallVector delta = SmallVector::Zero(nf);
-        for (int k = 0; k < nf; ++k) {
-            const double value = eig.eigenvalues()[k];
-            if (!(std::abs(value) >= 0.01 * relativeCutoff * largest) || value == 0) continue;
-            const SmallVector v = eig.eigenvectors().col(k);
-            delta += v * (v.dot(rhs) / value);
-        }
-        for (int i = 0; i < nf; ++i)
-            y[free[i]] = c[free[i]] + delta[i];
+        // The others minimise again, with a cutoff a hundred times lower
+        // than solve()'s: the box bounds the answer now, and a crease that
+        // runs obliquely to the held face needs the small eigenvalue (a
+        // cutoff of solve()'s size kept the vertex off the crease by a
+        // third of a cell on the watermelon's cut).
+        minimiseFree(held, y, m, r, c, 0.01 * relativeCutoff, false);
     }
     // In the box, and finite whatever the sums did (planes at 1e300 overflow
     // them): the mass point, or the box's centre, stands in for a NaN.

@@ -73,7 +73,28 @@ class Qef {
                                      const std::array<double, 3>& hi,
                                      double relativeCutoff = 0.05) const;
 
+    // The minimiser with the coordinates `held` fixed at `at` (the plane of
+    // a closed box's face, or the line or corner where faces meet, which
+    // the mesher knows exactly): the free ones minimise the QEF there, their
+    // eigenvalues under `relativeCutoff` times the largest of them
+    // truncated; then kept in [lo, hi] as solveInBox keeps its point. A
+    // shape meeting a face at a shallow angle (under 37 degrees between the
+    // normals) has a crease that solve() with the mesher's cutoff cannot
+    // see: the vertex stayed between face and surface, a third of a cell
+    // from both; on the face plane the crease is the one strong direction.
+    std::array<double, 3> solveOnPlanes(const std::array<bool, 3>& held,
+                                        const std::array<double, 3>& at,
+                                        const std::array<double, 3>& lo,
+                                        const std::array<double, 3>& hi,
+                                        double relativeCutoff = 0.05) const;
+
   private:
+    // solveInBox's rounds from the point `from` (about origin_), `held`
+    // already fixed: each holds the coordinates outside [lo, hi] on the
+    // face they left by and minimises again.
+    std::array<double, 3> heldInBox(std::array<bool, 3> held, const std::array<double, 3>& from,
+                                    const std::array<double, 3>& lo,
+                                    const std::array<double, 3>& hi, double relativeCutoff) const;
     static constexpr std::size_t kAta = 0, kAtb = 6, kPointSum = 9, kNormalSum = 12, kCount = 15;
     double sumAtA(std::size_t k) const { return sums_[kAta + k]; } // xx xy xz yy yz zz
     double sumAtb(std::size_t k) const { return sums_[kAtb + k]; }

@@ -1,7 +1,8 @@
 // The quadratic error function of dual contouring: solve() finds the point
 // on every plane it can, and solveInBox() the best point within a box —
 // solve()'s own when it lies there, else on the box's faces, still on every
-// plane the box allows.
+// plane the box allows; solveOnPlanes() the best point on planes it is
+// told (a closed box's faces).
 #include "mesh/qef.h"
 
 #include <Eigen/Eigenvalues>
@@ -74,6 +75,46 @@ TEST(Qef, AnObliqueCreaseIsFollowedAlongTheHeldFace) {
     const Point p = q.solveInBox({0, 0, 0}, {1, 1, 1}, 0.1);
     for (std::size_t a = 0; a < 3; ++a)
         EXPECT_NEAR(p[a], c[a], 1e-9) << a;
+}
+
+TEST(Qef, AShallowCreaseOnAHeldFaceIsFoundThere) {
+    // The face y = 1 (seen at three points) and a plane 20 degrees from it
+    // through the line x = 0.3, y = 1 (seen at three points below the
+    // face): a crease whose small eigenvalue (about 0.03 of the largest)
+    // solve()'s cutoff of 0.1 drops, leaving the point between the planes.
+    // Held on the face, the crease is the one strong direction left.
+    const double a = 20 * M_PI / 180;
+    const Point n{std::sin(a), std::cos(a), 0};
+    Qef q;
+    for (double z : {0.2, 0.5, 0.8})
+        q.add({0.5, 1, z}, {0, 1, 0});
+    for (double t : {0.1, 0.2, 0.3}) // on the plane, down its slope from the crease
+        q.add({0.3 + t * n[1], 1 - t * n[0], 0.5 + t - 0.2}, n);
+    const Point free = q.solveInBox({0, 0.5, 0}, {1, 1.5, 1}, 0.1);
+    const auto offPlane = [&](const Point& p) {
+        return std::abs(n[0] * (p[0] - 0.3) + n[1] * (p[1] - 1));
+    };
+    EXPECT_GT(offPlane(free), 1e-2); // the failure this guards against
+    const Point held =
+        q.solveOnPlanes({false, true, false}, {0, 1, 0}, {0, 0.5, 0}, {1, 1.5, 1}, 0.1);
+    EXPECT_EQ(held[1], 1.0);
+    EXPECT_NEAR(held[0], 0.3, 1e-12);
+    EXPECT_LT(offPlane(held), 1e-12);
+    EXPECT_GE(held[2], 0.0); // along the crease: the mass point's place, in the box
+    EXPECT_LE(held[2], 1.0);
+}
+
+TEST(Qef, HeldOnTwoFacesOnlyTheirLineIsFree) {
+    // The edge where the faces x = 1 and z = 0 meet, crossed by the plane
+    // y = 0.4: the corner (1, 0.4, 0), whatever the cutoff.
+    Qef q;
+    q.add({1, 0.2, 0.3}, {1, 0, 0});
+    q.add({0.6, 0.5, 0}, {0, 0, 1});
+    q.add({0.9, 0.4, 0.1}, {0, 1, 0});
+    const Point p = q.solveOnPlanes({true, false, true}, {1, 0, 0}, {0, 0, -1}, {2, 1, 1}, 0.1);
+    EXPECT_EQ(p[0], 1.0);
+    EXPECT_EQ(p[2], 0.0);
+    EXPECT_NEAR(p[1], 0.4, 1e-12);
 }
 
 TEST(Qef, NothingAddedOrNotFiniteStaysInTheBox) {
