@@ -42,6 +42,10 @@ constexpr double kCreaseTurn = 0.8;
 // its vertex is kCreaseTest times closer to their mean than they are.
 constexpr double kSurfaceLift = 0.25, kMaxCurvatureTerm = 0.25, kMaxShift = 0.1, kMaxSpread = 0.05,
                  kCreaseTest = 0.1;
+// The QEF's cutoff at a crease whose sides turn by under 37 degrees (which
+// the mesher's 0.1 cannot resolve): its direction's eigenvalue is about
+// tan^2(turn / 2) of the largest, 0.0077 at 10 degrees.
+constexpr double kShallowCreaseCutoff = 0.003, kCreaseOnSurface = 0.1;
 // Where a crossing's gradient is taken: this fraction of its edge inside it
 // when the crossing lies at a corner (computeCrossings says why).
 constexpr double kIntoTheEdge = 1e-4;
@@ -1120,14 +1124,22 @@ class Contourer {
                 block.normals[normalOf_[k]] = {float(n[0]), float(n[1]), float(n[2])};
                 // The crossings' normals disagree: a curved patch, or a crease
                 // (where the gradient at the vertex is one side's and far from
-                // their mean, and the vertex stays where the QEF put it).
-                if (!cq.faces && smoothAround(n, cq)) {
-                    const auto [cellLo, cellHi] =
-                        vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
+                // their mean, and the vertex stays where the QEF put it — or,
+                // on a shallow crease, where a lower cutoff puts it).
+                if (cq.faces) continue;
+                const auto [cellLo, cellHi] = vertexRoom(base, touched_[normalEntry_[k]] / kPieces);
+                if (smoothAround(n, cq)) {
                     const Vec3 p = balancedOnSurface(cq, normalAt_[k], origin, cellLo, cellHi);
                     block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
+                } else if (1 - cq.length / cq.count < kMaxSpread) {
+                    // A crease whose sides turn by under 37 degrees: the
+                    // cutoff of 0.1 dropped its direction (the vertex stayed
+                    // between the sides, up to a third of a cell off both).
+                    creaseAt_.push_back(cq.qef.solveInBox(cellLo, cellHi, kShallowCreaseCutoff));
+                    creaseOf_.push_back(std::uint32_t(k));
                 }
             }
+            keepShallowCreases(block, sampler);
         }
         block.occupied.fill(0);
         for (const SurfaceCell& c : block.cells)
@@ -1137,6 +1149,32 @@ class Contourer {
             count += std::size_t(std::popcount(block.occupied[w]));
         }
         makeInteriorQuads(block, limit);
+    }
+
+    // The shallow creases' vertices (buildVertices) that lie on the surface
+    // — within kCreaseOnSurface cells of it to first order (by the gradient
+    // at the vertex they replace, in the same cell), or nearer than that
+    // vertex: a smooth patch taken for a crease would have its vertex where
+    // its tangent planes meet, off the surface; a crease's lies on both of
+    // its sides. (Only nearer than the old vertex was too strict: the
+    // textured sphere's bumps, creased by the texture's bilinear
+    // interpolation, kept vertices that measured worse.) One batch of values.
+    void keepShallowCreases(Block& block, FieldSampler& sampler) {
+        if (creaseAt_.empty()) return;
+        valuesAt(sampler, creaseAt_.size(), [&](std::size_t i) { return creaseAt_[i]; });
+        for (std::size_t i = 0; i < creaseAt_.size(); ++i) {
+            const std::size_t k = creaseOf_[i];
+            const formula::Dual& was = normalGradients_[k];
+            const double slope =
+                std::sqrt(was.d[0] * was.d[0] + was.d[1] * was.d[1] + was.d[2] * was.d[2]);
+            if (!(std::abs(out_[i]) <=
+                  std::max(std::abs(was.v), kCreaseOnSurface * minCell_ * slope)))
+                continue;
+            const Vec3& p = creaseAt_[i];
+            block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
+        }
+        creaseAt_.clear();
+        creaseOf_.clear();
     }
 
     // The quads around the crossings this block owns whose four cells all lie
@@ -1469,6 +1507,8 @@ class Contourer {
     std::vector<Vec3> normalAt_;
     std::vector<std::uint32_t> normalOf_;
     std::vector<std::uint32_t> normalEntry_; // their QEFs' places
+    std::vector<Vec3> creaseAt_;             // shallow creases' vertices (keepShallowCreases)
+    std::vector<std::uint32_t> creaseOf_;    // their places in normalAt_
     std::vector<formula::Dual> normalGradients_;
     struct CellQef {
         std::uint32_t vertex = 0; // block-local, once made
