@@ -233,6 +233,38 @@ TEST(HardCases, AShapeMeetingItsClosedBoxAtAShallowAngleKeepsTheCrease) {
     }
 }
 
+TEST(HardCases, TrianglesOnAClosedBoxsFacesFaceOut) {
+    // Held on a face, a shallow crease's vertices may sit out of convex
+    // order with their neighbours on the face; the split of such a quad
+    // that keeps both triangles facing out is taken (the gyroid in its
+    // closed box: 45 triangles on the faces faced in at 32, 333 at 128).
+    const ImplicitField f = field("sin(4*x)*cos(4*y) + sin(4*y)*cos(4*z) + sin(4*z)*cos(4*x)", 1.0,
+                                  BoxBoundary::Closed);
+    for (double resolution : {32.0, 128.0}) {
+        MeshOptions o;
+        o.resolution = resolution;
+        const MeshResult r = meshImplicit(f, o);
+        ASSERT_TRUE(r.ok()) << r.error;
+        std::size_t onFaces = 0, facingIn = 0;
+        for (const Triangle& t : r.mesh.triangles) {
+            const Vec3f& a = r.mesh.positions[t[0]];
+            const Vec3f& b = r.mesh.positions[t[1]];
+            const Vec3f& c = r.mesh.positions[t[2]];
+            for (std::size_t axis = 0; axis < 3; ++axis)
+                for (float side : {-1.0f, 1.0f}) {
+                    if (a[axis] != side || b[axis] != side || c[axis] != side) continue;
+                    const std::size_t u = (axis + 1) % 3, v = (axis + 2) % 3;
+                    const double across = (double(b[u]) - a[u]) * (double(c[v]) - a[v]) -
+                                          (double(b[v]) - a[v]) * (double(c[u]) - a[u]);
+                    ++onFaces;
+                    if (across * side < 0) ++facingIn;
+                }
+        }
+        EXPECT_GT(onFaces, 1000u) << resolution;
+        EXPECT_EQ(facingIn, 0u) << resolution;
+    }
+}
+
 TEST(HardCases, AShallowCreaseOfMinOrMaxIsKeptSharp) {
     // A roof, min of two planes turning by 10, 20 and 30 degrees: the QEF's
     // cutoff of 0.1 cannot see a crease under 37 degrees, and its vertices
