@@ -5,6 +5,7 @@
 
 #include "formula/compiler.h"
 #include "formula/eval_batch.h"
+#include "formula/eval_scalar.h"
 
 #include <algorithm>
 #include <chrono>
@@ -67,6 +68,22 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
                 f.native(grid.x.data(), grid.y.data(), grid.z.data(), grid.t, native.data(), n);
             },
         };
+        // One point a call: the scalar evaluator, and the hand-written
+        // formula through its pointer for one point (a call it cannot see
+        // through, as a caller of a compiled formula makes).
+        formula::ScalarEvaluator scalar(*compiled.tape);
+        std::vector<double> scalarOut(n), nativeScalarOut(n);
+        const NativeFn nativeFn = f.native;
+        engines.push_back([&] {
+            for (std::size_t i = 0; i < n; ++i)
+                scalarOut[i] =
+                    scalar.evaluate(formula::pointXYZ(grid.x[i], grid.y[i], grid.z[i], grid.t));
+        });
+        engines.push_back([&] {
+            volatile NativeFn call = nativeFn; // never inlined into the loop
+            for (std::size_t i = 0; i < n; ++i)
+                call(&grid.x[i], &grid.y[i], &grid.z[i], grid.t, &nativeScalarOut[i], 1);
+        });
         std::unique_ptr<MuParserPeer> mp;
         if (MuParserPeer::available()) {
             mp = std::make_unique<MuParserPeer>(f.muparser);
@@ -79,11 +96,15 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
         std::vector<double> ns = bestNsPerPoint(engines, n, seconds);
         row.functionlab = ns[0];
         row.native = ns[1];
+        row.scalar = ns[2];
+        row.nativeScalar = ns[3];
         for (std::size_t i = 0; i < n; ++i)
-            row.maxDifference = std::max(row.maxDifference, std::abs(ours[i] - native[i]));
+            row.maxDifference = std::max({row.maxDifference, std::abs(ours[i] - native[i]),
+                                          std::abs(scalarOut[i] - native[i]),
+                                          std::abs(nativeScalarOut[i] - native[i])});
         if (mp) {
-            row.muparser = std::min(ns[2], ns[3]);
-            row.muparserMode = ns[2] <= ns[3] ? "bulk" : "per-point";
+            row.muparser = std::min(ns[4], ns[5]);
+            row.muparserMode = ns[4] <= ns[5] ? "bulk" : "per-point";
             for (std::size_t i = 0; i < n; ++i)
                 row.maxDifference = std::max(row.maxDifference, std::abs(peer[i] - native[i]));
         }
@@ -95,11 +116,13 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
 std::string formatEvalTable(const std::vector<EvalRow>& rows) {
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "formula",
-                  "functionlab", "native", "muparser", "vs native", "vs muparser", "max |diff|");
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s %10s %10s %10s\n",
+                  "formula", "functionlab", "native", "muparser", "vs native", "vs muparser",
+                  "max |diff|", "scalar", "native", "vs native");
     out += line;
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s\n", "", "ns/point",
-                  "ns/point", "ns/point", "(x slower)", "(x faster)", "");
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s %10s %10s %10s\n", "",
+                  "ns/point", "ns/point", "ns/point", "(x slower)", "(x faster)", "", "ns/call",
+                  "ns/call", "(x slower)");
     out += line;
     for (const EvalRow& r : rows) {
         char mp[32] = "n/a", speed[32] = "n/a";
@@ -107,9 +130,10 @@ std::string formatEvalTable(const std::vector<EvalRow>& rows) {
             std::snprintf(mp, sizeof mp, "%.2f", r.muparser);
             std::snprintf(speed, sizeof speed, "%.1f", r.muparser / r.functionlab);
         }
-        std::snprintf(line, sizeof line, "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e\n",
+        std::snprintf(line, sizeof line,
+                      "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e %10.2f %10.2f %10.2f\n",
                       r.formula.c_str(), r.functionlab, r.native, mp, r.functionlab / r.native,
-                      speed, r.maxDifference);
+                      speed, r.maxDifference, r.scalar, r.nativeScalar, r.scalar / r.nativeScalar);
         out += line;
     }
     // How FunctionLab ran each: machine code, and what making it took.
@@ -136,9 +160,10 @@ std::string evalTableJson(const std::vector<EvalRow>& rows) {
         std::snprintf(buf, sizeof buf,
                       "%s\n  {\"formula\": \"%s\", \"ns_per_point\": {\"functionlab\": %.4f, "
                       "\"native\": %.4f, "
-                      "\"muparser\": %s}, \"jit\": %s, \"jit_compile_us\": %.1f}",
-                      i ? "," : "", r.formula.c_str(), r.functionlab, r.native, mp,
-                      r.jit ? "true" : "false", r.jitCompileUs);
+                      "\"muparser\": %s}, \"ns_per_call\": {\"scalar\": %.4f, \"native\": %.4f}, "
+                      "\"jit\": %s, \"jit_compile_us\": %.1f}",
+                      i ? "," : "", r.formula.c_str(), r.functionlab, r.native, mp, r.scalar,
+                      r.nativeScalar, r.jit ? "true" : "false", r.jitCompileUs);
         out += buf;
     }
     out += "\n]\n";

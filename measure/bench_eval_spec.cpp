@@ -12,12 +12,16 @@ const CommandSpec& benchEvalSpec() {
         .description =
             "Evaluates the benchmark formulas over an N^3 grid with FunctionLab's batch\n"
             "evaluator, the same formulas hand-written in C++, and muParser, all on one\n"
-            "thread; prints nanoseconds per point and the ratios. The engines take turns\n"
-            "for at least S seconds and each reports its best turn. The work is done by\n"
-            "the executable functionlab-bench next to functionlab.\n",
+            "thread; prints nanoseconds per point and the ratios. Then one point a call,\n"
+            "as picking, haptics and the grader ask: FunctionLab's scalar evaluator\n"
+            "against the hand-written C++ called through a pointer for each point\n"
+            "(nanoseconds per call). The engines take turns for at least S seconds and\n"
+            "each reports its best turn. The work is done by the executable\n"
+            "functionlab-bench next to functionlab.\n",
         .options = {{.name = "json",
                      .help = "print a list of {\"formula\", \"ns_per_point\": {\"functionlab\", "
-                             "\"native\", \"muparser\"}} instead of the table"},
+                             "\"native\", \"muparser\"}, \"ns_per_call\": {\"scalar\", "
+                             "\"native\"}, \"jit\", \"jit_compile_us\"} instead of the table"},
                     {.name = "side",
                      .kind = OptionKind::Integer,
                      .valueName = "N",
