@@ -1,5 +1,7 @@
 #include "batch_jit.h"
 
+#include "scalar_ops.h"
+
 #include "batch_step_run.h"
 #include "eval_batch.h"
 
@@ -106,13 +108,35 @@ std::vector<std::int32_t> readsOf(const BatchStep& s) {
     return r;
 }
 
+// A step the one-point code does not write itself, for its one point: the
+// scalar evaluator's operation (ops::apply; a paired sine and cosine from one
+// sincos), which gives the interpreter's bits by definition — where
+// runBatchStep over one point went through the array routines' set-up.
+void runOneStep(const BatchStep& s, double* const* base) noexcept {
+    const double a = s.constA ? s.ca : base[s.a][0];
+    if (s.fused == Fused::SinCos) {
+        const vmath::SinCos sc = vmath::sinCos(a);
+        base[s.out][0] = sc.sin;
+        base[s.out2][0] = sc.cos;
+        return;
+    }
+    const int arity = opArity(s.op);
+    const double b = arity < 2 ? 0.0 : s.constB ? s.cb : base[s.b][0];
+    const double c = arity < 3 ? 0.0 : s.constC ? s.cc : base[s.c][0];
+    base[s.out][0] = ops::apply(s.op, a, b, c, s.imm0, s.imm1);
+}
+
 using namespace Xbyak;
 
 class Emitter : public CodeGenerator {
   public:
+    // `onePoint`: code for a single point (ScalarEvaluator's): the same
+    // steps on the low lane of XMM registers, once, no loop; rows of one
+    // double. Else the loop over groups of 8 points in YMM registers.
     Emitter(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
-            std::int32_t registerCount, std::size_t maxSize)
-        : CodeGenerator(maxSize), steps_(steps), liveOut_(liveOut),
+            std::int32_t registerCount, std::size_t maxSize, bool onePoint)
+        : CodeGenerator(maxSize), onePoint_(onePoint), S1(vec(11)), S2(vec(12)), R(vec(13)),
+          CA(vec(14)), CB(vec(15)), steps_(steps), liveOut_(liveOut),
           where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)),
           rowGpr_(std::size_t(registerCount), -1) {
         // At most a few constants a step: the pool never moves once r14 holds it.
@@ -135,7 +159,11 @@ class Emitter : public CodeGenerator {
 
   private:
     static constexpr int kSlots = 11; // ymm0..ymm10 hold values; ymm11..ymm15 are scratch
-    const Ymm S1{11}, S2{12}, R{13}, CA{14}, CB{15};
+    const bool onePoint_;
+    // Vector register i: all four lanes, or (one point) an XMM, whose low
+    // lane is the point's (the other lane computes on zeros, unread).
+    Xmm vec(int i) const { return onePoint_ ? Xmm(i) : Xmm(Ymm(i)); }
+    const Xmm S1, S2, R, CA, CB;
 
     struct Event {
         std::size_t step;
@@ -213,7 +241,10 @@ class Emitter : public CodeGenerator {
         }
     }
     void store(int slot) {
-        vmovupd(lanes(slots_[std::size_t(slot)].reg), Ymm(slot));
+        if (onePoint_)
+            vmovsd(lanes(slots_[std::size_t(slot)].reg), vec(slot));
+        else
+            vmovupd(lanes(slots_[std::size_t(slot)].reg), vec(slot));
         slots_[std::size_t(slot)].dirty = false;
     }
     void release(int slot) {
@@ -242,17 +273,20 @@ class Emitter : public CodeGenerator {
         release(best);
         return best;
     }
-    // The register's value in a YMM, pinned for the current step.
-    Ymm in(std::int32_t reg) {
+    // The register's value in a vector register, pinned for the current step.
+    Xmm in(std::int32_t reg) {
         int slot = where_[std::size_t(reg)];
         if (slot < 0) {
             slot = freeSlot();
-            vmovupd(Ymm(slot), lanes(reg));
+            if (onePoint_)
+                vmovsd(vec(slot), lanes(reg));
+            else
+                vmovupd(vec(slot), lanes(reg));
             slots_[std::size_t(slot)] = {reg, false, true};
             where_[std::size_t(reg)] = slot;
         }
         slots_[std::size_t(slot)].pinned = true;
-        return Ymm(slot);
+        return vec(slot);
     }
     // R, the step's result, becomes register `reg`'s value.
     void define(std::int32_t reg) {
@@ -262,9 +296,9 @@ class Emitter : public CodeGenerator {
             where_[std::size_t(reg)] = slot;
         }
         slots_[std::size_t(slot)] = {reg, true, false};
-        vmovapd(Ymm(slot), R);
+        vmovapd(vec(slot), R);
     }
-    void broadcast(const Ymm& y, double v) {
+    void broadcast(const Xmm& y, double v) {
         std::uint64_t bits;
         std::memcpy(&bits, &v, sizeof bits);
         auto [at, added] = poolIndex_.emplace(bits, pool_.size());
@@ -272,14 +306,17 @@ class Emitter : public CodeGenerator {
             if (pool_.size() == pool_.capacity()) throw Xbyak::Error(ERR_CODE_IS_TOO_BIG);
             pool_.push_back(v);
         }
-        vbroadcastsd(y, ptr[r14 + int(at->second * sizeof(double))]);
+        if (onePoint_)
+            vmovsd(y, ptr[r14 + int(at->second * sizeof(double))]);
+        else
+            vbroadcastsd(Ymm(y.getIdx()), ptr[r14 + int(at->second * sizeof(double))]);
     }
-    Ymm operandA(const BatchStep& s) {
+    Xmm operandA(const BatchStep& s) {
         if (!s.constA) return in(s.a);
         broadcast(CA, s.ca);
         return CA;
     }
-    Ymm operandB(const BatchStep& s) {
+    Xmm operandB(const BatchStep& s) {
         if (!s.constB) return in(s.b);
         broadcast(CB, s.cb);
         return CB;
@@ -287,31 +324,40 @@ class Emitter : public CodeGenerator {
 
     // dst = min or max (x, y) with the language's rule: x when x < y (x > y)
     // or x is NaN, else y. Uses S1 and S2.
-    void minMax(bool isMin, const Ymm& dst, const Ymm& x, const Ymm& y) {
+    void minMax(bool isMin, const Xmm& dst, const Xmm& x, const Xmm& y) {
         vcmppd(S1, x, y, isMin ? kLtOQ : kGtOQ);
         vcmppd(S2, x, x, kUnordQ);
         vorpd(S1, S1, S2);
         vblendvpd(dst, y, x, S1);
     }
     // R = 1.0 where mask, else 0.0.
-    void oneWhere(const Ymm& mask) {
+    void oneWhere(const Xmm& mask) {
         broadcast(S2, 1.0);
         vandpd(R, mask, S2);
     }
     // mask = truth(x): non-zero and not NaN.
-    void truth(const Ymm& mask, const Ymm& x) {
+    void truth(const Xmm& mask, const Xmm& x) {
         vxorpd(S2, S2, S2);
         vcmppd(mask, x, S2, kNeqOQ);
     }
-    void negate(const Ymm& dst, const Ymm& x) {
+    void negate(const Xmm& dst, const Xmm& x) {
         broadcast(S2, -0.0);
         vxorpd(dst, x, S2);
     }
 
     // The interpreter's code for step `s` over the points the loops do (r13
     // of them): one call a block. `s` is the code's own copy of the step.
+    // (One point: the scalar evaluator's operation, runOneStep.)
     void emitCall(const BatchStep& s) {
         streams_ = false;
+        if (onePoint_) {
+            mov(rdi, reinterpret_cast<std::uint64_t>(&s));
+            mov(rsi, r12);
+            mov(rax, reinterpret_cast<std::uint64_t>(&runOneStep));
+            vzeroupper();
+            call(rax);
+            return;
+        }
         mov(rdi, reinterpret_cast<std::uint64_t>(&s));
         mov(rsi, r12);
         mov(rdx, r13);
@@ -325,7 +371,7 @@ class Emitter : public CodeGenerator {
     void step(const BatchStep& s) {
         switch (s.fused) {
         case Fused::SquareOfDiff: {
-            const Ymm a = in(s.a);
+            const Xmm a = in(s.a);
             broadcast(S1, s.ca);
             vsubpd(R, a, S1);
             vmulpd(R, R, R);
@@ -339,7 +385,7 @@ class Emitter : public CodeGenerator {
             // acc + sign * ((r - offset)^2), with what is exact left out:
             // r - (+0) is r, and adding -1 * q is subtracting q.
             for (int t = 0; t < s.terms; ++t) {
-                const Ymm r = in(s.termReg[t]);
+                const Xmm r = in(s.termReg[t]);
                 const double offset = s.termOffset[t];
                 if (std::bit_cast<std::uint64_t>(offset) == 0) {
                     vmulpd(CA, r, r);
@@ -361,7 +407,7 @@ class Emitter : public CodeGenerator {
             return;
         }
         case Fused::NegatedOperand: {
-            const Ymm a = operandA(s), b = operandB(s);
+            const Xmm a = operandA(s), b = operandB(s);
             if (s.negA) {
                 negate(CA, a);
                 minMax(s.op == Op::Min, R, CA, b);
@@ -374,8 +420,8 @@ class Emitter : public CodeGenerator {
         case Fused::MinMaxChain: {
             const bool isMin = s.op == Op::Min;
             // sign * r: r itself for +1, its negation for -1 (both exact).
-            auto signed_ = [&](const Ymm& dst, int t) {
-                const Ymm r = in(s.chainReg[t]);
+            auto signed_ = [&](const Xmm& dst, int t) {
+                const Xmm r = in(s.chainReg[t]);
                 if (s.chainSign[t] == 1.0) {
                     vmovapd(dst, r);
                 } else if (s.chainSign[t] == -1.0) {
@@ -408,7 +454,7 @@ class Emitter : public CodeGenerator {
             vandnpd(R, S2, in(s.a));
             return;
         case Op::Square: {
-            const Ymm a = in(s.a);
+            const Xmm a = in(s.a);
             vmulpd(R, a, a);
             return;
         }
@@ -422,7 +468,7 @@ class Emitter : public CodeGenerator {
             vroundpd(R, in(s.a), 0x0A);
             return;
         case Op::Sign: { // a > 0 ? 1 : a < 0 ? -1 : a == 0 ? 0 : a (NaN)
-            const Ymm a = in(s.a);
+            const Xmm a = in(s.a);
             vxorpd(S2, S2, S2);
             vcmppd(S1, a, S2, kGtOQ);
             vcmppd(CB, a, S2, kLtOQ);
@@ -436,14 +482,14 @@ class Emitter : public CodeGenerator {
             return;
         }
         case Op::Not: { // truth(a) ? 0 : 1
-            const Ymm a = in(s.a);
+            const Xmm a = in(s.a);
             vxorpd(S2, S2, S2);
             vcmppd(S1, a, S2, kEqUQ);
             oneWhere(S1);
             return;
         }
         case Op::PowI: {
-            const Ymm a = in(s.a);
+            const Xmm a = in(s.a);
             const int k = static_cast<int>(s.imm0);
             if (k == 3) {
                 vmulpd(R, a, a);
@@ -485,10 +531,10 @@ class Emitter : public CodeGenerator {
                     vmovapd(R, in(s.c));
                 return;
             }
-            const Ymm a = in(s.a);
+            const Xmm a = in(s.a);
             truth(S1, a);
-            const Ymm b = operandB(s);
-            Ymm c = CA;
+            const Xmm b = operandB(s);
+            Xmm c = CA;
             if (s.constC)
                 broadcast(CA, s.cc);
             else
@@ -500,7 +546,7 @@ class Emitter : public CodeGenerator {
             break;
         }
         // Binary arithmetic, min and max, comparisons, logic.
-        const Ymm a = operandA(s), b = operandB(s);
+        const Xmm a = operandA(s), b = operandB(s);
         switch (s.op) {
         case Op::Add:
             vaddpd(R, a, b);
@@ -555,12 +601,14 @@ class Emitter : public CodeGenerator {
         loadRows(first, end);
         xor_(ebx, ebx);
         Label loop, done;
-        L(loop);
-        cmp(rbx, r13);
-        jae(done, T_NEAR);
+        if (!onePoint_) {
+            L(loop);
+            cmp(rbx, r13);
+            jae(done, T_NEAR);
+        }
         // Two groups of 4 points an iteration, each all steps: independent
-        // chains of work the processor overlaps.
-        for (lane_ = 0; lane_ < 8; lane_ += 4) {
+        // chains of work the processor overlaps. (One point: once.)
+        for (lane_ = 0; lane_ < (onePoint_ ? 1 : 8); lane_ += 4) {
             for (step_ = first; step_ < end; ++step_) {
                 const BatchStep& s = steps_[step_];
                 step(s);
@@ -575,9 +623,11 @@ class Emitter : public CodeGenerator {
                 release(i);
             }
         }
-        add(rbx, 8);
-        jmp(loop, T_NEAR);
-        L(done);
+        if (!onePoint_) {
+            add(rbx, 8);
+            jmp(loop, T_NEAR);
+            L(done);
+        }
         std::fill(rowGpr_.begin(), rowGpr_.end(), -1);
     }
 
@@ -595,7 +645,10 @@ class Emitter : public CodeGenerator {
         lea(r15, ptr[r12 + int(where_.size() * sizeof(double*))]);
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
-        and_(r13, ~7u); // sign-extended: whole groups of 8 points
+        if (onePoint_)
+            mov(r13, 1); // runBatchStep's count
+        else
+            and_(r13, ~7u); // sign-extended: whole groups of 8 points
         // Runs of steps between calls are each one loop over the points; a
         // call runs once over all of them. What a run leaves for a later one
         // (or the caller) goes to its row at the run's end.
@@ -697,12 +750,25 @@ Cache& cache() {
 std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& steps,
                                                   const std::vector<char>& liveOut,
                                                   std::int32_t registerCount) {
+    return make(steps, liveOut, registerCount, false);
+}
+
+std::shared_ptr<const BatchJit> BatchJit::compileOnePoint(const std::vector<BatchStep>& steps,
+                                                          const std::vector<char>& liveOut,
+                                                          std::int32_t registerCount) {
+    return make(steps, liveOut, registerCount, true);
+}
+
+std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& steps,
+                                               const std::vector<char>& liveOut,
+                                               std::int32_t registerCount, bool onePoint) {
     if (!available() || steps.empty()) return nullptr;
     for (const BatchStep& s : steps)
         if (!compiles(s)) return nullptr;
     // (Whether calls are allowed is not in the key: a tape it would have to
     // call for is refused above, and the others' code does not depend on it.)
-    std::string key = keyOf(steps, liveOut, registerCount);
+    std::string key(1, onePoint ? '1' : '8');
+    key += keyOf(steps, liveOut, registerCount);
     Cache& c = cache();
     {
         std::lock_guard lock(c.mutex);
@@ -714,7 +780,8 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
     try {
         auto code = std::make_unique<Code>();
         code->steps = steps;
-        code->emitter = std::make_unique<Emitter>(code->steps, liveOut, registerCount, size);
+        code->emitter =
+            std::make_unique<Emitter>(code->steps, liveOut, registerCount, size, onePoint);
         code->emitter->ready();
         code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
         code->streams = code->emitter->streams();
@@ -739,6 +806,10 @@ std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& 
 // gives more than a block only where its rows are whole arrays).
 std::size_t BatchJit::run(double* const* base, std::size_t n) const {
     return code_->run(base, code_->streams ? n : std::min(n, BatchEvaluator::kBlock));
+}
+
+void BatchJit::runOne(double* const* base) const {
+    code_->run(base, 1);
 }
 
 std::size_t BatchJit::codeBytes() const {

@@ -34,11 +34,19 @@ class BatchJit {
     static std::shared_ptr<const BatchJit> compile(const std::vector<BatchStep>& steps,
                                                    const std::vector<char>& liveOut,
                                                    std::int32_t registerCount);
+    // The same steps for one point a call (ScalarEvaluator's code): on the
+    // low lane of XMM registers, straight through, every row one double
+    // long (base as run takes it). Cached beside the batch code.
+    static std::shared_ptr<const BatchJit> compileOnePoint(const std::vector<BatchStep>& steps,
+                                                           const std::vector<char>& liveOut,
+                                                           std::int32_t registerCount);
     ~BatchJit();
 
     // Runs whole groups of 8 of the n points (base as runBlock takes it, then
     // its scratch rows): all, or a block's where it spills or calls; says how many.
     std::size_t run(double* const* base, std::size_t n) const;
+    // Code from compileOnePoint: the one point of rows one double long.
+    void runOne(double* const* base) const;
 
     std::size_t codeBytes() const;
 
@@ -54,6 +62,9 @@ class BatchJit {
 
   private:
     struct Code;
+    static std::shared_ptr<const BatchJit> make(const std::vector<BatchStep>& steps,
+                                                const std::vector<char>& liveOut,
+                                                std::int32_t registerCount, bool onePoint);
     explicit BatchJit(std::unique_ptr<Code> code);
     std::unique_ptr<Code> code_;
 };

@@ -176,14 +176,20 @@ FL_BATCH_LOOP void chainDispatch(const Step& s, double* const* base, double* o, 
 BatchEvaluator::BatchEvaluator(const Tape& tape, bool compile)
     : tape_(tape), params_(tape_), compile_(compile) {
     const std::size_t regs = static_cast<std::size_t>(tape.registerCount);
+    uniformValue_.assign(regs, 0.0);
+    isUniform_.assign(regs, 0);
+}
+
+// The blocks' rows, made at the first evaluate(): an evaluator used one
+// point at a time (ScalarEvaluator's) needs one double a register, not 2 KiB.
+void BatchEvaluator::makeWorkspace() {
+    const std::size_t regs = static_cast<std::size_t>(tape_.registerCount);
     std::size_t bytes = (regs + 3) * kStride * sizeof(double);
     workspace_ = static_cast<double*>(std::aligned_alloc(64, bytes));
     if (!workspace_) throw std::bad_alloc();
     std::memset(workspace_, 0, bytes);
     for (int k = 0; k < 3; ++k)
         scratch_[k] = workspace_ + (regs + k) * kStride;
-    uniformValue_.assign(regs, 0.0);
-    isUniform_.assign(regs, 0);
 }
 
 BatchEvaluator::~BatchEvaluator() {
@@ -249,12 +255,12 @@ void BatchEvaluator::specialise(const BatchInputs& in) {
     }
     fuseBatchSteps(steps_, tape_);
     // Compiled when every step can be: outputs are what evaluate() reads back.
-    std::vector<char> liveOut(std::size_t(tape_.registerCount), 0);
+    liveOut_.assign(std::size_t(tape_.registerCount), 0);
     for (const OutputInfo& o : tape_.outputs)
         if (!o.value.isConst() && !isUniform_[std::size_t(o.value.reg)])
-            liveOut[std::size_t(o.value.reg)] = 1;
+            liveOut_[std::size_t(o.value.reg)] = 1;
     const auto started = std::chrono::steady_clock::now();
-    jit_ = compile_ ? BatchJit::compile(steps_, liveOut, tape_.registerCount) : nullptr;
+    jit_ = compile_ ? BatchJit::compile(steps_, liveOut_, tape_.registerCount) : nullptr;
     jitCompileUs_ =
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started)
             .count();
@@ -512,7 +518,36 @@ void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
         runBatchStep(s, base, n, scratch_.data());
 }
 
+bool BatchEvaluator::prepareOne() {
+    BatchInputs in;
+    for (int i = 0; i < kInputCount; ++i)
+        in.arrays[std::size_t(i)] = &onePointInputs_[std::size_t(i)];
+    specialise(in);
+    onePoint_ = BatchJit::compileOnePoint(steps_, liveOut_, tape_.registerCount);
+    // A row of one double for every register (the inputs' in the point's
+    // copy) and the three scratch rows runBatchStep's callers pass (unread
+    // by one-point code, which calls the scalar operations).
+    const std::size_t regs = std::size_t(tape_.registerCount);
+    oneRows_.assign(regs + 3, 0.0);
+    oneBase_.resize(regs + 3);
+    for (std::size_t r = 0; r < regs + 3; ++r)
+        oneBase_[r] = r < std::size_t(kInputCount) ? &onePointInputs_[r] : &oneRows_[r];
+    return onePoint_ != nullptr;
+}
+
+void BatchEvaluator::evaluateOne(const Point& p, double* outputs, std::size_t count) {
+    onePointInputs_ = p;
+    onePoint_->runOne(oneBase_.data());
+    for (std::size_t k = 0; k < count && k < tape_.outputs.size(); ++k) {
+        const Operand& o = tape_.outputs[k].value;
+        outputs[k] = o.isConst()         ? o.value
+                     : isUniform_[o.reg] ? uniformValue_[o.reg]
+                                         : oneBase_[std::size_t(o.reg)][0];
+    }
+}
+
 void BatchEvaluator::evaluate(const BatchInputs& in, std::size_t n, double* const* outputs) {
+    if (!workspace_) makeWorkspace();
     specialise(in);
     const std::size_t regs = static_cast<std::size_t>(tape_.registerCount);
     // The registers' rows, then the three scratch rows (the JIT passes them on

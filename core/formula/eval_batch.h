@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -56,6 +57,16 @@ class BatchEvaluator {
         evaluate(in, n, outs);
     }
 
+    // One point a call, as machine code (ScalarEvaluator's fast path):
+    // prepareOne specialises the tape with every input varying (a new t
+    // costs nothing) and the current parameters folded, and compiles it for
+    // one point (BatchJit::compileOnePoint) — false where no code can be
+    // made (the caller interprets); again after the parameters change.
+    // evaluateOne then writes the first `count` outputs at p: the scalar
+    // evaluator's bits.
+    bool prepareOne();
+    void evaluateOne(const Point& p, double* outputs, std::size_t count);
+
     // Passes over each block for the last evaluate() (after uniform folding
     // and fusion): what the loops really run, for tests and benchmarks.
     std::size_t passesPerBlock() const { return steps_.size(); }
@@ -83,6 +94,14 @@ class BatchEvaluator {
     std::shared_ptr<const BatchJit> jit_; // the steps as machine code, when it can be made
     double jitCompileUs_ = 0;             // what making it took (the last specialisation)
     std::vector<double*> tailBase_;       // the rows from the point the JIT stopped at
+    std::vector<char> liveOut_;           // per register: an output the steps compute
+    // evaluateOne's code, its rows (one double each: the inputs' in
+    // onePointInputs_, where each call copies its point) and its outputs.
+    std::shared_ptr<const BatchJit> onePoint_;
+    std::vector<double*> oneBase_;
+    std::vector<double> oneRows_;
+    Point onePointInputs_{};
+    void makeWorkspace();
 
     void specialise(const BatchInputs& in);
     void runBlock(double* const* base, std::size_t n);

@@ -1,5 +1,6 @@
 #include "eval_scalar.h"
 
+#include "eval_batch.h"
 #include "scalar_ops.h"
 #include "tape_walk.h"
 
@@ -8,6 +9,10 @@ namespace fl::formula {
 ParameterValues::ParameterValues(const Tape& tape) : tape_(&tape) {
     for (const ParameterInfo& p : tape.params)
         values_.push_back(p.defaultValue);
+}
+
+void ParameterValues::rebind(const Tape& tape) {
+    tape_ = &tape;
 }
 
 bool ParameterValues::set(std::string_view name, double value) {
@@ -32,8 +37,48 @@ struct ScalarDomain {
 };
 } // namespace
 
-ScalarEvaluator::ScalarEvaluator(const Tape& tape)
-    : tape_(tape), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount), 0.0) {}
+ScalarEvaluator::ScalarEvaluator(const Tape& tape, ScalarCode code)
+    : tape_(tape), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount), 0.0),
+      code_(code) {}
+
+ScalarEvaluator::~ScalarEvaluator() = default;
+// (The parameters name their tape: the copy's, not the one copied from.)
+ScalarEvaluator::ScalarEvaluator(const ScalarEvaluator& other)
+    : tape_(other.tape_), params_(other.params_), regs_(other.regs_), code_(other.code_) {
+    params_.rebind(tape_);
+}
+ScalarEvaluator::ScalarEvaluator(ScalarEvaluator&& other) noexcept
+    : tape_(other.tape_), params_(std::move(other.params_)), regs_(std::move(other.regs_)),
+      code_(other.code_), calls_(other.calls_), compiledLast_(other.compiledLast_),
+      compiled_(std::move(other.compiled_)), compiledParams_(std::move(other.compiledParams_)),
+      prepared_(other.prepared_), noCode_(other.noCode_) {
+    params_.rebind(tape_);
+}
+
+// The point as machine code, where it can be: from the warm-up on, made
+// again where the parameters changed (specialisation folds them in).
+bool ScalarEvaluator::runCompiled(const Point& p, double* outputs, std::size_t count) {
+    if (code_ == ScalarCode::Interpreted) return false;
+    if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
+        ++calls_;
+        return false;
+    }
+    const std::vector<double>& pv = params_.values();
+    if (!compiled_) {
+        if (!BatchJit::available()) return false;
+        compiled_ = std::make_unique<BatchEvaluator>(tape_, false); // no batch code
+    }
+    if (!prepared_ || compiledParams_ != pv) {
+        prepared_ = true;
+        compiledParams_ = pv;
+        for (std::size_t i = 0; i < pv.size(); ++i)
+            compiled_->parameters().set(tape_.params[i].name, pv[i]);
+        noCode_ = !compiled_->prepareOne();
+    }
+    if (noCode_) return false;
+    compiled_->evaluateOne(p, outputs, count);
+    return true;
+}
 
 void ScalarEvaluator::run(const Point& p) {
     double* r = regs_.data();
@@ -46,11 +91,17 @@ void ScalarEvaluator::run(const Point& p) {
 }
 
 double ScalarEvaluator::evaluate(const Point& p) {
+    if (tape_.outputs.empty()) return 0.0;
+    double out = 0.0;
+    compiledLast_ = runCompiled(p, &out, 1);
+    if (compiledLast_) return out;
     run(p);
-    return tape_.outputs.empty() ? 0.0 : tapeOutput<ScalarDomain>(tape_, regs_.data(), 0);
+    return tapeOutput<ScalarDomain>(tape_, regs_.data(), 0);
 }
 
 void ScalarEvaluator::evaluateAll(const Point& p, double* outputs) {
+    compiledLast_ = runCompiled(p, outputs, tape_.outputs.size());
+    if (compiledLast_) return;
     run(p);
     for (std::size_t i = 0; i < tape_.outputs.size(); ++i)
         outputs[i] = tapeOutput<ScalarDomain>(tape_, regs_.data(), i);

@@ -4,6 +4,7 @@
 #include "tape.h"
 
 #include <array>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -21,6 +22,7 @@ class ParameterValues {
   public:
     explicit ParameterValues(const Tape& tape);
     bool set(std::string_view name, double value); // false when the tape has no such parameter
+    void rebind(const Tape& tape);                 // the same tape's copy (an evaluator's copy)
     const std::vector<double>& values() const { return values_; }
 
   private:
@@ -28,22 +30,48 @@ class ParameterValues {
     std::vector<double> values_;
 };
 
+class BatchEvaluator;
+
+// How a ScalarEvaluator runs its tape: interpreted always (the reference), or
+// as machine code (BatchEvaluator::evaluateOne, the same bits) once it has
+// been asked for kScalarWarmUp points — an evaluator asked for a few points
+// never pays for compiling — or from the first point (tests, benchmarks).
+// Where no code can be made (no AVX2, FUNCTIONLAB_NO_JIT=1) it interprets.
+enum class ScalarCode { Interpreted, AfterWarmUp, Compiled };
+inline constexpr unsigned kScalarWarmUp = 256;
+
 class ScalarEvaluator {
   public:
-    explicit ScalarEvaluator(const Tape& tape);
+    explicit ScalarEvaluator(const Tape& tape, ScalarCode code = ScalarCode::AfterWarmUp);
+    ~ScalarEvaluator();
+    // A copy starts interpreted again (its warm-up counted anew); a move
+    // takes the code along.
+    ScalarEvaluator(const ScalarEvaluator& other);
+    ScalarEvaluator(ScalarEvaluator&&) noexcept;
+    ScalarEvaluator& operator=(const ScalarEvaluator&) = delete;
 
     ParameterValues& parameters() { return params_; }
 
     double evaluate(const Point& p);                   // the first output
     void evaluateAll(const Point& p, double* outputs); // every output, in tape order
-    // Registers after the last evaluation (for diagnostics: which step went non-finite).
-    const std::vector<double>& registers() const { return regs_; }
+    // Whether the last evaluation ran as machine code.
+    bool compiledLast() const { return compiledLast_; }
 
   private:
     const Tape tape_; // a copy: evaluators never dangle when a CompileResult goes away
     ParameterValues params_;
     std::vector<double> regs_;
+    ScalarCode code_;
+    unsigned calls_ = 0;
+    bool compiledLast_ = false;
+    // The machine code's evaluator (made at the warm-up), its parameters
+    // kept equal to params_, and whether it could make code for them.
+    std::unique_ptr<BatchEvaluator> compiled_;
+    std::vector<double> compiledParams_;
+    bool prepared_ = false; // compiled_ specialised for compiledParams_
+    bool noCode_ = false;
     void run(const Point& p);
+    bool runCompiled(const Point& p, double* outputs, std::size_t count);
 };
 
 } // namespace fl::formula

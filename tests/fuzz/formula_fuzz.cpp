@@ -89,8 +89,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Tape& tape = *r.tape;
     (void)tape.disassemble();
 
-    ScalarEvaluator scalar(tape);
-    BatchJit::setCallsAllowed(true); // the compiled calls are judged too
+    ScalarEvaluator scalar(tape, ScalarCode::Interpreted);  // the reference
+    BatchJit::setCallsAllowed(true);                        // the compiled calls are judged too
+    ScalarEvaluator scalarCode(tape, ScalarCode::Compiled); // one point a call, as machine code
     BatchEvaluator batch(tape);
     IntervalEvaluator interval(tape);
     GradientEvaluator gradient(tape);
@@ -131,10 +132,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)interval.evaluate(box, keep);
     const Tape simplified = simplifyTape(tape, keep);
     ScalarEvaluator simple(simplified);
-    std::vector<double> simpleOut(outs);
+    std::vector<double> simpleOut(outs), codeOut(outs);
     for (int i = 0; i < 5; ++i) {
         scalar.evaluateAll(points[i], scalarOut.data());
         simple.evaluateAll(points[i], simpleOut.data());
+        scalarCode.evaluateAll(points[i], codeOut.data());
+        for (std::size_t o = 0; o < outs; ++o)
+            if (std::bit_cast<std::uint64_t>(codeOut[o]) !=
+                    std::bit_cast<std::uint64_t>(scalarOut[o]) &&
+                !(std::isnan(codeOut[o]) && std::isnan(scalarOut[o]))) {
+                std::fprintf(stderr, "scalar machine code %.17g != interpreted %.17g (point %d)\n",
+                             codeOut[o], scalarOut[o], i);
+                std::abort();
+            }
         for (std::size_t o = 0; o < outs; ++o)
             if (std::bit_cast<std::uint64_t>(simpleOut[o]) !=
                     std::bit_cast<std::uint64_t>(scalarOut[o]) &&

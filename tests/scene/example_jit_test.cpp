@@ -4,6 +4,7 @@
 // of points, at several moments, through block tails.
 #include "formula/batch_jit.h"
 #include "formula/eval_batch.h"
+#include "formula/eval_scalar.h"
 #include "scene/scene_reader.h"
 
 #include <gtest/gtest.h>
@@ -97,6 +98,52 @@ TEST(ExampleFormulas, CompiledAndInterpretedAgreeBitForBit) {
     EXPECT_EQ(compiled, varying);
     std::printf("%d of %d example definitions ran compiled (%d with work left)\n", compiled,
                 definitions, varying);
+}
+
+// The same for one point a call: the scalar evaluator's machine code
+// (BatchEvaluator's one-point code) against its interpreter, every output.
+TEST(ExampleFormulas, OnePointAtATimeCompiledAndInterpretedAgreeBitForBit) {
+    if (!formula::BatchJit::available()) GTEST_SKIP() << "no JIT on this machine";
+    const int side = 7;
+    int definitions = 0, compiled = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(FUNCTIONLAB_EXAMPLES_DIR)) {
+        if (entry.path().extension() != ".x3d") continue;
+        ReadResult r = readSceneFile(entry.path().string());
+        ASSERT_TRUE(r.ok()) << entry.path();
+        for (const CompiledDefinition& d : r.scene->definitions) {
+            if (!d.tape) continue;
+            ++definitions;
+            formula::ScalarEvaluator a(*d.tape, formula::ScalarCode::Compiled);
+            formula::ScalarEvaluator b(*d.tape, formula::ScalarCode::Interpreted);
+            const std::size_t outputs = d.tape->outputs.size();
+            std::vector<double> va(outputs), vb(outputs);
+            bool ran = true;
+            for (const double t : {0.0, 0.37, 2.5})
+                for (int i = 0; i < side * side * side; ++i) {
+                    formula::Point p{};
+                    for (int k = 0; k < 3; ++k) {
+                        const int c = k == 0   ? i % side
+                                      : k == 1 ? i / side % side
+                                               : i / side / side;
+                        p[std::size_t(k)] = -1.6 + 3.2 * c / (side - 1);
+                        p[std::size_t(4 + k)] = 0.5 + 0.5 * std::sin(3.0 * p[std::size_t(k)] + k);
+                    }
+                    p[3] = t;
+                    a.evaluateAll(p, va.data());
+                    b.evaluateAll(p, vb.data());
+                    ran = ran && a.compiledLast();
+                    for (std::size_t k = 0; k < outputs; ++k)
+                        ASSERT_TRUE(sameBits(va[k], vb[k]))
+                            << r.scene->locationOf(*d.node) << " " << d.field << " output " << k
+                            << " at point " << i << " t = " << t << ": compiled " << va[k]
+                            << ", interpreted " << vb[k];
+                }
+            compiled += ran ? 1 : 0;
+        }
+    }
+    EXPECT_GE(definitions, 20);
+    std::printf("%d of %d example definitions ran one point at a time as machine code\n", compiled,
+                definitions);
 }
 
 } // namespace

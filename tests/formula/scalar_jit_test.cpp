@@ -1,0 +1,205 @@
+// The scalar evaluator as machine code (issue 31 §1: BatchEvaluator's one-point
+// code) against its interpreter: every operation the JIT writes or calls, on
+// the values where semantics bite (±0, ±inf, NaN, subnormals, huge and tiny),
+// random formulas deep enough to spill, every output of a script, and the
+// parameters changing under it must give the interpreter's bits exactly. An
+// evaluator asked for a few points stays interpreted (it never pays for
+// compiling); FUNCTIONLAB_NO_JIT's switch leaves every one interpreted.
+// Skipped where the CPU has no AVX2.
+#include "formula/batch_jit.h"
+#include "formula/compiler.h"
+#include "formula/eval_scalar.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace fl::formula {
+namespace {
+
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
+}
+
+const std::vector<double>& specials() {
+    static const std::vector<double> v = {0.0,
+                                          -0.0,
+                                          1.0,
+                                          -1.0,
+                                          0.5,
+                                          -2.5,
+                                          3.0,
+                                          7.25,
+                                          1e300,
+                                          -1e300,
+                                          1e-310,
+                                          -1e-310,
+                                          std::numeric_limits<double>::infinity(),
+                                          -std::numeric_limits<double>::infinity(),
+                                          std::numeric_limits<double>::quiet_NaN(),
+                                          1e-20,
+                                          -0.75};
+    return v;
+}
+
+class ScalarJitTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        if (!BatchJit::available()) GTEST_SKIP() << "no AVX2 here (or FUNCTIONLAB_NO_JIT)";
+    }
+};
+
+// Both ways at every pair of special values (z a mix, t and u v w set):
+// true when the compiled one ran as machine code.
+bool agreeOnSpecials(const std::string& src) {
+    CompileResult r = compile(src);
+    EXPECT_TRUE(r.ok()) << src;
+    if (!r.ok()) return false;
+    ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+    ScalarEvaluator interpreted(*r.tape, ScalarCode::Interpreted);
+    bool ran = true;
+    for (double a : specials())
+        for (double b : specials()) {
+            const Point p{a, b, a * 0.5 - b, 0.25, 0.1, -0.2, 0.3};
+            const double x = compiled.evaluate(p), y = interpreted.evaluate(p);
+            ran = ran && compiled.compiledLast();
+            EXPECT_FALSE(interpreted.compiledLast());
+            if (!sameBits(x, y)) {
+                ADD_FAILURE() << src << " at x=" << a << " y=" << b << ": compiled " << x
+                              << ", interpreted " << y;
+                return ran;
+            }
+        }
+    return ran;
+}
+
+TEST_F(ScalarJitTest, EveryOperationGivesTheInterpretersBits) {
+    const char* sources[] = {
+        "x + y", "x - y", "x * y", "x / y", "min(x, y)", "max(x, y)", "-x + y", "abs(x) + y",
+        "sqrt(x) + y", "floor(x) + y", "ceil(x) + y", "sign(x) + y", "x^2 + y", "x^3 + y",
+        "x^4 + y", "x^5 + y", "x^-1 + y", "x^-2 + y", "x^-3 + y", "x^0 + y", "(x < y) + z",
+        "(x <= y) + z", "(x > y) + z", "(x >= y) + z", "(x == y) + z", "(x != y) + z",
+        "(x && y) + z", "(x || y) + z", "!x + y", "x ? y : z", "x ? 2 : z", "x ? y : 3", "x & y",
+        "x | y", "x \\ y", "min(x, min(y, min(z, x * y)))", "max(max(x, -y), max(-z, y))",
+        "1 - x^2 - y^2 - z^2", "(x - 1)^2 + (y + 2)^2 - z", "x*x + y*y + z*z - 0.5",
+        "2 - (x - y)^2",
+        // called: the scalar evaluator's own operation, between compiled code
+        "sin(x) + y", "cos(x) * y", "exp(x) - y", "log(x) + y", "tan(x) + y", "atan(x) + y",
+        "pow(x, y)", "atan2(x, y)", "pow(x, 2.5) + y", "atan2(1.5, y) + x", "cbrt(x) + y",
+        "tanh(x) + sinh(y)", "hypot(x, y) - z", "x - mod(y, 3) * z", "round(x * 3) + y",
+        "noise(x, y, z) * 2 + x", "sin(x) * cos(y) + sin(y) * cos(x)",
+        "sin(4*x)*cos(4*y) + sin(4*y)*cos(4*z) + sin(4*z)*cos(4*x)", "x + t * u - v / w",
+        "x * y + sin(x * y) * (x - y) + cos(x + y) * x * y"};
+    int ran = 0;
+    for (const char* src : sources)
+        ran += agreeOnSpecials(src) ? 1 : 0;
+    EXPECT_EQ(ran, int(std::size(sources))); // every one ran as machine code
+}
+
+TEST_F(ScalarJitTest, RandomFormulasThatSpillGiveTheInterpretersBits) {
+    // Sums of products of many values live at once: more than the sixteen
+    // vector registers hold, so values go to their rows and come back.
+    std::mt19937_64 rng(311);
+    std::uniform_real_distribution<double> v(-3, 3);
+    static const char* leaves[] = {"x", "y", "z", "t", "0.5", "-1.25", "3"};
+    static const char* ops[] = {" + ", " - ", " * ", " / "};
+    for (int i = 0; i < 200; ++i) {
+        std::string src;
+        const int terms = 2 + i % 24;
+        for (int k = 0; k < terms; ++k) {
+            std::string term =
+                "(" + std::string(leaves[rng() % 7]) + ops[rng() % 4] + leaves[rng() % 7] + ")";
+            if (k % 5 == 4) term = "sin(" + term + ")";
+            if (k % 7 == 6) term = "min(" + term + ", " + leaves[rng() % 7] + ")";
+            src += (k ? ops[rng() % 3] : "") + term;
+        }
+        CompileResult r = compile(src);
+        ASSERT_TRUE(r.ok()) << src;
+        ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+        ScalarEvaluator interpreted(*r.tape, ScalarCode::Interpreted);
+        for (int k = 0; k < 20; ++k) {
+            const Point p{v(rng), v(rng), k % 5 ? v(rng) : -0.0, 0.7, 0, 0, 0};
+            const double a = compiled.evaluate(p), b = interpreted.evaluate(p);
+            ASSERT_TRUE(sameBits(a, b))
+                << src << ": compiled " << a << ", interpreted " << b << " at " << k;
+        }
+    }
+}
+
+TEST_F(ScalarJitTest, SixteenValuesLiveAtOnceSpillAndComeBack) {
+    // Sixteen values made before any is used: more than the eleven vector
+    // registers that hold values, so some go to their rows and come back.
+    std::string src;
+    for (int i = 1; i <= 16; ++i)
+        src += "a" + std::to_string(i) + " = x * " + std::to_string(1 + i / 16.0) + " + y * z; ";
+    src += "return a1";
+    for (int i = 2; i <= 16; ++i)
+        src += (i % 3 ? " + a" : " * sin(a") + std::to_string(18 - i) + (i % 3 ? "" : ")");
+    src += ";";
+    CompileResult r = compile(src);
+    ASSERT_TRUE(r.ok()) << src;
+    ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+    ScalarEvaluator interpreted(*r.tape, ScalarCode::Interpreted);
+    for (double a : specials())
+        for (double b : {0.5, -3.0, 1e-310}) {
+            const Point p{a, b, 1.5 - a, 0, 0, 0, 0};
+            const double x = compiled.evaluate(p), y = interpreted.evaluate(p);
+            ASSERT_TRUE(compiled.compiledLast());
+            ASSERT_TRUE(sameBits(x, y)) << "x=" << a << " y=" << b << ": " << x << " vs " << y;
+        }
+}
+
+TEST_F(ScalarJitTest, EveryOutputOfAScriptAndNewParametersGiveTheInterpretersBits) {
+    CompileOptions options;
+    options.kind = DefinitionKind::Colour;
+    CompileResult r =
+        compile("param k = 2; r = sin(k * x) * y; g = max(r, z * k); b = 0.5;", options);
+    ASSERT_TRUE(r.ok());
+    ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+    ScalarEvaluator interpreted(*r.tape, ScalarCode::Interpreted);
+    const std::size_t n = r.tape->outputs.size();
+    ASSERT_EQ(n, 3u);
+    for (double k : {2.0, -1.5, 2.0, 0.0}) {
+        ASSERT_TRUE(compiled.parameters().set("k", k));
+        ASSERT_TRUE(interpreted.parameters().set("k", k));
+        for (double x : {-1.0, 0.25, 3.5}) {
+            const Point p = pointXYZ(x, 0.5 * x, 1 - x, 0.1);
+            std::vector<double> a(n), b(n);
+            compiled.evaluateAll(p, a.data());
+            interpreted.evaluateAll(p, b.data());
+            EXPECT_TRUE(compiled.compiledLast());
+            for (std::size_t o = 0; o < n; ++o)
+                EXPECT_TRUE(sameBits(a[o], b[o])) << "k = " << k << " x = " << x << " output " << o
+                                                  << ": " << a[o] << " vs " << b[o];
+        }
+    }
+}
+
+TEST_F(ScalarJitTest, AFewPointsStayInterpretedAndTheSwitchTurnsItOff) {
+    CompileResult r = compile("1 - x^2 - y^2 - z^2");
+    ASSERT_TRUE(r.ok());
+    ScalarEvaluator e(*r.tape); // after its warm-up
+    for (unsigned i = 0; i < kScalarWarmUp; ++i) {
+        e.evaluate(pointXYZ(0.1 * i, 0, 0));
+        ASSERT_FALSE(e.compiledLast()) << i;
+    }
+    e.evaluate(pointXYZ(0.5, 0, 0));
+    EXPECT_TRUE(e.compiledLast());
+    ScalarEvaluator copy(e); // a copy warms up anew
+    copy.evaluate(pointXYZ(0.5, 0, 0));
+    EXPECT_FALSE(copy.compiledLast());
+    BatchJit::setAllowed(false);
+    ScalarEvaluator off(*r.tape, ScalarCode::Compiled);
+    EXPECT_EQ(off.evaluate(pointXYZ(0.5, 0, 0)), 0.75);
+    EXPECT_FALSE(off.compiledLast());
+    BatchJit::setAllowed(true);
+}
+
+} // namespace
+} // namespace fl::formula
