@@ -13,6 +13,7 @@ using formula::Severity;
 struct FilePos {
     int line = 0; // 0: the file as a whole
     int column = 0;
+    bool operator==(const FilePos&) const = default; // (DiagnosticFix's == compares it)
 };
 
 // A change of the text that mends what a diagnostic says, for an editor to

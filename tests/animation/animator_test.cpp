@@ -22,8 +22,6 @@ using fl::scene::Scene;
 
 namespace {
 
-constexpr std::int64_t kSecond = kNanosecondsPerSecond;
-
 std::unique_ptr<Scene> load(const std::string& body) {
     auto r = fl::scene::readSceneBytes("#X3D V3.3 utf8\nPROFILE Full\n" + body, "anim.x3dv");
     for (const auto& d : r.diagnostics)
