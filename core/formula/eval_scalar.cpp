@@ -4,6 +4,8 @@
 #include "scalar_ops.h"
 #include "tape_walk.h"
 
+#include <cstring>
+
 namespace fl::formula {
 
 ParameterValues::ParameterValues(const Tape& tape) : tape_(&tape) {
@@ -13,6 +15,10 @@ ParameterValues::ParameterValues(const Tape& tape) : tape_(&tape) {
 
 void ParameterValues::rebind(const Tape& tape) {
     tape_ = &tape;
+}
+
+void ParameterValues::assign(const std::vector<double>& values) {
+    if (values.size() == values_.size()) values_ = values;
 }
 
 bool ParameterValues::set(std::string_view name, double value) {
@@ -53,26 +59,31 @@ ScalarEvaluator::ScalarEvaluator(ScalarEvaluator&& other) noexcept
       compiled_(std::move(other.compiled_)), compiledParams_(std::move(other.compiledParams_)),
       prepared_(other.prepared_), noCode_(other.noCode_) {
     params_.rebind(tape_);
+    other.prepared_ = false; // its code went with the move: made again if it is used
 }
 
-// The point as machine code, where it can be: from the warm-up on, made
-// again where the parameters changed (specialisation folds them in).
+// The point as machine code, where it can be: after kScalarWarmUp points
+// with the same parameters (specialisation folds them in, so new values —
+// a slider moving — start the count again rather than compiling at each).
 bool ScalarEvaluator::runCompiled(const Point& p, double* outputs, std::size_t count) {
     if (code_ == ScalarCode::Interpreted) return false;
-    if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
-        ++calls_;
-        return false;
-    }
     const std::vector<double>& pv = params_.values();
-    if (!compiled_) {
-        if (!BatchJit::available()) return false;
-        compiled_ = std::make_unique<BatchEvaluator>(tape_, false); // no batch code
+    if (pv.size() != compiledParams_.size() ||
+        std::memcmp(pv.data(), compiledParams_.data(), pv.size() * sizeof(double)) != 0) {
+        compiledParams_ = pv; // by their bits: a NaN parameter is equal to itself here
+        prepared_ = false;
+        calls_ = 0;
     }
-    if (!prepared_ || compiledParams_ != pv) {
+    if (!prepared_) {
+        if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
+            ++calls_;
+            return false;
+        }
         prepared_ = true;
-        compiledParams_ = pv;
-        for (std::size_t i = 0; i < pv.size(); ++i)
-            compiled_->parameters().set(tape_.params[i].name, pv[i]);
+        noCode_ = !BatchJit::available();
+        if (noCode_) return false;
+        if (!compiled_) compiled_ = std::make_unique<BatchEvaluator>(tape_, false); // no batch code
+        compiled_->parameters().assign(pv);
         noCode_ = !compiled_->prepareOne();
     }
     if (noCode_) return false;

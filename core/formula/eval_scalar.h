@@ -21,8 +21,9 @@ inline Point pointXYZ(double x, double y, double z, double t = 0.0) {
 class ParameterValues {
   public:
     explicit ParameterValues(const Tape& tape);
-    bool set(std::string_view name, double value); // false when the tape has no such parameter
-    void rebind(const Tape& tape);                 // the same tape's copy (an evaluator's copy)
+    bool set(std::string_view name, double value);  // false when the tape has no such parameter
+    void rebind(const Tape& tape);                  // the same tape's copy (an evaluator's copy)
+    void assign(const std::vector<double>& values); // every value, in order (same count)
     const std::vector<double>& values() const { return values_; }
 
   private:
@@ -68,7 +69,7 @@ class ScalarEvaluator {
     // kept equal to params_, and whether it could make code for them.
     std::unique_ptr<BatchEvaluator> compiled_;
     std::vector<double> compiledParams_;
-    bool prepared_ = false; // compiled_ specialised for compiledParams_
+    bool prepared_ = false; // compiled_ specialised for compiledParams_ (or no code for them)
     bool noCode_ = false;
     void run(const Point& p);
     bool runCompiled(const Point& p, double* outputs, std::size_t count);

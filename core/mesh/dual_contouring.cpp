@@ -1344,7 +1344,13 @@ class Contourer {
             held[a] = (cq.faces >> (2 * a) & 3u) != 0;
             at[a] = (cq.faces >> (2 * a) & 1u) ? field_.box.lo[a] : field_.box.hi[a];
         }
-        const auto [lo, hi] = vertexRoom(base, cell, kFaceVertexRoom);
+        // (Within the box: the room of a cell by another face would
+        // reach past it.)
+        auto [lo, hi] = vertexRoom(base, cell, kFaceVertexRoom);
+        for (std::size_t a = 0; a < 3; ++a) {
+            lo[a] = std::max(lo[a], field_.box.lo[a]);
+            hi[a] = std::min(hi[a], field_.box.hi[a]);
+        }
         return cq.qef.solveOnPlanes(held, at, lo, hi, 0.1);
     }
 

@@ -41,8 +41,12 @@ void minimiseFree(const std::array<bool, 3>& held, Eigen::Vector3d& y, const Eig
             mff(i, j) = m(free[i], free[j]);
     }
     Eigen::SelfAdjointEigenSolver<Small> eig(mff);
-    const double scale = relativeToFree ? eig.eigenvalues().cwiseAbs().maxCoeff()
-                                        : std::max({m(0, 0), m(1, 1), m(2, 2)});
+    // (Relative to the free block, but never under solveInBox's floor: a
+    // surface nearly tangent to a held face leaves the block only noise,
+    // which its own scale would keep and invert.)
+    const double whole = std::max({m(0, 0), m(1, 1), m(2, 2)});
+    const double scale =
+        relativeToFree ? std::max(eig.eigenvalues().cwiseAbs().maxCoeff(), 0.01 * whole) : whole;
     SmallVector delta = SmallVector::Zero(nf);
     for (int k = 0; k < nf; ++k) {
         const double value = eig.eigenvalues()[k];
@@ -167,6 +171,9 @@ std::array<double, 3> Qef::solveOnPlanes(const std::array<bool, 3>& held,
     // decide what is kept, the held axes' planes (which the caller's face
     // crossings are, all of their weight on a held axis) set no scale.
     minimiseFree(held, y, m, r, c, relativeCutoff, true);
+    for (std::size_t a = 0; a < 3; ++a) // sums that overflowed: the mass point
+        if (!std::isfinite(y[Eigen::Index(a)]))
+            y[Eigen::Index(a)] = held[a] ? at[a] - origin_[a] : c[Eigen::Index(a)];
     return heldInBox(held, {y[0], y[1], y[2]}, lo, hi, relativeCutoff);
 }
 

@@ -194,6 +194,27 @@ TEST_F(ScalarJitTest, AFewPointsStayInterpretedAndTheSwitchTurnsItOff) {
     ScalarEvaluator copy(e); // a copy warms up anew
     copy.evaluate(pointXYZ(0.5, 0, 0));
     EXPECT_FALSE(copy.compiledLast());
+    // New parameter values (a slider moving) start the warm-up again
+    // rather than compiling at each; a NaN value is still the same value.
+    CompileResult withK = compile("param k = 1; k * x - y");
+    ASSERT_TRUE(withK.ok());
+    ScalarEvaluator slider(*withK.tape);
+    for (unsigned i = 0; i <= kScalarWarmUp; ++i)
+        slider.evaluate(pointXYZ(1, 0, 0));
+    EXPECT_TRUE(slider.compiledLast());
+    ASSERT_TRUE(slider.parameters().set("k", std::numeric_limits<double>::quiet_NaN()));
+    for (unsigned i = 0; i < kScalarWarmUp; ++i) {
+        EXPECT_TRUE(std::isnan(slider.evaluate(pointXYZ(1, 0, 0))));
+        ASSERT_FALSE(slider.compiledLast()) << i;
+    }
+    EXPECT_TRUE(std::isnan(slider.evaluate(pointXYZ(1, 0, 0))));
+    EXPECT_TRUE(slider.compiledLast());
+    EXPECT_TRUE(std::isnan(slider.evaluate(pointXYZ(1, 0, 0))));
+    EXPECT_TRUE(slider.compiledLast()); // not made again at each call
+    ScalarEvaluator moved(std::move(slider));
+    EXPECT_TRUE(std::isnan(moved.evaluate(pointXYZ(1, 0, 0))));
+    EXPECT_TRUE(moved.compiledLast());
+
     BatchJit::setAllowed(false);
     ScalarEvaluator off(*r.tape, ScalarCode::Compiled);
     EXPECT_EQ(off.evaluate(pointXYZ(0.5, 0, 0)), 0.75);
