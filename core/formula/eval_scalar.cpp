@@ -68,8 +68,11 @@ ScalarEvaluator::ScalarEvaluator(ScalarEvaluator&& other) noexcept
 bool ScalarEvaluator::runCompiled(const Point& p, double* outputs, std::size_t count) {
     if (code_ == ScalarCode::Interpreted) return false;
     const std::vector<double>& pv = params_.values();
+    // (memcmp of no bytes still wants pointers that are not null: an empty
+    // vector's may be.)
     if (pv.size() != compiledParams_.size() ||
-        std::memcmp(pv.data(), compiledParams_.data(), pv.size() * sizeof(double)) != 0) {
+        (!pv.empty() &&
+         std::memcmp(pv.data(), compiledParams_.data(), pv.size() * sizeof(double)) != 0)) {
         compiledParams_ = pv; // by their bits: a NaN parameter is equal to itself here
         prepared_ = false;
         calls_ = 0;

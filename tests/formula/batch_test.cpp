@@ -12,10 +12,7 @@
 namespace fl::formula {
 namespace {
 
-bool sameBits(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
-           (std::isnan(a) && std::isnan(b));
-}
+using testing::sameBits;
 
 void checkAgainstScalar(const std::string& src, std::mt19937_64& rng, std::size_t n,
                         bool uniformZ) {

@@ -10,6 +10,8 @@
 #include "formula/compiler.h"
 #include "formula/eval_scalar.h"
 
+#include "test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -22,30 +24,10 @@
 namespace fl::formula {
 namespace {
 
-bool sameBits(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
-           (std::isnan(a) && std::isnan(b));
-}
+using testing::sameBits;
 
 const std::vector<double>& specials() {
-    static const std::vector<double> v = {0.0,
-                                          -0.0,
-                                          1.0,
-                                          -1.0,
-                                          0.5,
-                                          -2.5,
-                                          3.0,
-                                          7.25,
-                                          1e300,
-                                          -1e300,
-                                          1e-310,
-                                          -1e-310,
-                                          std::numeric_limits<double>::infinity(),
-                                          -std::numeric_limits<double>::infinity(),
-                                          std::numeric_limits<double>::quiet_NaN(),
-                                          1e-20,
-                                          -0.75};
-    return v;
+    return testing::specialValues();
 }
 
 class ScalarJitTest : public ::testing::Test {

@@ -9,6 +9,8 @@
 #include "formula/tape_simplify.h"
 #include "random_formula.h"
 
+#include "test_helpers.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,10 +21,7 @@
 namespace fl::formula {
 namespace {
 
-bool sameBits(double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
-           (std::isnan(a) && std::isnan(b));
-}
+using testing::sameBits;
 
 Tape compiled(const std::string& src) {
     CompileResult r = compile(src);

@@ -4,7 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace fl::formula::testing {
 
@@ -29,6 +34,35 @@ inline Diagnostic firstError(const std::string& src,
     for (const Diagnostic& d : r.diagnostics)
         if (d.severity == Severity::Error) return d;
     return {};
+}
+
+// The same double, bit for bit, or both NaN (the payload is not specified).
+inline bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
+}
+
+// Values where an operation's semantics bite: signed zeros, infinities,
+// NaN, subnormals, huge and tiny, and a few plain ones.
+inline const std::vector<double>& specialValues() {
+    static const std::vector<double> v = {0.0,
+                                          -0.0,
+                                          1.0,
+                                          -1.0,
+                                          0.5,
+                                          -2.5,
+                                          3.0,
+                                          7.25,
+                                          1e300,
+                                          -1e300,
+                                          1e-310,
+                                          -1e-310,
+                                          std::numeric_limits<double>::infinity(),
+                                          -std::numeric_limits<double>::infinity(),
+                                          std::numeric_limits<double>::quiet_NaN(),
+                                          1e-20,
+                                          -0.75};
+    return v;
 }
 
 } // namespace fl::formula::testing

@@ -44,6 +44,19 @@ bool sameBits(double a, double b) {
            (std::isnan(a) && std::isnan(b));
 }
 
+// Every compiled definition of every example scene, with its scene (for
+// messages that say where it is).
+template <class Visit>
+void forEachExampleDefinition(Visit visit) {
+    for (const auto& entry : std::filesystem::directory_iterator(FUNCTIONLAB_EXAMPLES_DIR)) {
+        if (entry.path().extension() != ".x3d") continue;
+        ReadResult r = readSceneFile(entry.path().string());
+        ASSERT_TRUE(r.ok()) << entry.path();
+        for (const CompiledDefinition& d : r.scene->definitions)
+            if (d.tape) visit(*r.scene, d);
+    }
+}
+
 TEST(ExampleFormulas, CompiledAndInterpretedAgreeBitForBit) {
     if (!formula::BatchJit::available()) GTEST_SKIP() << "no JIT on this machine";
     // 11^3 points over a box larger than any example's, plus u v w.
@@ -62,36 +75,30 @@ TEST(ExampleFormulas, CompiledAndInterpretedAgreeBitForBit) {
         }
     }
     int definitions = 0, varying = 0, compiled = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(FUNCTIONLAB_EXAMPLES_DIR)) {
-        if (entry.path().extension() != ".x3d") continue;
-        ReadResult r = readSceneFile(entry.path().string());
-        ASSERT_TRUE(r.ok()) << entry.path();
-        for (const CompiledDefinition& d : r.scene->definitions) {
-            if (!d.tape) continue;
-            for (const double t : {0.0, 0.37, 2.5}) {
-                formula::BatchInputs in;
-                for (int k = 0; k < 3; ++k) {
-                    in.set(formula::Input(k), c[k].data());
-                    in.set(formula::Input(int(formula::Input::U) + k), c[3 + k].data());
-                }
-                in.set(formula::Input::T, t);
-                const Outputs a = evaluate(*d.tape, true, in, n);
-                const Outputs b = evaluate(*d.tape, false, in, n);
-                ASSERT_FALSE(b.compiled);
-                if (t == 0.0) {
-                    ++definitions;
-                    varying += a.passes > 0 ? 1 : 0;
-                    compiled += a.compiled ? 1 : 0;
-                }
-                for (std::size_t k = 0; k < a.values.size(); ++k)
-                    for (std::size_t i = 0; i < n; ++i)
-                        ASSERT_TRUE(sameBits(a.values[k][i], b.values[k][i]))
-                            << r.scene->locationOf(*d.node) << " " << d.field << " output " << k
-                            << " at point " << i << " t = " << t << ": compiled " << a.values[k][i]
-                            << ", interpreted " << b.values[k][i];
+    forEachExampleDefinition([&](const Scene& scene, const CompiledDefinition& d) {
+        for (const double t : {0.0, 0.37, 2.5}) {
+            formula::BatchInputs in;
+            for (int k = 0; k < 3; ++k) {
+                in.set(formula::Input(k), c[k].data());
+                in.set(formula::Input(int(formula::Input::U) + k), c[3 + k].data());
             }
+            in.set(formula::Input::T, t);
+            const Outputs a = evaluate(*d.tape, true, in, n);
+            const Outputs b = evaluate(*d.tape, false, in, n);
+            ASSERT_FALSE(b.compiled);
+            if (t == 0.0) {
+                ++definitions;
+                varying += a.passes > 0 ? 1 : 0;
+                compiled += a.compiled ? 1 : 0;
+            }
+            for (std::size_t k = 0; k < a.values.size(); ++k)
+                for (std::size_t i = 0; i < n; ++i)
+                    ASSERT_TRUE(sameBits(a.values[k][i], b.values[k][i]))
+                        << scene.locationOf(*d.node) << " " << d.field << " output " << k
+                        << " at point " << i << " t = " << t << ": compiled " << a.values[k][i]
+                        << ", interpreted " << b.values[k][i];
         }
-    }
+    });
     EXPECT_GE(definitions, 20);
     // Every one with work left after folding t and the constants runs
     // compiled (a definition of t alone, or a constant, folds to one value).
@@ -106,41 +113,33 @@ TEST(ExampleFormulas, OnePointAtATimeCompiledAndInterpretedAgreeBitForBit) {
     if (!formula::BatchJit::available()) GTEST_SKIP() << "no JIT on this machine";
     const int side = 7;
     int definitions = 0, compiled = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(FUNCTIONLAB_EXAMPLES_DIR)) {
-        if (entry.path().extension() != ".x3d") continue;
-        ReadResult r = readSceneFile(entry.path().string());
-        ASSERT_TRUE(r.ok()) << entry.path();
-        for (const CompiledDefinition& d : r.scene->definitions) {
-            if (!d.tape) continue;
-            ++definitions;
-            formula::ScalarEvaluator a(*d.tape, formula::ScalarCode::Compiled);
-            formula::ScalarEvaluator b(*d.tape, formula::ScalarCode::Interpreted);
-            const std::size_t outputs = d.tape->outputs.size();
-            std::vector<double> va(outputs), vb(outputs);
-            bool ran = true;
-            for (const double t : {0.0, 0.37, 2.5})
-                for (int i = 0; i < side * side * side; ++i) {
-                    formula::Point p{};
-                    for (int k = 0; k < 3; ++k) {
-                        const int c = k == 0   ? i % side
-                                      : k == 1 ? i / side % side
-                                               : i / side / side;
-                        p[std::size_t(k)] = -1.6 + 3.2 * c / (side - 1);
-                        p[std::size_t(4 + k)] = 0.5 + 0.5 * std::sin(3.0 * p[std::size_t(k)] + k);
-                    }
-                    p[3] = t;
-                    a.evaluateAll(p, va.data());
-                    b.evaluateAll(p, vb.data());
-                    ran = ran && a.compiledLast();
-                    for (std::size_t k = 0; k < outputs; ++k)
-                        ASSERT_TRUE(sameBits(va[k], vb[k]))
-                            << r.scene->locationOf(*d.node) << " " << d.field << " output " << k
-                            << " at point " << i << " t = " << t << ": compiled " << va[k]
-                            << ", interpreted " << vb[k];
+    forEachExampleDefinition([&](const Scene& scene, const CompiledDefinition& d) {
+        ++definitions;
+        formula::ScalarEvaluator a(*d.tape, formula::ScalarCode::Compiled);
+        formula::ScalarEvaluator b(*d.tape, formula::ScalarCode::Interpreted);
+        const std::size_t outputs = d.tape->outputs.size();
+        std::vector<double> va(outputs), vb(outputs);
+        bool ran = true;
+        for (const double t : {0.0, 0.37, 2.5})
+            for (int i = 0; i < side * side * side; ++i) {
+                formula::Point p{};
+                for (int k = 0; k < 3; ++k) {
+                    const int c = k == 0 ? i % side : k == 1 ? i / side % side : i / side / side;
+                    p[std::size_t(k)] = -1.6 + 3.2 * c / (side - 1);
+                    p[std::size_t(4 + k)] = 0.5 + 0.5 * std::sin(3.0 * p[std::size_t(k)] + k);
                 }
-            compiled += ran ? 1 : 0;
-        }
-    }
+                p[3] = t;
+                a.evaluateAll(p, va.data());
+                b.evaluateAll(p, vb.data());
+                ran = ran && a.compiledLast();
+                for (std::size_t k = 0; k < outputs; ++k)
+                    ASSERT_TRUE(sameBits(va[k], vb[k]))
+                        << scene.locationOf(*d.node) << " " << d.field << " output " << k
+                        << " at point " << i << " t = " << t << ": compiled " << va[k]
+                        << ", interpreted " << vb[k];
+            }
+        compiled += ran ? 1 : 0;
+    });
     EXPECT_GE(definitions, 20);
     std::printf("%d of %d example definitions ran one point at a time as machine code\n", compiled,
                 definitions);
