@@ -350,19 +350,14 @@ class Emitter : public CodeGenerator {
     // (One point: the scalar evaluator's operation, runOneStep.)
     void emitCall(const BatchStep& s) {
         streams_ = false;
-        if (onePoint_) {
-            mov(rdi, reinterpret_cast<std::uint64_t>(&s));
-            mov(rsi, r12);
-            mov(rax, reinterpret_cast<std::uint64_t>(&runOneStep));
-            vzeroupper();
-            call(rax);
-            return;
-        }
         mov(rdi, reinterpret_cast<std::uint64_t>(&s));
         mov(rsi, r12);
-        mov(rdx, r13);
-        mov(rcx, r15);
-        mov(rax, reinterpret_cast<std::uint64_t>(&runBatchStep));
+        if (!onePoint_) {
+            mov(rdx, r13);
+            mov(rcx, r15);
+        }
+        mov(rax, onePoint_ ? reinterpret_cast<std::uint64_t>(&runOneStep)
+                           : reinterpret_cast<std::uint64_t>(&runBatchStep));
         vzeroupper();
         call(rax);
     }
@@ -641,14 +636,12 @@ class Emitter : public CodeGenerator {
         push(r15);
         sub(rsp, 8); // 16-byte aligned for calls
         mov(r12, rdi);
-        // the interpreter's three scratch rows follow the registers' (runBatchStep)
+        // the interpreter's three scratch rows follow the registers' (runBatchStep;
+        // one-point code has none and never reads r15)
         lea(r15, ptr[r12 + int(where_.size() * sizeof(double*))]);
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
-        if (onePoint_)
-            mov(r13, 1); // runBatchStep's count
-        else
-            and_(r13, ~7u); // sign-extended: whole groups of 8 points
+        if (!onePoint_) and_(r13, ~7u); // sign-extended: whole groups of 8 points
         // Runs of steps between calls are each one loop over the points; a
         // call runs once over all of them. What a run leaves for a later one
         // (or the caller) goes to its row at the run's end.
@@ -712,10 +705,11 @@ namespace {
 // The steps as text that identifies them exactly: every field compile()
 // reads, numbers by their bits (the cache's key).
 std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
-                  std::int32_t registerCount) {
+                  std::int32_t registerCount, bool onePoint) {
     std::string key;
-    key.reserve(96 * steps.size() + liveOut.size() + 8);
+    key.reserve(96 * steps.size() + liveOut.size() + 9);
     auto put = [&key](const auto& v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
+    put(onePoint);
     put(registerCount);
     key.append(liveOut.begin(), liveOut.end());
     for (const BatchStep& s : steps) {
@@ -767,8 +761,7 @@ std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& ste
         if (!compiles(s)) return nullptr;
     // (Whether calls are allowed is not in the key: a tape it would have to
     // call for is refused above, and the others' code does not depend on it.)
-    std::string key(1, onePoint ? '1' : '8');
-    key += keyOf(steps, liveOut, registerCount);
+    std::string key = keyOf(steps, liveOut, registerCount, onePoint);
     Cache& c = cache();
     {
         std::lock_guard lock(c.mutex);

@@ -36,7 +36,8 @@ class BatchJit {
                                                    std::int32_t registerCount);
     // The same steps for one point a call (ScalarEvaluator's code): on the
     // low lane of XMM registers, straight through, every row one double
-    // long (base as run takes it). Cached beside the batch code.
+    // long (base: the registers' rows only; it calls no runBatchStep, so
+    // needs no scratch rows). Cached beside the batch code.
     static std::shared_ptr<const BatchJit> compileOnePoint(const std::vector<BatchStep>& steps,
                                                            const std::vector<char>& liveOut,
                                                            std::int32_t registerCount);
@@ -45,7 +46,7 @@ class BatchJit {
     // Runs whole groups of 8 of the n points (base as runBlock takes it, then
     // its scratch rows): all, or a block's where it spills or calls; says how many.
     std::size_t run(double* const* base, std::size_t n) const;
-    // Code from compileOnePoint: the one point of rows one double long.
+    // Code from compileOnePoint: the one point in `base`'s rows, one double each.
     void runOne(double* const* base) const;
 
     std::size_t codeBytes() const;

@@ -524,13 +524,13 @@ bool BatchEvaluator::prepareOne() {
         in.arrays[std::size_t(i)] = &onePointInputs_[std::size_t(i)];
     specialise(in);
     onePoint_ = BatchJit::compileOnePoint(steps_, liveOut_, tape_.registerCount);
-    // A row of one double for every register (the inputs' in the point's
-    // copy) and the three scratch rows runBatchStep's callers pass (unread
-    // by one-point code, which calls the scalar operations).
+    // A row of one double for every register, the inputs' in the point's
+    // copy. (No scratch rows: one-point code calls the scalar operations,
+    // not runBatchStep.)
     const std::size_t regs = std::size_t(tape_.registerCount);
-    oneRows_.assign(regs + 3, 0.0);
-    oneBase_.resize(regs + 3);
-    for (std::size_t r = 0; r < regs + 3; ++r)
+    oneRows_.assign(regs, 0.0);
+    oneBase_.resize(regs);
+    for (std::size_t r = 0; r < regs; ++r)
         oneBase_[r] = r < std::size_t(kInputCount) ? &onePointInputs_[r] : &oneRows_[r];
     return onePoint_ != nullptr;
 }

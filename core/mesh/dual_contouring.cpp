@@ -411,23 +411,16 @@ std::int32_t vertexOf(const PieceTable& pieces, const Block& block, int cell, in
 }
 
 // The normal of the triangle (a, b, c) of a quad, unscaled.
-std::array<double, 3> triangleNormal(const std::array<const Vec3f*, 4>& pos, std::size_t a,
-                                     std::size_t b, std::size_t c) {
-    double u[3], v[3];
-    for (std::size_t k = 0; k < 3; ++k) {
-        u[k] = double((*pos[b])[k]) - (*pos[a])[k];
-        v[k] = double((*pos[c])[k]) - (*pos[a])[k];
-    }
-    return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-}
-double dot(const std::array<double, 3>& u, const std::array<double, 3>& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+Vec3 triangleNormal(const std::array<const Vec3f*, 4>& pos, std::size_t a, std::size_t b,
+                    std::size_t c) {
+    auto at = [&](std::size_t q) { return Vec3{(*pos[q])[0], (*pos[q])[1], (*pos[q])[2]}; };
+    return field::cross(field::minus(at(b), at(a)), field::minus(at(c), at(a)));
 }
 // Whether splitting the quad along a-c folds it: its triangles (a, b, c) and
 // (a, c, d) face opposite ways.
 bool foldsAlong(const std::array<const Vec3f*, 4>& pos, std::size_t a, std::size_t b, std::size_t c,
                 std::size_t d) {
-    return dot(triangleNormal(pos, a, b, c), triangleNormal(pos, a, c, d)) < 0;
+    return field::dot(triangleNormal(pos, a, b, c), triangleNormal(pos, a, c, d)) < 0;
 }
 // A vertex on a closed box's face has the face's normal (vertexNormal).
 bool faceNormal(const Vec3f& n) {
@@ -486,9 +479,9 @@ void appendQuad(std::pmr::vector<Triangle>& out, const std::array<std::uint32_t,
         if (std::abs(b02 - b13) > 1e-3 * std::sqrt(std::min(d02, d13))) alongFirst = b02 < b13;
     }
     if (flat) { // both of a split's triangles should face along the one normal
-        const std::array<double, 3> n{(*normal[0])[0], (*normal[0])[1], (*normal[0])[2]};
+        const Vec3 n{(*normal[0])[0], (*normal[0])[1], (*normal[0])[2]};
         auto facesOut = [&](std::size_t a, std::size_t b, std::size_t c) {
-            return dot(triangleNormal(pos, a, b, c), n) > 0;
+            return field::dot(triangleNormal(pos, a, b, c), n) > 0;
         };
         const bool first = facesOut(0, 1, 2) && facesOut(0, 2, 3);
         const bool second = facesOut(0, 1, 3) && facesOut(1, 2, 3);
@@ -880,7 +873,7 @@ class Contourer {
         for (std::size_t n = 0; n < pending_.size(); ++n) {
             const PendingCrossing& p = pending_[n];
             const formula::Dual& g = gradientOut_[n];
-            const double slope = std::sqrt(g.d[0] * g.d[0] + g.d[1] * g.d[1] + g.d[2] * g.d[2]);
+            const double slope = field::length(g.d);
             if (!(slope > 0) || !std::isfinite(g.v)) continue;
             if (std::abs(g.v) > kOffBy * grid_.h[std::size_t(p.axis)] * slope)
                 stragglers_.push_back(n);
@@ -1147,8 +1140,12 @@ class Contourer {
                 // with the old fallback to the mass point, 6.9e-4 held in
                 // the cell, under 2e-4 with half a cell of room, and fewer
                 // folded triangles at its creases, not more).
-                const auto [cellLo, cellHi] = vertexRoom(base, cell);
-                p = cq.faces ? onBoxFaces(cq, base, cell) : cq.qef.solveInBox(cellLo, cellHi, 0.1);
+                if (cq.faces) {
+                    p = onBoxFaces(cq, base, cell);
+                } else {
+                    const auto [cellLo, cellHi] = vertexRoom(base, cell);
+                    p = cq.qef.solveInBox(cellLo, cellHi, 0.1);
+                }
                 if (!cq.smooth) { // all of the block's such vertices at once, below
                     normalAt_.push_back(p);
                     normalOf_.push_back(std::uint32_t(block.positions.size()));
@@ -1180,7 +1177,7 @@ class Contourer {
                 if (smoothAround(n, cq)) {
                     const Vec3 p = balancedOnSurface(cq, normalAt_[k], origin, cellLo, cellHi);
                     block.positions[normalOf_[k]] = {float(p[0]), float(p[1]), float(p[2])};
-                } else if (1 - cq.length / cq.count < kMaxSpread) {
+                } else if (cq.spread() < kMaxSpread) {
                     // A crease whose sides turn by under 37 degrees: the
                     // cutoff of 0.1 dropped its direction (the vertex stayed
                     // between the sides, up to a third of a cell off both).
@@ -1214,8 +1211,7 @@ class Contourer {
         for (std::size_t i = 0; i < creaseAt_.size(); ++i) {
             const std::size_t k = creaseOf_[i];
             const formula::Dual& was = normalGradients_[k];
-            const double slope =
-                std::sqrt(was.d[0] * was.d[0] + was.d[1] * was.d[1] + was.d[2] * was.d[2]);
+            const double slope = field::length(was.d);
             if (!(std::abs(out_[i]) <=
                   std::max(std::abs(was.v), kCreaseOnSurface * minCell_ * slope)))
                 continue;
@@ -1366,7 +1362,7 @@ class Contourer {
         if (!(length > 0)) return false;
         const double along =
             (n[0] * cq.normalSum[0] + n[1] * cq.normalSum[1] + n[2] * cq.normalSum[2]) / length;
-        const double spread = 1 - length / cq.count; // 0 when all normals agree
+        const double spread = cq.spread();
         return spread < kMaxSpread && 1 - along < kCreaseTest * spread;
     }
 
@@ -1451,7 +1447,7 @@ class Contourer {
         bool ok = false;
         Vec3 n = normalised({-d.d[0], -d.d[1], -d.d[2]}, ok);
         if (field_.boundary == BoxBoundary::Closed) {
-            const double g = std::sqrt(d.d[0] * d.d[0] + d.d[1] * d.d[1] + d.d[2] * d.d[2]);
+            const double g = field::length(d.d);
             double surface = ok && std::isfinite(d.v) ? std::abs(d.v) / g
                                                       : std::numeric_limits<double>::infinity();
             for (std::size_t a = 0; a < 3; ++a) {
@@ -1577,10 +1573,9 @@ class Contourer {
         double length = 0;        // |normalSum|, once every crossing is in
         Vec3 balanced{};          // balancedFromMassPoint's vertex, unless needsQef
         Qef qef;                  // filled only where needsQef
-        double normalLength() const {
-            return std::sqrt(normalSum[0] * normalSum[0] + normalSum[1] * normalSum[1] +
-                             normalSum[2] * normalSum[2]);
-        }
+        double normalLength() const { return field::length(normalSum); }
+        // 1 - |mean normal|: 0 where every crossing's normal agrees.
+        double spread() const { return 1 - length / count; }
         // As new, member by member: value-initialising the whole entry
         // made a `rep stos`, whose start-up cost a few percent of meshing
         // the watermelon. (The QEF is reset where it is needed.)
