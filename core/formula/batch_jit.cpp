@@ -112,18 +112,19 @@ std::vector<std::int32_t> readsOf(const BatchStep& s) {
 // scalar evaluator's operation (ops::apply; a paired sine and cosine from one
 // sincos), which gives the interpreter's bits by definition — where
 // runBatchStep over one point went through the array routines' set-up.
-void runOneStep(const BatchStep& s, double* const* base) noexcept {
-    const double a = s.constA ? s.ca : base[s.a][0];
+// Every register it reads is in its row (the code stores them there first).
+void runOneStep(const BatchStep& s, double* rows) noexcept {
+    const double a = s.constA ? s.ca : rows[s.a];
     if (s.fused == Fused::SinCos) {
         const vmath::SinCos sc = vmath::sinCos(a);
-        base[s.out][0] = sc.sin;
-        base[s.out2][0] = sc.cos;
+        rows[s.out] = sc.sin;
+        rows[s.out2] = sc.cos;
         return;
     }
     const int arity = opArity(s.op);
-    const double b = arity < 2 ? 0.0 : s.constB ? s.cb : base[s.b][0];
-    const double c = arity < 3 ? 0.0 : s.constC ? s.cc : base[s.c][0];
-    base[s.out][0] = ops::apply(s.op, a, b, c, s.imm0, s.imm1);
+    const double b = arity < 2 ? 0.0 : s.constB ? s.cb : rows[s.b];
+    const double c = arity < 3 ? 0.0 : s.constC ? s.cc : rows[s.c];
+    rows[s.out] = ops::apply(s.op, a, b, c, s.imm0, s.imm1);
 }
 
 using namespace Xbyak;
@@ -131,14 +132,28 @@ using namespace Xbyak;
 class Emitter : public CodeGenerator {
   public:
     // `onePoint`: code for a single point (ScalarEvaluator's): the same
-    // steps on the low lane of XMM registers, once, no loop; rows of one
-    // double. Else the loop over groups of 8 points in YMM registers.
+    // steps on the low lane of XMM registers, once, no loop, the inputs
+    // arriving in xmm0..xmm6 and every register kept in one row of doubles
+    // when not in a vector register (BatchJit::OnePoint); `returnReg` is
+    // the value it returns.
+    // Else the loop over groups of 8 points in YMM registers.
     Emitter(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
-            std::int32_t registerCount, std::size_t maxSize, bool onePoint)
+            std::int32_t registerCount, std::size_t maxSize, bool onePoint, std::int32_t returnReg)
         : CodeGenerator(maxSize), onePoint_(onePoint), S1(vec(11)), S2(vec(12)), R(vec(13)),
           CA(vec(14)), CB(vec(15)), steps_(steps), liveOut_(liveOut),
           where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)),
-          rowGpr_(std::size_t(registerCount), -1) {
+          rowGpr_(std::size_t(registerCount), -1), returnReg_(returnReg) {
+        // One point: code that calls nothing keeps its rows and the
+        // constants in registers a call may clobber, and so saves none.
+        const bool calls = std::any_of(steps_.begin(), steps_.end(),
+                                       [](const BatchStep& s) { return !inline_(s); });
+        if (onePoint_ && !calls) rowsGpr_ = rdi;
+        static_assert(kInputCount <= kSlots);
+        if (onePoint_) // the inputs arrive in xmm0..: slots whose rows do not hold them yet
+            for (std::int32_t i = 0; i < kInputCount; ++i) {
+                slots_[std::size_t(i)] = {i, true, false};
+                where_[std::size_t(i)] = i;
+            }
         // At most a few constants a step: the pool never moves once r14 holds it.
         pool_.reserve(16 * steps_.size() + 16);
         for (std::size_t k = 0; k < steps_.size(); ++k) {
@@ -184,6 +199,13 @@ class Emitter : public CodeGenerator {
     int lane_ = 0;            // the first point of the group being emitted (0 or 4)
     std::vector<int> rowGpr_; // register -> the general register holding its row, or -1
     bool streams_ = true;     // no call, no spill: see streams()
+    const std::int32_t returnReg_;
+    int returnSlot_ = -1; // one point: the slot holding returnReg_ at the end, if any
+    // One point: where the registers' rows are (callee-saved where the code
+    // calls out); its constants follow its code (poolLabel_), read relative
+    // to the instruction.
+    Reg64 rowsGpr_ = r13;
+    Label poolLabel_;
     // The constants, read with one load each (vbroadcastsd from memory: no
     // shuffle port, unlike a move from a general register).
     std::vector<double> pool_;
@@ -213,6 +235,7 @@ class Emitter : public CodeGenerator {
     // that is neither an input nor an output (a spill) ties the code to the
     // block's rows.
     Address lanes(std::int32_t reg) {
+        if (onePoint_) return ptr[rowsGpr_ + reg * 8];
         if (reg >= kInputCount && !liveOut_[std::size_t(reg)]) streams_ = false;
         if (const int g = rowGpr_[std::size_t(reg)]; g >= 0)
             return ptr[Reg64(g) + rbx * 8 + lane_ * 8];
@@ -307,7 +330,7 @@ class Emitter : public CodeGenerator {
             pool_.push_back(v);
         }
         if (onePoint_)
-            vmovsd(y, ptr[r14 + int(at->second * sizeof(double))]);
+            vmovsd(y, ptr[rip + poolLabel_ + int(at->second * sizeof(double))]);
         else
             vbroadcastsd(Ymm(y.getIdx()), ptr[r14 + int(at->second * sizeof(double))]);
     }
@@ -347,18 +370,21 @@ class Emitter : public CodeGenerator {
 
     // The interpreter's code for step `s` over the points the loops do (r13
     // of them): one call a block. `s` is the code's own copy of the step.
-    // (One point: the scalar evaluator's operation, runOneStep.)
+    // (One point: the scalar evaluator's operation, runOneStep; the code
+    // touches no upper lane, so needs no vzeroupper.)
     void emitCall(const BatchStep& s) {
         streams_ = false;
         mov(rdi, reinterpret_cast<std::uint64_t>(&s));
-        mov(rsi, r12);
-        if (!onePoint_) {
+        if (onePoint_) {
+            mov(rsi, rowsGpr_);
+            mov(rax, reinterpret_cast<std::uint64_t>(&runOneStep));
+        } else {
+            mov(rsi, r12);
             mov(rdx, r13);
             mov(rcx, r15);
+            mov(rax, reinterpret_cast<std::uint64_t>(&runBatchStep));
+            vzeroupper();
         }
-        mov(rax, onePoint_ ? reinterpret_cast<std::uint64_t>(&runOneStep)
-                           : reinterpret_cast<std::uint64_t>(&runBatchStep));
-        vzeroupper();
         call(rax);
     }
 
@@ -593,8 +619,10 @@ class Emitter : public CodeGenerator {
 
     // The loop over the points for steps [first, end), none of them a call.
     void emitLoop(std::size_t first, std::size_t end) {
-        loadRows(first, end);
-        xor_(ebx, ebx);
+        if (!onePoint_) {
+            loadRows(first, end);
+            xor_(ebx, ebx);
+        }
         Label loop, done;
         if (!onePoint_) {
             L(loop);
@@ -612,11 +640,7 @@ class Emitter : public CodeGenerator {
                 define(s.out);
             }
             step_ = end;
-            for (int i = 0; i < kSlots; ++i) {
-                const Slot& slot = slots_[std::size_t(i)];
-                if (slot.reg >= 0 && slot.dirty && needed(slot.reg, end)) store(i);
-                release(i);
-            }
+            flush(end);
         }
         if (!onePoint_) {
             add(rbx, 8);
@@ -626,7 +650,44 @@ class Emitter : public CodeGenerator {
         std::fill(rowGpr_.begin(), rowGpr_.end(), -1);
     }
 
+    // Every value still needed from `end` on to its row; the slots emptied.
+    // (One point, after the last step: the returned value stays in its
+    // register, returnSlot_, its row not written.)
+    void flush(std::size_t end) {
+        returnSlot_ = -1;
+        for (int i = 0; i < kSlots; ++i) {
+            const Slot& slot = slots_[std::size_t(i)];
+            const bool returned =
+                onePoint_ && slot.reg >= 0 && slot.reg == returnReg_ && end == steps_.size();
+            if (returned) returnSlot_ = i;
+            if (slot.reg >= 0 && slot.dirty && !returned && needed(slot.reg, end)) store(i);
+            release(i);
+        }
+    }
+
+    // Runs of steps between calls are each one loop over the points; a
+    // call runs once over all of them. What a run leaves for a later one
+    // (or the caller) goes to its row at the run's end.
+    void emitSteps() {
+        for (std::size_t first = 0; first < steps_.size();) {
+            if (!inline_(steps_[first])) {
+                flush(first); // one point: the inputs the call reads, to their rows
+                emitCall(steps_[first++]);
+                continue;
+            }
+            std::size_t end = first;
+            while (end < steps_.size() && inline_(steps_[end]))
+                ++end;
+            emitLoop(first, end);
+            first = end;
+        }
+    }
+
     void emit() {
+        if (onePoint_) {
+            emitOnePoint();
+            return;
+        }
         // double* const* base (rdi), size_t n (rsi); rbx: the point index.
         push(rbx);
         push(rbp);
@@ -641,21 +702,8 @@ class Emitter : public CodeGenerator {
         lea(r15, ptr[r12 + int(where_.size() * sizeof(double*))]);
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
-        if (!onePoint_) and_(r13, ~7u); // sign-extended: whole groups of 8 points
-        // Runs of steps between calls are each one loop over the points; a
-        // call runs once over all of them. What a run leaves for a later one
-        // (or the caller) goes to its row at the run's end.
-        for (std::size_t first = 0; first < steps_.size();) {
-            if (!inline_(steps_[first])) {
-                emitCall(steps_[first++]);
-                continue;
-            }
-            std::size_t end = first;
-            while (end < steps_.size() && inline_(steps_[end]))
-                ++end;
-            emitLoop(first, end);
-            first = end;
-        }
+        and_(r13, ~7u); // sign-extended: whole groups of 8 points
+        emitSteps();
         mov(rax, r13); // the points done
         vzeroupper();
         add(rsp, 8);
@@ -667,6 +715,31 @@ class Emitter : public CodeGenerator {
         pop(rbx);
         ret();
     }
+
+    // double (x, y, z, t, u, v, w in xmm0..xmm6, double* rows (rdi)):
+    // returnReg_'s value in xmm0, every other output in its row.
+    void emitOnePoint() {
+        if (rowsGpr_ == r13) { // it calls out: r13 saved, the stack 16-byte aligned
+            push(r13);
+            mov(r13, rdi);
+        }
+        // The caller's upper lanes are anything (denormals: slow): zeroed.
+        for (std::int32_t i = 0; i < kInputCount; ++i)
+            if (needed(i, 0)) vmovq(Xmm(i), Xmm(i));
+        emitSteps();
+        if (returnReg_ >= 0) {
+            if (returnSlot_ > 0)
+                vmovapd(xmm0, vec(returnSlot_));
+            else if (returnSlot_ < 0)
+                vmovsd(xmm0, lanes(returnReg_));
+        }
+        if (rowsGpr_ == r13) pop(r13);
+        ret();
+        align(8);
+        L(poolLabel_);
+        for (double v : pool_)
+            dq(std::bit_cast<std::uint64_t>(v));
+    }
 };
 
 } // namespace
@@ -675,7 +748,8 @@ struct BatchJit::Code {
     std::unique_ptr<Emitter> emitter;
     std::vector<BatchStep> steps; // what the code calls runBatchStep with: never moves
     std::size_t (*run)(double* const*, std::size_t) = nullptr;
-    bool streams = false; // Emitter::streams()
+    OnePoint onePoint = nullptr; // code from compileOnePoint
+    bool streams = false;        // Emitter::streams()
 };
 
 BatchJit::BatchJit(std::unique_ptr<Code> code) : code_(std::move(code)) {}
@@ -705,11 +779,12 @@ namespace {
 // The steps as text that identifies them exactly: every field compile()
 // reads, numbers by their bits (the cache's key).
 std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
-                  std::int32_t registerCount, bool onePoint) {
+                  std::int32_t registerCount, bool onePoint, std::int32_t returnReg) {
     std::string key;
     key.reserve(96 * steps.size() + liveOut.size() + 9);
     auto put = [&key](const auto& v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
     put(onePoint);
+    put(returnReg);
     put(registerCount);
     key.append(liveOut.begin(), liveOut.end());
     for (const BatchStep& s : steps) {
@@ -744,24 +819,26 @@ Cache& cache() {
 std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& steps,
                                                   const std::vector<char>& liveOut,
                                                   std::int32_t registerCount) {
-    return make(steps, liveOut, registerCount, false);
+    return make(steps, liveOut, registerCount, false, -1);
 }
 
 std::shared_ptr<const BatchJit> BatchJit::compileOnePoint(const std::vector<BatchStep>& steps,
                                                           const std::vector<char>& liveOut,
-                                                          std::int32_t registerCount) {
-    return make(steps, liveOut, registerCount, true);
+                                                          std::int32_t registerCount,
+                                                          std::int32_t returnReg) {
+    return make(steps, liveOut, registerCount, true, returnReg);
 }
 
 std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& steps,
                                                const std::vector<char>& liveOut,
-                                               std::int32_t registerCount, bool onePoint) {
+                                               std::int32_t registerCount, bool onePoint,
+                                               std::int32_t returnReg) {
     if (!available() || steps.empty()) return nullptr;
     for (const BatchStep& s : steps)
         if (!compiles(s)) return nullptr;
     // (Whether calls are allowed is not in the key: a tape it would have to
     // call for is refused above, and the others' code does not depend on it.)
-    std::string key = keyOf(steps, liveOut, registerCount, onePoint);
+    std::string key = keyOf(steps, liveOut, registerCount, onePoint, returnReg);
     Cache& c = cache();
     {
         std::lock_guard lock(c.mutex);
@@ -773,10 +850,13 @@ std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& ste
     try {
         auto code = std::make_unique<Code>();
         code->steps = steps;
-        code->emitter =
-            std::make_unique<Emitter>(code->steps, liveOut, registerCount, size, onePoint);
+        code->emitter = std::make_unique<Emitter>(code->steps, liveOut, registerCount, size,
+                                                  onePoint, returnReg);
         code->emitter->ready();
-        code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
+        if (onePoint)
+            code->onePoint = code->emitter->getCode<OnePoint>();
+        else
+            code->run = code->emitter->getCode<std::size_t (*)(double* const*, std::size_t)>();
         code->streams = code->emitter->streams();
         made = std::shared_ptr<const BatchJit>(new BatchJit(std::move(code)));
     } catch (const std::exception&) { // no executable memory, code too large: interpret
@@ -801,8 +881,8 @@ std::size_t BatchJit::run(double* const* base, std::size_t n) const {
     return code_->run(base, code_->streams ? n : std::min(n, BatchEvaluator::kBlock));
 }
 
-void BatchJit::runOne(double* const* base) const {
-    code_->run(base, 1);
+BatchJit::OnePoint BatchJit::onePoint() const {
+    return code_->onePoint;
 }
 
 std::size_t BatchJit::codeBytes() const {

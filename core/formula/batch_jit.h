@@ -35,19 +35,26 @@ class BatchJit {
                                                    const std::vector<char>& liveOut,
                                                    std::int32_t registerCount);
     // The same steps for one point a call (ScalarEvaluator's code): on the
-    // low lane of XMM registers, straight through, every row one double
-    // long (base: the registers' rows only; it calls no runBatchStep, so
-    // needs no scratch rows). Cached beside the batch code.
+    // low lane of XMM registers, straight through, as a plain function
+    // (onePoint()) that returns register `returnReg` (-1: nothing) and
+    // leaves every output in its row. Cached beside the batch code.
     static std::shared_ptr<const BatchJit> compileOnePoint(const std::vector<BatchStep>& steps,
                                                            const std::vector<char>& liveOut,
-                                                           std::int32_t registerCount);
+                                                           std::int32_t registerCount,
+                                                           std::int32_t returnReg);
     ~BatchJit();
 
     // Runs whole groups of 8 of the n points (base as runBlock takes it, then
     // its scratch rows): all, or a block's where it spills or calls; says how many.
     std::size_t run(double* const* base, std::size_t n) const;
-    // Code from compileOnePoint: the one point in `base`'s rows, one double each.
-    void runOne(double* const* base) const;
+    // Code from compileOnePoint: the point's coordinates (Input's order)
+    // arrive in registers, and rows (registerCount doubles, the caller's:
+    // each evaluator its own) keep every register the code stores — the
+    // outputs, but for the one returned. A call costs what a call through a
+    // pointer costs: the ScalarEvaluator calls it from its inline evaluate().
+    using OnePoint = double (*)(double x, double y, double z, double t, double u, double v,
+                                double w, double* rows);
+    OnePoint onePoint() const;
 
     std::size_t codeBytes() const;
 
@@ -65,7 +72,8 @@ class BatchJit {
     struct Code;
     static std::shared_ptr<const BatchJit> make(const std::vector<BatchStep>& steps,
                                                 const std::vector<char>& liveOut,
-                                                std::int32_t registerCount, bool onePoint);
+                                                std::int32_t registerCount, bool onePoint,
+                                                std::int32_t returnReg);
     explicit BatchJit(std::unique_ptr<Code> code);
     std::unique_ptr<Code> code_;
 };

@@ -519,30 +519,37 @@ void BatchEvaluator::runBlock(double* const* base, std::size_t n) {
 }
 
 bool BatchEvaluator::prepareOne() {
+    // Every input an array (varying): the point is not known here.
+    static const Point anyPoint{};
     BatchInputs in;
     for (int i = 0; i < kInputCount; ++i)
-        in.arrays[std::size_t(i)] = &onePointInputs_[std::size_t(i)];
+        in.arrays[std::size_t(i)] = &anyPoint[std::size_t(i)];
     specialise(in);
-    onePoint_ = BatchJit::compileOnePoint(steps_, liveOut_, tape_.registerCount);
-    // A row of one double for every register, the inputs' in the point's
-    // copy. (No scratch rows: one-point code calls the scalar operations,
-    // not runBatchStep.)
-    const std::size_t regs = std::size_t(tape_.registerCount);
-    oneRows_.assign(regs, 0.0);
-    oneBase_.resize(regs);
-    for (std::size_t r = 0; r < regs; ++r)
-        oneBase_[r] = r < std::size_t(kInputCount) ? &onePointInputs_[r] : &oneRows_[r];
+    const std::int32_t first = onePointReturns();
+    onePoint_ = BatchJit::compileOnePoint(steps_, liveOut_, tape_.registerCount, first);
+    oneRows_.assign(std::size_t(tape_.registerCount), 0.0);
     return onePoint_ != nullptr;
 }
 
+// The first output's register where the steps compute it (not a constant,
+// not an input: the code returns only what it computes).
+std::int32_t BatchEvaluator::onePointReturns() const {
+    if (tape_.outputs.empty()) return -1;
+    const Operand& o = tape_.outputs[0].value;
+    return o.isConst() || o.reg < kInputCount || isUniform_[std::size_t(o.reg)] ? -1 : o.reg;
+}
+
 void BatchEvaluator::evaluateOne(const Point& p, double* outputs, std::size_t count) {
-    onePointInputs_ = p;
-    onePoint_->runOne(oneBase_.data());
+    const double first =
+        onePoint_->onePoint()(p[0], p[1], p[2], p[3], p[4], p[5], p[6], oneRows_.data());
+    const std::int32_t returned = onePointReturns();
     for (std::size_t k = 0; k < count && k < tape_.outputs.size(); ++k) {
         const Operand& o = tape_.outputs[k].value;
-        outputs[k] = o.isConst()         ? o.value
-                     : isUniform_[o.reg] ? uniformValue_[o.reg]
-                                         : oneBase_[std::size_t(o.reg)][0];
+        outputs[k] = o.isConst()           ? o.value
+                     : o.reg == returned   ? first
+                     : isUniform_[o.reg]   ? uniformValue_[o.reg]
+                     : o.reg < kInputCount ? p[std::size_t(o.reg)]
+                                           : oneRows_[std::size_t(o.reg)];
     }
 }
 

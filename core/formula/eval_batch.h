@@ -66,6 +66,13 @@ class BatchEvaluator {
     // evaluator's bits.
     bool prepareOne();
     void evaluateOne(const Point& p, double* outputs, std::size_t count);
+    // The prepared code itself, for a caller that wants no more than a
+    // call: onePointCode()(x, y, z, t, u, v, w, onePointRows()) returns the
+    // first output where onePointReturns() is not -1 (the output is
+    // computed, not a constant or an input: its register).
+    BatchJit::OnePoint onePointCode() const { return onePoint_->onePoint(); }
+    double* onePointRows() { return oneRows_.data(); }
+    std::int32_t onePointReturns() const;
 
     // Passes over each block for the last evaluate() (after uniform folding
     // and fusion): what the loops really run, for tests and benchmarks.
@@ -95,12 +102,10 @@ class BatchEvaluator {
     double jitCompileUs_ = 0;             // what making it took (the last specialisation)
     std::vector<double*> tailBase_;       // the rows from the point the JIT stopped at
     std::vector<char> liveOut_;           // per register: an output the steps compute
-    // evaluateOne's code, its rows (one double each: the inputs' in
-    // onePointInputs_, where each call copies its point) and its outputs.
+    // evaluateOne's code and its rows (one double per register: the
+    // inputs' are read from the point).
     std::shared_ptr<const BatchJit> onePoint_;
-    std::vector<double*> oneBase_;
     std::vector<double> oneRows_;
-    Point onePointInputs_{};
     void makeWorkspace();
 
     void specialise(const BatchInputs& in);

@@ -19,12 +19,14 @@ void ParameterValues::rebind(const Tape& tape) {
 
 void ParameterValues::assign(const std::vector<double>& values) {
     if (values.size() == values_.size()) values_ = values;
+    ++version_;
 }
 
 bool ParameterValues::set(std::string_view name, double value) {
     for (std::size_t i = 0; i < tape_->params.size(); ++i) {
         if (tape_->params[i].name == name) {
             values_[i] = value;
+            ++version_;
             return true;
         }
     }
@@ -57,9 +59,12 @@ ScalarEvaluator::ScalarEvaluator(ScalarEvaluator&& other) noexcept
     : tape_(other.tape_), params_(std::move(other.params_)), regs_(std::move(other.regs_)),
       code_(other.code_), calls_(other.calls_), compiledLast_(other.compiledLast_),
       compiled_(std::move(other.compiled_)), compiledParams_(std::move(other.compiledParams_)),
-      prepared_(other.prepared_), noCode_(other.noCode_) {
+      prepared_(other.prepared_), noCode_(other.noCode_),
+      // (the code and its rows belong to compiled_, which moved whole)
+      direct_(other.direct_), directRows_(other.directRows_), directVersion_(other.directVersion_) {
     params_.rebind(tape_);
     other.prepared_ = false; // its code went with the move: made again if it is used
+    other.direct_ = nullptr;
 }
 
 // The point as machine code, where it can be: after kScalarWarmUp points
@@ -75,8 +80,10 @@ bool ScalarEvaluator::runCompiled(const Point& p, double* outputs, std::size_t c
          std::memcmp(pv.data(), compiledParams_.data(), pv.size() * sizeof(double)) != 0)) {
         compiledParams_ = pv; // by their bits: a NaN parameter is equal to itself here
         prepared_ = false;
+        direct_ = nullptr;
         calls_ = 0;
     }
+    directVersion_ = params_.version(); // the same values as the code's, if any
     if (!prepared_) {
         if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
             ++calls_;
@@ -88,6 +95,10 @@ bool ScalarEvaluator::runCompiled(const Point& p, double* outputs, std::size_t c
         if (!compiled_) compiled_ = std::make_unique<BatchEvaluator>(tape_, false); // no batch code
         compiled_->parameters().assign(pv);
         noCode_ = !compiled_->prepareOne();
+        if (!noCode_ && compiled_->onePointReturns() >= 0) {
+            direct_ = compiled_->onePointCode();
+            directRows_ = compiled_->onePointRows();
+        }
     }
     if (noCode_) return false;
     compiled_->evaluateOne(p, outputs, count);
@@ -104,7 +115,9 @@ void ScalarEvaluator::run(const Point& p) {
     walkTape<ScalarDomain>(tape_, r);
 }
 
-double ScalarEvaluator::evaluate(const Point& p) {
+double ScalarEvaluator::evaluateSlowly(double x, double y, double z, double t, double u, double v,
+                                       double w) {
+    const Point p{x, y, z, t, u, v, w};
     if (tape_.outputs.empty()) return 0.0;
     double out = 0.0;
     compiledLast_ = runCompiled(p, &out, 1);

@@ -1,6 +1,7 @@
 #pragma once
 // Evaluates a tape at one point. The reference semantics: the batch evaluator
 // must agree with it bit for bit, the interval evaluator must contain it.
+#include "batch_jit.h"
 #include "tape.h"
 
 #include <array>
@@ -25,10 +26,14 @@ class ParameterValues {
     void rebind(const Tape& tape);                  // the same tape's copy (an evaluator's copy)
     void assign(const std::vector<double>& values); // every value, in order (same count)
     const std::vector<double>& values() const { return values_; }
+    // Changes at every set() and assign(): a cheap test that values() may
+    // have changed since it was last read.
+    std::uint64_t version() const { return version_; }
 
   private:
     const Tape* tape_;
     std::vector<double> values_;
+    std::uint64_t version_ = 0;
 };
 
 class BatchEvaluator;
@@ -53,7 +58,15 @@ class ScalarEvaluator {
 
     ParameterValues& parameters() { return params_; }
 
-    double evaluate(const Point& p);                   // the first output
+    // The first output. Once compiled, a call is a call of the code (inline:
+    // one test of the parameters' version; compiledLast() stays true); else
+    // evaluateSlowly's work. (The point goes by value in registers both
+    // ways: a caller never stores it.)
+    double evaluate(const Point& p) {
+        if (direct_ && directVersion_ == params_.version()) [[likely]]
+            return direct_(p[0], p[1], p[2], p[3], p[4], p[5], p[6], directRows_);
+        return evaluateSlowly(p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
+    }
     void evaluateAll(const Point& p, double* outputs); // every output, in tape order
     // Whether the last evaluation ran as machine code.
     bool compiledLast() const { return compiledLast_; }
@@ -71,6 +84,13 @@ class ScalarEvaluator {
     std::vector<double> compiledParams_;
     bool prepared_ = false; // compiled_ specialised for compiledParams_ (or no code for them)
     bool noCode_ = false;
+    // The code to call straight from evaluate(), its rows and the
+    // parameters' version it was checked against (null while there is none
+    // or the first output is a constant).
+    BatchJit::OnePoint direct_ = nullptr;
+    double* directRows_ = nullptr;
+    std::uint64_t directVersion_ = 0;
+    double evaluateSlowly(double x, double y, double z, double t, double u, double v, double w);
     void run(const Point& p);
     bool runCompiled(const Point& p, double* outputs, std::size_t count);
 };

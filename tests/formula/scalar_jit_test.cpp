@@ -163,6 +163,53 @@ TEST_F(ScalarJitTest, EveryOutputOfAScriptAndNewParametersGiveTheInterpretersBit
     }
 }
 
+TEST_F(ScalarJitTest, OutputsThatAreInputsConstantsOrOneRegisterTwiceComeBack) {
+    // The code returns the first output when it computes it and leaves the
+    // rest in their rows: an input, a constant, a value named twice and a
+    // value only a call computes must all come back as the interpreter's.
+    CompileOptions options;
+    options.kind = DefinitionKind::Colour;
+    const char* scripts[] = {"r = x; g = sin(y) * z; b = g;", "r = 0.25; g = y * z; b = t;",
+                             "r = sin(x); g = r; b = atan2(y, z);",
+                             "r = x * y; g = cos(x * y); b = r;"};
+    for (const char* src : scripts) {
+        CompileResult r = compile(src, options);
+        ASSERT_TRUE(r.ok()) << src;
+        ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+        ScalarEvaluator interpreted(*r.tape, ScalarCode::Interpreted);
+        const std::size_t n = r.tape->outputs.size();
+        for (double a : specials()) {
+            const Point p{a, 0.5 - a, a * 3, -0.75, 0, 0, 0};
+            std::vector<double> all(n), expected(n);
+            compiled.evaluateAll(p, all.data());
+            interpreted.evaluateAll(p, expected.data());
+            const double first = compiled.evaluate(p);
+            for (std::size_t o = 0; o < n; ++o)
+                ASSERT_TRUE(sameBits(all[o], expected[o]))
+                    << src << " output " << o << " at " << a << ": " << all[o] << " vs "
+                    << expected[o];
+            ASSERT_TRUE(sameBits(first, expected[0])) << src << " at " << a;
+        }
+    }
+}
+
+TEST_F(ScalarJitTest, ParametersSetToTheirOwnValuesKeepTheCode) {
+    // A set() of the same value changes the parameters' version but not
+    // their bits: the code stays, with no new warm-up.
+    CompileResult r = compile("param k = 1; k * x - y");
+    ASSERT_TRUE(r.ok());
+    ScalarEvaluator e(*r.tape);
+    for (unsigned i = 0; i <= kScalarWarmUp; ++i)
+        e.evaluate(pointXYZ(1, 0, 0));
+    ASSERT_TRUE(e.compiledLast());
+    ASSERT_TRUE(e.parameters().set("k", 1.0));
+    EXPECT_EQ(e.evaluate(pointXYZ(2, 0.5, 0)), 1.5);
+    EXPECT_TRUE(e.compiledLast());
+    ASSERT_TRUE(e.parameters().set("k", 3.0)); // a new value: interpreted while it warms up
+    EXPECT_EQ(e.evaluate(pointXYZ(2, 0.5, 0)), 5.5);
+    EXPECT_FALSE(e.compiledLast());
+}
+
 TEST_F(ScalarJitTest, AFewPointsStayInterpretedAndTheSwitchTurnsItOff) {
     CompileResult r = compile("1 - x^2 - y^2 - z^2");
     ASSERT_TRUE(r.ok());
