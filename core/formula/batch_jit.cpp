@@ -83,28 +83,7 @@ bool compiles(const BatchStep& s) {
 // The registers a step reads, in the order it reads them.
 std::vector<std::int32_t> readsOf(const BatchStep& s) {
     std::vector<std::int32_t> r;
-    switch (s.fused) {
-    case Fused::SquareOfDiff:
-        return {s.a};
-    case Fused::SquareTerms:
-        if (!s.constA) r.push_back(s.a);
-        for (int t = 0; t < s.terms; ++t)
-            r.push_back(s.termReg[t]);
-        return r;
-    case Fused::MinMaxChain:
-        for (int t = 0; t < s.chainCount; ++t)
-            r.push_back(s.chainReg[t]);
-        return r;
-    case Fused::SinCos:
-        return {s.a};
-    case Fused::NegatedOperand:
-    case Fused::None:
-        break;
-    }
-    const int arity = opArity(s.op);
-    if (!s.constA) r.push_back(s.a);
-    if (arity >= 2 && !s.constB) r.push_back(s.b);
-    if (arity >= 3 && !s.constC) r.push_back(s.c);
+    forEachRead(s, [&r](std::int32_t reg) { r.push_back(reg); });
     return r;
 }
 
@@ -135,14 +114,17 @@ class Emitter : public CodeGenerator {
     // steps on the low lane of XMM registers, once, no loop, the inputs
     // arriving in xmm0..xmm6 and every register kept in one row of doubles
     // when not in a vector register (BatchJit::OnePoint); `returnReg` is
-    // the value it returns.
+    // the value it returns. Its first `hoisted` steps depend on t alone
+    // (batch_hoist.h): they run only when t's bits are not those kept in
+    // the row after the registers'.
     // Else the loop over groups of 8 points in YMM registers.
     Emitter(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
-            std::int32_t registerCount, std::size_t maxSize, bool onePoint, std::int32_t returnReg)
+            std::int32_t registerCount, std::size_t maxSize, bool onePoint, std::int32_t returnReg,
+            std::size_t hoisted)
         : CodeGenerator(maxSize), onePoint_(onePoint), S1(vec(11)), S2(vec(12)), R(vec(13)),
           CA(vec(14)), CB(vec(15)), steps_(steps), liveOut_(liveOut),
           where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)),
-          rowGpr_(std::size_t(registerCount), -1), returnReg_(returnReg) {
+          rowGpr_(std::size_t(registerCount), -1), returnReg_(returnReg), hoisted_(hoisted) {
         // One point: code that calls nothing keeps its rows and the
         // constants in registers a call may clobber, and so saves none.
         const bool calls = std::any_of(steps_.begin(), steps_.end(),
@@ -176,9 +158,32 @@ class Emitter : public CodeGenerator {
     static constexpr int kSlots = 11; // ymm0..ymm10 hold values; ymm11..ymm15 are scratch
     const bool onePoint_;
     // Vector register i: all four lanes, or (one point) an XMM, whose low
-    // lane is the point's (the other lane computes on zeros, unread).
+    // lane is the point's (the other lane is anything, never computed on).
     Xmm vec(int i) const { return onePoint_ ? Xmm(i) : Xmm(Ymm(i)); }
     const Xmm S1, S2, R, CA, CB;
+
+    // Arithmetic on every lane, or (one point) on the low lane only: the
+    // upper lanes of the point's registers are whatever the caller left
+    // there (denormals would be slow), and the scalar forms never read them.
+    void fadd(const Xmm& d, const Xmm& a, const Xmm& b) {
+        onePoint_ ? vaddsd(d, a, b) : vaddpd(d, a, b);
+    }
+    void fsub(const Xmm& d, const Xmm& a, const Xmm& b) {
+        onePoint_ ? vsubsd(d, a, b) : vsubpd(d, a, b);
+    }
+    void fmul(const Xmm& d, const Xmm& a, const Xmm& b) {
+        onePoint_ ? vmulsd(d, a, b) : vmulpd(d, a, b);
+    }
+    void fdiv(const Xmm& d, const Xmm& a, const Xmm& b) {
+        onePoint_ ? vdivsd(d, a, b) : vdivpd(d, a, b);
+    }
+    void fsqrt(const Xmm& d, const Xmm& a) { onePoint_ ? vsqrtsd(d, a, a) : vsqrtpd(d, a); }
+    void fround(const Xmm& d, const Xmm& a, std::uint8_t mode) {
+        onePoint_ ? vroundsd(d, a, a, mode) : vroundpd(d, a, mode);
+    }
+    void fcmp(const Xmm& d, const Xmm& a, const Xmm& b, std::uint8_t predicate) {
+        onePoint_ ? vcmpsd(d, a, b, predicate) : vcmppd(d, a, b, predicate);
+    }
 
     struct Event {
         std::size_t step;
@@ -200,6 +205,7 @@ class Emitter : public CodeGenerator {
     std::vector<int> rowGpr_; // register -> the general register holding its row, or -1
     bool streams_ = true;     // no call, no spill: see streams()
     const std::int32_t returnReg_;
+    const std::size_t hoisted_;
     int returnSlot_ = -1; // one point: the slot holding returnReg_ at the end, if any
     // One point: where the registers' rows are (callee-saved where the code
     // calls out); its constants follow its code (poolLabel_), read relative
@@ -348,8 +354,8 @@ class Emitter : public CodeGenerator {
     // dst = min or max (x, y) with the language's rule: x when x < y (x > y)
     // or x is NaN, else y. Uses S1 and S2.
     void minMax(bool isMin, const Xmm& dst, const Xmm& x, const Xmm& y) {
-        vcmppd(S1, x, y, isMin ? kLtOQ : kGtOQ);
-        vcmppd(S2, x, x, kUnordQ);
+        fcmp(S1, x, y, isMin ? kLtOQ : kGtOQ);
+        fcmp(S2, x, x, kUnordQ);
         vorpd(S1, S1, S2);
         vblendvpd(dst, y, x, S1);
     }
@@ -361,7 +367,7 @@ class Emitter : public CodeGenerator {
     // mask = truth(x): non-zero and not NaN.
     void truth(const Xmm& mask, const Xmm& x) {
         vxorpd(S2, S2, S2);
-        vcmppd(mask, x, S2, kNeqOQ);
+        fcmp(mask, x, S2, kNeqOQ);
     }
     void negate(const Xmm& dst, const Xmm& x) {
         broadcast(S2, -0.0);
@@ -394,8 +400,8 @@ class Emitter : public CodeGenerator {
         case Fused::SquareOfDiff: {
             const Xmm a = in(s.a);
             broadcast(S1, s.ca);
-            vsubpd(R, a, S1);
-            vmulpd(R, R, R);
+            fsub(R, a, S1);
+            fmul(R, R, R);
             return;
         }
         case Fused::SquareTerms: {
@@ -409,20 +415,20 @@ class Emitter : public CodeGenerator {
                 const Xmm r = in(s.termReg[t]);
                 const double offset = s.termOffset[t];
                 if (std::bit_cast<std::uint64_t>(offset) == 0) {
-                    vmulpd(CA, r, r);
+                    fmul(CA, r, r);
                 } else {
                     broadcast(S1, offset);
-                    vsubpd(CA, r, S1);
-                    vmulpd(CA, CA, CA);
+                    fsub(CA, r, S1);
+                    fmul(CA, CA, CA);
                 }
                 if (s.termSign[t] == 1.0) {
-                    vaddpd(R, R, CA);
+                    fadd(R, R, CA);
                 } else if (s.termSign[t] == -1.0) {
-                    vsubpd(R, R, CA);
+                    fsub(R, R, CA);
                 } else {
                     broadcast(S1, s.termSign[t]);
-                    vmulpd(CA, S1, CA);
-                    vaddpd(R, R, CA);
+                    fmul(CA, S1, CA);
+                    fadd(R, R, CA);
                 }
             }
             return;
@@ -449,7 +455,7 @@ class Emitter : public CodeGenerator {
                     negate(dst, r);
                 } else {
                     broadcast(S1, s.chainSign[t]);
-                    vmulpd(dst, S1, r);
+                    fmul(dst, S1, r);
                 }
             };
             signed_(CA, 0);
@@ -476,36 +482,36 @@ class Emitter : public CodeGenerator {
             return;
         case Op::Square: {
             const Xmm a = in(s.a);
-            vmulpd(R, a, a);
+            fmul(R, a, a);
             return;
         }
         case Op::Sqrt:
-            vsqrtpd(R, in(s.a));
+            fsqrt(R, in(s.a));
             return;
         case Op::Floor:
-            vroundpd(R, in(s.a), 0x09);
+            fround(R, in(s.a), 0x09);
             return;
         case Op::Ceil:
-            vroundpd(R, in(s.a), 0x0A);
+            fround(R, in(s.a), 0x0A);
             return;
         case Op::Sign: { // a > 0 ? 1 : a < 0 ? -1 : a == 0 ? 0 : a (NaN)
             const Xmm a = in(s.a);
             vxorpd(S2, S2, S2);
-            vcmppd(S1, a, S2, kGtOQ);
-            vcmppd(CB, a, S2, kLtOQ);
+            fcmp(S1, a, S2, kGtOQ);
+            fcmp(CB, a, S2, kLtOQ);
             broadcast(CA, 1.0);
             vandpd(S1, S1, CA);
             broadcast(CA, -1.0);
             vandpd(CB, CB, CA);
             vorpd(S1, S1, CB);
-            vcmppd(CB, a, a, kUnordQ);
+            fcmp(CB, a, a, kUnordQ);
             vblendvpd(R, S1, a, CB);
             return;
         }
         case Op::Not: { // truth(a) ? 0 : 1
             const Xmm a = in(s.a);
             vxorpd(S2, S2, S2);
-            vcmppd(S1, a, S2, kEqUQ);
+            fcmp(S1, a, S2, kEqUQ);
             oneWhere(S1);
             return;
         }
@@ -513,30 +519,30 @@ class Emitter : public CodeGenerator {
             const Xmm a = in(s.a);
             const int k = static_cast<int>(s.imm0);
             if (k == 3) {
-                vmulpd(R, a, a);
-                vmulpd(R, R, a);
+                fmul(R, a, a);
+                fmul(R, R, a);
             } else if (k == 4) {
-                vmulpd(R, a, a);
-                vmulpd(R, R, R);
+                fmul(R, a, a);
+                fmul(R, R, R);
             } else if (k == -1) {
                 broadcast(S1, 1.0);
-                vdivpd(R, S1, a);
+                fdiv(R, S1, a);
             } else if (k == -2) {
-                vmulpd(CA, a, a);
+                fmul(CA, a, a);
                 broadcast(S1, 1.0);
-                vdivpd(R, S1, CA);
+                fdiv(R, S1, CA);
             } else { // ops::powi, its steps in its order
                 unsigned m = k < 0 ? 0u - static_cast<unsigned>(k) : static_cast<unsigned>(k);
                 broadcast(R, 1.0);
                 vmovapd(CA, a);
                 while (m) {
-                    if (m & 1u) vmulpd(R, R, CA);
-                    vmulpd(CA, CA, CA);
+                    if (m & 1u) fmul(R, R, CA);
+                    fmul(CA, CA, CA);
                     m >>= 1;
                 }
                 if (k < 0) {
                     broadcast(S1, 1.0);
-                    vdivpd(R, S1, R);
+                    fdiv(R, S1, R);
                 }
             }
             return;
@@ -570,16 +576,16 @@ class Emitter : public CodeGenerator {
         const Xmm a = operandA(s), b = operandB(s);
         switch (s.op) {
         case Op::Add:
-            vaddpd(R, a, b);
+            fadd(R, a, b);
             break;
         case Op::Sub:
-            vsubpd(R, a, b);
+            fsub(R, a, b);
             break;
         case Op::Mul:
-            vmulpd(R, a, b);
+            fmul(R, a, b);
             break;
         case Op::Div:
-            vdivpd(R, a, b);
+            fdiv(R, a, b);
             break;
         case Op::Min:
         case Op::Max:
@@ -597,14 +603,14 @@ class Emitter : public CodeGenerator {
                                    : s.op == Op::GreaterEq ? kGeOQ
                                    : s.op == Op::Equal     ? kEqOQ
                                                            : kNeqUQ;
-            vcmppd(S1, a, b, p);
+            fcmp(S1, a, b, p);
             oneWhere(S1);
             break;
         }
         case Op::And:
         case Op::Or:
             truth(S1, a);
-            vcmppd(R, b, S2, kNeqOQ); // S2 is zero after truth()
+            fcmp(R, b, S2, kNeqOQ); // S2 is zero after truth()
             if (s.op == Op::And)
                 vandpd(S1, S1, R);
             else
@@ -668,15 +674,15 @@ class Emitter : public CodeGenerator {
     // Runs of steps between calls are each one loop over the points; a
     // call runs once over all of them. What a run leaves for a later one
     // (or the caller) goes to its row at the run's end.
-    void emitSteps() {
-        for (std::size_t first = 0; first < steps_.size();) {
+    void emitSteps(std::size_t from, std::size_t to) {
+        for (std::size_t first = from; first < to;) {
             if (!inline_(steps_[first])) {
                 flush(first); // one point: the inputs the call reads, to their rows
                 emitCall(steps_[first++]);
                 continue;
             }
             std::size_t end = first;
-            while (end < steps_.size() && inline_(steps_[end]))
+            while (end < to && inline_(steps_[end]))
                 ++end;
             emitLoop(first, end);
             first = end;
@@ -703,7 +709,7 @@ class Emitter : public CodeGenerator {
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));
         and_(r13, ~7u); // sign-extended: whole groups of 8 points
-        emitSteps();
+        emitSteps(0, steps_.size());
         mov(rax, r13); // the points done
         vzeroupper();
         add(rsp, 8);
@@ -723,10 +729,20 @@ class Emitter : public CodeGenerator {
             push(r13);
             mov(r13, rdi);
         }
-        // The caller's upper lanes are anything (denormals: slow): zeroed.
-        for (std::int32_t i = 0; i < kInputCount; ++i)
-            if (needed(i, 0)) vmovq(Xmm(i), Xmm(i));
-        emitSteps();
+        if (hoisted_ > 0) {
+            // t's bits against the last call's (both paths on from here with
+            // every input in its row)
+            const Address lastT = ptr[rowsGpr_ + int(where_.size() * sizeof(double))];
+            Label same;
+            vmovq(rax, Xmm(int(Input::T)));
+            flush(0);
+            cmp(rax, lastT);
+            je(same, T_NEAR);
+            mov(lastT, rax);
+            emitSteps(0, hoisted_);
+            L(same);
+        }
+        emitSteps(hoisted_, steps_.size());
         if (returnReg_ >= 0) {
             if (returnSlot_ > 0)
                 vmovapd(xmm0, vec(returnSlot_));
@@ -779,12 +795,14 @@ namespace {
 // The steps as text that identifies them exactly: every field compile()
 // reads, numbers by their bits (the cache's key).
 std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
-                  std::int32_t registerCount, bool onePoint, std::int32_t returnReg) {
+                  std::int32_t registerCount, bool onePoint, std::int32_t returnReg,
+                  std::size_t hoisted) {
     std::string key;
     key.reserve(96 * steps.size() + liveOut.size() + 9);
     auto put = [&key](const auto& v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
     put(onePoint);
     put(returnReg);
+    put(hoisted);
     put(registerCount);
     key.append(liveOut.begin(), liveOut.end());
     for (const BatchStep& s : steps) {
@@ -819,26 +837,25 @@ Cache& cache() {
 std::shared_ptr<const BatchJit> BatchJit::compile(const std::vector<BatchStep>& steps,
                                                   const std::vector<char>& liveOut,
                                                   std::int32_t registerCount) {
-    return make(steps, liveOut, registerCount, false, -1);
+    return make(steps, liveOut, registerCount, false, -1, 0);
 }
 
-std::shared_ptr<const BatchJit> BatchJit::compileOnePoint(const std::vector<BatchStep>& steps,
-                                                          const std::vector<char>& liveOut,
-                                                          std::int32_t registerCount,
-                                                          std::int32_t returnReg) {
-    return make(steps, liveOut, registerCount, true, returnReg);
+std::shared_ptr<const BatchJit>
+BatchJit::compileOnePoint(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
+                          std::int32_t registerCount, std::int32_t returnReg, std::size_t hoisted) {
+    return make(steps, liveOut, registerCount, true, returnReg, hoisted);
 }
 
 std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& steps,
                                                const std::vector<char>& liveOut,
                                                std::int32_t registerCount, bool onePoint,
-                                               std::int32_t returnReg) {
+                                               std::int32_t returnReg, std::size_t hoisted) {
     if (!available() || steps.empty()) return nullptr;
     for (const BatchStep& s : steps)
         if (!compiles(s)) return nullptr;
     // (Whether calls are allowed is not in the key: a tape it would have to
     // call for is refused above, and the others' code does not depend on it.)
-    std::string key = keyOf(steps, liveOut, registerCount, onePoint, returnReg);
+    std::string key = keyOf(steps, liveOut, registerCount, onePoint, returnReg, hoisted);
     Cache& c = cache();
     {
         std::lock_guard lock(c.mutex);
@@ -851,7 +868,7 @@ std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& ste
         auto code = std::make_unique<Code>();
         code->steps = steps;
         code->emitter = std::make_unique<Emitter>(code->steps, liveOut, registerCount, size,
-                                                  onePoint, returnReg);
+                                                  onePoint, returnReg, hoisted);
         code->emitter->ready();
         if (onePoint)
             code->onePoint = code->emitter->getCode<OnePoint>();

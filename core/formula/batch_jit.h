@@ -37,21 +37,22 @@ class BatchJit {
     // The same steps for one point a call (ScalarEvaluator's code): on the
     // low lane of XMM registers, straight through, as a plain function
     // (onePoint()) that returns register `returnReg` (-1: nothing) and
-    // leaves every output in its row. Cached beside the batch code.
-    static std::shared_ptr<const BatchJit> compileOnePoint(const std::vector<BatchStep>& steps,
-                                                           const std::vector<char>& liveOut,
-                                                           std::int32_t registerCount,
-                                                           std::int32_t returnReg);
+    // leaves every output in its row. Its first `hoisted` steps depend on t
+    // alone (batch_hoist.h): it runs them only when t's bits differ from
+    // those it keeps in rows[registerCount]. Cached beside the batch code.
+    static std::shared_ptr<const BatchJit>
+    compileOnePoint(const std::vector<BatchStep>& steps, const std::vector<char>& liveOut,
+                    std::int32_t registerCount, std::int32_t returnReg, std::size_t hoisted);
     ~BatchJit();
 
     // Runs whole groups of 8 of the n points (base as runBlock takes it, then
     // its scratch rows): all, or a block's where it spills or calls; says how many.
     std::size_t run(double* const* base, std::size_t n) const;
     // Code from compileOnePoint: the point's coordinates (Input's order)
-    // arrive in registers, and rows (registerCount doubles, the caller's:
-    // each evaluator its own) keep every register the code stores — the
-    // outputs, but for the one returned. A call costs what a call through a
-    // pointer costs: the ScalarEvaluator calls it from its inline evaluate().
+    // arrive in registers, and rows (registerCount + 1 doubles, the
+    // caller's: each evaluator its own) keep every register the code stores
+    // — the outputs, but for the one returned — and t's last bits. A call costs what a call through
+    // a pointer costs: the ScalarEvaluator calls it from its inline evaluate().
     using OnePoint = double (*)(double x, double y, double z, double t, double u, double v,
                                 double w, double* rows);
     OnePoint onePoint() const;
@@ -73,7 +74,7 @@ class BatchJit {
     static std::shared_ptr<const BatchJit> make(const std::vector<BatchStep>& steps,
                                                 const std::vector<char>& liveOut,
                                                 std::int32_t registerCount, bool onePoint,
-                                                std::int32_t returnReg);
+                                                std::int32_t returnReg, std::size_t hoisted);
     explicit BatchJit(std::unique_ptr<Code> code);
     std::unique_ptr<Code> code_;
 };

@@ -38,4 +38,33 @@ struct BatchStep {
     double chainSign[4] = {1.0, 1.0, 1.0, 1.0}; // -1: the operand is negated first
 };
 
+// Calls f on each register field the step reads, in the order it reads them
+// (a step's own fields: const for a const step, else references a caller may
+// rename).
+template <class Step, class F>
+void forEachRead(Step& s, F&& f) {
+    switch (s.fused) {
+    case Fused::SquareOfDiff:
+    case Fused::SinCos:
+        f(s.a);
+        return;
+    case Fused::SquareTerms:
+        if (!s.constA) f(s.a);
+        for (int t = 0; t < s.terms; ++t)
+            f(s.termReg[t]);
+        return;
+    case Fused::MinMaxChain:
+        for (int t = 0; t < s.chainCount; ++t)
+            f(s.chainReg[t]);
+        return;
+    case Fused::NegatedOperand:
+    case Fused::None:
+        break;
+    }
+    const int arity = opArity(s.op);
+    if (!s.constA) f(s.a);
+    if (arity >= 2 && !s.constB) f(s.b);
+    if (arity >= 3 && !s.constC) f(s.c);
+}
+
 } // namespace fl::formula

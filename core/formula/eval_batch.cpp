@@ -1,5 +1,7 @@
 #include "eval_batch.h"
 
+#include "batch_hoist.h"
+
 #include "batch_step_run.h"
 
 #include "batch_fusion.h"
@@ -525,9 +527,17 @@ bool BatchEvaluator::prepareOne() {
     for (int i = 0; i < kInputCount; ++i)
         in.arrays[std::size_t(i)] = &anyPoint[std::size_t(i)];
     specialise(in);
-    const std::int32_t first = onePointReturns();
-    onePoint_ = BatchJit::compileOnePoint(steps_, liveOut_, tape_.registerCount, first);
-    oneRows_.assign(std::size_t(tape_.registerCount), 0.0);
+    // What depends on t alone runs once per t (batch_hoist.h).
+    const HoistedSteps h = hoistTimeOnly(steps_, liveOut_, tape_.registerCount);
+    onePoint_ = BatchJit::compileOnePoint(h.steps, h.liveOut, h.registerCount, onePointReturns(),
+                                          h.hoisted);
+    oneRows_.assign(std::size_t(h.registerCount) + 1, 0.0);
+    if (onePoint_ && h.hoisted > 0) {
+        // The rows made consistent: t's kept bits (1.0's) differ from the
+        // call's (0.0's), so it runs the hoisted steps and keeps 0.0.
+        oneRows_.back() = 1.0;
+        onePoint_->onePoint()(0, 0, 0, 0, 0, 0, 0, oneRows_.data());
+    }
     return onePoint_ != nullptr;
 }
 

@@ -210,6 +210,60 @@ TEST_F(ScalarJitTest, ParametersSetToTheirOwnValuesKeepTheCode) {
     EXPECT_FALSE(e.compiledLast());
 }
 
+TEST_F(ScalarJitTest, WorkOnTimeAloneRunsOncePerMomentWithTheInterpretersBits) {
+    // What depends on t alone runs only when t's bits change (batch_hoist.h):
+    // moments repeated, changed, signed zeros, NaN and infinity between
+    // points must still give the interpreter's bits, for every output.
+    CompileOptions colour;
+    colour.kind = DefinitionKind::Colour;
+    struct Case {
+        const char* src;
+        bool colour;
+    };
+    const Case cases[] = {{"0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2", false},
+                          {"sin(t) * x + cos(t) * y - (t - 1)^2", false},
+                          {"min(t, -t) + max(x, t * 2) - atan2(t, 3) * z", false},
+                          {"a = t * t; b = a + x; c = sin(a) + b * y; return c - a;", false},
+                          {"r = sin(t); g = x * sin(t) + cos(t); b = t * t;", true},
+                          {"r = x + y; g = exp(-t) * z; b = (t > 0.5) ? x : sqrt(t);", true}};
+    const double moments[] = {0.25,
+                              0.25,
+                              0.5,
+                              -0.0,
+                              0.0,
+                              0.0,
+                              std::numeric_limits<double>::quiet_NaN(),
+                              std::numeric_limits<double>::quiet_NaN(),
+                              std::numeric_limits<double>::infinity(),
+                              0.25,
+                              1e-310};
+    for (const Case& c : cases) {
+        CompileResult r = c.colour ? compile(c.src, colour) : compile(c.src);
+        ASSERT_TRUE(r.ok()) << c.src;
+        ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+        ScalarEvaluator interpreted(*r.tape, ScalarCode::Interpreted);
+        const std::size_t n = r.tape->outputs.size();
+        int k = 0;
+        for (double t : moments)
+            for (double x : {-0.5, 0.75, 2.0}) {
+                const Point p{x, 0.5 - x, x * x, t, 0, 0, 0};
+                std::vector<double> all(n), expected(n);
+                const double first = compiled.evaluate(p);
+                ASSERT_TRUE(compiled.compiledLast());
+                if (++k % 2)
+                    compiled.evaluateAll(p, all.data());
+                else
+                    all[0] = first;
+                interpreted.evaluateAll(p, expected.data());
+                ASSERT_TRUE(sameBits(first, expected[0])) << c.src << " at t=" << t << " x=" << x
+                                                          << ": " << first << " vs " << expected[0];
+                for (std::size_t o = 0; k % 2 && o < n; ++o)
+                    ASSERT_TRUE(sameBits(all[o], expected[o]))
+                        << c.src << " output " << o << " at t=" << t << " x=" << x;
+            }
+    }
+}
+
 TEST_F(ScalarJitTest, AFewPointsStayInterpretedAndTheSwitchTurnsItOff) {
     CompileResult r = compile("1 - x^2 - y^2 - z^2");
     ASSERT_TRUE(r.ok());

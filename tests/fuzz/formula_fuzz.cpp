@@ -133,6 +133,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Tape simplified = simplifyTape(tape, keep);
     ScalarEvaluator simple(simplified);
     std::vector<double> simpleOut(outs), codeOut(outs);
+    // The machine code with t changing, then back (what depends on t alone
+    // runs once per t: batch_hoist.h), against the interpreter.
+    for (int i = 0; i < 7; ++i) {
+        Point q = points[i % 5];
+        q[3] = coords[(2 * i) % 5] * (i == 6 ? -1.0 : 1.0);
+        scalar.evaluateAll(q, scalarOut.data());
+        scalarCode.evaluateAll(q, codeOut.data());
+        const double first = outs ? scalarCode.evaluate(q) : 0.0;
+        for (std::size_t o = 0; o < outs; ++o) {
+            const double code = o == 0 && i % 2 ? first : codeOut[o];
+            if (std::bit_cast<std::uint64_t>(code) != std::bit_cast<std::uint64_t>(scalarOut[o]) &&
+                !(std::isnan(code) && std::isnan(scalarOut[o]))) {
+                std::fprintf(stderr, "scalar machine code %.17g != interpreted %.17g (t %g)\n",
+                             code, scalarOut[o], q[3]);
+                std::abort();
+            }
+        }
+    }
     for (int i = 0; i < 5; ++i) {
         scalar.evaluateAll(points[i], scalarOut.data());
         simple.evaluateAll(points[i], simpleOut.data());
