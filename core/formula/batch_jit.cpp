@@ -160,22 +160,31 @@ class Emitter : public CodeGenerator {
     // Vector register i: all four lanes, or (one point) an XMM, whose low
     // lane is the point's (the other lane is anything, never computed on).
     Xmm vec(int i) const { return onePoint_ ? Xmm(i) : Xmm(Ymm(i)); }
-    const Xmm S1, S2, R, CA, CB;
+    const Xmm S1, S2;
+    Xmm R; // the step's result: its register becomes the slot's (define)
+    const Xmm CA, CB;
 
     // Arithmetic on every lane, or (one point) on the low lane only: the
     // upper lanes of the point's registers are whatever the caller left
     // there (denormals would be slow), and the scalar forms never read them.
-    void fadd(const Xmm& d, const Xmm& a, const Xmm& b) {
+    // (b: a register, or one point's constant in memory: withConstant)
+    void fadd(const Xmm& d, const Xmm& a, const Xbyak::Operand& b) {
         onePoint_ ? vaddsd(d, a, b) : vaddpd(d, a, b);
     }
-    void fsub(const Xmm& d, const Xmm& a, const Xmm& b) {
+    void fsub(const Xmm& d, const Xmm& a, const Xbyak::Operand& b) {
         onePoint_ ? vsubsd(d, a, b) : vsubpd(d, a, b);
     }
-    void fmul(const Xmm& d, const Xmm& a, const Xmm& b) {
+    void fmul(const Xmm& d, const Xmm& a, const Xbyak::Operand& b) {
         onePoint_ ? vmulsd(d, a, b) : vmulpd(d, a, b);
     }
-    void fdiv(const Xmm& d, const Xmm& a, const Xmm& b) {
+    void fdiv(const Xmm& d, const Xmm& a, const Xbyak::Operand& b) {
         onePoint_ ? vdivsd(d, a, b) : vdivpd(d, a, b);
+    }
+    void fmin(const Xmm& d, const Xmm& a, const Xmm& b) {
+        onePoint_ ? vminsd(d, a, b) : vminpd(d, a, b);
+    }
+    void fmax(const Xmm& d, const Xmm& a, const Xmm& b) {
+        onePoint_ ? vmaxsd(d, a, b) : vmaxpd(d, a, b);
     }
     void fsqrt(const Xmm& d, const Xmm& a) { onePoint_ ? vsqrtsd(d, a, a) : vsqrtpd(d, a); }
     void fround(const Xmm& d, const Xmm& a, std::uint8_t mode) {
@@ -200,6 +209,13 @@ class Emitter : public CodeGenerator {
     std::vector<int> where_;          // register -> slot, or -1 (in its row)
     std::vector<std::vector<Event>> events_;
     std::array<Slot, kSlots> slots_{};
+    // The vector register each slot names, and R's: a step's result is not
+    // copied into its slot, the slot takes R's register and R the slot's
+    // old one (nothing is live in it). Slots 0..6 start as xmm0..xmm6, where
+    // one point's inputs arrive.
+    std::array<int, kSlots> phys_ = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    int rPhys_ = 13;
+    Xmm slotReg(int slot) const { return vec(phys_[std::size_t(slot)]); }
     std::size_t step_ = 0;
     int lane_ = 0;            // the first point of the group being emitted (0 or 4)
     std::vector<int> rowGpr_; // register -> the general register holding its row, or -1
@@ -271,9 +287,9 @@ class Emitter : public CodeGenerator {
     }
     void store(int slot) {
         if (onePoint_)
-            vmovsd(lanes(slots_[std::size_t(slot)].reg), vec(slot));
+            vmovsd(lanes(slots_[std::size_t(slot)].reg), slotReg(slot));
         else
-            vmovupd(lanes(slots_[std::size_t(slot)].reg), vec(slot));
+            vmovupd(lanes(slots_[std::size_t(slot)].reg), slotReg(slot));
         slots_[std::size_t(slot)].dirty = false;
     }
     void release(int slot) {
@@ -308,14 +324,14 @@ class Emitter : public CodeGenerator {
         if (slot < 0) {
             slot = freeSlot();
             if (onePoint_)
-                vmovsd(vec(slot), lanes(reg));
+                vmovsd(slotReg(slot), lanes(reg));
             else
-                vmovupd(vec(slot), lanes(reg));
+                vmovupd(slotReg(slot), lanes(reg));
             slots_[std::size_t(slot)] = {reg, false, true};
             where_[std::size_t(reg)] = slot;
         }
         slots_[std::size_t(slot)].pinned = true;
-        return vec(slot);
+        return slotReg(slot);
     }
     // R, the step's result, becomes register `reg`'s value.
     void define(std::int32_t reg) {
@@ -325,20 +341,34 @@ class Emitter : public CodeGenerator {
             where_[std::size_t(reg)] = slot;
         }
         slots_[std::size_t(slot)] = {reg, true, false};
-        vmovapd(vec(slot), R);
+        std::swap(phys_[std::size_t(slot)], rPhys_);
+        R = vec(rPhys_);
     }
-    void broadcast(const Xmm& y, double v) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &v, sizeof bits);
-        auto [at, added] = poolIndex_.emplace(bits, pool_.size());
+    // The constant's byte offset in the pool (added the first time).
+    int pooled(double v) {
+        auto [at, added] = poolIndex_.emplace(std::bit_cast<std::uint64_t>(v), pool_.size());
         if (added) {
             if (pool_.size() == pool_.capacity()) throw Xbyak::Error(ERR_CODE_IS_TOO_BIG);
             pool_.push_back(v);
         }
+        return int(at->second * sizeof(double));
+    }
+    void broadcast(const Xmm& y, double v) {
         if (onePoint_)
-            vmovsd(y, ptr[rip + poolLabel_ + int(at->second * sizeof(double))]);
+            vmovsd(y, ptr[rip + poolLabel_ + pooled(v)]);
         else
-            vbroadcastsd(Ymm(y.getIdx()), ptr[r14 + int(at->second * sizeof(double))]);
+            vbroadcastsd(Ymm(y.getIdx()), ptr[r14 + pooled(v)]);
+    }
+    // use(the constant v as an operand): one point, straight from the pool
+    // (a scalar form reads 8 bytes); else broadcast into `scratch`.
+    template <class Use>
+    void withConstant(double v, const Xmm& scratch, Use use) {
+        if (onePoint_) {
+            use(ptr[rip + poolLabel_ + pooled(v)]);
+        } else {
+            broadcast(scratch, v);
+            use(scratch);
+        }
     }
     Xmm operandA(const BatchStep& s) {
         if (!s.constA) return in(s.a);
@@ -352,12 +382,13 @@ class Emitter : public CodeGenerator {
     }
 
     // dst = min or max (x, y) with the language's rule: x when x < y (x > y)
-    // or x is NaN, else y. Uses S1 and S2.
+    // or x is NaN, else y. The processor's minsd/maxsd (x, y) is that but
+    // for a NaN x, where it gives y (as it does at a tie and for a NaN y):
+    // x is blended back in there. Uses S1 and S2.
     void minMax(bool isMin, const Xmm& dst, const Xmm& x, const Xmm& y) {
-        fcmp(S1, x, y, isMin ? kLtOQ : kGtOQ);
         fcmp(S2, x, x, kUnordQ);
-        vorpd(S1, S1, S2);
-        vblendvpd(dst, y, x, S1);
+        isMin ? fmin(S1, x, y) : fmax(S1, x, y);
+        vblendvpd(dst, S1, x, S2);
     }
     // R = 1.0 where mask, else 0.0.
     void oneWhere(const Xmm& mask) {
@@ -399,28 +430,33 @@ class Emitter : public CodeGenerator {
         switch (s.fused) {
         case Fused::SquareOfDiff: {
             const Xmm a = in(s.a);
-            broadcast(S1, s.ca);
-            fsub(R, a, S1);
+            withConstant(s.ca, S1, [&](const auto& c) { fsub(R, a, c); });
             fmul(R, R, R);
             return;
         }
         case Fused::SquareTerms: {
-            if (s.constA)
-                broadcast(R, s.ca);
-            else
-                vmovapd(R, in(s.a));
             // acc + sign * ((r - offset)^2), with what is exact left out:
-            // r - (+0) is r, and adding -1 * q is subtracting q.
-            for (int t = 0; t < s.terms; ++t) {
+            // r - (+0) is r, adding -1 * q is subtracting q, and +0 + q is
+            // q (a square is +0 or more, or NaN, which the sum passes on).
+            auto square = [&](const Xmm& dst, int t) {
                 const Xmm r = in(s.termReg[t]);
                 const double offset = s.termOffset[t];
                 if (std::bit_cast<std::uint64_t>(offset) == 0) {
-                    fmul(CA, r, r);
+                    fmul(dst, r, r);
                 } else {
-                    broadcast(S1, offset);
-                    fsub(CA, r, S1);
-                    fmul(CA, CA, CA);
+                    withConstant(offset, S1, [&](const auto& c) { fsub(dst, r, c); });
+                    fmul(dst, dst, dst);
                 }
+            };
+            int first = 0;
+            if (s.constA && std::bit_cast<std::uint64_t>(s.ca) == 0 && s.termSign[0] == 1.0)
+                square(R, first++);
+            else if (s.constA)
+                broadcast(R, s.ca);
+            else
+                vmovapd(R, in(s.a));
+            for (int t = first; t < s.terms; ++t) {
+                square(CA, t);
                 if (s.termSign[t] == 1.0) {
                     fadd(R, R, CA);
                 } else if (s.termSign[t] == -1.0) {
@@ -572,7 +608,18 @@ class Emitter : public CodeGenerator {
         default:
             break;
         }
-        // Binary arithmetic, min and max, comparisons, logic.
+        // Binary arithmetic, min and max, comparisons, logic. (One point:
+        // arithmetic with a constant second operand reads it from memory.)
+        if (onePoint_ && s.constB && !s.constA &&
+            (s.op == Op::Add || s.op == Op::Sub || s.op == Op::Mul || s.op == Op::Div)) {
+            const Xmm a = in(s.a);
+            const Address c = ptr[rip + poolLabel_ + pooled(s.cb)];
+            s.op == Op::Add   ? fadd(R, a, c)
+            : s.op == Op::Sub ? fsub(R, a, c)
+            : s.op == Op::Mul ? fmul(R, a, c)
+                              : fdiv(R, a, c);
+            return;
+        }
         const Xmm a = operandA(s), b = operandB(s);
         switch (s.op) {
         case Op::Add:
@@ -744,8 +791,8 @@ class Emitter : public CodeGenerator {
         }
         emitSteps(hoisted_, steps_.size());
         if (returnReg_ >= 0) {
-            if (returnSlot_ > 0)
-                vmovapd(xmm0, vec(returnSlot_));
+            if (returnSlot_ >= 0 && phys_[std::size_t(returnSlot_)] != 0)
+                vmovapd(xmm0, slotReg(returnSlot_));
             else if (returnSlot_ < 0)
                 vmovsd(xmm0, lanes(returnReg_));
         }
