@@ -46,9 +46,20 @@ void rIntersectPartials(double a, double b, double alpha, double& da, double& db
         db = 1.0 - da;
         return;
     }
+    // +inf and a finite other: the R-function is that other (rIntersect0),
+    // so its slope is the other's
+    if (std::isinf(a) && a > 0 && std::isfinite(b)) {
+        da = 0.0, db = 1.0;
+        return;
+    }
+    if (std::isinf(b) && b > 0 && std::isfinite(a)) {
+        da = 1.0, db = 0.0;
+        return;
+    }
     double s = std::max(std::abs(a), std::abs(b));
     if (s == 0.0 || !std::isfinite(s)) {
-        // not differentiable at the origin: the average of the one-sided slopes
+        // not differentiable at the origin: the average of the one-sided
+        // slopes (and the value is infinite or NaN beyond it)
         da = db = 0.5;
         return;
     }

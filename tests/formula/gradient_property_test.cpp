@@ -81,6 +81,24 @@ TEST(GradientProperty, PrimitivesAndBlendsMatchFiniteDifferences) {
         EXPECT_GT(checkGradient(src, rng, 60), 60) << src;
 }
 
+TEST(GradientProperty, AnRFunctionWithAnInfiniteSideHasTheOtherSidesSlope) {
+    // rintersect(a, +inf) is a and runion(a, -inf) is a (rIntersect0), so
+    // their slope is a's, not the average of both sides (the fuzz target's
+    // find: 0.5 where differences said 1).
+    const char* formulas[] = {"rintersect(x, 1/0)", "rintersect(1/0, 2*x)", "runion(x, -1/0)",
+                              "runion(-1/0, 2*x)"};
+    const double slope[] = {1, 2, 1, 2};
+    for (int i = 0; i < 4; ++i) {
+        CompileResult r = compile(formulas[i]);
+        ASSERT_TRUE(r.ok()) << formulas[i];
+        GradientEvaluator g(*r.tape);
+        const Dual d = g.evaluate(pointXYZ(0.3, 0.2, 0.1));
+        EXPECT_DOUBLE_EQ(d.v, 0.3 * slope[i]) << formulas[i];
+        EXPECT_EQ(d.d[0], slope[i]) << formulas[i];
+        EXPECT_EQ(d.d[1], 0.0) << formulas[i];
+    }
+}
+
 TEST(GradientProperty, ParametricGradientIsWithRespectToUVW) {
     CompileOptions o;
     o.kind = DefinitionKind::Parametric;

@@ -27,7 +27,7 @@
 using namespace fl::formula;
 
 // d f_o / d x_k at p against central differences of the scalar evaluator,
-// judged only where they can judge: the differences at step h and at 10 h
+// judged only where they can judge: the differences at steps h, 10 h and 0.37 h
 // agree (f is smooth there, and its values are not rounding noise, as
 // mod(a, 1e-9) of a large a is).
 static void checkDerivative(ScalarEvaluator& scalar, const Point& p, int k,
@@ -43,9 +43,13 @@ static void checkDerivative(ScalarEvaluator& scalar, const Point& p, int k,
         for (std::size_t o = 0; o < outs; ++o)
             out[o] = (hi[o] - lo[o]) / (2 * step);
     };
-    std::vector<double> fine(outs), coarse(outs), value(outs);
+    std::vector<double> fine(outs), coarse(outs), odd(outs), value(outs);
     central(h, fine);
     central(10 * h, coarse);
+    // A third step, not a multiple of the others: mod(-z/7, -1e-9) turns
+    // thousands of times within h, and its differences at h and 10 h once
+    // agreed to seven digits (-9.87e-6, where d is -1/7) by the phase alone.
+    central(0.37 * h, odd);
     scalar.evaluateAll(p, value.data());
     for (std::size_t o = 0; o < outs; ++o) {
         const double d = grads[o].d[std::size_t(k)];
@@ -61,7 +65,9 @@ static void checkDerivative(ScalarEvaluator& scalar, const Point& p, int k,
         // differences of 4.7e5 and 4.4e4 (f turns many times within h)
         // "agree" and then contradict d.
         const double differences = 1 + std::abs(fine[o]) + std::abs(coarse[o]);
-        if (std::abs(fine[o] - coarse[o]) > 1e-6 * differences + noise) continue; // not smooth
+        if (std::abs(fine[o] - coarse[o]) > 1e-6 * differences + noise ||
+            std::abs(fine[o] - odd[o]) > 1e-6 * differences + 3 * noise)
+            continue; // not smooth
         if (std::abs(fine[o] - d) > 1e-3 * scale + noise) {
             std::fprintf(stderr, "d/d%c = %.17g, differences say %.17g (and %.17g at 10 h)\n",
                          "xyz"[k], d, fine[o], coarse[o]);
