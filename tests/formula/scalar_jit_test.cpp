@@ -61,6 +61,12 @@ bool agreeOnSpecials(const std::string& src) {
     return ran;
 }
 
+// Past the warm-up: the next point runs as code.
+void warmUp(ScalarEvaluator& e) {
+    for (unsigned i = 0; i <= kScalarWarmUp; ++i)
+        e.evaluate(pointXYZ(1, 0, 0));
+}
+
 TEST_F(ScalarJitTest, EveryOperationGivesTheInterpretersBits) {
     const char* sources[] = {
         "x + y", "x - y", "x * y", "x / y", "min(x, y)", "max(x, y)", "-x + y", "abs(x) + y",
@@ -199,8 +205,7 @@ TEST_F(ScalarJitTest, ParametersSetToTheirOwnValuesKeepTheCode) {
     CompileResult r = compile("param k = 1; k * x - y");
     ASSERT_TRUE(r.ok());
     ScalarEvaluator e(*r.tape);
-    for (unsigned i = 0; i <= kScalarWarmUp; ++i)
-        e.evaluate(pointXYZ(1, 0, 0));
+    warmUp(e);
     ASSERT_TRUE(e.compiledLast());
     ASSERT_TRUE(e.parameters().set("k", 1.0));
     EXPECT_EQ(e.evaluate(pointXYZ(2, 0.5, 0)), 1.5);
@@ -282,8 +287,7 @@ TEST_F(ScalarJitTest, AFewPointsStayInterpretedAndTheSwitchTurnsItOff) {
     CompileResult withK = compile("param k = 1; k * x - y");
     ASSERT_TRUE(withK.ok());
     ScalarEvaluator slider(*withK.tape);
-    for (unsigned i = 0; i <= kScalarWarmUp; ++i)
-        slider.evaluate(pointXYZ(1, 0, 0));
+    warmUp(slider);
     EXPECT_TRUE(slider.compiledLast());
     ASSERT_TRUE(slider.parameters().set("k", std::numeric_limits<double>::quiet_NaN()));
     for (unsigned i = 0; i < kScalarWarmUp; ++i) {
