@@ -125,8 +125,8 @@ class Emitter : public CodeGenerator {
           CA(vec(14)), CB(vec(15)), steps_(steps), liveOut_(liveOut),
           where_(std::size_t(registerCount), -1), events_(std::size_t(registerCount)),
           rowGpr_(std::size_t(registerCount), -1), returnReg_(returnReg), hoisted_(hoisted) {
-        // One point: code that calls nothing keeps its rows and the
-        // constants in registers a call may clobber, and so saves none.
+        // One point: code that calls nothing keeps its rows' address in a
+        // register a call may clobber (rdi), and so saves none.
         const bool calls = std::any_of(steps_.begin(), steps_.end(),
                                        [](const BatchStep& s) { return !inline_(s); });
         if (onePoint_ && !calls) rowsGpr_ = rdi;
@@ -136,7 +136,8 @@ class Emitter : public CodeGenerator {
                 slots_[std::size_t(i)] = {i, true, false};
                 where_[std::size_t(i)] = i;
             }
-        // At most a few constants a step: the pool never moves once r14 holds it.
+        // At most a few constants a step: the pool never moves once r14 (the
+        // batch code's) holds its address.
         pool_.reserve(16 * steps_.size() + 16);
         for (std::size_t k = 0; k < steps_.size(); ++k) {
             for (std::int32_t r : readsOf(steps_[k]))
@@ -405,8 +406,8 @@ class Emitter : public CodeGenerator {
         vxorpd(dst, x, S2);
     }
 
-    // The interpreter's code for step `s` over the points the loops do (r13
-    // of them): one call a block. `s` is the code's own copy of the step.
+    // The interpreter's code for step `s` over the points the batch loops do
+    // (r13 of them): one call a block. `s` is the code's own copy of the step.
     // (One point: the scalar evaluator's operation, runOneStep; the code
     // touches no upper lane, so needs no vzeroupper.)
     void emitCall(const BatchStep& s) {
@@ -750,8 +751,7 @@ class Emitter : public CodeGenerator {
         push(r15);
         sub(rsp, 8); // 16-byte aligned for calls
         mov(r12, rdi);
-        // the interpreter's three scratch rows follow the registers' (runBatchStep;
-        // one-point code has none and never reads r15)
+        // the interpreter's three scratch rows follow the registers' (runBatchStep)
         lea(r15, ptr[r12 + int(where_.size() * sizeof(double*))]);
         mov(r13, rsi);
         mov(r14, reinterpret_cast<std::uint64_t>(pool_.data()));

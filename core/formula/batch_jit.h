@@ -51,8 +51,9 @@ class BatchJit {
     // Code from compileOnePoint: the point's coordinates (Input's order)
     // arrive in registers, and rows (registerCount + 1 doubles, the
     // caller's: each evaluator its own) keep every register the code stores
-    // — the outputs, but for the one returned — and t's last bits. A call costs what a call through
-    // a pointer costs: the ScalarEvaluator calls it from its inline evaluate().
+    // — the outputs, but for the one returned — and t's last bits. A call
+    // costs what a call through a pointer costs: the ScalarEvaluator calls
+    // it from its inline evaluate().
     using OnePoint = double (*)(double x, double y, double z, double t, double u, double v,
                                 double w, double* rows);
     OnePoint onePoint() const;

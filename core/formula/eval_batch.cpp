@@ -200,7 +200,11 @@ BatchEvaluator::~BatchEvaluator() {
 
 void BatchEvaluator::specialise(const BatchInputs& in) {
     const std::vector<double>& pv = params_.values();
-    bool same = specialised_ && specialisedParams_ == pv;
+    // Parameters compared by their bits: == says +0 is -0 (k * x would keep
+    // the old zero's sign) and NaN is not NaN (it would specialise again).
+    bool same = specialised_ && specialisedParams_.size() == pv.size() &&
+                (pv.empty() || std::memcmp(specialisedParams_.data(), pv.data(),
+                                           pv.size() * sizeof(double)) == 0);
     for (int i = 0; same && i < kInputCount; ++i) {
         bool varying = in.arrays[i] != nullptr;
         same =
@@ -529,8 +533,10 @@ bool BatchEvaluator::prepareOne() {
     specialise(in);
     // What depends on t alone runs once per t (batch_hoist.h).
     const HoistedSteps h = hoistTimeOnly(steps_, liveOut_, tape_.registerCount);
-    onePoint_ = BatchJit::compileOnePoint(h.steps, h.liveOut, h.registerCount, onePointReturns(),
-                                          h.hoisted);
+    oneReturns_ = firstOutputComputed();
+    oneHoisted_ = h.hoisted;
+    onePoint_ =
+        BatchJit::compileOnePoint(h.steps, h.liveOut, h.registerCount, oneReturns_, h.hoisted);
     oneRows_.assign(std::size_t(h.registerCount) + 1, 0.0);
     if (onePoint_ && h.hoisted > 0) {
         // The rows made consistent: t's kept bits (1.0's) differ from the
@@ -543,7 +549,7 @@ bool BatchEvaluator::prepareOne() {
 
 // The first output's register where the steps compute it (not a constant,
 // not an input: the code returns only what it computes).
-std::int32_t BatchEvaluator::onePointReturns() const {
+std::int32_t BatchEvaluator::firstOutputComputed() const {
     if (tape_.outputs.empty()) return -1;
     const Operand& o = tape_.outputs[0].value;
     return o.isConst() || o.reg < kInputCount || isUniform_[std::size_t(o.reg)] ? -1 : o.reg;
@@ -552,7 +558,7 @@ std::int32_t BatchEvaluator::onePointReturns() const {
 void BatchEvaluator::evaluateOne(const Point& p, double* outputs, std::size_t count) {
     const double first =
         onePoint_->onePoint()(p[0], p[1], p[2], p[3], p[4], p[5], p[6], oneRows_.data());
-    const std::int32_t returned = onePointReturns();
+    const std::int32_t returned = oneReturns_;
     for (std::size_t k = 0; k < count && k < tape_.outputs.size(); ++k) {
         const Operand& o = tape_.outputs[k].value;
         outputs[k] = o.isConst()           ? o.value

@@ -72,7 +72,10 @@ class BatchEvaluator {
     // computed, not a constant or an input: its register).
     BatchJit::OnePoint onePointCode() const { return onePoint_->onePoint(); }
     double* onePointRows() { return oneRows_.data(); }
-    std::int32_t onePointReturns() const;
+    std::int32_t onePointReturns() const { return oneReturns_; }
+    // How many steps of that code depend on t alone (batch_hoist.h): run
+    // once per t.
+    std::size_t onePointHoisted() const { return oneHoisted_; }
 
     // Passes over each block for the last evaluate() (after uniform folding
     // and fusion): what the loops really run, for tests and benchmarks.
@@ -102,10 +105,15 @@ class BatchEvaluator {
     double jitCompileUs_ = 0;             // what making it took (the last specialisation)
     std::vector<double*> tailBase_;       // the rows from the point the JIT stopped at
     std::vector<char> liveOut_;           // per register: an output the steps compute
-    // evaluateOne's code and its rows (one double per register: the
-    // inputs' are read from the point).
+    // evaluateOne's code, its rows (a double for every register, the ones
+    // hoistTimeOnly adds included, then t's last bits), the register it
+    // returns (as prepareOne made it: an evaluate() in between specialises
+    // anew) and how many steps it runs once per t.
     std::shared_ptr<const BatchJit> onePoint_;
     std::vector<double> oneRows_;
+    std::int32_t oneReturns_ = -1;
+    std::size_t oneHoisted_ = 0;
+    std::int32_t firstOutputComputed() const;
     void makeWorkspace();
 
     void specialise(const BatchInputs& in);

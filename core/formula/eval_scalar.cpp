@@ -4,11 +4,19 @@
 #include "scalar_ops.h"
 #include "tape_walk.h"
 
+#include <atomic>
 #include <cstring>
 
 namespace fl::formula {
 
-ParameterValues::ParameterValues(const Tape& tape) : tape_(&tape) {
+namespace {
+std::uint64_t newParameterVersion() {
+    static std::atomic<std::uint64_t> last{0};
+    return last.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+} // namespace
+
+ParameterValues::ParameterValues(const Tape& tape) : tape_(&tape), version_(newParameterVersion()) {
     for (const ParameterInfo& p : tape.params)
         values_.push_back(p.defaultValue);
 }
@@ -19,14 +27,14 @@ void ParameterValues::rebind(const Tape& tape) {
 
 void ParameterValues::assign(const std::vector<double>& values) {
     if (values.size() == values_.size()) values_ = values;
-    ++version_;
+    version_ = newParameterVersion();
 }
 
 bool ParameterValues::set(std::string_view name, double value) {
     for (std::size_t i = 0; i < tape_->params.size(); ++i) {
         if (tape_->params[i].name == name) {
             values_[i] = value;
-            ++version_;
+            version_ = newParameterVersion();
             return true;
         }
     }

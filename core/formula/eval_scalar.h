@@ -26,8 +26,9 @@ class ParameterValues {
     void rebind(const Tape& tape);                  // the same tape's copy (an evaluator's copy)
     void assign(const std::vector<double>& values); // every value, in order (same count)
     const std::vector<double>& values() const { return values_; }
-    // Changes at every set() and assign(): a cheap test that values() may
-    // have changed since it was last read.
+    // A new number at every set() and assign(), unique across all
+    // ParameterValues (a copy, or an assignment of one to another, carries
+    // its values and their number together): equal versions, equal values.
     std::uint64_t version() const { return version_; }
 
   private:

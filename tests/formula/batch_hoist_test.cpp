@@ -49,6 +49,52 @@ TEST(HoistTimeOnly, WorkOnTimeAloneLeadsUnderRegistersOfItsOwn) {
         EXPECT_EQ(kept.count(h.steps[i].out), 0u);
 }
 
+TEST(HoistTimeOnly, BothOutputsOfASineCosinePairAndFusedReadsAreRenamed) {
+    // r8, r9 = sincos(t); r10 = 1 + (x - 1)^2 + r8 ... as SquareTerms reading
+    // x and r9; r8 reused for x * r9; r11 = min chain of r10, r8, r9.
+    BatchStep pair;
+    pair.fused = Fused::SinCos;
+    pair.op = Op::Sin;
+    pair.out = 8;
+    pair.out2 = 9;
+    pair.a = kT;
+    BatchStep terms;
+    terms.fused = Fused::SquareTerms;
+    terms.op = Op::Add;
+    terms.out = 10;
+    terms.constA = true;
+    terms.ca = 1.0;
+    terms.terms = 2;
+    terms.termReg[0] = kX;
+    terms.termOffset[0] = 1.0;
+    terms.termReg[1] = 9;
+    BatchStep chain;
+    chain.fused = Fused::MinMaxChain;
+    chain.op = Op::Min;
+    chain.out = 11;
+    chain.chainCount = 3;
+    chain.chainReg[0] = 10;
+    chain.chainReg[1] = 8;
+    chain.chainReg[2] = 9;
+    std::vector<BatchStep> steps = {pair, terms, step(Op::Mul, 8, kX, 9), chain};
+    std::vector<char> liveOut(12, 0);
+    liveOut[11] = 1;
+    const HoistedSteps h = hoistTimeOnly(steps, liveOut, 12);
+    ASSERT_EQ(h.hoisted, 1u);
+    EXPECT_EQ(h.registerCount, 14);
+    const BatchStep& p = h.steps[0];
+    EXPECT_EQ(p.fused, Fused::SinCos);
+    EXPECT_EQ(p.out, 12);  // the sines
+    EXPECT_EQ(p.out2, 13); // the cosines
+    EXPECT_EQ(h.steps[1].termReg[0], kX);
+    EXPECT_EQ(h.steps[1].termReg[1], 13); // the cosines, by their new name
+    EXPECT_EQ(h.steps[2].b, 13);
+    EXPECT_EQ(h.steps[2].out, 8); // x * cos: r8 again, not the sines' register
+    EXPECT_EQ(h.steps[3].chainReg[0], 10);
+    EXPECT_EQ(h.steps[3].chainReg[1], 8);  // the product
+    EXPECT_EQ(h.steps[3].chainReg[2], 13); // the cosines
+}
+
 TEST(HoistTimeOnly, OutputsAndWorkOnOtherInputsStay) {
     // r8 = t*t is an output: it stays, and so does r9 = r8 + 1 that reads it.
     BatchStep plusOne = step(Op::Add, 9, 8, 0);

@@ -8,6 +8,7 @@
 // Skipped where the CPU has no AVX2.
 #include "formula/batch_jit.h"
 #include "formula/compiler.h"
+#include "formula/eval_batch.h"
 #include "formula/eval_scalar.h"
 
 #include "test_helpers.h"
@@ -253,19 +254,62 @@ TEST_F(ScalarJitTest, WorkOnTimeAloneRunsOncePerMomentWithTheInterpretersBits) {
             for (double x : {-0.5, 0.75, 2.0}) {
                 const Point p{x, 0.5 - x, x * x, t, 0, 0, 0};
                 std::vector<double> all(n), expected(n);
-                const double first = compiled.evaluate(p);
-                ASSERT_TRUE(compiled.compiledLast());
-                if (++k % 2)
+                // Either call may be the first at a new t (the one that runs
+                // the hoisted steps): they take turns.
+                double first = 0;
+                if (++k % 2) {
                     compiled.evaluateAll(p, all.data());
-                else
-                    all[0] = first;
+                    first = compiled.evaluate(p);
+                } else {
+                    first = compiled.evaluate(p);
+                    compiled.evaluateAll(p, all.data());
+                }
+                ASSERT_TRUE(compiled.compiledLast());
                 interpreted.evaluateAll(p, expected.data());
                 ASSERT_TRUE(sameBits(first, expected[0])) << c.src << " at t=" << t << " x=" << x
                                                           << ": " << first << " vs " << expected[0];
-                for (std::size_t o = 0; k % 2 && o < n; ++o)
+                for (std::size_t o = 0; o < n; ++o)
                     ASSERT_TRUE(sameBits(all[o], expected[o]))
                         << c.src << " output " << o << " at t=" << t << " x=" << x;
             }
+    }
+}
+
+TEST_F(ScalarJitTest, TheBouncingSpheresSineRunsOncePerMoment) {
+    // The test above passes with nothing hoisted too: this one says the
+    // work on t alone really is put in front.
+    CompileResult r = compile("0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2");
+    ASSERT_TRUE(r.ok());
+    BatchEvaluator e(*r.tape, false);
+    ASSERT_TRUE(e.prepareOne());
+    EXPECT_GE(e.onePointHoisted(), 2u); // sin(pi * t), abs of it, minus 0.5: in front
+    CompileResult still = compile("1 - x^2 - y^2 - z^2 + x * t");
+    ASSERT_TRUE(still.ok());
+    BatchEvaluator none(*still.tape, false);
+    ASSERT_TRUE(none.prepareOne());
+    EXPECT_EQ(none.onePointHoisted(), 0u);
+}
+
+TEST_F(ScalarJitTest, AParameterFromPlusToMinusZeroIsANewValue) {
+    // The batch evaluator compared parameters with ==, for which -0 is +0:
+    // k * x kept +0's sign after k became -0.
+    CompileResult r = compile("param k = 0; k * x");
+    ASSERT_TRUE(r.ok());
+    ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
+    BatchEvaluator batch(*r.tape);
+    const double xs[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+    double out[8];
+    BatchInputs in;
+    in.set(Input::X, xs);
+    for (double k : {0.0, -0.0, 0.0}) {
+        ASSERT_TRUE(compiled.parameters().set("k", k));
+        ASSERT_TRUE(batch.parameters().set("k", k));
+        for (unsigned i = 0; i <= kScalarWarmUp; ++i) // compiled for this k
+            compiled.evaluate(pointXYZ(1, 0, 0));
+        EXPECT_TRUE(sameBits(compiled.evaluate(pointXYZ(1, 0, 0)), k)) << k;
+        batch.evaluate(in, 8, out);
+        for (double v : out)
+            EXPECT_TRUE(sameBits(v, k)) << k;
     }
 }
 

@@ -143,10 +143,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // runs once per t: batch_hoist.h), against the interpreter.
     for (int i = 0; i < 7; ++i) {
         Point q = points[i % 5];
-        q[3] = coords[(2 * i) % 5] * (i == 6 ? -1.0 : 1.0);
+        q[3] = i == 6 ? -0.0 : coords[(2 * i) % 5];
         scalar.evaluateAll(q, scalarOut.data());
+        // (either call may be the first at a new t: they take turns)
+        double first = 0.0;
+        if (i % 2 && outs) first = scalarCode.evaluate(q);
         scalarCode.evaluateAll(q, codeOut.data());
-        const double first = outs ? scalarCode.evaluate(q) : 0.0;
         for (std::size_t o = 0; o < outs; ++o) {
             const double code = o == 0 && i % 2 ? first : codeOut[o];
             if (std::bit_cast<std::uint64_t>(code) != std::bit_cast<std::uint64_t>(scalarOut[o]) &&
