@@ -354,9 +354,11 @@ class Emitter : public CodeGenerator {
         }
         return int(at->second * sizeof(double));
     }
+    // One point: the constant where it lies, after the code.
+    Address poolAddress(double v) { return ptr[rip + poolLabel_ + pooled(v)]; }
     void broadcast(const Xmm& y, double v) {
         if (onePoint_)
-            vmovsd(y, ptr[rip + poolLabel_ + pooled(v)]);
+            vmovsd(y, poolAddress(v));
         else
             vbroadcastsd(Ymm(y.getIdx()), ptr[r14 + pooled(v)]);
     }
@@ -365,7 +367,7 @@ class Emitter : public CodeGenerator {
     template <class Use>
     void withConstant(double v, const Xmm& scratch, Use use) {
         if (onePoint_) {
-            use(ptr[rip + poolLabel_ + pooled(v)]);
+            use(poolAddress(v));
         } else {
             broadcast(scratch, v);
             use(scratch);
@@ -609,32 +611,25 @@ class Emitter : public CodeGenerator {
         default:
             break;
         }
-        // Binary arithmetic, min and max, comparisons, logic. (One point:
-        // arithmetic with a constant second operand reads it from memory.)
-        if (onePoint_ && s.constB && !s.constA &&
-            (s.op == Op::Add || s.op == Op::Sub || s.op == Op::Mul || s.op == Op::Div)) {
-            const Xmm a = in(s.a);
-            const Address c = ptr[rip + poolLabel_ + pooled(s.cb)];
-            s.op == Op::Add   ? fadd(R, a, c)
-            : s.op == Op::Sub ? fsub(R, a, c)
-            : s.op == Op::Mul ? fmul(R, a, c)
-                              : fdiv(R, a, c);
+        // Binary arithmetic: a constant second operand as withConstant gives
+        // it (one point: read from memory).
+        if (s.op == Op::Add || s.op == Op::Sub || s.op == Op::Mul || s.op == Op::Div) {
+            const Xmm a = operandA(s);
+            auto arithmetic = [&](const auto& b) {
+                s.op == Op::Add   ? fadd(R, a, b)
+                : s.op == Op::Sub ? fsub(R, a, b)
+                : s.op == Op::Mul ? fmul(R, a, b)
+                                  : fdiv(R, a, b);
+            };
+            if (s.constB)
+                withConstant(s.cb, CB, arithmetic);
+            else
+                arithmetic(in(s.b));
             return;
         }
+        // min and max, comparisons, logic
         const Xmm a = operandA(s), b = operandB(s);
         switch (s.op) {
-        case Op::Add:
-            fadd(R, a, b);
-            break;
-        case Op::Sub:
-            fsub(R, a, b);
-            break;
-        case Op::Mul:
-            fmul(R, a, b);
-            break;
-        case Op::Div:
-            fdiv(R, a, b);
-            break;
         case Op::Min:
         case Op::Max:
             minMax(s.op == Op::Min, R, a, b);

@@ -200,11 +200,8 @@ BatchEvaluator::~BatchEvaluator() {
 
 void BatchEvaluator::specialise(const BatchInputs& in) {
     const std::vector<double>& pv = params_.values();
-    // Parameters compared by their bits: == says +0 is -0 (k * x would keep
-    // the old zero's sign) and NaN is not NaN (it would specialise again).
-    bool same = specialised_ && specialisedParams_.size() == pv.size() &&
-                (pv.empty() || std::memcmp(specialisedParams_.data(), pv.data(),
-                                           pv.size() * sizeof(double)) == 0);
+    // (by their bits: with ==, k * x kept +0's sign after k became -0)
+    bool same = specialised_ && params_.sameBitsAs(specialisedParams_);
     for (int i = 0; same && i < kInputCount; ++i) {
         bool varying = in.arrays[i] != nullptr;
         same =
@@ -558,14 +555,13 @@ std::int32_t BatchEvaluator::firstOutputComputed() const {
 void BatchEvaluator::evaluateOne(const Point& p, double* outputs, std::size_t count) {
     const double first =
         onePoint_->onePoint()(p[0], p[1], p[2], p[3], p[4], p[5], p[6], oneRows_.data());
-    const std::int32_t returned = oneReturns_;
     for (std::size_t k = 0; k < count && k < tape_.outputs.size(); ++k) {
         const Operand& o = tape_.outputs[k].value;
-        outputs[k] = o.isConst()           ? o.value
-                     : o.reg == returned   ? first
-                     : isUniform_[o.reg]   ? uniformValue_[o.reg]
-                     : o.reg < kInputCount ? p[std::size_t(o.reg)]
-                                           : oneRows_[std::size_t(o.reg)];
+        outputs[k] = o.isConst()            ? o.value
+                     : o.reg == oneReturns_ ? first
+                     : isUniform_[o.reg]    ? uniformValue_[o.reg]
+                     : o.reg < kInputCount  ? p[std::size_t(o.reg)]
+                                            : oneRows_[std::size_t(o.reg)];
     }
 }
 

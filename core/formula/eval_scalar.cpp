@@ -30,6 +30,14 @@ void ParameterValues::assign(const std::vector<double>& values) {
     version_ = newParameterVersion();
 }
 
+bool ParameterValues::sameBitsAs(const std::vector<double>& other) const {
+    // (memcmp of no bytes still wants pointers that are not null: an empty
+    // vector's may be.)
+    return other.size() == values_.size() &&
+           (values_.empty() ||
+            std::memcmp(other.data(), values_.data(), values_.size() * sizeof(double)) == 0);
+}
+
 bool ParameterValues::set(std::string_view name, double value) {
     for (std::size_t i = 0; i < tape_->params.size(); ++i) {
         if (tape_->params[i].name == name) {
@@ -81,12 +89,8 @@ ScalarEvaluator::ScalarEvaluator(ScalarEvaluator&& other) noexcept
 bool ScalarEvaluator::runCompiled(const Point& p, double* outputs, std::size_t count) {
     if (code_ == ScalarCode::Interpreted) return false;
     const std::vector<double>& pv = params_.values();
-    // (memcmp of no bytes still wants pointers that are not null: an empty
-    // vector's may be.)
-    if (pv.size() != compiledParams_.size() ||
-        (!pv.empty() &&
-         std::memcmp(pv.data(), compiledParams_.data(), pv.size() * sizeof(double)) != 0)) {
-        compiledParams_ = pv; // by their bits: a NaN parameter is equal to itself here
+    if (!params_.sameBitsAs(compiledParams_)) {
+        compiledParams_ = pv;
         prepared_ = false;
         direct_ = nullptr;
         calls_ = 0;

@@ -26,6 +26,9 @@ class ParameterValues {
     void rebind(const Tape& tape);                  // the same tape's copy (an evaluator's copy)
     void assign(const std::vector<double>& values); // every value, in order (same count)
     const std::vector<double>& values() const { return values_; }
+    // Whether `other` holds the same values bit for bit (== would call +0
+    // and -0 the same, and NaN not itself): what compiled code folded in.
+    bool sameBitsAs(const std::vector<double>& other) const;
     // A new number at every set() and assign(), unique across all
     // ParameterValues (a copy, or an assignment of one to another, carries
     // its values and their number together): equal versions, equal values.
