@@ -65,4 +65,25 @@ inline const std::vector<double>& specialValues() {
     return v;
 }
 
+// One formula for each operation the JIT writes itself (arithmetic, min and
+// max, comparisons, logic, powers, select, the fused sums of squares and
+// min/max chains), then for each it calls out for (SLEEF's functions,
+// hypot, mod, round, noise): the batch and the scalar JIT tests both run
+// them all, each adding its own.
+inline std::vector<std::string> jitOperationFormulas() {
+    return {"x + y", "x - y", "x * y", "x / y", "min(x, y)", "max(x, y)", "-x + y", "abs(x) + y",
+            "sqrt(x) + y", "floor(x) + y", "ceil(x) + y", "sign(x) + y", "x^2 + y", "x^3 + y",
+            "x^4 + y", "x^5 + y", "x^-1 + y", "x^-2 + y", "x^-3 + y", "x^0 + y", "(x < y) + z",
+            "(x <= y) + z", "(x > y) + z", "(x >= y) + z", "(x == y) + z", "(x != y) + z",
+            "(x && y) + z", "(x || y) + z", "!x + y", "x ? y : z", "x ? 2 : z", "x ? y : 3",
+            "x & y", "x | y", "x \\ y", "min(x, min(y, min(z, x * y)))",
+            "max(max(x, -y), max(-z, y))", "1 - x^2 - y^2 - z^2", "(x - 1)^2 + (y + 2)^2 - z",
+            "x*x + y*y + z*z - 0.5", "2 - (x - y)^2",
+            // called out
+            "sin(x) + y", "cos(x) * y", "exp(x) - y", "log(x) + y", "tan(x) + y", "atan(x) + y",
+            "pow(x, y)", "atan2(x, y)", "pow(x, 2.5) + y", "atan2(1.5, y) + x", "cbrt(x) + y",
+            "tanh(x) + sinh(y)", "hypot(x, y) - z", "x - mod(y, 3) * z", "round(x * 3) + y",
+            "noise(x, y, z) * 2 + x", "x * y + sin(x * y) * (x - y) + cos(x + y) * x * y"};
+}
+
 } // namespace fl::formula::testing

@@ -26,6 +26,12 @@
 
 using namespace fl::formula;
 
+// The same double bit for bit, or both NaN (payloads are not specified).
+static bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
+}
+
 // d f_o / d x_k at p against central differences of the scalar evaluator,
 // judged only where they can judge: the differences at steps h, 10 h and 0.37 h
 // agree (f is smooth there, and its values are not rounding noise, as
@@ -151,8 +157,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         scalarCode.evaluateAll(q, codeOut.data());
         for (std::size_t o = 0; o < outs; ++o) {
             const double code = o == 0 && i % 2 ? first : codeOut[o];
-            if (std::bit_cast<std::uint64_t>(code) != std::bit_cast<std::uint64_t>(scalarOut[o]) &&
-                !(std::isnan(code) && std::isnan(scalarOut[o]))) {
+            if (!sameBits(code, scalarOut[o])) {
                 std::fprintf(stderr, "scalar machine code %.17g != interpreted %.17g (t %g)\n",
                              code, scalarOut[o], q[3]);
                 std::abort();
@@ -164,17 +169,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         simple.evaluateAll(points[i], simpleOut.data());
         scalarCode.evaluateAll(points[i], codeOut.data());
         for (std::size_t o = 0; o < outs; ++o)
-            if (std::bit_cast<std::uint64_t>(codeOut[o]) !=
-                    std::bit_cast<std::uint64_t>(scalarOut[o]) &&
-                !(std::isnan(codeOut[o]) && std::isnan(scalarOut[o]))) {
+            if (!sameBits(codeOut[o], scalarOut[o])) {
                 std::fprintf(stderr, "scalar machine code %.17g != interpreted %.17g (point %d)\n",
                              codeOut[o], scalarOut[o], i);
                 std::abort();
             }
         for (std::size_t o = 0; o < outs; ++o)
-            if (std::bit_cast<std::uint64_t>(simpleOut[o]) !=
-                    std::bit_cast<std::uint64_t>(scalarOut[o]) &&
-                !(std::isnan(simpleOut[o]) && std::isnan(scalarOut[o]))) {
+            if (!sameBits(simpleOut[o], scalarOut[o])) {
                 std::fprintf(stderr, "simplified %.17g != full %.17g (point %d)\n", simpleOut[o],
                              scalarOut[o], i);
                 std::abort();
@@ -185,10 +186,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             const double s = scalarOut[o];
             for (int j = i; j < kBatch; j += 5) {
                 const double b = batchOut[o * kBatch + std::size_t(j)];
-                const bool same =
-                    std::bit_cast<std::uint64_t>(s) == std::bit_cast<std::uint64_t>(b) ||
-                    (std::isnan(s) && std::isnan(b));
-                if (!same) {
+                if (!sameBits(s, b)) {
                     std::fprintf(stderr, "batch %.17g != scalar %.17g (point %d)\n", b, s, j);
                     std::abort();
                 }
@@ -199,8 +197,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 std::abort();
             }
             const double g = grads[o].v;
-            if (std::bit_cast<std::uint64_t>(g) != std::bit_cast<std::uint64_t>(s) &&
-                !(std::isnan(g) && std::isnan(s))) {
+            if (!sameBits(g, s)) {
                 std::fprintf(stderr, "gradient value %.17g != scalar %.17g\n", g, s);
                 std::abort();
             }
