@@ -5,6 +5,7 @@
 
 #include "formula/compiler.h"
 #include "formula/eval_batch.h"
+#include "formula/eval_gradient.h"
 #include "formula/eval_scalar.h"
 
 #include <algorithm>
@@ -84,6 +85,24 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
             for (std::size_t i = 0; i < n; ++i)
                 call(&grid.x[i], &grid.y[i], &grid.z[i], grid.t, &nativeScalarOut[i], 1);
         });
+        // One point's gradient a call: machine code, and the interpreter.
+        using formula::Input;
+        formula::GradientEvaluator gradient(*compiled.tape, {Input::X, Input::Y, Input::Z},
+                                            formula::ScalarCode::Compiled);
+        formula::GradientEvaluator gradientInterpreted(
+            *compiled.tape, {Input::X, Input::Y, Input::Z}, formula::ScalarCode::Interpreted);
+        std::vector<double> slopes(n), slopesInterpreted(n);
+        auto gradients = [&grid, n](formula::GradientEvaluator& e, std::vector<double>& out) {
+            return [&grid, n, e = &e, out = out.data()] {
+                for (std::size_t i = 0; i < n; ++i) {
+                    const formula::Dual d =
+                        e->evaluate(formula::pointXYZ(grid.x[i], grid.y[i], grid.z[i], grid.t));
+                    out[i] = d.v + d.d[0] + d.d[1] + d.d[2];
+                }
+            };
+        };
+        engines.push_back(gradients(gradient, slopes));
+        engines.push_back(gradients(gradientInterpreted, slopesInterpreted));
         std::unique_ptr<MuParserPeer> mp;
         if (MuParserPeer::available()) {
             mp = std::make_unique<MuParserPeer>(f.muparser);
@@ -98,13 +117,21 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
         row.native = ns[1];
         row.scalar = ns[2];
         row.nativeScalar = ns[3];
-        for (std::size_t i = 0; i < n; ++i)
+        row.gradient = ns[4];
+        row.gradientInterpreted = ns[5];
+        for (std::size_t i = 0; i < n; ++i) {
             row.maxDifference = std::max({row.maxDifference, std::abs(ours[i] - native[i]),
                                           std::abs(scalarOut[i] - native[i]),
                                           std::abs(nativeScalarOut[i] - native[i])});
+            // the same bits both ways (gradient_jit.h), or both NaN
+            if (!(slopes[i] == slopesInterpreted[i]) &&
+                !(std::isnan(slopes[i]) && std::isnan(slopesInterpreted[i])))
+                throw std::runtime_error("gradient machine code differs from its interpreter: " +
+                                         f.name);
+        }
         if (mp) {
-            row.muparser = std::min(ns[4], ns[5]);
-            row.muparserMode = ns[4] <= ns[5] ? "bulk" : "per-point";
+            row.muparser = std::min(ns[6], ns[7]);
+            row.muparserMode = ns[6] <= ns[7] ? "bulk" : "per-point";
             for (std::size_t i = 0; i < n; ++i)
                 row.maxDifference = std::max(row.maxDifference, std::abs(peer[i] - native[i]));
         }
@@ -116,13 +143,15 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
 std::string formatEvalTable(const std::vector<EvalRow>& rows) {
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s %10s %10s %10s\n",
-                  "formula", "functionlab", "native", "muparser", "vs native", "vs muparser",
-                  "max |diff|", "scalar", "native", "vs native");
+    std::snprintf(line, sizeof line,
+                  "%-18s %12s %12s %12s %10s %12s %10s %10s %10s %10s %10s %12s %10s\n", "formula",
+                  "functionlab", "native", "muparser", "vs native", "vs muparser", "max |diff|",
+                  "scalar", "native", "vs native", "gradient", "interpreted", "speed-up");
     out += line;
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %12s %10s %12s %10s %10s %10s %10s\n", "",
+    std::snprintf(line, sizeof line,
+                  "%-18s %12s %12s %12s %10s %12s %10s %10s %10s %10s %10s %12s %10s\n", "",
                   "ns/point", "ns/point", "ns/point", "(x slower)", "(x faster)", "", "ns/call",
-                  "ns/call", "(x slower)");
+                  "ns/call", "(x slower)", "ns/call", "ns/call", "(x)");
     out += line;
     for (const EvalRow& r : rows) {
         char mp[32] = "n/a", speed[32] = "n/a";
@@ -131,9 +160,11 @@ std::string formatEvalTable(const std::vector<EvalRow>& rows) {
             std::snprintf(speed, sizeof speed, "%.1f", r.muparser / r.functionlab);
         }
         std::snprintf(line, sizeof line,
-                      "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e %10.2f %10.2f %10.2f\n",
+                      "%-18s %12.2f %12.2f %12s %10.2f %12s %10.1e %10.2f %10.2f %10.2f %10.2f "
+                      "%12.2f %10.1f\n",
                       r.formula.c_str(), r.functionlab, r.native, mp, r.functionlab / r.native,
-                      speed, r.maxDifference, r.scalar, r.nativeScalar, r.scalar / r.nativeScalar);
+                      speed, r.maxDifference, r.scalar, r.nativeScalar, r.scalar / r.nativeScalar,
+                      r.gradient, r.gradientInterpreted, r.gradientInterpreted / r.gradient);
         out += line;
     }
     // How FunctionLab ran each: machine code, and what making it took.
@@ -160,10 +191,12 @@ std::string evalTableJson(const std::vector<EvalRow>& rows) {
         std::snprintf(buf, sizeof buf,
                       "%s\n  {\"formula\": \"%s\", \"ns_per_point\": {\"functionlab\": %.4f, "
                       "\"native\": %.4f, "
-                      "\"muparser\": %s}, \"ns_per_call\": {\"scalar\": %.4f, \"native\": %.4f}, "
+                      "\"muparser\": %s}, \"ns_per_call\": {\"scalar\": %.4f, \"native\": %.4f, "
+                      "\"gradient\": %.4f, \"gradient_interpreted\": %.4f}, "
                       "\"jit\": %s, \"jit_compile_us\": %.1f}",
                       i ? "," : "", r.formula.c_str(), r.functionlab, r.native, mp, r.scalar,
-                      r.nativeScalar, r.jit ? "true" : "false", r.jitCompileUs);
+                      r.nativeScalar, r.gradient, r.gradientInterpreted, r.jit ? "true" : "false",
+                      r.jitCompileUs);
         out += buf;
     }
     out += "\n]\n";

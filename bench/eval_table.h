@@ -2,8 +2,9 @@
 // The evaluator comparison behind `functionlab bench eval`: the same formulas
 // over the same grid with FunctionLab's batch evaluator, hand-written C++ and
 // muParser, in one run; and one point a call, FunctionLab's scalar evaluator
-// against the hand-written C++ called per point. Reports nanoseconds per
-// point (best of repeated runs).
+// against the hand-written C++ called per point, and its gradient evaluator
+// as machine code against its interpreter. Reports nanoseconds per point
+// (best of repeated runs).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -23,6 +24,10 @@ struct EvalRow {
     // scalar evaluator, and the hand-written C++ called for one point.
     double scalar = 0; // ns per point
     double nativeScalar = 0;
+    // One point's value and gradient a call (normals, Newton steps, haptic
+    // contact): the gradient evaluator as machine code and interpreted.
+    double gradient = 0; // ns per point
+    double gradientInterpreted = 0;
 };
 
 std::vector<EvalRow> runEvalTable(std::size_t side = 64, double secondsPerMeasurement = 0.2);

@@ -15,13 +15,15 @@ const CommandSpec& benchEvalSpec() {
             "thread; prints nanoseconds per point and the ratios. Then one point a call,\n"
             "as picking, haptics and the grader ask: FunctionLab's scalar evaluator\n"
             "against the hand-written C++ called through a pointer for each point\n"
-            "(nanoseconds per call). The engines take turns for at least S seconds and\n"
-            "each reports its best turn. The work is done by the executable\n"
-            "functionlab-bench next to functionlab.\n",
+            "(nanoseconds per call), and one point's value and gradient a call with\n"
+            "the gradient evaluator as machine code against its interpreter. The\n"
+            "engines take turns for at least S seconds and each reports its best turn.\n"
+            "The work is done by the executable functionlab-bench next to functionlab.\n",
         .options = {{.name = "json",
                      .help = "print a list of {\"formula\", \"ns_per_point\": {\"functionlab\", "
                              "\"native\", \"muparser\"}, \"ns_per_call\": {\"scalar\", "
-                             "\"native\"}, \"jit\", \"jit_compile_us\"} instead of the table"},
+                             "\"native\", \"gradient\", \"gradient_interpreted\"}, \"jit\", "
+                             "\"jit_compile_us\"} instead of the table"},
                     {.name = "side",
                      .kind = OptionKind::Integer,
                      .valueName = "N",

@@ -4,6 +4,7 @@
 
 #include "batch_step_run.h"
 #include "eval_batch.h"
+#include "jit_cache.h"
 
 #include "vector_math.h"
 
@@ -17,7 +18,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <mutex>
 #include <string>
 #include <unordered_map>
 
@@ -841,7 +841,7 @@ std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& 
                   std::size_t hoisted) {
     std::string key;
     key.reserve(96 * steps.size() + liveOut.size() + 9);
-    auto put = [&key](const auto& v) { key.append(reinterpret_cast<const char*>(&v), sizeof v); };
+    auto put = [&key](const auto& v) { appendKey(key, v); };
     put(onePoint);
     put(returnReg);
     put(hoisted);
@@ -859,18 +859,8 @@ std::string keyOf(const std::vector<BatchStep>& steps, const std::vector<char>& 
     return key;
 }
 
-// Compiled code, shared: every thread's evaluator of one formula at one
-// moment (a mesher runs several) uses one copy, made once. The code and its
-// constants are never written after they are made, so sharing is safe.
-struct Cache {
-    std::mutex mutex;
-    std::unordered_map<std::string, std::shared_ptr<const BatchJit>> byKey;
-    std::vector<std::string> order; // oldest first: the first to go past kEntries
-    static constexpr std::size_t kEntries = 256;
-};
-
-Cache& cache() {
-    static Cache c;
+JitCache<BatchJit>& cache() {
+    static JitCache<BatchJit> c;
     return c;
 }
 
@@ -898,11 +888,7 @@ std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& ste
     // (Whether calls are allowed is not in the key: a tape it would have to
     // call for is refused above, and the others' code does not depend on it.)
     std::string key = keyOf(steps, liveOut, registerCount, onePoint, returnReg, hoisted);
-    Cache& c = cache();
-    {
-        std::lock_guard lock(c.mutex);
-        if (auto it = c.byKey.find(key); it != c.byKey.end()) return it->second;
-    }
+    if (auto known = cache().find(key)) return known;
     // Each step's code is under 400 bytes (a chain of four with loads).
     const std::size_t size = 4096 + 1024 * steps.size(); // two groups of 4 an iteration
     std::shared_ptr<const BatchJit> made;
@@ -921,16 +907,7 @@ std::shared_ptr<const BatchJit> BatchJit::make(const std::vector<BatchStep>& ste
     } catch (const std::exception&) { // no executable memory, code too large: interpret
         return nullptr;
     }
-    std::lock_guard lock(c.mutex);
-    auto [it, added] = c.byKey.emplace(std::move(key), made);
-    if (added) {
-        c.order.push_back(it->first);
-        if (c.order.size() > Cache::kEntries) {
-            c.byKey.erase(c.order.front()); // evaluators holding it keep their copy
-            c.order.erase(c.order.begin());
-        }
-    }
-    return it->second;
+    return cache().keep(std::move(key), std::move(made));
 }
 
 // Code that spills or calls works in the block's rows: one block at most.

@@ -1,5 +1,6 @@
 #include "eval_gradient.h"
 
+#include "gradient_jit.h"
 #include "noise.h"
 #include "scalar_ops.h"
 #include "tape_walk.h"
@@ -12,7 +13,6 @@
 namespace fl::formula {
 
 namespace ad {
-namespace {
 
 // f'(a) * da, with 0 * anything = 0 so that a constant operand of a function
 // with an infinite derivative (sqrt at 0) keeps a zero gradient.
@@ -23,6 +23,8 @@ Dual chain(double value, double fprime, const Dual& a) {
         r.d[i] = (a.d[i] == 0.0 || fprime == 0.0) ? 0.0 : fprime * a.d[i];
     return r;
 }
+
+namespace {
 Dual chain2(double value, double fa, const Dual& a, double fb, const Dual& b) {
     Dual r;
     r.v = value;
@@ -237,10 +239,48 @@ struct DualDomain {
 };
 } // namespace
 
-GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt)
-    : tape_(tape), wrt_(wrt), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount)) {}
+GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt, ScalarCode code)
+    : tape_(tape), wrt_(wrt), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount)),
+      code_(code) {}
+
+GradientEvaluator::~GradientEvaluator() = default;
+// (The parameters name their tape: the copy's. The code is shared.)
+GradientEvaluator::GradientEvaluator(const GradientEvaluator& other)
+    : tape_(other.tape_), wrt_(other.wrt_), params_(other.params_), regs_(other.regs_),
+      code_(other.code_), calls_(other.calls_), tried_(other.tried_), jit_(other.jit_) {
+    params_.rebind(tape_);
+}
+
+// The point as machine code where it can be: after kScalarWarmUp points (an
+// evaluator asked for a few never pays for compiling). The code reads the
+// parameters' duals from regs_, written again when their values change.
+bool GradientEvaluator::runCompiled(const Point& p) {
+    if (!jit_) {
+        if (tried_ || code_ == ScalarCode::Interpreted) return false;
+        if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
+            ++calls_;
+            return false;
+        }
+        tried_ = true;
+        jit_ = GradientJit::compile(tape_, wrt_);
+        if (!jit_) return false;
+        regs_.resize(std::max(regs_.size(), jit_->duals()));
+        jit_->forgetMoment(regs_.data(), p[std::size_t(Input::T)]);
+    }
+    if (!paramsWrittenOnce_ || paramsWritten_ != params_.version()) {
+        const std::vector<double>& pv = params_.values();
+        for (std::size_t i = 0; i < pv.size(); ++i)
+            regs_[kInputCount + i] = DualDomain::constant(pv[i]);
+        paramsWritten_ = params_.version();
+        paramsWrittenOnce_ = true;
+    }
+    jit_->code()(p.data(), regs_.data());
+    return true;
+}
 
 void GradientEvaluator::run(const Point& p) {
+    compiledLast_ = runCompiled(p);
+    if (compiledLast_) return;
     Dual* r = regs_.data();
     for (int i = 0; i < kInputCount; ++i)
         r[i] = DualDomain::constant(p[i]);
@@ -253,8 +293,9 @@ void GradientEvaluator::run(const Point& p) {
 }
 
 Dual GradientEvaluator::evaluate(const Point& p) {
+    if (tape_.outputs.empty()) return Dual{};
     run(p);
-    return tape_.outputs.empty() ? Dual{} : tapeOutput<DualDomain>(tape_, regs_.data(), 0);
+    return tapeOutput<DualDomain>(tape_, regs_.data(), 0);
 }
 
 void GradientEvaluator::evaluateAll(const Point& p, Dual* outputs) {

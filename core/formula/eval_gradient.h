@@ -9,6 +9,7 @@
 #include "eval_scalar.h"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace fl::formula {
@@ -18,14 +19,25 @@ struct Dual {
     std::array<double, 3> d{};
 };
 
+class GradientJit;
+
 class GradientEvaluator {
   public:
+    // `code`: one point at a time as the scalar evaluator does — machine
+    // code (gradient_jit.h, the same bits) after kScalarWarmUp points, from
+    // the first, or never.
     explicit GradientEvaluator(const Tape& tape,
-                               std::array<Input, 3> wrt = {Input::X, Input::Y, Input::Z});
+                               std::array<Input, 3> wrt = {Input::X, Input::Y, Input::Z},
+                               ScalarCode code = ScalarCode::AfterWarmUp);
+    ~GradientEvaluator();
+    GradientEvaluator(const GradientEvaluator& other);
+    GradientEvaluator& operator=(const GradientEvaluator&) = delete;
 
     ParameterValues& parameters() { return params_; }
 
     Dual evaluate(const Point& p);
+    // Whether the last evaluate() or evaluateAll() ran as machine code.
+    bool compiledLast() const { return compiledLast_; }
     // The first output at n points: the same values as evaluate() point by
     // point, computed instruction by instruction over blocks of points (the
     // dispatch is paid once per instruction and block, not per point).
@@ -42,10 +54,23 @@ class GradientEvaluator {
     std::vector<double> blockRegs_;
     std::vector<double> constRows_;
     std::vector<std::int32_t> constSlot_; // per instruction and operand: its row, or -1
+    // One point as machine code: made after the warm-up (or never), and the
+    // parameters' version last written to regs_ for it.
+    ScalarCode code_;
+    unsigned calls_ = 0;
+    bool compiledLast_ = false;
+    bool tried_ = false;
+    std::shared_ptr<const GradientJit> jit_;
+    std::uint64_t paramsWritten_ = 0;
+    bool paramsWrittenOnce_ = false;
     void run(const Point& p);
+    bool runCompiled(const Point& p);
 };
 
 namespace ad {
+// (value, f' times a's slopes), each slope under the zero rule: +0 where the
+// slope or f' is 0.
+Dual chain(double value, double fprime, const Dual& a);
 Dual unary(Op op, const Dual& a, double imm0);
 Dual binary(Op op, const Dual& a, const Dual& b, double imm0, double imm1);
 Dual ternary(Op op, const Dual& a, const Dual& b, const Dual& c);

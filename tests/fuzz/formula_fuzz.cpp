@@ -7,7 +7,9 @@
 // derivatives match central differences wherever f is smooth there (the
 // one-sided differences agree, so kinks such as abs(x) at 0 are not judged).
 // And a fifth: the tape simplified for the box of the interval check
-// (tape_simplify.h) gives the full tape's bits at every point in it.
+// (tape_simplify.h) gives the full tape's bits at every point in it. The
+// scalar and gradient evaluators' machine code gives their interpreters'
+// bits (values and slopes) at every point.
 #include "formula/batch_jit.h"
 #include "formula/compiler.h"
 #include "formula/eval_batch.h"
@@ -106,7 +108,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ScalarEvaluator scalarCode(tape, ScalarCode::Compiled); // one point a call, as machine code
     BatchEvaluator batch(tape);
     IntervalEvaluator interval(tape);
-    GradientEvaluator gradient(tape);
+    GradientEvaluator gradient(tape, {Input::X, Input::Y, Input::Z}, ScalarCode::Interpreted);
+    GradientEvaluator gradientCode(tape, {Input::X, Input::Y, Input::Z}, ScalarCode::Compiled);
     const std::size_t outs = tape.outputs.size();
 
     static const double coords[] = {0.0, 0.5, -1.25, 3.0, 1e-9};
@@ -133,7 +136,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         outPtrs[o] = batchOut.data() + o * kBatch;
     batch.evaluate(in, kBatch, outPtrs.data());
 
-    std::vector<Dual> grads(outs);
+    std::vector<Dual> grads(outs), codeGrads(outs);
+    // The gradient's machine code against its interpreter at p: every
+    // output's value and slopes, bit for bit (or both NaN).
+    auto sameGradients = [&](const Point& p) {
+        gradientCode.evaluateAll(p, codeGrads.data());
+        for (std::size_t o = 0; o < outs; ++o) {
+            bool same = sameBits(codeGrads[o].v, grads[o].v);
+            for (int k = 0; k < 3; ++k)
+                same = same && sameBits(codeGrads[o].d[k], grads[o].d[k]);
+            if (!same) {
+                std::fprintf(stderr,
+                             "gradient machine code (%.17g; %.17g %.17g %.17g) != interpreted "
+                             "(%.17g; %.17g %.17g %.17g), output %zu\n",
+                             codeGrads[o].v, codeGrads[o].d[0], codeGrads[o].d[1],
+                             codeGrads[o].d[2], grads[o].v, grads[o].d[0], grads[o].d[1],
+                             grads[o].d[2], o);
+                std::abort();
+            }
+        }
+    };
     std::vector<Interval> ranges(outs);
     Box box;
     for (int k = 0; k < kInputCount; ++k)
@@ -181,6 +203,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 std::abort();
             }
         gradient.evaluateAll(points[i], grads.data());
+        sameGradients(points[i]);
         (void)explainNonFinite(tape, {}, points[i]);
         for (std::size_t o = 0; o < outs; ++o) {
             const double s = scalarOut[o];
@@ -210,6 +233,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int k = 0; k < 3; ++k)
             off[k] += 0.1234567 * (k + 1);
         gradient.evaluateAll(off, grads.data());
+        sameGradients(off);
         for (int k = 0; k < 3; ++k)
             checkDerivative(scalar, off, k, grads, outs);
     }
