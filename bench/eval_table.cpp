@@ -9,8 +9,10 @@
 #include "formula/eval_scalar.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -42,6 +44,12 @@ std::vector<double> bestNsPerPoint(const std::vector<std::function<void()>>& eng
     for (double& b : best)
         b /= static_cast<double>(points);
     return best;
+}
+
+// The same double bit for bit, or both NaN (payloads are not specified).
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) ||
+           (std::isnan(a) && std::isnan(b));
 }
 
 } // namespace
@@ -91,14 +99,13 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
                                             formula::ScalarCode::Compiled);
         formula::GradientEvaluator gradientInterpreted(
             *compiled.tape, {Input::X, Input::Y, Input::Z}, formula::ScalarCode::Interpreted);
-        std::vector<double> slopes(n), slopesInterpreted(n);
-        auto gradients = [&grid, n](formula::GradientEvaluator& e, std::vector<double>& out) {
+        std::vector<formula::Dual> slopes(n), slopesInterpreted(n);
+        auto gradients = [&grid, n](formula::GradientEvaluator& e,
+                                    std::vector<formula::Dual>& out) {
             return [&grid, n, e = &e, out = out.data()] {
-                for (std::size_t i = 0; i < n; ++i) {
-                    const formula::Dual d =
+                for (std::size_t i = 0; i < n; ++i)
+                    out[i] =
                         e->evaluate(formula::pointXYZ(grid.x[i], grid.y[i], grid.z[i], grid.t));
-                    out[i] = d.v + d.d[0] + d.d[1] + d.d[2];
-                }
             };
         };
         engines.push_back(gradients(gradient, slopes));
@@ -124,8 +131,10 @@ std::vector<EvalRow> runEvalTable(std::size_t side, double seconds) {
                                           std::abs(scalarOut[i] - native[i]),
                                           std::abs(nativeScalarOut[i] - native[i])});
             // the same bits both ways (gradient_jit.h), or both NaN
-            if (!(slopes[i] == slopesInterpreted[i]) &&
-                !(std::isnan(slopes[i]) && std::isnan(slopesInterpreted[i])))
+            const formula::Dual& a = slopes[i];
+            const formula::Dual& b = slopesInterpreted[i];
+            if (!sameBits(a.v, b.v) || !sameBits(a.d[0], b.d[0]) || !sameBits(a.d[1], b.d[1]) ||
+                !sameBits(a.d[2], b.d[2]))
                 throw std::runtime_error("gradient machine code differs from its interpreter: " +
                                          f.name);
         }

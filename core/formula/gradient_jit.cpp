@@ -147,10 +147,11 @@ class Emitter : public CodeGenerator {
     Emitter(const std::vector<Instruction>& code, std::size_t hoisted, std::int32_t moment,
             std::array<Input, 3> wrt, const std::array<bool, kInputCount>& inputs,
             std::size_t maxSize)
-        : CodeGenerator(maxSize), code_(code) {
+        : CodeGenerator(maxSize, Xbyak::AutoGrow), code_(code) {
         push(rbx); // the stack is now 16-byte aligned for calls
         mov(rbx, rsi);
         // The inputs' duals: the value, and slope 1 along each wrt input.
+        // (The point is read here only: rdi is a call's first argument.)
         for (int i = 0; i < kInputCount; ++i) {
             if (!inputs[std::size_t(i)]) continue;
             std::array<double, 4> unit{};
@@ -491,12 +492,18 @@ std::shared_ptr<const GradientJit> GradientJit::compile(const Tape& tape,
     for (const OutputInfo& o : tape.outputs) // an output that is an input
         if (!o.value.isConst() && o.value.reg < kInputCount)
             inputs[std::size_t(o.value.reg)] = true;
+    // Everything the code depends on: which instructions are hoisted
+    // depends on the outputs' registers, their new registers on the count.
     std::string key;
-    key.reserve(64 * tape.code.size() + 16);
+    key.reserve(64 * tape.code.size() + 24 * tape.outputs.size() + 32);
     for (Input i : wrt)
         appendKey(key, i);
     for (bool used : inputs)
         appendKey(key, used);
+    appendKey(key, tape.registerCount);
+    appendKey(key, tape.params.size());
+    for (const OutputInfo& o : tape.outputs)
+        appendKey(key, o.value.reg), appendKey(key, o.value.value);
     for (const Instruction& ins : tape.code) {
         appendKey(key, ins.op), appendKey(key, ins.out);
         for (const Operand* o : {&ins.a, &ins.b, &ins.c})
@@ -504,9 +511,10 @@ std::shared_ptr<const GradientJit> GradientJit::compile(const Tape& tape,
         appendKey(key, ins.imm0), appendKey(key, ins.imm1);
     }
     if (auto known = cache().find(key)) return known;
-    // Each instruction's code is under 200 bytes, and it adds at most three
-    // 32-byte constants to those after the code.
-    const std::size_t size = 4096 + 512 * tape.code.size();
+    // Each instruction's code is under 200 bytes (a call 30), and it adds at
+    // most three 32-byte constants: the buffer starts near the usual size
+    // and grows (xbyak's AutoGrow, placed at ready()) where a tape needs more.
+    const std::size_t size = 4096 + 128 * tape.code.size();
     std::shared_ptr<const GradientJit> made;
     try {
         auto m = std::make_unique<Made>();

@@ -74,7 +74,8 @@ TEST_F(GradientJitTest, EveryOperationGivesTheInterpretersValueAndSlopes) {
     sources.insert(sources.end(),
                    {"sin(x) * cos(y) + sin(y) * cos(x)",
                     "sin(4*x)*cos(4*y) + sin(4*y)*cos(4*z) + sin(4*z)*cos(4*x)",
-                    "x + t * u - v / w", "x * x", "y / x", "min(x, x)", "max(y, -y)",
+                    "x + t * u - v / w", "x * x", "y / x", "x + x", "x - x", "x / x",
+                    "min(x, x + 0)", "max(x + 0, x)", "-x", "-(x * y)", "max(y, -y)",
                     "x^7 - x^-5 + x^1", "sqrt(x * y)", "abs(x - y) * abs(x)", "(x ? y : z) * x",
                     "2 * x / 3 - (1 - y) * (z + 0.5)", "x ? 2 * y : -z"});
     int ran = 0;
@@ -226,15 +227,51 @@ TEST_F(GradientJitTest, WorkOnTimeAloneRunsOncePerMomentWithTheInterpretersBits)
                         ASSERT_EQ(differs(all[o], expected[o]), "")
                             << c.src << " at t=" << t << " x=" << x << " output " << o;
                 }
-            // A copy keeps the moment's work and goes on from there.
+            // A copy keeps the moment's work (at the last t it skips it) and
+            // goes on from there.
             GradientEvaluator copy(compiled);
-            const Point p{0.3, 0.2, 0.1, 0.75, 0, 0, 0};
+            for (double t : {moments[std::size(moments) - 1], 0.75}) {
+                const Point p{0.3, 0.2, 0.1, t, 0, 0, 0};
+                std::vector<Dual> all(n), expected(n);
+                copy.evaluateAll(p, all.data());
+                interpreted.evaluateAll(p, expected.data());
+                for (std::size_t o = 0; o < n; ++o)
+                    ASSERT_EQ(differs(all[o], expected[o]), "")
+                        << c.src << " (copy) at t=" << t << " output " << o;
+            }
+        }
+}
+
+TEST_F(GradientJitTest, TapesThatDifferOnlyInTheirOutputsGetCodeOfTheirOwn) {
+    // Which instructions run once per moment depends on the outputs (one
+    // that writes an output stays in place): the same instructions with an
+    // output more must not get the other tape's code from the cache.
+    CompileOptions colour;
+    colour.kind = DefinitionKind::Colour;
+    CompileResult r = compile("r = sin(t) * x; g = 0; b = 0;", colour);
+    ASSERT_TRUE(r.ok());
+    const Tape first = *r.tape;
+    Tape second = first;
+    std::int32_t sine = -1;
+    for (const Instruction& ins : second.code)
+        if (ins.op == Op::Sin) sine = ins.out;
+    ASSERT_GE(sine, 0) << first.disassemble();
+    second.outputs[1].value = Operand::ofReg(sine);
+    for (const Tape* tape : {&first, static_cast<const Tape*>(&second)}) { // first, first
+        GradientEvaluator compiled(*tape, kXyz, ScalarCode::Compiled);
+        GradientEvaluator interpreted(*tape, kXyz, ScalarCode::Interpreted);
+        const std::size_t n = tape->outputs.size();
+        for (double t : {0.5, 1.5, 1.5}) {
+            const Point p = pointXYZ(0.75, 0.1, 0.2, t);
             std::vector<Dual> all(n), expected(n);
-            copy.evaluateAll(p, all.data());
+            compiled.evaluateAll(p, all.data());
+            ASSERT_TRUE(compiled.compiledLast());
             interpreted.evaluateAll(p, expected.data());
             for (std::size_t o = 0; o < n; ++o)
-                ASSERT_EQ(differs(all[o], expected[o]), "") << c.src << " (copy) output " << o;
+                EXPECT_EQ(differs(all[o], expected[o]), "") << "t=" << t << " output " << o;
         }
+    }
+    EXPECT_NE(GradientJit::compile(first, kXyz), GradientJit::compile(second, kXyz));
 }
 
 TEST_F(GradientJitTest, AnEvaluatorAskedForAFewPointsStaysInterpreted) {

@@ -168,7 +168,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ScalarEvaluator simple(simplified);
     std::vector<double> simpleOut(outs), codeOut(outs);
     // The machine code with t changing, then back (what depends on t alone
-    // runs once per t: batch_hoist.h), against the interpreter.
+    // runs once per t: batch_hoist.h), against the interpreter; the
+    // gradient's code likewise.
     for (int i = 0; i < 7; ++i) {
         Point q = points[i % 5];
         q[3] = i == 6 ? -0.0 : coords[(2 * i) % 5];
@@ -177,6 +178,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         double first = 0.0;
         if (i % 2 && outs) first = scalarCode.evaluate(q);
         scalarCode.evaluateAll(q, codeOut.data());
+        gradient.evaluateAll(q, grads.data()); // (its work on t alone too)
+        sameGradients(q);
         for (std::size_t o = 0; o < outs; ++o) {
             const double code = o == 0 && i % 2 ? first : codeOut[o];
             if (!sameBits(code, scalarOut[o])) {
