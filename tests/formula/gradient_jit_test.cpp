@@ -140,13 +140,7 @@ TEST_F(GradientJitTest, RandomFormulasGiveTheInterpretersBits) {
 }
 
 TEST_F(GradientJitTest, SixteenDualsLiveAtOnceGoToMemoryAndComeBack) {
-    std::string src;
-    for (int i = 1; i <= 16; ++i)
-        src += "a" + std::to_string(i) + " = x * " + std::to_string(1 + i / 16.0) + " + y * z; ";
-    src += "return a1";
-    for (int i = 2; i <= 16; ++i)
-        src += (i % 3 ? " + a" : " * sin(a") + std::to_string(18 - i) + (i % 3 ? "" : ")");
-    src += ";";
+    const std::string src = testing::sixteenLiveValues();
     EXPECT_TRUE(agreeOnSpecials(src));
 }
 
@@ -187,30 +181,9 @@ TEST_F(GradientJitTest, WorkOnTimeAloneRunsOncePerMomentWithTheInterpretersBits)
     // slopes along x y z and along t, for every output.
     CompileOptions colour;
     colour.kind = DefinitionKind::Colour;
-    struct Case {
-        const char* src;
-        bool colour;
-    };
-    const Case cases[] = {{"0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2", false},
-                          {"sin(t) * x + cos(t) * y - (t - 1)^2", false},
-                          {"min(t, -t) + max(x, t * 2) - atan2(t, 3) * z", false},
-                          {"a = t * t; b = a + x; c = sin(a) + b * y; return c - a;", false},
-                          {"r = sin(t); g = x * sin(t) + cos(t); b = t * t;", true},
-                          {"r = x + y; g = exp(-t) * z; b = (t > 0.5) ? x : sqrt(t);", true}};
-    const double moments[] = {0.0, // the first call's t: +0, the bits of fresh duals
-                              0.25,
-                              0.25,
-                              0.5,
-                              -0.0,
-                              0.0,
-                              0.0,
-                              std::numeric_limits<double>::quiet_NaN(),
-                              std::numeric_limits<double>::quiet_NaN(),
-                              std::numeric_limits<double>::infinity(),
-                              0.25,
-                              1e-310};
+    const auto& moments = testing::momentsToVisit();
     for (const std::array<Input, 3> wrt : {kXyz, std::array{Input::T, Input::X, Input::Y}})
-        for (const Case& c : cases) {
+        for (const testing::TimeCase& c : testing::timeOnlyCases()) {
             CompileResult r = c.colour ? compile(c.src, colour) : compile(c.src);
             ASSERT_TRUE(r.ok()) << c.src;
             GradientEvaluator compiled(*r.tape, wrt, ScalarCode::Compiled);
@@ -230,7 +203,7 @@ TEST_F(GradientJitTest, WorkOnTimeAloneRunsOncePerMomentWithTheInterpretersBits)
             // A copy keeps the moment's work (at the last t it skips it) and
             // goes on from there.
             GradientEvaluator copy(compiled);
-            for (double t : {moments[std::size(moments) - 1], 0.75}) {
+            for (double t : {moments.back(), 0.75}) {
                 const Point p{0.3, 0.2, 0.1, t, 0, 0, 0};
                 std::vector<Dual> all(n), expected(n);
                 copy.evaluateAll(p, all.data());

@@ -112,13 +112,7 @@ TEST_F(ScalarJitTest, RandomFormulasThatSpillGiveTheInterpretersBits) {
 TEST_F(ScalarJitTest, SixteenValuesLiveAtOnceSpillAndComeBack) {
     // Sixteen values made before any is used: more than the eleven vector
     // registers that hold values, so some go to their rows and come back.
-    std::string src;
-    for (int i = 1; i <= 16; ++i)
-        src += "a" + std::to_string(i) + " = x * " + std::to_string(1 + i / 16.0) + " + y * z; ";
-    src += "return a1";
-    for (int i = 2; i <= 16; ++i)
-        src += (i % 3 ? " + a" : " * sin(a") + std::to_string(18 - i) + (i % 3 ? "" : ")");
-    src += ";";
+    const std::string src = testing::sixteenLiveValues();
     CompileResult r = compile(src);
     ASSERT_TRUE(r.ok()) << src;
     ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);
@@ -210,28 +204,8 @@ TEST_F(ScalarJitTest, WorkOnTimeAloneRunsOncePerMomentWithTheInterpretersBits) {
     // points must still give the interpreter's bits, for every output.
     CompileOptions colour;
     colour.kind = DefinitionKind::Colour;
-    struct Case {
-        const char* src;
-        bool colour;
-    };
-    const Case cases[] = {{"0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2", false},
-                          {"sin(t) * x + cos(t) * y - (t - 1)^2", false},
-                          {"min(t, -t) + max(x, t * 2) - atan2(t, 3) * z", false},
-                          {"a = t * t; b = a + x; c = sin(a) + b * y; return c - a;", false},
-                          {"r = sin(t); g = x * sin(t) + cos(t); b = t * t;", true},
-                          {"r = x + y; g = exp(-t) * z; b = (t > 0.5) ? x : sqrt(t);", true}};
-    const double moments[] = {0.25,
-                              0.25,
-                              0.5,
-                              -0.0,
-                              0.0,
-                              0.0,
-                              std::numeric_limits<double>::quiet_NaN(),
-                              std::numeric_limits<double>::quiet_NaN(),
-                              std::numeric_limits<double>::infinity(),
-                              0.25,
-                              1e-310};
-    for (const Case& c : cases) {
+    const auto& moments = testing::momentsToVisit();
+    for (const testing::TimeCase& c : testing::timeOnlyCases()) {
         CompileResult r = c.colour ? compile(c.src, colour) : compile(c.src);
         ASSERT_TRUE(r.ok()) << c.src;
         ScalarEvaluator compiled(*r.tape, ScalarCode::Compiled);

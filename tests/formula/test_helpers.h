@@ -65,6 +65,52 @@ inline const std::vector<double>& specialValues() {
     return v;
 }
 
+// Sixteen values made before any is read, then summed: more than the
+// registers a JIT keeps values in, so some go to memory and come back.
+inline std::string sixteenLiveValues() {
+    std::string src;
+    for (int i = 1; i <= 16; ++i)
+        src += "a" + std::to_string(i) + " = x * " + std::to_string(1 + i / 16.0) + " + y * z; ";
+    src += "return a1";
+    for (int i = 2; i <= 16; ++i)
+        src += (i % 3 ? " + a" : " * sin(a") + std::to_string(18 - i) + (i % 3 ? "" : ")");
+    return src + ";";
+}
+
+// Formulas with work on t alone (the machine code runs it once per moment:
+// batch_hoist.h), and the moments to visit in order: repeated, changed,
+// +0 first (the bits of fresh rows), signed zeros, NaN, infinity, tiny.
+// The scalar and gradient JIT tests both walk them.
+struct TimeCase {
+    const char* src;
+    bool colour; // a colour script (several outputs)
+};
+inline const std::vector<TimeCase>& timeOnlyCases() {
+    static const std::vector<TimeCase> cases = {
+        {"0.25 - x^2 - (y - (abs(sin(pi*t)) - 0.5))^2 - z^2", false},
+        {"sin(t) * x + cos(t) * y - (t - 1)^2", false},
+        {"min(t, -t) + max(x, t * 2) - atan2(t, 3) * z", false},
+        {"a = t * t; b = a + x; c = sin(a) + b * y; return c - a;", false},
+        {"r = sin(t); g = x * sin(t) + cos(t); b = t * t;", true},
+        {"r = x + y; g = exp(-t) * z; b = (t > 0.5) ? x : sqrt(t);", true}};
+    return cases;
+}
+inline const std::vector<double>& momentsToVisit() {
+    static const std::vector<double> moments = {0.0,
+                                                0.25,
+                                                0.25,
+                                                0.5,
+                                                -0.0,
+                                                0.0,
+                                                0.0,
+                                                std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::quiet_NaN(),
+                                                std::numeric_limits<double>::infinity(),
+                                                0.25,
+                                                1e-310};
+    return moments;
+}
+
 // One formula for each operation the JIT writes itself (arithmetic, min and
 // max, comparisons, logic, powers, select, the fused sums of squares and
 // min/max chains), then for each it calls out for (SLEEF's functions,
