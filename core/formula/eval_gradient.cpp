@@ -270,7 +270,7 @@ bool GradientEvaluator::runCompiled(const Point& p) {
     if (!paramsWrittenOnce_ || paramsWritten_ != params_.version()) {
         const std::vector<double>& pv = params_.values();
         for (std::size_t i = 0; i < pv.size(); ++i)
-            regs_[kInputCount + i] = DualDomain::constant(pv[i]);
+            regs_[kInputCount + i].Dual::operator=(DualDomain::constant(pv[i]));
         paramsWritten_ = params_.version();
         paramsWrittenOnce_ = true;
     }
@@ -281,7 +281,7 @@ bool GradientEvaluator::runCompiled(const Point& p) {
 void GradientEvaluator::run(const Point& p) {
     compiledLast_ = runCompiled(p);
     if (compiledLast_) return;
-    Dual* r = regs_.data();
+    Dual* r = regs_.data(); // (the same stride: an AlignedDual is a Dual)
     for (int i = 0; i < kInputCount; ++i)
         r[i] = DualDomain::constant(p[i]);
     for (int k = 0; k < 3; ++k)
