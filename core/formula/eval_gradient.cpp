@@ -239,34 +239,82 @@ struct DualDomain {
 };
 } // namespace
 
+namespace {
+
+// Whether evaluateMany runs the machine code point by point rather than its
+// row loops, from an estimate of each way's cost a point (ns, measured on
+// the Zen 4 VM of docs/performance.md, eleventh part): a row loop about 1
+// an instruction, 4 a sine or cosine (SLEEF's arrays), 10 an operation
+// without one (ad:: point by point); the code about 5 a call, 1.5 an
+// instruction it writes, 12 one it calls out for (a sine or cosine of its
+// own twice that: ad:: takes both). Row loops win on sums of squares, CSG
+// and trig; the code on abs, powers and divisions (a box's distance: 35 ns
+// a point in rows, 11 as code).
+bool manyByCode(const Tape& tape) {
+    double rows = 0.0, code = 5.0;
+    for (const Instruction& ins : tape.code) {
+        switch (ins.op) {
+        case Op::Add:
+        case Op::Sub:
+        case Op::Mul:
+        case Op::Min:
+        case Op::Max:
+        case Op::Neg:
+        case Op::Square:
+        case Op::Sqrt: // evaluateMany's row loops
+            rows += 1.0, code += 1.5;
+            break;
+        case Op::Sin:
+        case Op::Cos:
+            rows += 4.0, code += 24.0;
+            break;
+        case Op::SinOfPair:
+        case Op::CosOfPair:
+            rows += 4.0, code += 12.0;
+            break;
+        default:
+            rows += 10.0, code += GradientJit::writesInline(ins) ? 1.5 : 12.0;
+            break;
+        }
+    }
+    return code <= rows;
+}
+
+} // namespace
+
 GradientEvaluator::GradientEvaluator(const Tape& tape, std::array<Input, 3> wrt, ScalarCode code)
     : tape_(tape), wrt_(wrt), params_(tape_), regs_(static_cast<std::size_t>(tape.registerCount)),
-      code_(code) {}
+      code_(code), manyByCode_(manyByCode(tape_)) {}
 
 GradientEvaluator::~GradientEvaluator() = default;
 // (The parameters name their tape: the copy's. The code is shared.)
 GradientEvaluator::GradientEvaluator(const GradientEvaluator& other)
     : tape_(other.tape_), wrt_(other.wrt_), params_(other.params_), regs_(other.regs_),
-      code_(other.code_), calls_(other.calls_), tried_(other.tried_), jit_(other.jit_) {
+      code_(other.code_), manyByCode_(other.manyByCode_), calls_(other.calls_),
+      tried_(other.tried_), jit_(other.jit_) {
     params_.rebind(tape_);
 }
 
-// The point as machine code where it can be: after kScalarWarmUp points (an
-// evaluator asked for a few never pays for compiling). The code reads the
-// parameters' duals from regs_, written again when their values change.
-bool GradientEvaluator::runCompiled(const Point& p) {
-    if (!jit_) {
-        if (tried_ || code_ == ScalarCode::Interpreted) return false;
-        if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
-            ++calls_;
-            return false;
-        }
-        tried_ = true;
-        jit_ = GradientJit::compile(tape_, wrt_);
-        if (!jit_) return false;
-        regs_.resize(std::max(regs_.size(), jit_->duals()));
-        jit_->forgetMoment(regs_.data(), p[std::size_t(Input::T)]);
+// Machine code where it can be: after kScalarWarmUp points (an evaluator
+// asked for a few never pays for compiling).
+bool GradientEvaluator::haveCode(std::size_t asked, double t) {
+    if (jit_) return true;
+    if (tried_ || code_ == ScalarCode::Interpreted) return false;
+    if (code_ == ScalarCode::AfterWarmUp && calls_ < kScalarWarmUp) {
+        calls_ += unsigned(std::min<std::size_t>(asked, kScalarWarmUp));
+        return false;
     }
+    tried_ = true;
+    jit_ = GradientJit::compile(tape_, wrt_);
+    if (!jit_) return false;
+    regs_.resize(std::max(regs_.size(), jit_->duals()));
+    jit_->forgetMoment(regs_.data(), t);
+    return true;
+}
+
+// The code reads the parameters' duals from regs_, written again when their
+// values change.
+void GradientEvaluator::runCode(const Point& p) {
     if (!paramsWrittenOnce_ || paramsWritten_ != params_.version()) {
         const std::vector<double>& pv = params_.values();
         for (std::size_t i = 0; i < pv.size(); ++i)
@@ -275,6 +323,11 @@ bool GradientEvaluator::runCompiled(const Point& p) {
         paramsWrittenOnce_ = true;
     }
     jit_->code()(p.data(), regs_.data());
+}
+
+bool GradientEvaluator::runCompiled(const Point& p) {
+    if (!haveCode(1, p[std::size_t(Input::T)])) return false;
+    runCode(p);
     return true;
 }
 
@@ -454,6 +507,14 @@ void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* o
     if (tape_.outputs.empty()) {
         for (std::size_t i = 0; i < n; ++i)
             out[i] = Dual{};
+        return;
+    }
+    compiledLast_ = n > 0 && manyByCode_ && haveCode(n, points[0][std::size_t(Input::T)]);
+    if (compiledLast_) {
+        for (std::size_t i = 0; i < n; ++i) {
+            runCode(points[i]);
+            out[i] = tapeOutput<DualDomain>(tape_, regs_.data(), 0);
+        }
         return;
     }
     const std::size_t regCount = std::size_t(tape_.registerCount);

@@ -36,11 +36,15 @@ class GradientEvaluator {
     ParameterValues& parameters() { return params_; }
 
     Dual evaluate(const Point& p);
-    // Whether the last evaluate() or evaluateAll() ran as machine code.
+    // Whether the last evaluate(), evaluateAll() or evaluateMany() ran as
+    // machine code.
     bool compiledLast() const { return compiledLast_; }
     // The first output at n points: the same values as evaluate() point by
     // point, computed instruction by instruction over blocks of points (the
-    // dispatch is paid once per instruction and block, not per point).
+    // dispatch is paid once per instruction and block, not per point) —
+    // or, for a tape whose operations mostly lack row loops (abs, powers,
+    // divisions), point by point as machine code, once it has been asked
+    // for kScalarWarmUp points.
     void evaluateMany(const Point* points, std::size_t n, Dual* out);
     void evaluateAll(const Point& p, Dual* outputs);
 
@@ -62,6 +66,7 @@ class GradientEvaluator {
     // One point as machine code: made after the warm-up (or never), and the
     // parameters' version last written to regs_ for it.
     ScalarCode code_;
+    bool manyByCode_; // evaluateMany's way (manyByCode() in eval_gradient.cpp)
     unsigned calls_ = 0;
     bool compiledLast_ = false;
     bool tried_ = false;
@@ -70,6 +75,10 @@ class GradientEvaluator {
     bool paramsWrittenOnce_ = false;
     void run(const Point& p);
     bool runCompiled(const Point& p);
+    // Whether there is code to run, made now if `asked` more points end the
+    // warm-up (t: the first point's, for its work on t alone).
+    bool haveCode(std::size_t asked, double t);
+    void runCode(const Point& p);
 };
 
 namespace ad {

@@ -454,6 +454,10 @@ struct GradientJit::Made {
 GradientJit::GradientJit(std::unique_ptr<Made> made) : made_(std::move(made)) {}
 GradientJit::~GradientJit() = default;
 
+bool GradientJit::writesInline(const Instruction& ins) {
+    return writtenInline(ins);
+}
+
 GradientJit::Code GradientJit::code() const {
     return made_->run;
 }

@@ -44,6 +44,9 @@ class GradientJit {
     // only when t differs from the last call's (batch_hoist.h's idea): call
     // forgetMoment before the first call with a set of duals.
     using Code = void (*)(const double* p, Dual* regs);
+    // Whether the code writes this instruction itself (else it calls the
+    // interpreter's code for it, a call a point).
+    static bool writesInline(const Instruction& ins);
     Code code() const;
     std::size_t duals() const;
     // Makes the next call at t run the work on t alone.

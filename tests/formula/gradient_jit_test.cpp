@@ -247,6 +247,48 @@ TEST_F(GradientJitTest, TapesThatDifferOnlyInTheirOutputsGetCodeOfTheirOwn) {
     EXPECT_NE(GradientJit::compile(first, kXyz), GradientJit::compile(second, kXyz));
 }
 
+TEST_F(GradientJitTest, ManyPointsRunAsCodeWhereRowLoopsWouldNotWithTheSameBits) {
+    // evaluateMany keeps its row loops for sums of squares, CSG and trig and
+    // runs the code point by point where most operations have no row loop
+    // (abs, powers, division); either way each point's bits are evaluate()'s.
+    struct Case {
+        const char* src;
+        bool byCode;
+    };
+    const Case cases[] = {{"max(abs(x), max(abs(y), abs(z))) - 0.8", true},
+                          {"x^4 + y^4 + z^4 - 0.5", true},
+                          {"x / (1 + y*y) - z", true},
+                          {"1 - x^2 - y^2 - z^2", false},
+                          {"(1-x^2-y^2-z^2) & (-((z-x) & y & z))", false},
+                          {"sin(4*x)*cos(4*y) + sin(4*y)*cos(4*z) + sin(4*z)*cos(4*x)", false}};
+    std::vector<Point> points;
+    for (double a : testing::specialValues())
+        for (double b : testing::specialValues())
+            points.push_back({a, b, 0.5 * a - b, 0.25, 0, 0, 0});
+    for (const Case& c : cases) {
+        CompileResult r = compile(c.src);
+        ASSERT_TRUE(r.ok()) << c.src;
+        GradientEvaluator many(*r.tape, kXyz, ScalarCode::Compiled);
+        GradientEvaluator one(*r.tape, kXyz, ScalarCode::Interpreted);
+        std::vector<Dual> out(points.size());
+        many.evaluateMany(points.data(), points.size(), out.data());
+        EXPECT_EQ(many.compiledLast(), c.byCode) << c.src;
+        for (std::size_t i = 0; i < points.size(); ++i)
+            ASSERT_EQ(differs(out[i], one.evaluate(points[i])), "") << c.src << " point " << i;
+    }
+    // After the warm-up only: 100 points stay in rows, the next call is code.
+    CompileResult r = compile(cases[0].src);
+    ASSERT_TRUE(r.ok());
+    GradientEvaluator e(*r.tape);
+    std::vector<Dual> out(points.size());
+    e.evaluateMany(points.data(), 100, out.data());
+    EXPECT_FALSE(e.compiledLast());
+    e.evaluateMany(points.data(), points.size(), out.data());
+    EXPECT_FALSE(e.compiledLast()); // 289 asked for now: the warm-up ends here
+    e.evaluateMany(points.data(), points.size(), out.data());
+    EXPECT_TRUE(e.compiledLast());
+}
+
 TEST_F(GradientJitTest, AnEvaluatorAskedForAFewPointsStaysInterpreted) {
     CompileResult r = compile("x * y - z^2");
     ASSERT_TRUE(r.ok());
