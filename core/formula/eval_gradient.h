@@ -57,6 +57,7 @@ class GradientEvaluator {
     // cannot be forwarded from the store that wrote it (union50's gradient
     // ran 6x slower in a process whose malloc gave 16-byte alignment).
     struct alignas(32) AlignedDual : Dual {};
+    static_assert(sizeof(AlignedDual) == sizeof(Dual), "the interpreter walks them as Duals");
     std::vector<AlignedDual> regs_;
     // evaluateMany's rows: per register its values and three derivatives
     // over a block of points; per instruction its constant operands'.

@@ -95,35 +95,39 @@ TEST(HardCases, Atan2Quadrants) {
 }
 
 TEST(HardCases, ZeroAndUndefinedGradients) {
-    auto grad = [](const char* src, double x, double y, double z) {
-        GradientEvaluator g(*compile(src).tape);
-        return g.evaluate(pointXYZ(x, y, z));
-    };
-    Dual d = grad("sqrt(x^2 + y^2 + z^2)", 0, 0, 0);
-    for (double c : d.d)
-        EXPECT_EQ(c, 0.0); // not NaN from 0 * inf
-    d = grad("abs(x)", 0, 0, 0);
-    EXPECT_EQ(d.d[0], 0.0);
-    d = grad("7", 1, 2, 3);
-    EXPECT_EQ(d.d[0], 0.0);
-    d = grad("rintersect(x, y)", 0, 0, 0);
-    EXPECT_EQ(d.d[0], 0.5);
-    EXPECT_EQ(d.d[1], 0.5);
-    d = grad("rintersect(x, y, 1)", 0, 0, 0);
-    EXPECT_EQ(d.d[0], 0.0);
-    d = grad("min(x, y)", 1, 1, 0); // tie: the average, symmetric like the value
-    EXPECT_EQ(d.d[0], 0.5);
-    EXPECT_EQ(d.d[1], 0.5);
-    d = grad("min(x, y)", 1, 2, 0);
-    EXPECT_EQ(d.d[0], 1.0);
-    EXPECT_EQ(d.d[1], 0.0);
-    d = grad("sqrt(x)^0", -1, 0, 0); // NaN^0 = 1: a constant, so no NaN gradient
-    EXPECT_EQ(d.v, 1.0);
-    EXPECT_EQ(d.d[0], 0.0);
-    d = grad("floor(x) + (x > 0)", 0.5, 0, 0);
-    EXPECT_EQ(d.d[0], 0.0);
-    d = grad("sqrt(x)", 0, 0, 0); // vertical tangent
-    EXPECT_EQ(d.d[0], INFINITY);
+    // Interpreted, and as machine code where the CPU has it (gradient_jit.h).
+    for (const ScalarCode code : {ScalarCode::Interpreted, ScalarCode::Compiled}) {
+        SCOPED_TRACE(code == ScalarCode::Compiled ? "machine code" : "interpreted");
+        auto grad = [code](const char* src, double x, double y, double z) {
+            GradientEvaluator g(*compile(src).tape, {Input::X, Input::Y, Input::Z}, code);
+            return g.evaluate(pointXYZ(x, y, z));
+        };
+        Dual d = grad("sqrt(x^2 + y^2 + z^2)", 0, 0, 0);
+        for (double c : d.d)
+            EXPECT_EQ(c, 0.0); // not NaN from 0 * inf
+        d = grad("abs(x)", 0, 0, 0);
+        EXPECT_EQ(d.d[0], 0.0);
+        d = grad("7", 1, 2, 3);
+        EXPECT_EQ(d.d[0], 0.0);
+        d = grad("rintersect(x, y)", 0, 0, 0);
+        EXPECT_EQ(d.d[0], 0.5);
+        EXPECT_EQ(d.d[1], 0.5);
+        d = grad("rintersect(x, y, 1)", 0, 0, 0);
+        EXPECT_EQ(d.d[0], 0.0);
+        d = grad("min(x, y)", 1, 1, 0); // tie: the average, symmetric like the value
+        EXPECT_EQ(d.d[0], 0.5);
+        EXPECT_EQ(d.d[1], 0.5);
+        d = grad("min(x, y)", 1, 2, 0);
+        EXPECT_EQ(d.d[0], 1.0);
+        EXPECT_EQ(d.d[1], 0.0);
+        d = grad("sqrt(x)^0", -1, 0, 0); // NaN^0 = 1: a constant, so no NaN gradient
+        EXPECT_EQ(d.v, 1.0);
+        EXPECT_EQ(d.d[0], 0.0);
+        d = grad("floor(x) + (x > 0)", 0.5, 0, 0);
+        EXPECT_EQ(d.d[0], 0.0);
+        d = grad("sqrt(x)", 0, 0, 0); // vertical tangent
+        EXPECT_EQ(d.d[0], INFINITY);
+    }
 }
 
 TEST(HardCases, NaNAndInfinityInputsNeverCrashAndStayLocal) {
