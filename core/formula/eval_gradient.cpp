@@ -249,7 +249,8 @@ namespace {
 // instruction it writes, 12 one it calls out for (a sine or cosine of its
 // own twice that: ad:: takes both). Row loops win on sums of squares, CSG
 // and trig; the code on abs, powers and divisions (a box's distance: 35 ns
-// a point in rows, 11 as code).
+// a point in rows, 10 as code). (A sin/cos pair is priced as two trig
+// steps both ways, and work on t alone as if it ran at every point.)
 bool manyByCode(const Tape& tape) {
     double rows = 0.0, code = 5.0;
     for (const Instruction& ins : tape.code) {
@@ -318,7 +319,7 @@ void GradientEvaluator::runCode(const Point& p) {
     if (!paramsWrittenOnce_ || paramsWritten_ != params_.version()) {
         const std::vector<double>& pv = params_.values();
         for (std::size_t i = 0; i < pv.size(); ++i)
-            regs_[kInputCount + i].Dual::operator=(DualDomain::constant(pv[i]));
+            regs_[kInputCount + i] = DualDomain::constant(pv[i]);
         paramsWritten_ = params_.version();
         paramsWrittenOnce_ = true;
     }
@@ -334,7 +335,7 @@ bool GradientEvaluator::runCompiled(const Point& p) {
 void GradientEvaluator::run(const Point& p) {
     compiledLast_ = runCompiled(p);
     if (compiledLast_) return;
-    Dual* r = regs_.data(); // (the same stride: an AlignedDual is a Dual)
+    Dual* r = regs_.data();
     for (int i = 0; i < kInputCount; ++i)
         r[i] = DualDomain::constant(p[i]);
     for (int k = 0; k < 3; ++k)
@@ -346,7 +347,10 @@ void GradientEvaluator::run(const Point& p) {
 }
 
 Dual GradientEvaluator::evaluate(const Point& p) {
-    if (tape_.outputs.empty()) return Dual{};
+    if (tape_.outputs.empty()) {
+        compiledLast_ = false;
+        return Dual{};
+    }
     run(p);
     return tapeOutput<DualDomain>(tape_, regs_.data(), 0);
 }
@@ -507,6 +511,7 @@ void GradientEvaluator::evaluateMany(const Point* points, std::size_t n, Dual* o
     if (tape_.outputs.empty()) {
         for (std::size_t i = 0; i < n; ++i)
             out[i] = Dual{};
+        compiledLast_ = false;
         return;
     }
     compiledLast_ = n > 0 && manyByCode_ && haveCode(n, points[0][std::size_t(Input::T)]);

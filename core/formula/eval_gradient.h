@@ -9,7 +9,9 @@
 #include "eval_scalar.h"
 
 #include <array>
+#include <cstddef>
 #include <memory>
+#include <new>
 #include <vector>
 
 namespace fl::formula {
@@ -56,9 +58,24 @@ class GradientEvaluator {
     // one 32-byte load or store, and one split across two cache lines
     // cannot be forwarded from the store that wrote it (union50's gradient
     // ran 6x slower in a process whose malloc gave 16-byte alignment).
-    struct alignas(32) AlignedDual : Dual {};
-    static_assert(sizeof(AlignedDual) == sizeof(Dual), "the interpreter walks them as Duals");
-    std::vector<AlignedDual> regs_;
+    template <class T>
+    struct Aligned32 {
+        using value_type = T;
+        Aligned32() = default;
+        template <class U>
+        Aligned32(const Aligned32<U>&) noexcept {}
+        T* allocate(std::size_t n) {
+            return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{32}));
+        }
+        void deallocate(T* p, std::size_t n) noexcept {
+            ::operator delete (p, n * sizeof(T), std::align_val_t{32});
+        }
+        template <class U>
+        bool operator==(const Aligned32<U>&) const noexcept {
+            return true;
+        }
+    };
+    std::vector<Dual, Aligned32<Dual>> regs_;
     // evaluateMany's rows: per register its values and three derivatives
     // over a block of points; per instruction its constant operands'.
     std::vector<double> blockRegs_;

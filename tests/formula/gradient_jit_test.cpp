@@ -276,7 +276,8 @@ TEST_F(GradientJitTest, ManyPointsRunAsCodeWhereRowLoopsWouldNotWithTheSameBits)
         for (std::size_t i = 0; i < points.size(); ++i)
             ASSERT_EQ(differs(out[i], one.evaluate(points[i])), "") << c.src << " point " << i;
     }
-    // After the warm-up only: 100 points stay in rows, the next call is code.
+    // After the warm-up only: 100 points, then 289 (the warm-up ends inside
+    // that call, still rows); the third call is code.
     CompileResult r = compile(cases[0].src);
     ASSERT_TRUE(r.ok());
     GradientEvaluator e(*r.tape);
@@ -284,9 +285,33 @@ TEST_F(GradientJitTest, ManyPointsRunAsCodeWhereRowLoopsWouldNotWithTheSameBits)
     e.evaluateMany(points.data(), 100, out.data());
     EXPECT_FALSE(e.compiledLast());
     e.evaluateMany(points.data(), points.size(), out.data());
-    EXPECT_FALSE(e.compiledLast()); // 289 asked for now: the warm-up ends here
+    EXPECT_FALSE(e.compiledLast());
     e.evaluateMany(points.data(), points.size(), out.data());
     EXPECT_TRUE(e.compiledLast());
+}
+
+TEST_F(GradientJitTest, ManyPointsAsCodeFollowTimeAndParameters) {
+    // evaluateMany through the code: t changing within a call and between
+    // calls (work on t alone runs once per moment), a parameter changed
+    // between calls; every point as evaluate() gives it.
+    CompileResult r = compile("param k = 2; abs(x * k) + abs(t * y) - z / (1 + t * t)");
+    ASSERT_TRUE(r.ok());
+    GradientEvaluator many(*r.tape, kXyz, ScalarCode::Compiled);
+    GradientEvaluator one(*r.tape, kXyz, ScalarCode::Interpreted);
+    std::vector<Point> points;
+    const auto& moments = testing::momentsToVisit();
+    for (std::size_t i = 0; i < 3 * moments.size(); ++i)
+        points.push_back({0.25 * double(i % 7) - 0.5, 0.5 - 0.125 * double(i % 5), -0.75,
+                          moments[i / 3], 0, 0, 0});
+    for (double k : {2.0, -0.5, -0.0}) {
+        ASSERT_TRUE(many.parameters().set("k", k));
+        ASSERT_TRUE(one.parameters().set("k", k));
+        std::vector<Dual> out(points.size());
+        many.evaluateMany(points.data(), points.size(), out.data());
+        ASSERT_TRUE(many.compiledLast());
+        for (std::size_t i = 0; i < points.size(); ++i)
+            ASSERT_EQ(differs(out[i], one.evaluate(points[i])), "") << "k=" << k << " point " << i;
+    }
 }
 
 TEST_F(GradientJitTest, AnEvaluatorAskedForAFewPointsStaysInterpreted) {

@@ -1,5 +1,6 @@
 // Numerically hard cases, each named: what the engine does is written down in
 // docs/numerics.md and pinned here.
+#include "formula/batch_jit.h"
 #include "formula/eval_batch.h"
 #include "formula/eval_gradient.h"
 #include "formula/eval_interval.h"
@@ -100,7 +101,10 @@ TEST(HardCases, ZeroAndUndefinedGradients) {
         SCOPED_TRACE(code == ScalarCode::Compiled ? "machine code" : "interpreted");
         auto grad = [code](const char* src, double x, double y, double z) {
             GradientEvaluator g(*compile(src).tape, {Input::X, Input::Y, Input::Z}, code);
-            return g.evaluate(pointXYZ(x, y, z));
+            const Dual d = g.evaluate(pointXYZ(x, y, z));
+            if (code == ScalarCode::Compiled && BatchJit::available())
+                EXPECT_TRUE(g.compiledLast()) << src;
+            return d;
         };
         Dual d = grad("sqrt(x^2 + y^2 + z^2)", 0, 0, 0);
         for (double c : d.d)

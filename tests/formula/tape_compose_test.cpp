@@ -106,7 +106,9 @@ TEST(GradientMany, SameBitsAsPointByPointForRandomFormulas) {
         auto r = fl::formula::compile(source, o);
         if (!r.ok()) continue;
         ++compiled;
-        GradientEvaluator one(*r.tape), many(*r.tape);
+        // (many: rows or, where the tape mostly lacks them, machine code)
+        GradientEvaluator one(*r.tape, {Input::X, Input::Y, Input::Z}, ScalarCode::Interpreted);
+        GradientEvaluator many(*r.tape, {Input::X, Input::Y, Input::Z}, ScalarCode::Compiled);
         std::vector<Point> points(150); // more than one block of 64
         // Some coordinates exactly 0, -0, 1 or huge: the zero rule of the
         // derivatives (0 times anything is 0) and ties of min/max at work.
