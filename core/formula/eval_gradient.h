@@ -67,8 +67,9 @@ class GradientEvaluator {
         T* allocate(std::size_t n) {
             return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{32}));
         }
-        void deallocate(T* p, std::size_t n) noexcept {
-            ::operator delete (p, n * sizeof(T), std::align_val_t{32});
+        void deallocate(T* p, std::size_t) noexcept {
+            // (unsized: clang without -fsized-deallocation declares no sized form)
+            ::operator delete (p, std::align_val_t{32});
         }
         template <class U>
         bool operator==(const Aligned32<U>&) const noexcept {

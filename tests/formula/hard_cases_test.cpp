@@ -102,8 +102,9 @@ TEST(HardCases, ZeroAndUndefinedGradients) {
         auto grad = [code](const char* src, double x, double y, double z) {
             GradientEvaluator g(*compile(src).tape, {Input::X, Input::Y, Input::Z}, code);
             const Dual d = g.evaluate(pointXYZ(x, y, z));
-            if (code == ScalarCode::Compiled && BatchJit::available())
+            if (code == ScalarCode::Compiled && BatchJit::available()) {
                 EXPECT_TRUE(g.compiledLast()) << src;
+            }
             return d;
         };
         Dual d = grad("sqrt(x^2 + y^2 + z^2)", 0, 0, 0);
