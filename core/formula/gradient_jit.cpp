@@ -1,5 +1,6 @@
 #include "gradient_jit.h"
 
+#include "batch_hoist.h"
 #include "batch_jit.h"
 #include "jit_cache.h"
 #include "vector_math.h"
@@ -89,9 +90,8 @@ bool writtenInline(const Instruction& ins) {
 
 // The tape's instructions with those whose values depend on t alone first,
 // each renamed to a register of its own past the tape's (batch_hoist.h's
-// rule, for instructions): the code runs them only when t's bits differ
-// from the last call's. An instruction writing an output's register stays
-// in place (outputs are read by their registers), and so does what reads it.
+// rule, the same code): the code runs them only when t's bits differ from
+// the last call's.
 struct Hoisted {
     std::vector<Instruction> code;
     std::size_t hoisted = 0;
@@ -100,36 +100,19 @@ struct Hoisted {
 
 Hoisted hoistTimeOnly(const Tape& tape) {
     Hoisted h;
+    h.code = tape.code;
     h.registerCount = tape.registerCount;
-    const std::size_t regs = std::size_t(tape.registerCount);
-    std::vector<char> output(regs, 0), timeOnly(regs, 0);
+    std::vector<char> output(std::size_t(tape.registerCount), 0);
     for (const OutputInfo& o : tape.outputs)
         if (!o.value.isConst()) output[std::size_t(o.value.reg)] = 1;
-    std::vector<std::int32_t> name(regs);
-    for (std::size_t r = 0; r < regs; ++r)
-        name[r] = std::int32_t(r);
-    timeOnly[std::size_t(Input::T)] = 1;
-    std::vector<Instruction> lead, rest;
-    for (Instruction ins : tape.code) {
-        bool hoist = !output[std::size_t(ins.out)], readsAny = false;
-        Operand* operands[3] = {&ins.a, &ins.b, &ins.c};
-        for (int k = 0; k < opArity(ins.op); ++k) {
-            Operand& o = *operands[k];
-            if (o.isConst()) continue;
-            readsAny = true;
-            hoist = hoist && timeOnly[std::size_t(o.reg)];
-            o.reg = name[std::size_t(o.reg)];
-        }
-        hoist = hoist && readsAny;
-        const std::size_t out = std::size_t(ins.out);
-        timeOnly[out] = hoist ? 1 : 0;
-        name[out] = hoist ? h.registerCount++ : ins.out;
-        ins.out = name[out];
-        (hoist ? lead : rest).push_back(ins);
-    }
-    h.hoisted = lead.size();
-    h.code = std::move(lead);
-    h.code.insert(h.code.end(), rest.begin(), rest.end());
+    h.hoisted = hoistTimeOnlySteps(
+        h.code, output, h.registerCount,
+        [](Instruction& ins, auto&& f) {
+            Operand* operands[3] = {&ins.a, &ins.b, &ins.c};
+            for (int k = 0; k < opArity(ins.op); ++k)
+                if (!operands[k]->isConst()) f(operands[k]->reg);
+        },
+        [](Instruction& ins, auto&& f) { f(ins.out); });
     return h;
 }
 
